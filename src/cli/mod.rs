@@ -1,0 +1,53 @@
+//! The command line: `raylab [SCENE.ron]` starts the editor, `raylab render` renders
+//! headless. `main.rs` only calls [`run`].
+
+mod render;
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+pub use render::RenderArgs;
+
+/// raylab: a Whitted-style ray tracer and scene editor.
+#[derive(Debug, Parser)]
+#[command(name = "raylab", version, about, long_about = None)]
+pub struct Cli {
+    /// What to do; with none, the editor opens.
+    #[command(subcommand)]
+    pub command: Option<Command>,
+    /// A scene to open in the editor.
+    pub scene: Option<PathBuf>,
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Render a scene to a PNG file.
+    Render(RenderArgs),
+}
+
+/// Parses the command line and runs it. Errors are printed to stderr with a non-zero exit.
+#[must_use]
+pub fn run() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Some(Command::Render(args)) => render::run(&args),
+        None => start_editor(cli.scene),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(message) => {
+            eprintln!("error: {message}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn start_editor(_scene: Option<PathBuf>) -> Result<(), String> {
+    use clap::CommandFactory;
+    // The editor lands in a later change; until then show what the binary can do.
+    Cli::command().print_help().map_err(|e| e.to_string())?;
+    Ok(())
+}

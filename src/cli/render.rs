@@ -1,0 +1,128 @@
+//! `raylab render`: a scene file to a PNG, with the term switches and debug views.
+
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+use clap::Args;
+
+use crate::scene::{MAX_IMAGE_SIDE, load_scene, write_atomically};
+use crate::trace::{RenderOptions, RenderProgress, Term, TermSwitches, View, World, render};
+
+/// Arguments of `raylab render`.
+#[derive(Debug, Args)]
+pub struct RenderArgs {
+    /// The scene file (RON).
+    pub scene: PathBuf,
+    /// The PNG to write.
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// Image width (default: the scene's; height follows the aspect ratio if not given).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_IMAGE_SIDE)))]
+    pub width: Option<u32>,
+    /// Image height (default: the scene's; width follows the aspect ratio if not given).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_IMAGE_SIDE)))]
+    pub height: Option<u32>,
+    /// Samples per pixel (default: the scene's).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=65536))]
+    pub spp: Option<u32>,
+    /// Terms to switch off, comma-separated: ambient,diffuse,specular,shadows,reflection.
+    #[arg(long, value_delimiter = ',')]
+    pub off: Vec<Term>,
+    /// Show one term alone.
+    #[arg(long)]
+    pub solo: Option<Term>,
+    /// What to show: beauty, normal, depth, object-id or shadow-mask.
+    #[arg(long, default_value = "beauty")]
+    pub view: View,
+}
+
+impl RenderArgs {
+    /// The render options these arguments ask for, given the scene's defaults.
+    #[must_use]
+    pub fn options(&self, scene: &crate::scene::Scene) -> RenderOptions {
+        let mut options = RenderOptions::from_scene(scene);
+        let aspect = f64::from(scene.camera.width) / f64::from(scene.camera.height);
+        let side = |x: f64| (x.round() as u32).clamp(1, MAX_IMAGE_SIDE);
+        match (self.width, self.height) {
+            (Some(w), Some(h)) => (options.width, options.height) = (w, h),
+            (Some(w), None) => (options.width, options.height) = (w, side(f64::from(w) / aspect)),
+            (None, Some(h)) => (options.width, options.height) = (side(f64::from(h) * aspect), h),
+            (None, None) => {}
+        }
+        if let Some(spp) = self.spp {
+            options.samples_per_pixel = spp;
+        }
+        let mut switches = TermSwitches::ALL_ON;
+        for term in &self.off {
+            switches.set(*term, false);
+        }
+        options.switches = switches.with_solo(self.solo);
+        options.view = self.view;
+        options
+    }
+}
+
+/// Runs `raylab render`.
+///
+/// # Errors
+/// A message naming what went wrong (file, scene problem, write failure).
+pub fn run(args: &RenderArgs) -> Result<(), String> {
+    let scene = load_scene(&args.scene).map_err(|e| format!("{}: {e}", args.scene.display()))?;
+    let world = World::new(&scene).map_err(|e| format!("{}: {e}", args.scene.display()))?;
+    let options = args.options(&scene);
+    let started = Instant::now();
+    let progress = Arc::new(RenderProgress::default());
+    let (image, rays) = with_progress_bar(&progress, || render(&world, &options, &progress))
+        .ok_or("render cancelled")?;
+    let elapsed = started.elapsed();
+    write_atomically(&args.output, &image.png_bytes())
+        .map_err(|e| format!("cannot write {}: {e}", args.output.display()))?;
+    eprintln!(
+        "{}: {}x{} at {} spp in {:.1} ms, {} rays ({:.2} Mrays/s)",
+        args.output.display(),
+        options.width,
+        options.height,
+        options.samples_per_pixel,
+        elapsed.as_secs_f64() * 1e3,
+        rays.total(),
+        rays.total() as f64 / elapsed.as_secs_f64() / 1e6,
+    );
+    Ok(())
+}
+
+/// Runs `work` while a progress bar on stderr follows `progress`; the bar appears only
+/// if the work takes longer than a moment.
+fn with_progress_bar<T: Send>(progress: &RenderProgress, work: impl FnOnce() -> T + Send) -> T {
+    const SHOW_AFTER: Duration = Duration::from_millis(300);
+    let done = std::sync::atomic::AtomicBool::new(false);
+    std::thread::scope(|scope| {
+        let watcher = scope.spawn(|| {
+            let started = Instant::now();
+            let mut bar: Option<indicatif::ProgressBar> = None;
+            while !done.load(std::sync::atomic::Ordering::Acquire) {
+                std::thread::sleep(Duration::from_millis(50));
+                if bar.is_none() && started.elapsed() > SHOW_AFTER {
+                    let b = indicatif::ProgressBar::new(1000);
+                    b.set_style(
+                        indicatif::ProgressStyle::with_template(
+                            "rendering {bar:40} {percent:>3}% {elapsed} (eta {eta})",
+                        )
+                        .expect("valid template"),
+                    );
+                    bar = Some(b);
+                }
+                if let Some(b) = &bar {
+                    b.set_position((progress.fraction() * 1000.0) as u64);
+                }
+            }
+            if let Some(b) = bar {
+                b.finish_and_clear();
+            }
+        });
+        let result = work();
+        done.store(true, std::sync::atomic::Ordering::Release);
+        let _ = watcher.join();
+        result
+    })
+}

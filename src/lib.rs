@@ -1,0 +1,10 @@
+//! raylab: a Whitted-style CPU ray tracer and the scene editor built around it.
+//!
+//! The layers depend one way: `ui -> preview -> trace -> scene`. `scene` and `trace` know
+//! nothing of egui; everything the editor shows can be produced headless.
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod cli;
+pub mod scene;
+pub mod trace;

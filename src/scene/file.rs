@@ -1,0 +1,111 @@
+//! Reading and writing scene files (RON). Writes are atomic: a temporary file in the
+//! same folder, flushed to disk, then renamed over the target.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use ron::extensions::Extensions;
+
+use super::error::SceneError;
+use super::model::Scene;
+use super::validate::validate;
+
+/// Deepest nesting accepted in a scene file; real scenes need about 6 levels.
+const RECURSION_LIMIT: usize = 64;
+
+/// Parses and validates scene text.
+///
+/// # Errors
+/// [`SceneError::Syntax`] with line and column for text that is not a scene,
+/// [`SceneError::Invalid`] naming the field for a scene that cannot be rendered.
+pub fn parse_scene(text: &str) -> Result<Scene, SceneError> {
+    let options = ron::Options::default()
+        .with_default_extension(Extensions::empty())
+        .with_recursion_limit(RECURSION_LIMIT);
+    let mut scene: Scene = options.from_str(text).map_err(|e| SceneError::Syntax {
+        line: e.span.start.line,
+        column: e.span.start.col,
+        message: e.code.to_string(),
+    })?;
+    scene.fill_default_names();
+    validate(&scene)?;
+    Ok(scene)
+}
+
+/// Reads, parses and validates a scene file.
+///
+/// # Errors
+/// As [`parse_scene`], plus [`SceneError::Read`] when the file cannot be read.
+pub fn load_scene(path: &Path) -> Result<Scene, SceneError> {
+    let bytes = std::fs::read(path).map_err(|source| SceneError::Read {
+        path: path.to_owned(),
+        source,
+    })?;
+    let text = std::str::from_utf8(&bytes).map_err(|e| {
+        let line = bytes[..e.valid_up_to()]
+            .iter()
+            .filter(|&&b| b == b'\n')
+            .count()
+            + 1;
+        SceneError::Syntax {
+            line,
+            column: 1,
+            message: "the file is not UTF-8 text".to_owned(),
+        }
+    })?;
+    parse_scene(text)
+}
+
+/// The scene as RON text, in the layout of the contract (`Scene(...)`).
+#[must_use]
+pub fn scene_to_ron(scene: &Scene) -> String {
+    let config = ron::ser::PrettyConfig::new()
+        .indentor("    ")
+        .struct_names(false);
+    // Serialising plain data with finite numbers cannot fail.
+    let body = ron::ser::to_string_pretty(scene, config).unwrap_or_else(|e| {
+        unreachable!("scene serialisation failed: {e}");
+    });
+    format!("Scene{body}\n")
+}
+
+/// Validates and writes a scene atomically.
+///
+/// # Errors
+/// [`SceneError::Invalid`] for a scene that would not load again, [`SceneError::Write`]
+/// when the file cannot be written; the previous file is then untouched.
+pub fn save_scene(scene: &Scene, path: &Path) -> Result<(), SceneError> {
+    validate(scene)?;
+    write_atomically(path, scene_to_ron(scene).as_bytes()).map_err(|source| SceneError::Write {
+        path: path.to_owned(),
+        source,
+    })
+}
+
+/// Writes `bytes` to a temporary file beside `path`, syncs it, and renames it over `path`.
+/// A crash at any point leaves either the old file or the new one, never a mix.
+///
+/// # Errors
+/// The I/O error; the temporary file is removed on failure.
+pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let temporary = temporary_path(path);
+    let result = (|| {
+        let mut file = std::fs::File::create(&temporary)?;
+        file.write_all(bytes)?;
+        file.sync_all()?;
+        drop(file);
+        std::fs::rename(&temporary, path)
+    })();
+    if result.is_err() {
+        let _ = std::fs::remove_file(&temporary);
+    }
+    result
+}
+
+fn temporary_path(path: &Path) -> PathBuf {
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    path.with_file_name(format!(".{name}.{}.tmp", std::process::id()))
+}

@@ -1,0 +1,16 @@
+//! The scene: data model, validation, RON load and save.
+//!
+//! Nothing here knows about rendering or the editor; `trace` compiles a [`Scene`] into a
+//! render-ready world.
+
+mod error;
+mod file;
+mod model;
+mod transform;
+mod validate;
+
+pub use error::SceneError;
+pub use file::{load_scene, parse_scene, save_scene, scene_to_ron, write_atomically};
+pub use model::{Camera, FORMAT_VERSION, Light, Material, Object, RenderSettings, Scene, Shape};
+pub use transform::{MatrixRows, Transform, Trs, affine_from_rows, rows_from_affine};
+pub use validate::{MAX_IMAGE_SIDE, validate};

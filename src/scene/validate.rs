@@ -1,0 +1,241 @@
+//! Checks that a parsed scene describes something renderable, with a message that names
+//! the offending field.
+
+use glam::DVec3;
+
+use super::error::SceneError;
+use super::model::{Camera, Light, Material, RenderSettings, Scene};
+use super::transform::Transform;
+
+/// The largest accepted image width or height, in pixels.
+pub const MAX_IMAGE_SIDE: u32 = 16384;
+/// The largest accepted number of samples per pixel.
+pub const MAX_SAMPLES_PER_PIXEL: u32 = 65536;
+/// The largest accepted mirror depth.
+pub const MAX_DEPTH: u32 = 64;
+
+/// Checks every rule of the contract that parsing alone does not enforce.
+///
+/// # Errors
+/// The first problem found, as [`SceneError::Invalid`] naming the field.
+pub fn validate(scene: &Scene) -> Result<(), SceneError> {
+    if scene.format != super::model::FORMAT_VERSION {
+        return invalid(format!(
+            "format {} is not supported (this raylab reads format 1)",
+            scene.format
+        ));
+    }
+    check_camera(&scene.camera)?;
+    check_render(&scene.render)?;
+    for (name, material) in &scene.materials {
+        check_material(material).map_err(|e| prefixed(&format!("material \"{name}\""), e))?;
+    }
+    for (index, object) in scene.objects.iter().enumerate() {
+        let at = format!("objects[{index}] \"{}\"", object.name);
+        if !scene.materials.contains_key(&object.material) {
+            return invalid(format!(
+                "{at}: unknown material \"{}\" (defined: {})",
+                object.material,
+                list_or_none(scene.materials.keys())
+            ));
+        }
+        check_transform(&object.transform).map_err(|e| prefixed(&at, e))?;
+    }
+    for (index, light) in scene.lights.iter().enumerate() {
+        check_light(light)
+            .map_err(|e| prefixed(&format!("lights[{index}] ({})", light.kind_name()), e))?;
+    }
+    Ok(())
+}
+
+fn invalid<T>(message: String) -> Result<T, SceneError> {
+    Err(SceneError::Invalid(message))
+}
+
+fn prefixed(at: &str, error: SceneError) -> SceneError {
+    match error {
+        SceneError::Invalid(message) => SceneError::Invalid(format!("{at}: {message}")),
+        other => other,
+    }
+}
+
+fn list_or_none<'a>(names: impl Iterator<Item = &'a String>) -> String {
+    let names: Vec<String> = names.map(|n| format!("\"{n}\"")).collect();
+    if names.is_empty() {
+        "none".to_owned()
+    } else {
+        names.join(", ")
+    }
+}
+
+fn finite(field: &str, value: f64) -> Result<(), SceneError> {
+    if value.is_finite() {
+        Ok(())
+    } else {
+        invalid(format!("{field} is {value}, not a finite number"))
+    }
+}
+
+fn finite_vec(field: &str, value: DVec3) -> Result<(), SceneError> {
+    if value.is_finite() {
+        Ok(())
+    } else {
+        invalid(format!("{field} is {value}, which is not finite"))
+    }
+}
+
+fn non_negative_colour(field: &str, value: DVec3) -> Result<(), SceneError> {
+    finite_vec(field, value)?;
+    if value.min_element() < 0.0 {
+        return invalid(format!("{field} is {value}; colours cannot be negative"));
+    }
+    Ok(())
+}
+
+fn check_camera(camera: &Camera) -> Result<(), SceneError> {
+    let at = |field: &str| format!("camera.{field}");
+    finite_vec(&at("position"), camera.position)?;
+    finite_vec(&at("look_at"), camera.look_at)?;
+    finite_vec(&at("up"), camera.up)?;
+    finite(&at("fov_deg"), camera.fov_deg)?;
+    for (field, side) in [("width", camera.width), ("height", camera.height)] {
+        if side == 0 || side > MAX_IMAGE_SIDE {
+            return invalid(format!(
+                "{} is {side}; it must be between 1 and {MAX_IMAGE_SIDE} pixels",
+                at(field)
+            ));
+        }
+    }
+    if !(camera.fov_deg > 0.0 && camera.fov_deg < 180.0) {
+        return invalid(format!(
+            "camera.fov_deg is {}; the vertical field of view must be between 0 and 180 degrees",
+            camera.fov_deg
+        ));
+    }
+    let forward = camera.look_at - camera.position;
+    if forward.length_squared() == 0.0 || !forward.length_squared().is_finite() {
+        return invalid(
+            "camera.look_at equals camera.position, so there is no view direction".into(),
+        );
+    }
+    if forward
+        .normalize()
+        .cross(camera.up.normalize_or_zero())
+        .length_squared()
+        < 1e-20
+    {
+        return invalid(format!(
+            "camera.up {} is zero or parallel to the view direction",
+            camera.up
+        ));
+    }
+    Ok(())
+}
+
+fn check_render(render: &RenderSettings) -> Result<(), SceneError> {
+    non_negative_colour("render.background", render.background)?;
+    if render.samples_per_pixel == 0 || render.samples_per_pixel > MAX_SAMPLES_PER_PIXEL {
+        return invalid(format!(
+            "render.samples_per_pixel is {}; it must be between 1 and {MAX_SAMPLES_PER_PIXEL}",
+            render.samples_per_pixel
+        ));
+    }
+    if render.max_depth > MAX_DEPTH {
+        return invalid(format!(
+            "render.max_depth is {}; at most {MAX_DEPTH} mirror bounces are supported",
+            render.max_depth
+        ));
+    }
+    Ok(())
+}
+
+fn check_material(material: &Material) -> Result<(), SceneError> {
+    non_negative_colour("ambient", material.ambient)?;
+    non_negative_colour("diffuse", material.diffuse)?;
+    non_negative_colour("specular", material.specular)?;
+    non_negative_colour("mirror", material.mirror)?;
+    finite("shininess", material.shininess)?;
+    if material.shininess <= 0.0 {
+        return invalid(format!(
+            "shininess is {}; the Phong exponent must be positive",
+            material.shininess
+        ));
+    }
+    Ok(())
+}
+
+fn check_transform(transform: &Transform) -> Result<(), SceneError> {
+    if let Some(bad) = transform.numbers().into_iter().find(|x| !x.is_finite()) {
+        return invalid(format!(
+            "transform contains {bad}, which is not a finite number"
+        ));
+    }
+    match transform {
+        Transform::Trs(trs) => {
+            if trs.scale.min_element().abs() == 0.0 || trs.scale.abs().min_element() == 0.0 {
+                return invalid(format!(
+                    "transform scale {} has a zero component, so the transform is singular",
+                    trs.scale
+                ));
+            }
+        }
+        Transform::Matrix(_) => {
+            let m = transform.world_from_object().matrix3;
+            let size = m.x_axis.length() * m.y_axis.length() * m.z_axis.length();
+            if !(m.determinant().abs() > 1e-12 * size) || size == 0.0 {
+                return invalid(
+                    "transform matrix is singular (its 3x3 part has no inverse)".to_owned(),
+                );
+            }
+        }
+    }
+    let m = transform.world_from_object();
+    if !m.inverse().is_finite() {
+        return invalid("transform cannot be inverted in double precision".to_owned());
+    }
+    Ok(())
+}
+
+fn check_light(light: &Light) -> Result<(), SceneError> {
+    non_negative_colour("colour", light.colour())?;
+    check_intensity(light.intensity())?;
+    match *light {
+        Light::Ambient { .. } => Ok(()),
+        Light::Point { position, .. } => finite_vec("position", position),
+        Light::Directional { direction, .. } => check_direction(direction),
+        Light::Spot {
+            position,
+            direction,
+            angle_deg,
+            ..
+        } => {
+            finite_vec("position", position)?;
+            check_direction(direction)?;
+            finite("angle_deg", angle_deg)?;
+            if !(angle_deg > 0.0 && angle_deg <= 90.0) {
+                return invalid(format!(
+                    "angle_deg is {angle_deg}; a spot light's half-angle must be in (0, 90] degrees"
+                ));
+            }
+            Ok(())
+        }
+    }
+}
+
+fn check_direction(direction: DVec3) -> Result<(), SceneError> {
+    finite_vec("direction", direction)?;
+    if direction.length_squared() == 0.0 || !direction.length_squared().is_normal() {
+        return invalid(format!(
+            "direction {direction} is zero (or too short to normalise)"
+        ));
+    }
+    Ok(())
+}
+
+fn check_intensity(intensity: f64) -> Result<(), SceneError> {
+    finite("intensity", intensity)?;
+    if intensity < 0.0 {
+        return invalid(format!("intensity is {intensity}; it cannot be negative"));
+    }
+    Ok(())
+}

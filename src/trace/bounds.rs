@@ -1,0 +1,59 @@
+//! Axis-aligned bounding boxes, used to skip exact intersection tests.
+
+use glam::{DAffine3, DVec3};
+
+use super::ray::Ray;
+
+/// An axis-aligned box `[min, max]`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Aabb {
+    /// Smallest corner.
+    pub min: DVec3,
+    /// Largest corner.
+    pub max: DVec3,
+}
+
+impl Aabb {
+    /// The box with these corners.
+    #[must_use]
+    pub fn new(min: DVec3, max: DVec3) -> Self {
+        Self { min, max }
+    }
+
+    /// The box around this box's eight corners after `world_from_object`, grown by a
+    /// relative margin so that rounding in the transform can never cull a real hit.
+    #[must_use]
+    pub fn transformed(&self, world_from_object: &DAffine3) -> Self {
+        let mut min = DVec3::INFINITY;
+        let mut max = DVec3::NEG_INFINITY;
+        for corner in 0..8 {
+            let pick = |bit: usize, axis: usize| {
+                if corner & bit == 0 {
+                    self.min[axis]
+                } else {
+                    self.max[axis]
+                }
+            };
+            let p =
+                world_from_object.transform_point3(DVec3::new(pick(1, 0), pick(2, 1), pick(4, 2)));
+            min = min.min(p);
+            max = max.max(p);
+        }
+        let margin = (max - min)
+            .max_element()
+            .max(max.abs().max(min.abs()).max_element())
+            * 1e-9;
+        Self::new(min - margin, max + margin)
+    }
+
+    /// Whether the ray passes through the box for some t in [0, t_max]. Conservative:
+    /// a NaN from 0 * inf (origin on a slab plane, ray parallel to it) keeps the box.
+    #[must_use]
+    pub fn hit_by(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> bool {
+        let t0 = (self.min - ray.origin) * inv_dir;
+        let t1 = (self.max - ray.origin) * inv_dir;
+        let near = t0.min(t1).max_element().max(0.0);
+        let far = t0.max(t1).min_element().min(t_max);
+        near <= far || near.is_nan() || far.is_nan()
+    }
+}

@@ -1,0 +1,24 @@
+//! The tracer: pure functions from a compiled [`World`] and a ray to a colour, and from
+//! a world to an image. No threads of its own beyond rayon's, no I/O, no UI.
+
+pub mod bounds;
+pub mod camera;
+pub mod image;
+pub mod lights;
+pub mod quadratic;
+pub mod ray;
+pub mod render;
+pub mod sampling;
+pub mod shade;
+pub mod shapes;
+pub mod spawn;
+pub mod terms;
+pub mod world;
+
+pub use camera::PinholeCamera;
+pub use image::Image;
+pub use ray::Ray;
+pub use render::{RenderOptions, RenderProgress, SampleSums, render, render_samples};
+pub use shade::{LightRecord, NoRecorder, RayCounts, Recorder, Tracer};
+pub use terms::{Term, TermSwitches, View};
+pub use world::{SurfacePoint, World};

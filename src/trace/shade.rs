@@ -1,0 +1,301 @@
+//! The lighting model of the contract, one ray at a time:
+//!
+//! ```text
+//! colour = sum over ambient lights of ka * L
+//!        + sum over other lights l of vis_l * L_l(p) * (kd * max(0, n.l) + ks * max(0, r.v)^s)
+//!        + km * colour(reflected ray)          while depth < max_depth
+//! ```
+//!
+//! Work is only done where a term can contribute: no shadow ray for a light behind the
+//! surface, outside its spot cone, or for a material with no diffuse and no specular; no
+//! mirror ray where km is zero. An optional [`Recorder`] sees every number the shader
+//! uses, so the pixel inspector reports this very code path.
+
+use glam::DVec3;
+
+use super::ray::Ray;
+use super::spawn::{spawn_ray, spawn_ray_to};
+use super::terms::{ActiveTerms, Term, TermSwitches, View};
+use super::world::{SurfacePoint, World};
+
+/// Rays cast, by kind.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct RayCounts {
+    /// Camera rays.
+    pub primary: u64,
+    /// Shadow rays.
+    pub shadow: u64,
+    /// Mirror rays.
+    pub reflection: u64,
+}
+
+impl RayCounts {
+    /// All rays.
+    #[must_use]
+    pub fn total(&self) -> u64 {
+        self.primary + self.shadow + self.reflection
+    }
+
+    /// Adds another tally to this one.
+    pub fn add(&mut self, other: &RayCounts) {
+        self.primary += other.primary;
+        self.shadow += other.shadow;
+        self.reflection += other.reflection;
+    }
+}
+
+/// One light's part in shading a point, as the inspector shows it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightRecord {
+    /// Index of the light in the scene's light list.
+    pub scene_index: usize,
+    /// L_l(p): the light's strength arriving at the point, before visibility.
+    pub strength: DVec3,
+    /// n.l (may be negative: the light is behind the surface).
+    pub n_dot_l: f64,
+    /// The object that blocked the shadow ray, if one did.
+    pub blocked_by: Option<usize>,
+    /// Whether a shadow ray was cast at all.
+    pub shadow_ray_cast: bool,
+    /// The diffuse contribution added.
+    pub diffuse: DVec3,
+    /// The specular contribution added.
+    pub specular: DVec3,
+}
+
+/// Receives the numbers behind one traced ray. Every method has an empty default, so the
+/// renderer's [`NoRecorder`] costs nothing.
+pub trait Recorder {
+    /// A ray at `depth` (0 = primary) hit `hit`.
+    fn hit(&mut self, _depth: u32, _ray: &Ray, _hit: &SurfacePoint) {}
+    /// A ray at `depth` hit nothing and returns `background`.
+    fn miss(&mut self, _depth: u32, _ray: &Ray, _background: DVec3) {}
+    /// The ambient term at `depth`.
+    fn ambient(&mut self, _depth: u32, _colour: DVec3) {}
+    /// A light at a point at `depth` (only for lights that can reach the point).
+    fn light(&mut self, _depth: u32, _record: &LightRecord) {}
+    /// The mirror term at `depth`: `km * reflected` was added.
+    fn reflection(&mut self, _depth: u32, _km: DVec3, _reflected: DVec3) {}
+    /// The colour returned for the ray at `depth`.
+    fn result(&mut self, _depth: u32, _colour: DVec3) {}
+}
+
+/// A recorder that records nothing.
+pub struct NoRecorder;
+
+impl Recorder for NoRecorder {}
+
+/// Traces rays through a world with a fixed set of switches and view.
+#[derive(Clone, Copy, Debug)]
+pub struct Tracer<'w> {
+    world: &'w World,
+    primary: ActiveTerms,
+    secondary: ActiveTerms,
+    view: View,
+}
+
+impl<'w> Tracer<'w> {
+    /// A tracer for `world`. Solo `shadows` shows the shadow mask.
+    #[must_use]
+    pub fn new(world: &'w World, switches: TermSwitches, view: View) -> Self {
+        let view = if view == View::Beauty && switches.solo == Some(Term::Shadows) {
+            View::ShadowMask
+        } else {
+            view
+        };
+        Self {
+            world,
+            primary: switches.primary(),
+            secondary: switches.secondary(),
+            view,
+        }
+    }
+
+    /// The world traced.
+    #[must_use]
+    pub fn world(&self) -> &'w World {
+        self.world
+    }
+
+    /// The colour of a camera ray, unclamped, as the view asks for it.
+    pub fn trace_primary(
+        &self,
+        ray: &Ray,
+        counts: &mut RayCounts,
+        recorder: &mut impl Recorder,
+    ) -> DVec3 {
+        counts.primary += 1;
+        match self.view {
+            View::Beauty => self.radiance(ray, 0, &self.primary, counts, recorder),
+            View::Normal => self
+                .world
+                .intersect(ray, f64::INFINITY)
+                .map_or(DVec3::ZERO, |hit| hit.n * 0.5 + 0.5),
+            View::Depth => self
+                .world
+                .intersect(ray, f64::INFINITY)
+                .map_or(DVec3::ZERO, |hit| {
+                    DVec3::splat(1.0 / (1.0 + hit.t / self.world.view_distance))
+                }),
+            View::ObjectId => self
+                .world
+                .intersect(ray, f64::INFINITY)
+                .map_or(DVec3::ZERO, |hit| object_id_colour(hit.object)),
+            View::ShadowMask => self
+                .world
+                .intersect(ray, f64::INFINITY)
+                .map_or(DVec3::ZERO, |hit| {
+                    DVec3::splat(self.shadow_mask(ray, &hit, counts))
+                }),
+        }
+    }
+
+    /// The lit colour of a ray at `depth` with the given terms.
+    fn radiance(
+        &self,
+        ray: &Ray,
+        depth: u32,
+        terms: &ActiveTerms,
+        counts: &mut RayCounts,
+        recorder: &mut impl Recorder,
+    ) -> DVec3 {
+        let Some(hit) = self.world.intersect(ray, f64::INFINITY) else {
+            let background = if terms.background {
+                self.world.background
+            } else {
+                DVec3::ZERO
+            };
+            recorder.miss(depth, ray, background);
+            recorder.result(depth, background);
+            return background;
+        };
+        recorder.hit(depth, ray, &hit);
+        let world = self.world;
+        let material = &world.materials[world.objects[hit.object].material];
+        let mut colour = DVec3::ZERO;
+
+        // ambient: ka * (sum of ambient lights)
+        if terms.ambient {
+            let ambient = material.ambient * world.ambient;
+            recorder.ambient(depth, ambient);
+            colour += ambient;
+        }
+
+        // diffuse and specular, light by light
+        let has_local = material.diffuse != DVec3::ZERO || material.specular != DVec3::ZERO;
+        if (terms.diffuse || terms.specular) && has_local {
+            let view_dir = -ray.dir.normalize();
+            for (index, light) in world.lights.iter().enumerate() {
+                let Some(sample) = light.sample(hit.p) else {
+                    continue;
+                };
+                let n_dot_l = hit.n.dot(sample.to_light);
+                let mut record = LightRecord {
+                    scene_index: world.light_scene_index[index],
+                    strength: sample.radiance,
+                    n_dot_l,
+                    blocked_by: None,
+                    shadow_ray_cast: false,
+                    diffuse: DVec3::ZERO,
+                    specular: DVec3::ZERO,
+                };
+                if n_dot_l > 0.0 {
+                    if terms.shadows {
+                        record.shadow_ray_cast = true;
+                        record.blocked_by = self.occluder(&hit, &sample, counts);
+                    }
+                    if record.blocked_by.is_none() {
+                        if terms.diffuse {
+                            record.diffuse = material.diffuse * sample.radiance * n_dot_l;
+                        }
+                        if terms.specular {
+                            // r = reflection of the light direction about n; max before power.
+                            let r = 2.0 * n_dot_l * hit.n - sample.to_light;
+                            let r_dot_v = r.dot(view_dir).max(0.0);
+                            if r_dot_v > 0.0 {
+                                record.specular = material.specular
+                                    * sample.radiance
+                                    * r_dot_v.powf(material.shininess);
+                            }
+                        }
+                        colour += record.diffuse + record.specular;
+                    }
+                }
+                recorder.light(depth, &record);
+            }
+        }
+
+        // mirror: km * colour(reflected ray)
+        if terms.reflection && depth < world.max_depth && material.mirror != DVec3::ZERO {
+            let d = ray.dir;
+            let reflected_dir = d - 2.0 * d.dot(hit.n) * hit.n;
+            let reflected_ray = spawn_ray(&hit, reflected_dir);
+            counts.reflection += 1;
+            let reflected =
+                self.radiance(&reflected_ray, depth + 1, &self.secondary, counts, recorder);
+            recorder.reflection(depth, material.mirror, reflected);
+            colour += material.mirror * reflected;
+        }
+        recorder.result(depth, colour);
+        colour
+    }
+
+    /// Casts the shadow ray from `hit` to a light; the blocking object, if any.
+    fn occluder(
+        &self,
+        hit: &SurfacePoint,
+        sample: &super::lights::LightSample,
+        counts: &mut RayCounts,
+    ) -> Option<usize> {
+        counts.shadow += 1;
+        match sample.light_position {
+            Some(position) => {
+                let (ray, t_max) = spawn_ray_to(hit, position);
+                self.world.occluder(&ray, t_max)
+            }
+            None => self
+                .world
+                .occluder(&spawn_ray(hit, sample.to_light), f64::INFINITY),
+        }
+    }
+
+    /// Fraction of the lights that reach `hit` (in front, inside any spot cone) whose
+    /// shadow ray is clear; 0 where no light reaches.
+    fn shadow_mask(&self, _ray: &Ray, hit: &SurfacePoint, counts: &mut RayCounts) -> f64 {
+        let mut reaching = 0u32;
+        let mut visible = 0u32;
+        for light in &self.world.lights {
+            let Some(sample) = light.sample(hit.p) else {
+                continue;
+            };
+            if hit.n.dot(sample.to_light) <= 0.0 {
+                continue;
+            }
+            reaching += 1;
+            if !self.primary.shadows || self.occluder(hit, &sample, counts).is_none() {
+                visible += 1;
+            }
+        }
+        if reaching == 0 {
+            0.0
+        } else {
+            f64::from(visible) / f64::from(reaching)
+        }
+    }
+}
+
+/// A distinct, saturated colour for an object index (golden-ratio hue steps).
+#[must_use]
+pub fn object_id_colour(index: usize) -> DVec3 {
+    let hue = (index as f64 * 0.618_033_988_749_895 + 0.1).fract() * 6.0;
+    let x = 1.0 - (hue % 2.0 - 1.0).abs();
+    let (r, g, b) = match hue as u32 {
+        0 => (1.0, x, 0.0),
+        1 => (x, 1.0, 0.0),
+        2 => (0.0, 1.0, x),
+        3 => (0.0, x, 1.0),
+        4 => (x, 0.0, 1.0),
+        _ => (1.0, 0.0, x),
+    };
+    DVec3::new(r, g, b) * 0.85 + 0.15
+}

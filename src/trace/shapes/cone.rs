@@ -1,0 +1,137 @@
+//! The unit cone: x^2 + y^2 = z^2 for 0 <= z <= 1, apex at the origin, closed by a disc
+//! cap of radius 1 at z = 1.
+
+use glam::DVec3;
+
+use super::{ShapeHit, disc_cap, gamma, in_range, nearer};
+use crate::trace::bounds::Aabb;
+use crate::trace::quadratic::{difference_of_products, solve_quadratic};
+use crate::trace::ray::Ray;
+
+/// Object-space bounds.
+pub fn bounds() -> Aabb {
+    Aabb::new(DVec3::new(-1.0, -1.0, 0.0), DVec3::splat(1.0))
+}
+
+/// Roots with the double cone x^2 + y^2 - z^2 = 0.
+///
+/// a = dx^2 + dy^2 - dz^2 is zero for rays parallel to the side (the solver then treats
+/// the equation as linear); each sum and the discriminant use fused multiply-adds so the
+/// cancellation near that case loses as little as possible.
+fn side_roots(ray: &Ray) -> Option<[f64; 2]> {
+    let (o, d) = (ray.origin, ray.dir);
+    let a = d.x.mul_add(d.x, difference_of_products(d.y, d.y, d.z, d.z));
+    let h = o.x.mul_add(d.x, difference_of_products(o.y, d.y, o.z, d.z));
+    let c = o.x.mul_add(o.x, difference_of_products(o.y, o.y, o.z, o.z));
+    let disc = difference_of_products(h, h, a, c);
+    solve_quadratic(a, h, c, disc)
+}
+
+/// The outward normal at a point of the side: the gradient of x^2 + y^2 - z^2. At the
+/// apex the gradient vanishes; there the axis (-z, out of the tip) is used.
+fn side_normal(p: DVec3) -> DVec3 {
+    let n = DVec3::new(p.x, p.y, -p.z);
+    if n == DVec3::ZERO { -DVec3::Z } else { n }
+}
+
+/// The nearest side hit on the upper nappe, 0 <= z <= 1.
+fn side_hit(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
+    let roots = side_roots(ray)?;
+    let t = roots.into_iter().find(|&t| {
+        let z = ray.at(t).z;
+        in_range(t, t_max) && (0.0..=1.0).contains(&z)
+    })?;
+    // Re-project onto the line r = z in the point's half-plane: the nearest point of the
+    // cone's generator is at r = z = (r + z) / 2.
+    let p = ray.at(t);
+    let r = (p.x * p.x + p.y * p.y).sqrt();
+    let s = (0.5 * (r + p.z)).clamp(0.0, 1.0);
+    let p = if r > 0.0 {
+        DVec3::new(p.x * (s / r), p.y * (s / r), s)
+    } else {
+        DVec3::ZERO // on the axis, a hit on the cone is the apex
+    };
+    Some(ShapeHit {
+        t,
+        p,
+        n: side_normal(p),
+        p_error: gamma(6) * p.abs() + DVec3::splat(gamma(6) * s),
+    })
+}
+
+/// The closest hit with `t` in (0, t_max): side or cap. At the cap rim both agree.
+pub fn intersect(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
+    let side = side_hit(ray, t_max);
+    let cap = disc_cap(ray, side.map_or(t_max, |h| h.t), 1.0, 1.0);
+    nearer(side, cap)
+}
+
+/// Whether any hit has `t` in (0, t_max).
+pub fn occluded(ray: &Ray, t_max: f64) -> bool {
+    side_hit(ray, t_max).is_some() || disc_cap(ray, t_max, 1.0, 1.0).is_some()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::trace::shapes::test_support::assert_hit;
+    use std::f64::consts::FRAC_1_SQRT_2;
+
+    #[test]
+    fn side_from_outside() {
+        // At z = 0.5 the radius is 0.5; normal (1, 0, -1)/sqrt(2) on the -x side flipped.
+        let ray = Ray::new(DVec3::new(-3.0, 0.0, 0.5), DVec3::X);
+        let n = DVec3::new(-FRAC_1_SQRT_2, 0.0, -FRAC_1_SQRT_2);
+        assert_hit(intersect(&ray, f64::INFINITY), &ray, 2.5, n);
+    }
+
+    #[test]
+    fn from_inside_hits_the_far_side() {
+        let ray = Ray::new(DVec3::new(0.0, 0.0, 0.5), DVec3::Y);
+        let n = DVec3::new(0.0, FRAC_1_SQRT_2, -FRAC_1_SQRT_2);
+        assert_hit(intersect(&ray, f64::INFINITY), &ray, 0.5, n);
+    }
+
+    #[test]
+    fn along_the_axis_from_above_hits_the_cap_then_from_below_the_apex() {
+        let down = Ray::new(DVec3::new(0.0, 0.0, 3.0), -DVec3::Z);
+        assert_hit(intersect(&down, f64::INFINITY), &down, 2.0, DVec3::Z);
+        let up = Ray::new(DVec3::new(0.0, 0.0, -2.0), DVec3::Z);
+        let hit = intersect(&up, f64::INFINITY).unwrap();
+        assert_eq!(hit.t, 2.0);
+        assert_eq!(hit.p, DVec3::ZERO);
+        assert_eq!(hit.n, -DVec3::Z);
+    }
+
+    #[test]
+    fn through_the_apex_at_an_angle() {
+        let ray = Ray::new(DVec3::new(-2.0, 0.0, -1.0), DVec3::new(2.0, 0.0, 1.0));
+        let hit = intersect(&ray, f64::INFINITY).unwrap();
+        assert!((hit.t - 1.0).abs() < 1e-12, "{}", hit.t);
+        assert!(hit.p.length() < 1e-12 && hit.n.is_finite() && hit.n != DVec3::ZERO);
+    }
+
+    #[test]
+    fn parallel_to_the_side() {
+        // Direction (1, 0, 1) is parallel to the generator x = z: a == 0, one root.
+        let ray = Ray::new(DVec3::new(-0.5, 0.0, 0.0), DVec3::new(1.0, 0.0, 1.0));
+        let hit = intersect(&ray, f64::INFINITY).unwrap();
+        // (t - 0.5)^2 = t^2 gives t = 0.25: the point (-0.25, 0, 0.25) on the generator x = -z.
+        assert!((hit.t - 0.25).abs() < 1e-15, "{}", hit.t);
+        assert!((hit.p - DVec3::new(-0.25, 0.0, 0.25)).length() < 1e-15);
+    }
+
+    #[test]
+    fn lower_nappe_is_not_part_of_the_cone() {
+        let ray = Ray::new(DVec3::new(-3.0, 0.0, -0.5), DVec3::X);
+        assert!(intersect(&ray, f64::INFINITY).is_none());
+    }
+
+    #[test]
+    fn exactly_through_the_cap_rim() {
+        let ray = Ray::new(DVec3::new(1.0, 0.0, 3.0), -DVec3::Z);
+        let hit = intersect(&ray, f64::INFINITY).unwrap();
+        assert_eq!(hit.t, 2.0);
+        assert_eq!(hit.p, DVec3::new(1.0, 0.0, 1.0));
+    }
+}

@@ -1,0 +1,124 @@
+//! The unit cube [-1, 1]^3.
+
+use glam::DVec3;
+
+use super::{ShapeHit, gamma, in_range};
+use crate::trace::bounds::Aabb;
+use crate::trace::ray::Ray;
+
+/// Object-space bounds.
+pub fn bounds() -> Aabb {
+    Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0))
+}
+
+/// Entry and exit of the ray through the slabs, with the axis of each.
+struct Span {
+    t_near: f64,
+    near_axis: usize,
+    t_far: f64,
+    far_axis: usize,
+}
+
+/// Slab test. A zero direction component is handled explicitly so that an origin on a
+/// face plane never produces 0 * inf = NaN.
+fn span(ray: &Ray) -> Option<Span> {
+    let mut s = Span {
+        t_near: f64::NEG_INFINITY,
+        near_axis: 0,
+        t_far: f64::INFINITY,
+        far_axis: 0,
+    };
+    for axis in 0..3 {
+        let (o, d) = (ray.origin[axis], ray.dir[axis]);
+        if d == 0.0 {
+            if o.abs() > 1.0 {
+                return None;
+            }
+            continue;
+        }
+        let (mut t0, mut t1) = ((-1.0 - o) / d, (1.0 - o) / d);
+        if t0 > t1 {
+            std::mem::swap(&mut t0, &mut t1);
+        }
+        if t0 > s.t_near {
+            s.t_near = t0;
+            s.near_axis = axis;
+        }
+        if t1 < s.t_far {
+            s.t_far = t1;
+            s.far_axis = axis;
+        }
+    }
+    (s.t_near <= s.t_far).then_some(s)
+}
+
+/// The closest hit with `t` in (0, t_max): the entry face, or the exit face from inside.
+pub fn intersect(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
+    let s = span(ray)?;
+    let (t, axis) = if in_range(s.t_near, t_max) {
+        (s.t_near, s.near_axis)
+    } else if in_range(s.t_far, t_max) {
+        (s.t_far, s.far_axis)
+    } else {
+        return None;
+    };
+    // Re-project: the face coordinate is exactly +-1, the others are clamped into the face.
+    let mut p = ray.at(t).clamp(DVec3::splat(-1.0), DVec3::splat(1.0));
+    let side = if ray.at(t)[axis] >= 0.0 { 1.0 } else { -1.0 };
+    p[axis] = side;
+    let mut n = DVec3::ZERO;
+    n[axis] = side;
+    let mut p_error = gamma(3) * p.abs();
+    p_error[axis] = 0.0;
+    Some(ShapeHit { t, p, n, p_error })
+}
+
+/// Whether any hit has `t` in (0, t_max).
+pub fn occluded(ray: &Ray, t_max: f64) -> bool {
+    span(ray).is_some_and(|s| in_range(s.t_near, t_max) || in_range(s.t_far, t_max))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::trace::shapes::test_support::assert_hit;
+
+    #[test]
+    fn hits_each_face_from_outside() {
+        for axis in 0..3 {
+            for side in [-1.0, 1.0] {
+                let mut o = DVec3::splat(0.25);
+                o[axis] = 3.0 * side;
+                let mut d = DVec3::ZERO;
+                d[axis] = -side;
+                let ray = Ray::new(o, d);
+                let mut n = DVec3::ZERO;
+                n[axis] = side;
+                assert_hit(intersect(&ray, f64::INFINITY), &ray, 2.0, n);
+            }
+        }
+    }
+
+    #[test]
+    fn from_inside_hits_the_exit_face() {
+        let ray = Ray::new(DVec3::ZERO, DVec3::new(0.0, -0.5, 0.0));
+        assert_hit(intersect(&ray, f64::INFINITY), &ray, 2.0, -DVec3::Y);
+    }
+
+    #[test]
+    fn origin_on_a_face_plane_with_zero_direction_component_is_not_nan() {
+        let ray = Ray::new(DVec3::new(1.0, 0.0, -3.0), DVec3::Z);
+        assert_hit(intersect(&ray, f64::INFINITY), &ray, 2.0, -DVec3::Z);
+        let ray = Ray::new(DVec3::new(1.5, 0.0, -3.0), DVec3::Z);
+        assert!(intersect(&ray, f64::INFINITY).is_none());
+    }
+
+    #[test]
+    fn exactly_through_an_edge() {
+        let ray = Ray::new(DVec3::new(-3.0, -3.0, 0.5), DVec3::new(1.0, 1.0, 0.0));
+        let hit = intersect(&ray, f64::INFINITY).unwrap();
+        assert_eq!(hit.t, 2.0);
+        assert_eq!(hit.p, DVec3::new(-1.0, -1.0, 0.5));
+        assert_eq!(hit.n.length(), 1.0);
+    }
+}

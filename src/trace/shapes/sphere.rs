@@ -1,0 +1,98 @@
+//! The unit sphere: centre at the origin, radius 1.
+
+use glam::DVec3;
+
+use super::{ShapeHit, gamma, in_range};
+use crate::trace::bounds::Aabb;
+use crate::trace::quadratic::solve_quadratic;
+use crate::trace::ray::Ray;
+
+/// Object-space bounds.
+pub fn bounds() -> Aabb {
+    Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0))
+}
+
+/// Both roots of the ray with the sphere, if any.
+///
+/// The quarter discriminant is computed as a (1 - |o - (o.d / a) d|^2): the squared
+/// distance from the centre to the ray's closest point, which does not cancel for rays
+/// far from the sphere the way (o.d)^2 - a (|o|^2 - 1) does.
+fn roots(ray: &Ray) -> Option<[f64; 2]> {
+    let (o, d) = (ray.origin, ray.dir);
+    let a = d.length_squared();
+    let h = o.dot(d);
+    let c = o.length_squared() - 1.0;
+    let closest = o - (h / a) * d;
+    let disc = a * (1.0 - closest.length_squared());
+    solve_quadratic(a, h, c, disc)
+}
+
+/// The closest hit with `t` in (0, t_max).
+pub fn intersect(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
+    let [t0, t1] = roots(ray)?;
+    let t = if in_range(t0, t_max) {
+        t0
+    } else if in_range(t1, t_max) {
+        t1
+    } else {
+        return None;
+    };
+    // Re-project onto the sphere: the error is then a few roundings of |p| = 1.
+    let p = ray.at(t);
+    let p = p / p.length();
+    Some(ShapeHit {
+        t,
+        p,
+        n: p,
+        p_error: gamma(5) * p.abs(),
+    })
+}
+
+/// Whether any hit has `t` in (0, t_max).
+pub fn occluded(ray: &Ray, t_max: f64) -> bool {
+    roots(ray).is_some_and(|[t0, t1]| in_range(t0, t_max) || in_range(t1, t_max))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::trace::shapes::test_support::assert_hit;
+
+    #[test]
+    fn hit_from_outside() {
+        let ray = Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z);
+        assert_hit(intersect(&ray, f64::INFINITY), &ray, 4.0, -DVec3::Z);
+    }
+
+    #[test]
+    fn hit_from_inside_is_the_far_side() {
+        let ray = Ray::new(DVec3::ZERO, DVec3::X * 2.0);
+        assert_hit(intersect(&ray, f64::INFINITY), &ray, 0.5, DVec3::X);
+    }
+
+    #[test]
+    fn miss_and_t_max() {
+        let ray = Ray::new(DVec3::new(0.0, 1.5, -5.0), DVec3::Z);
+        assert!(intersect(&ray, f64::INFINITY).is_none());
+        let ray = Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z);
+        assert!(intersect(&ray, 3.9).is_none());
+        assert!(!occluded(&ray, 3.9));
+        assert!(occluded(&ray, 4.1));
+    }
+
+    #[test]
+    fn tangent_ray_touches_once() {
+        let ray = Ray::new(DVec3::new(0.0, 1.0, -5.0), DVec3::Z);
+        assert_hit(intersect(&ray, f64::INFINITY), &ray, 5.0, DVec3::Y);
+    }
+
+    #[test]
+    fn far_away_ray_keeps_precision() {
+        // From 1e8 away the naive discriminant cancels to garbage.
+        let ray = Ray::new(DVec3::new(0.0, 0.5, -1e8), DVec3::Z);
+        let hit = intersect(&ray, f64::INFINITY).unwrap();
+        let expected = 1e8 - (0.75f64).sqrt();
+        assert!((hit.t - expected).abs() < 1e-7, "{}", hit.t);
+        assert!((hit.p.length() - 1.0).abs() < 1e-15);
+    }
+}

@@ -1,0 +1,235 @@
+//! The term switches of the lighting model and the debug views. The editor, the command
+//! line and the library all use these, so a switch means the same thing everywhere.
+
+use std::fmt;
+use std::str::FromStr;
+
+/// A term of the lighting model that can be switched off or shown alone.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Term {
+    /// ka * ambient light (and the background of primary misses when solo).
+    Ambient,
+    /// kd * L * max(0, n.l).
+    Diffuse,
+    /// ks * L * max(0, r.v)^s.
+    Specular,
+    /// Visibility of lights (shadow rays). Off: every light is visible.
+    Shadows,
+    /// km * colour(reflected ray).
+    Reflection,
+}
+
+impl Term {
+    /// All terms, in the order of the contract.
+    pub const ALL: [Term; 5] = [
+        Term::Ambient,
+        Term::Diffuse,
+        Term::Specular,
+        Term::Shadows,
+        Term::Reflection,
+    ];
+
+    /// The lower-case name used on the command line and in the editor.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Term::Ambient => "ambient",
+            Term::Diffuse => "diffuse",
+            Term::Specular => "specular",
+            Term::Shadows => "shadows",
+            Term::Reflection => "reflection",
+        }
+    }
+}
+
+impl fmt::Display for Term {
+    fn fmt(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Term {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        Term::ALL
+            .into_iter()
+            .find(|t| t.name().eq_ignore_ascii_case(s.trim()))
+            .ok_or_else(|| {
+                format!("unknown term \"{s}\" (expected ambient, diffuse, specular, shadows or reflection)")
+            })
+    }
+}
+
+/// Which terms are on, and which one (if any) is shown alone.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct TermSwitches {
+    /// Whether each term of [`Term::ALL`] is on.
+    pub on: [bool; 5],
+    /// A term shown alone at the primary hit; the reflected colour it shows (for
+    /// `reflection`) is still the full picture as the `on` switches have it.
+    pub solo: Option<Term>,
+}
+
+impl Default for TermSwitches {
+    fn default() -> Self {
+        Self::ALL_ON
+    }
+}
+
+impl TermSwitches {
+    /// Everything on, nothing solo: the full picture.
+    pub const ALL_ON: Self = Self {
+        on: [true; 5],
+        solo: None,
+    };
+
+    /// Whether `term` is switched on (regardless of solo).
+    #[must_use]
+    pub fn is_on(&self, term: Term) -> bool {
+        self.on[term as usize]
+    }
+
+    /// Switches `term` on or off.
+    pub fn set(&mut self, term: Term, on: bool) {
+        self.on[term as usize] = on;
+    }
+
+    /// The same switches with `term` shown alone.
+    #[must_use]
+    pub fn with_solo(mut self, term: Option<Term>) -> Self {
+        self.solo = term;
+        self
+    }
+
+    /// What to compute at the primary hit.
+    #[must_use]
+    pub fn primary(&self) -> ActiveTerms {
+        let mut active = self.secondary();
+        if let Some(solo) = self.solo {
+            let shadows = active.shadows;
+            active = ActiveTerms {
+                ambient: solo == Term::Ambient,
+                diffuse: solo == Term::Diffuse,
+                specular: solo == Term::Specular,
+                shadows,
+                reflection: solo == Term::Reflection,
+                background: solo == Term::Ambient,
+            };
+        }
+        active
+    }
+
+    /// What to compute at the hits of reflected rays: the `on` switches, no solo.
+    #[must_use]
+    pub fn secondary(&self) -> ActiveTerms {
+        ActiveTerms {
+            ambient: self.is_on(Term::Ambient),
+            diffuse: self.is_on(Term::Diffuse),
+            specular: self.is_on(Term::Specular),
+            shadows: self.is_on(Term::Shadows),
+            reflection: self.is_on(Term::Reflection),
+            background: true,
+        }
+    }
+}
+
+/// The terms one level of the shader computes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ActiveTerms {
+    /// Add ka * ambient.
+    pub ambient: bool,
+    /// Add the diffuse term.
+    pub diffuse: bool,
+    /// Add the specular term.
+    pub specular: bool,
+    /// Cast shadow rays (otherwise every light is visible).
+    pub shadows: bool,
+    /// Add km * colour(reflected ray).
+    pub reflection: bool,
+    /// Rays that miss show the background.
+    pub background: bool,
+}
+
+/// What the image shows.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum View {
+    /// The lit picture, with the term switches applied.
+    #[default]
+    Beauty,
+    /// The shading normal (facing the ray) as colour: n * 0.5 + 0.5.
+    Normal,
+    /// Distance from the eye: 1 / (1 + t / view distance), white near, black far.
+    Depth,
+    /// A distinct flat colour per object.
+    ObjectId,
+    /// Fraction of the lights reaching each point that are not shadowed.
+    ShadowMask,
+}
+
+impl View {
+    /// All views, in menu order.
+    pub const ALL: [View; 5] = [
+        View::Beauty,
+        View::Normal,
+        View::Depth,
+        View::ObjectId,
+        View::ShadowMask,
+    ];
+
+    /// The name used on the command line.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            View::Beauty => "beauty",
+            View::Normal => "normal",
+            View::Depth => "depth",
+            View::ObjectId => "object-id",
+            View::ShadowMask => "shadow-mask",
+        }
+    }
+}
+
+impl fmt::Display for View {
+    fn fmt(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for View {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        View::ALL
+            .into_iter()
+            .find(|v| v.name().eq_ignore_ascii_case(s.trim()))
+            .ok_or_else(|| {
+                format!("unknown view \"{s}\" (expected beauty, normal, depth, object-id or shadow-mask)")
+            })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn solo_keeps_the_shadow_switch_and_shows_background_only_for_ambient() {
+        let mut switches = TermSwitches::ALL_ON.with_solo(Some(Term::Diffuse));
+        switches.set(Term::Shadows, false);
+        let p = switches.primary();
+        assert!(p.diffuse && !p.ambient && !p.specular && !p.reflection && !p.shadows);
+        assert!(!p.background);
+        assert!(switches.with_solo(Some(Term::Ambient)).primary().background);
+        assert!(switches.secondary().ambient && switches.secondary().background);
+    }
+
+    #[test]
+    fn names_parse_back() {
+        for t in Term::ALL {
+            assert_eq!(t.name().parse::<Term>().unwrap(), t);
+        }
+        for v in View::ALL {
+            assert_eq!(v.name().parse::<View>().unwrap(), v);
+        }
+        assert!("glow".parse::<Term>().is_err());
+    }
+}

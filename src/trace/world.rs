@@ -1,0 +1,201 @@
+//! The render-ready world: a [`Scene`] compiled once into what the tracer needs per ray
+//! (matrices and their inverses, world bounds, materials by index, lights in unit form).
+
+use glam::{DAffine3, DMat3, DVec3};
+
+use super::bounds::Aabb;
+use super::lights::WorldLight;
+use super::ray::Ray;
+use super::shapes::{self, ShapeHit, gamma};
+use crate::scene::{Light, Material, Scene, SceneError, Shape, validate};
+
+/// One object, placed and ready to intersect.
+#[derive(Clone, Debug)]
+pub struct WorldObject {
+    /// Its name in the scene, for the inspector and errors.
+    pub name: String,
+    /// Which unit shape.
+    pub shape: Shape,
+    /// Object-to-world transform.
+    pub world_from_object: DAffine3,
+    /// World-to-object transform.
+    pub object_from_world: DAffine3,
+    /// Takes object-space normals to world space: the inverse transpose of the 3x3 part.
+    pub normal_from_object: DMat3,
+    /// World-space bounds, slightly padded.
+    pub bounds: Aabb,
+    /// Index into [`World::materials`].
+    pub material: usize,
+    /// Whether the exact test is cheap enough that a bounds test first does not pay.
+    skip_bounds: bool,
+}
+
+/// A point on a surface where a ray hit, in world space.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SurfacePoint {
+    /// Index of the object hit.
+    pub object: usize,
+    /// Ray parameter of the hit.
+    pub t: f64,
+    /// The hit point.
+    pub p: DVec3,
+    /// Unit outward normal of the surface.
+    pub n_outward: DVec3,
+    /// Unit normal turned to face the incoming ray (the shading normal).
+    pub n: DVec3,
+    /// Absolute bound on each component of `p`'s distance from the exact surface,
+    /// including the rounding of taking a spawned ray back to object space.
+    pub p_error: DVec3,
+}
+
+/// The compiled scene.
+#[derive(Clone, Debug)]
+pub struct World {
+    /// Objects in scene order (their index is the object id).
+    pub objects: Vec<WorldObject>,
+    /// Materials, indexed by [`WorldObject::material`].
+    pub materials: Vec<Material>,
+    /// Names of `materials`, same order.
+    pub material_names: Vec<String>,
+    /// Non-ambient lights in scene order.
+    pub lights: Vec<WorldLight>,
+    /// Index in the scene's light list of each entry of `lights`.
+    pub light_scene_index: Vec<usize>,
+    /// Sum of all ambient lights' strengths.
+    pub ambient: DVec3,
+    /// Colour of rays that hit nothing.
+    pub background: DVec3,
+    /// Maximum number of mirror bounces.
+    pub max_depth: u32,
+    /// The scene's camera (the render size may differ from the scene's).
+    pub camera: crate::scene::Camera,
+    /// A length typical of the scene: the camera's distance to its target.
+    pub view_distance: f64,
+}
+
+impl World {
+    /// Validates and compiles a scene.
+    ///
+    /// # Errors
+    /// The scene's first validation problem.
+    pub fn new(scene: &Scene) -> Result<Self, SceneError> {
+        validate(scene)?;
+        let material_names: Vec<String> = scene.materials.keys().cloned().collect();
+        let materials = scene.materials.values().cloned().collect();
+        let objects = scene
+            .objects
+            .iter()
+            .map(|object| {
+                let world_from_object = object.transform.world_from_object();
+                let material = material_names
+                    .binary_search(&object.material)
+                    .expect("validated: every material exists");
+                WorldObject {
+                    name: object.name.clone(),
+                    shape: object.shape,
+                    world_from_object,
+                    object_from_world: world_from_object.inverse(),
+                    normal_from_object: world_from_object.matrix3.inverse().transpose(),
+                    bounds: shapes::object_bounds(object.shape).transformed(&world_from_object),
+                    material,
+                    skip_bounds: object.shape == Shape::Sphere,
+                }
+            })
+            .collect();
+        let mut lights = Vec::new();
+        let mut light_scene_index = Vec::new();
+        let mut ambient = DVec3::ZERO;
+        for (index, light) in scene.lights.iter().enumerate() {
+            match light {
+                Light::Ambient { .. } => ambient += light.strength(),
+                other => {
+                    lights.push(WorldLight::new(other));
+                    light_scene_index.push(index);
+                }
+            }
+        }
+        Ok(Self {
+            objects,
+            materials,
+            material_names,
+            lights,
+            light_scene_index,
+            ambient,
+            background: scene.render.background,
+            max_depth: scene.render.max_depth,
+            camera: scene.camera.clone(),
+            view_distance: (scene.camera.look_at - scene.camera.position).length(),
+        })
+    }
+
+    /// The closest hit along a world ray with `t` in (0, t_max).
+    #[must_use]
+    pub fn intersect(&self, ray: &Ray, t_max: f64) -> Option<SurfacePoint> {
+        let inv_dir = ray.dir.recip();
+        let mut closest: Option<(usize, ShapeHit)> = None;
+        let mut t_limit = t_max;
+        for (index, object) in self.objects.iter().enumerate() {
+            if !object.skip_bounds && !object.bounds.hit_by(ray, inv_dir, t_limit) {
+                continue;
+            }
+            let ray_in_object = ray.transformed(&object.object_from_world);
+            if let Some(hit) = shapes::intersect(object.shape, &ray_in_object, t_limit) {
+                t_limit = hit.t;
+                closest = Some((index, hit));
+            }
+        }
+        closest.map(|(index, hit)| self.surface_point(index, ray, &hit))
+    }
+
+    /// The first object found between the ray's origin and `t_max`, if any.
+    #[must_use]
+    pub fn occluder(&self, ray: &Ray, t_max: f64) -> Option<usize> {
+        let inv_dir = ray.dir.recip();
+        self.objects.iter().position(|object| {
+            (object.skip_bounds || object.bounds.hit_by(ray, inv_dir, t_max))
+                && shapes::occluded(
+                    object.shape,
+                    &ray.transformed(&object.object_from_world),
+                    t_max,
+                )
+        })
+    }
+
+    /// World-space details of an object-space hit.
+    fn surface_point(&self, index: usize, ray: &Ray, hit: &ShapeHit) -> SurfacePoint {
+        let object = &self.objects[index];
+        let m = &object.world_from_object;
+        let p = m.transform_point3(hit.p);
+        let n_outward = (object.normal_from_object * hit.n).normalize();
+        let n = if n_outward.dot(ray.dir) > 0.0 {
+            -n_outward
+        } else {
+            n_outward
+        };
+        SurfacePoint {
+            object: index,
+            t: hit.t,
+            p,
+            n_outward,
+            n,
+            p_error: world_error(object, hit, p),
+        }
+    }
+}
+
+/// Bound on the world hit point's distance from the surface: the object-space error
+/// carried through the matrix, the rounding of the transform itself, and the rounding
+/// a spawned ray suffers on its way back to object space (mapped to world units).
+fn world_error(object: &WorldObject, hit: &ShapeHit, p_world: DVec3) -> DVec3 {
+    let m = abs_mat(&object.world_from_object.matrix3);
+    let inv = abs_mat(&object.object_from_world.matrix3);
+    let carried = m * hit.p_error;
+    let forward = gamma(3) * (m * hit.p.abs() + object.world_from_object.translation.abs());
+    let back_in_object =
+        gamma(3) * (inv * p_world.abs() + object.object_from_world.translation.abs());
+    carried + forward + m * back_in_object
+}
+
+fn abs_mat(m: &DMat3) -> DMat3 {
+    DMat3::from_cols(m.x_axis.abs(), m.y_axis.abs(), m.z_axis.abs())
+}
