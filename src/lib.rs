@@ -8,3 +8,5 @@
 pub mod cli;
 pub mod scene;
 pub mod trace;
+#[cfg(feature = "editor")]
+pub mod ui;

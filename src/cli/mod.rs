@@ -1,6 +1,7 @@
 //! The command line: `raylab [SCENE.ron]` starts the editor, `raylab render` renders
 //! headless. `main.rs` only calls [`run`].
 
+mod import;
 mod render;
 
 use std::path::PathBuf;
@@ -8,6 +9,7 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
+pub use import::ImportArgs;
 pub use render::RenderArgs;
 
 /// raylab: a Whitted-style ray tracer and scene editor.
@@ -26,6 +28,8 @@ pub struct Cli {
 pub enum Command {
     /// Render a scene to a PNG file.
     Render(RenderArgs),
+    /// Import a legacy COSC342 text scene as a RON scene.
+    Import(ImportArgs),
 }
 
 /// Parses the command line and runs it. Errors are printed to stderr with a non-zero exit.
@@ -34,6 +38,7 @@ pub fn run() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Some(Command::Render(args)) => render::run(&args),
+        Some(Command::Import(args)) => import::run(&args),
         None => start_editor(cli.scene),
     };
     match result {
@@ -45,9 +50,12 @@ pub fn run() -> ExitCode {
     }
 }
 
+#[cfg(feature = "editor")]
+fn start_editor(scene: Option<PathBuf>) -> Result<(), String> {
+    crate::ui::run(scene)
+}
+
+#[cfg(not(feature = "editor"))]
 fn start_editor(_scene: Option<PathBuf>) -> Result<(), String> {
-    use clap::CommandFactory;
-    // The editor lands in a later change; until then show what the binary can do.
-    Cli::command().print_help().map_err(|e| e.to_string())?;
-    Ok(())
+    Err("this raylab was built without the editor (feature `editor`); use `raylab render`".to_owned())
 }

@@ -5,6 +5,7 @@
 
 mod error;
 mod file;
+pub mod legacy;
 mod model;
 mod transform;
 mod validate;
