@@ -57,5 +57,8 @@ fn start_editor(scene: Option<PathBuf>) -> Result<(), String> {
 
 #[cfg(not(feature = "editor"))]
 fn start_editor(_scene: Option<PathBuf>) -> Result<(), String> {
-    Err("this raylab was built without the editor (feature `editor`); use `raylab render`".to_owned())
+    Err(
+        "this raylab was built without the editor (feature `editor`); use `raylab render`"
+            .to_owned(),
+    )
 }

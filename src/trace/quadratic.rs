@@ -69,11 +69,9 @@ mod tests {
 
     #[test]
     fn difference_of_products_is_exact_where_naive_cancels() {
-        let x = 1.0 + f64::EPSILON;
-        // x*x - 1 exactly is 2 eps + eps^2.
-        let naive = x * x - 1.0;
-        let exact = 2.0 * f64::EPSILON + f64::EPSILON * f64::EPSILON;
-        assert_ne!(naive, exact);
-        assert_eq!(difference_of_products(x, x, 1.0, 1.0), exact);
+        let (a, b) = (1.0 + 2f64.powi(-30), 1.0 - 2f64.powi(-30));
+        // a * b = 1 - 2^-60 exactly, which rounds to 1: the naive difference is 0.
+        assert_eq!(a * b - 1.0, 0.0);
+        assert_eq!(difference_of_products(a, b, 1.0, 1.0), -(2f64.powi(-60)));
     }
 }

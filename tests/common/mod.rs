@@ -1,0 +1,85 @@
+//! Helpers shared by the integration tests: small scenes built in code, and single rays.
+#![allow(dead_code)]
+
+use std::collections::BTreeMap;
+
+use glam::DVec3;
+use raylab::scene::{
+    Camera, Light, Material, Object, RenderSettings, Scene, Shape, Transform, Trs,
+};
+use raylab::trace::{NoRecorder, Ray, RayCounts, TermSwitches, Tracer, View, World};
+
+/// A scene with one material "m", no objects, no lights and a camera on +z.
+pub fn bare_scene(material: Material) -> Scene {
+    Scene {
+        format: 1,
+        camera: Camera {
+            position: DVec3::new(0.0, 0.0, 5.0),
+            look_at: DVec3::ZERO,
+            up: DVec3::Y,
+            fov_deg: 40.0,
+            width: 33,
+            height: 33,
+        },
+        render: RenderSettings {
+            max_depth: 5,
+            background: DVec3::ZERO,
+            samples_per_pixel: 1,
+        },
+        materials: BTreeMap::from([("m".to_owned(), material)]),
+        objects: Vec::new(),
+        lights: Vec::new(),
+    }
+}
+
+/// An object of `shape` with material "m".
+pub fn object(shape: Shape, translate: DVec3, rotate_deg: DVec3, scale: DVec3) -> Object {
+    Object {
+        name: format!("{} test", shape.name()),
+        shape,
+        transform: Transform::Trs(Trs {
+            translate,
+            rotate_deg,
+            scale,
+        }),
+        material: "m".to_owned(),
+    }
+}
+
+/// A floor: the unit plane turned to face +y, scaled by `half_size`, at height `y`.
+pub fn floor(y: f64, half_size: f64) -> Object {
+    object(
+        Shape::Plane,
+        DVec3::new(0.0, y, 0.0),
+        DVec3::new(-90.0, 0.0, 0.0),
+        DVec3::new(half_size, half_size, 1.0),
+    )
+}
+
+/// A point light.
+pub fn point_light(position: DVec3, intensity: f64) -> Light {
+    Light::Point {
+        position,
+        colour: DVec3::ONE,
+        intensity,
+    }
+}
+
+/// The colour of one ray through a scene, with the given switches.
+pub fn trace(scene: &Scene, ray: Ray, switches: TermSwitches) -> DVec3 {
+    let world = World::new(scene).expect("valid test scene");
+    Tracer::new(&world, switches, View::Beauty).trace_primary(
+        &ray,
+        &mut RayCounts::default(),
+        &mut NoRecorder,
+    )
+}
+
+/// Asserts two colours agree to a relative 1e-12.
+pub fn assert_colour(actual: DVec3, expected: DVec3) {
+    let scale = expected.abs().max_element().max(1e-300);
+    assert!(
+        (actual - expected).abs().max_element() <= 1e-12 * scale.max(1.0),
+        "colour {actual} expected {expected}"
+    );
+}
