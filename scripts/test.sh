@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# The whole test suite, from a fresh clone on a fresh Debian machine with the Rust
+# toolchain: installs the system packages the tests need, then checks formatting,
+# lints and runs every test.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+# A headless X server for the one test that opens a real window.
+if ! command -v xvfb-run >/dev/null 2>&1 || ! command -v xauth >/dev/null 2>&1; then
+    sudo_cmd=""
+    if [ "$(id -u)" != 0 ]; then sudo_cmd="sudo"; fi
+    echo "installing xvfb and xauth (for the editor window test)"
+    $sudo_cmd apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq xvfb xauth >/dev/null
+fi
+
+cargo fmt --check
+cargo clippy --all-targets --locked -- -D warnings
+cargo test --all-targets --locked
