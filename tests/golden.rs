@@ -25,21 +25,28 @@ fn render_small(scene_name: &str) -> image::RgbImage {
     let world = World::new(&scene).unwrap();
     let mut options = RenderOptions::from_scene(&scene);
     options.width = GOLDEN_WIDTH;
-    options.height =
-        (f64::from(GOLDEN_WIDTH) * f64::from(scene.camera.height) / f64::from(scene.camera.width)).round() as u32;
+    options.height = (f64::from(GOLDEN_WIDTH) * f64::from(scene.camera.height)
+        / f64::from(scene.camera.width))
+    .round() as u32;
     options.samples_per_pixel = GOLDEN_SPP;
     let (picture, _) = render(&world, &options, &RenderProgress::default()).unwrap();
     image::RgbImage::from_raw(
         picture.width,
         picture.height,
-        picture.to_rgba8().chunks(4).flat_map(|p| [p[0], p[1], p[2]]).collect(),
+        picture
+            .to_rgba8()
+            .chunks(4)
+            .flat_map(|p| [p[0], p[1], p[2]])
+            .collect(),
     )
     .unwrap()
 }
 
 fn check(scene_name: &str) {
     let actual = render_small(scene_name);
-    let path = root().join("tests/golden").join(format!("{scene_name}.png"));
+    let path = root()
+        .join("tests/golden")
+        .join(format!("{scene_name}.png"));
     if std::env::var_os("RAYLAB_BLESS").is_some() {
         actual.save(&path).unwrap();
         return;
@@ -51,7 +58,11 @@ fn check(scene_name: &str) {
     let outliers = actual
         .pixels()
         .zip(expected.pixels())
-        .filter(|(a, b)| a.0.iter().zip(b.0.iter()).any(|(x, y)| x.abs_diff(*y) > CHANNEL_TOLERANCE))
+        .filter(|(a, b)| {
+            a.0.iter()
+                .zip(b.0.iter())
+                .any(|(x, y)| x.abs_diff(*y) > CHANNEL_TOLERANCE)
+        })
         .count();
     let allowed = (OUTLIER_FRACTION * f64::from(actual.width() * actual.height())).ceil() as usize;
     if outliers > allowed {
@@ -100,7 +111,10 @@ fn every_example_scene_has_a_golden_image() {
         let path = entry.unwrap().path();
         let stem = path.file_stem().unwrap().to_string_lossy().into_owned();
         assert!(
-            root().join("tests/golden").join(format!("{stem}.png")).exists(),
+            root()
+                .join("tests/golden")
+                .join(format!("{stem}.png"))
+                .exists(),
             "scenes/{stem}.ron has no golden image"
         );
     }

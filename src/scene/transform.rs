@@ -55,13 +55,34 @@ impl Trs {
     /// The object-to-world matrix.
     #[must_use]
     pub fn world_from_object(&self) -> DAffine3 {
-        let r = self.rotate_deg * (std::f64::consts::PI / 180.0);
-        let rotation =
-            DMat3::from_rotation_z(r.z) * DMat3::from_rotation_y(r.y) * DMat3::from_rotation_x(r.x);
+        let (sx, cx) = sin_cos_deg(self.rotate_deg.x);
+        let (sy, cy) = sin_cos_deg(self.rotate_deg.y);
+        let (sz, cz) = sin_cos_deg(self.rotate_deg.z);
+        let rx = DMat3::from_cols(DVec3::X, DVec3::new(0.0, cx, sx), DVec3::new(0.0, -sx, cx));
+        let ry = DMat3::from_cols(DVec3::new(cy, 0.0, -sy), DVec3::Y, DVec3::new(sy, 0.0, cy));
+        let rz = DMat3::from_cols(DVec3::new(cz, sz, 0.0), DVec3::new(-sz, cz, 0.0), DVec3::Z);
+        let rotation = rz * ry * rx;
         DAffine3 {
             matrix3: rotation * DMat3::from_diagonal(self.scale),
             translation: self.translate,
         }
+    }
+}
+
+/// Sine and cosine of an angle in degrees, exact at multiples of 90 degrees so that a
+/// floor turned by -90 has a normal of exactly +y.
+#[must_use]
+pub fn sin_cos_deg(degrees: f64) -> (f64, f64) {
+    let turned = degrees.rem_euclid(360.0);
+    if turned % 90.0 == 0.0 {
+        match (turned / 90.0) as u32 {
+            0 => (0.0, 1.0),
+            1 => (1.0, 0.0),
+            2 => (0.0, -1.0),
+            _ => (-1.0, 0.0),
+        }
+    } else {
+        turned.to_radians().sin_cos()
     }
 }
 
@@ -314,6 +335,36 @@ mod tests {
         // y axis: Rx(90) takes +y to +z, Ry(90) takes +z to +x.
         let q = trs.world_from_object().transform_vector3(DVec3::Y);
         assert!((q - DVec3::X).length() < 1e-12, "{q}");
+    }
+
+    #[test]
+    fn quarter_turns_are_exact_and_agree_with_glam() {
+        for degrees in [-270.0, -90.0, 0.0, 90.0, 180.0, 450.0] {
+            let (s, c) = sin_cos_deg(degrees);
+            let r = f64::to_radians(degrees);
+            assert!((s - r.sin()).abs() < 1e-15 && (c - r.cos()).abs() < 1e-15);
+            assert!(s.fract() == 0.0 && c.fract() == 0.0);
+        }
+        let trs = Trs {
+            rotate_deg: DVec3::new(31.0, -47.0, 112.0),
+            ..Trs::default()
+        };
+        let r = trs.rotate_deg * (std::f64::consts::PI / 180.0);
+        let glam_rotation =
+            DMat3::from_rotation_z(r.z) * DMat3::from_rotation_y(r.y) * DMat3::from_rotation_x(r.x);
+        assert!(
+            trs.world_from_object()
+                .matrix3
+                .abs_diff_eq(glam_rotation, 1e-15)
+        );
+        let floor = Trs {
+            rotate_deg: DVec3::new(-90.0, 0.0, 0.0),
+            ..Trs::default()
+        };
+        assert_eq!(
+            floor.world_from_object().transform_vector3(DVec3::Z),
+            DVec3::Y
+        );
     }
 
     #[test]

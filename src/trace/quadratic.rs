@@ -26,8 +26,13 @@ pub fn solve_quadratic(a: f64, h: f64, c: f64, disc: f64) -> Option<[f64; 2]> {
         // h == 0 and disc == 0: a double root at t = 0.
         return Some([0.0, 0.0]);
     }
-    let (t0, t1) = (q / a, c / q);
-    Some(if t0 <= t1 { [t0, t1] } else { [t1, t0] })
+    Some(sorted(q / a, c / q))
+}
+
+/// Two roots, smaller first.
+#[must_use]
+pub fn sorted(t0: f64, t1: f64) -> [f64; 2] {
+    if t0 <= t1 { [t0, t1] } else { [t1, t0] }
 }
 
 /// `a * b - c * d` with one rounding error, using fused multiply-add (Kahan's algorithm).

@@ -5,7 +5,7 @@ use glam::DVec3;
 
 use super::{ShapeHit, disc_cap, gamma, in_range, nearer};
 use crate::trace::bounds::Aabb;
-use crate::trace::quadratic::{difference_of_products, solve_quadratic};
+use crate::trace::quadratic::{difference_of_products, solve_quadratic, sorted};
 use crate::trace::ray::Ray;
 
 /// Object-space bounds.
@@ -23,7 +23,17 @@ fn side_roots(ray: &Ray) -> Option<[f64; 2]> {
     let a = d.x.mul_add(d.x, difference_of_products(d.y, d.y, d.z, d.z));
     let h = o.x.mul_add(d.x, difference_of_products(o.y, d.y, o.z, d.z));
     let c = o.x.mul_add(o.x, difference_of_products(o.y, o.y, o.z, o.z));
-    let disc = difference_of_products(h, h, a, c);
+    let magnitude = o.x * o.x + o.y * o.y + o.z * o.z;
+    if c.abs() <= gamma(4) * magnitude && magnitude > 0.0 {
+        // The origin is on the cone to within rounding: roots t = 0 and -2h/a.
+        return (a != 0.0).then(|| sorted(0.0, -2.0 * h / a));
+    }
+    let mut disc = difference_of_products(h, h, a, c);
+    // Every ray through the apex meets the cone in a double root there, where rounding
+    // decides the sign of the discriminant; within its error bound it is zero.
+    if disc < 0.0 && -disc <= gamma(8) * (h * h + (a * c).abs()) {
+        disc = 0.0;
+    }
     solve_quadratic(a, h, c, disc)
 }
 
@@ -39,7 +49,7 @@ fn side_hit(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
     let roots = side_roots(ray)?;
     let t = roots.into_iter().find(|&t| {
         let z = ray.at(t).z;
-        in_range(t, t_max) && (0.0..=1.0).contains(&z)
+        in_range(ray, t, t_max) && (0.0..=1.0).contains(&z)
     })?;
     // Re-project onto the line r = z in the point's half-plane: the nearest point of the
     // cone's generator is at r = z = (r + z) / 2.

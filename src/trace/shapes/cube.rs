@@ -55,9 +55,9 @@ fn span(ray: &Ray) -> Option<Span> {
 /// The closest hit with `t` in (0, t_max): the entry face, or the exit face from inside.
 pub fn intersect(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
     let s = span(ray)?;
-    let (t, axis) = if in_range(s.t_near, t_max) {
+    let (t, axis) = if in_range(ray, s.t_near, t_max) {
         (s.t_near, s.near_axis)
-    } else if in_range(s.t_far, t_max) {
+    } else if in_range(ray, s.t_far, t_max) {
         (s.t_far, s.far_axis)
     } else {
         return None;
@@ -75,7 +75,7 @@ pub fn intersect(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
 
 /// Whether any hit has `t` in (0, t_max).
 pub fn occluded(ray: &Ray, t_max: f64) -> bool {
-    span(ray).is_some_and(|s| in_range(s.t_near, t_max) || in_range(s.t_far, t_max))
+    span(ray).is_some_and(|s| in_range(ray, s.t_near, t_max) || in_range(ray, s.t_far, t_max))
 }
 
 #[cfg(test)]

@@ -4,7 +4,7 @@ use glam::{DVec2, DVec3};
 
 use super::{ShapeHit, disc_cap, gamma, in_range, nearer};
 use crate::trace::bounds::Aabb;
-use crate::trace::quadratic::solve_quadratic;
+use crate::trace::quadratic::{solve_quadratic, sorted};
 use crate::trace::ray::Ray;
 
 /// Object-space bounds.
@@ -24,6 +24,10 @@ fn side_roots(ray: &Ray) -> Option<[f64; 2]> {
     }
     let h = o.dot(d);
     let c = o.length_squared() - 1.0;
+    if c.abs() <= gamma(3) * (c + 1.0) {
+        // The origin is on the side to within rounding: roots t = 0 and -2h/a.
+        return Some(sorted(0.0, -2.0 * h / a));
+    }
     let closest = o - (h / a) * d;
     let disc = a * (1.0 - closest.length_squared());
     solve_quadratic(a, h, c, disc)
@@ -34,7 +38,7 @@ fn side_hit(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
     let roots = side_roots(ray)?;
     let t = roots
         .into_iter()
-        .find(|&t| in_range(t, t_max) && ray.at(t).z.abs() <= 1.0)?;
+        .find(|&t| in_range(ray, t, t_max) && ray.at(t).z.abs() <= 1.0)?;
     // Re-project radially onto the unit circle; z is unchanged (and within [-1, 1]).
     let p = ray.at(t);
     let r = (p.x * p.x + p.y * p.y).sqrt();

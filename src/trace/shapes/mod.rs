@@ -38,10 +38,16 @@ pub fn gamma(n: u32) -> f64 {
     nu / (1.0 - nu)
 }
 
-/// Whether `t` lies in the open interval (0, t_max).
+/// Whether `t` lies in (0, t_max) and the hit is farther from the origin than the
+/// rounding error of the origin itself: a ray that starts on a surface does not hit that
+/// surface at t ~ 0. (Spawned rays start well outside this distance; see `spawn`.)
 #[inline]
-fn in_range(t: f64, t_max: f64) -> bool {
-    t > 0.0 && t < t_max
+fn in_range(ray: &Ray, t: f64, t_max: f64) -> bool {
+    if !(t > 0.0 && t < t_max) {
+        return false;
+    }
+    let origin_rounding = gamma(8) * ray.origin.abs().max_element().max(1.0);
+    t * t * ray.dir.length_squared() > origin_rounding * origin_rounding
 }
 
 /// The object-space bounding box of a unit shape.
@@ -98,7 +104,7 @@ fn disc_cap(ray: &Ray, t_max: f64, z_cap: f64, normal_z: f64) -> Option<ShapeHit
         return None;
     }
     let t = (z_cap - ray.origin.z) / ray.dir.z;
-    if !in_range(t, t_max) {
+    if !in_range(ray, t, t_max) {
         return None;
     }
     let p = ray.at(t);

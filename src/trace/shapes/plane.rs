@@ -17,7 +17,7 @@ fn hit_t(ray: &Ray, t_max: f64) -> Option<f64> {
         return None; // parallel to the plane: no isolated hit
     }
     let t = -ray.origin.z / ray.dir.z;
-    if !in_range(t, t_max) {
+    if !in_range(ray, t, t_max) {
         return None;
     }
     let p = ray.at(t);

@@ -4,7 +4,7 @@ use glam::DVec3;
 
 use super::{ShapeHit, gamma, in_range};
 use crate::trace::bounds::Aabb;
-use crate::trace::quadratic::solve_quadratic;
+use crate::trace::quadratic::{solve_quadratic, sorted};
 use crate::trace::ray::Ray;
 
 /// Object-space bounds.
@@ -22,6 +22,11 @@ fn roots(ray: &Ray) -> Option<[f64; 2]> {
     let a = d.length_squared();
     let h = o.dot(d);
     let c = o.length_squared() - 1.0;
+    if c.abs() <= gamma(3) * (c + 1.0) {
+        // The origin is on the sphere to within rounding: one root is t = 0 exactly,
+        // the other -2h/a (ahead only when the ray points inward).
+        return Some(sorted(0.0, -2.0 * h / a));
+    }
     let closest = o - (h / a) * d;
     let disc = a * (1.0 - closest.length_squared());
     solve_quadratic(a, h, c, disc)
@@ -30,9 +35,9 @@ fn roots(ray: &Ray) -> Option<[f64; 2]> {
 /// The closest hit with `t` in (0, t_max).
 pub fn intersect(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
     let [t0, t1] = roots(ray)?;
-    let t = if in_range(t0, t_max) {
+    let t = if in_range(ray, t0, t_max) {
         t0
-    } else if in_range(t1, t_max) {
+    } else if in_range(ray, t1, t_max) {
         t1
     } else {
         return None;
@@ -50,7 +55,7 @@ pub fn intersect(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
 
 /// Whether any hit has `t` in (0, t_max).
 pub fn occluded(ray: &Ray, t_max: f64) -> bool {
-    roots(ray).is_some_and(|[t0, t1]| in_range(t0, t_max) || in_range(t1, t_max))
+    roots(ray).is_some_and(|[t0, t1]| in_range(ray, t0, t_max) || in_range(ray, t1, t_max))
 }
 
 #[cfg(test)]
