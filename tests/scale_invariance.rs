@@ -32,7 +32,16 @@ fn scaled_and_moved(scene: &Scene, scale: f64, offset: DVec3) -> Scene {
     }
     for light in &mut out.lights {
         match light {
-            Light::Point { position, intensity, .. } | Light::Spot { position, intensity, .. } => {
+            Light::Point {
+                position,
+                intensity,
+                ..
+            }
+            | Light::Spot {
+                position,
+                intensity,
+                ..
+            } => {
                 *position = place(*position);
                 *intensity *= scale * scale;
             }
@@ -48,11 +57,15 @@ fn render_rgb(scene: &Scene) -> Vec<u8> {
     options.width = 200;
     options.height = 150;
     options.samples_per_pixel = 1;
-    render(&world, &options, &RenderProgress::default()).unwrap().0.to_rgba8()
+    render(&world, &options, &RenderProgress::default())
+        .unwrap()
+        .0
+        .to_rgba8()
 }
 
 fn assert_same_picture(label: &str, scale: f64, offset: DVec3) {
-    let original = load_scene(&Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/default.ron")).unwrap();
+    let original =
+        load_scene(&Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/default.ron")).unwrap();
     let reference = render_rgb(&original);
     let changed = render_rgb(&scaled_and_moved(&original, scale, offset));
     let pixels = reference.len() / 4;
@@ -62,7 +75,11 @@ fn assert_same_picture(label: &str, scale: f64, offset: DVec3) {
         .filter(|(a, b)| a.iter().zip(b.iter()).all(|(x, y)| x.abs_diff(*y) <= 2))
         .count();
     let fraction = within as f64 / pixels as f64;
-    assert!(fraction >= 0.995, "{label}: only {:.3}% of pixels within 2/255", fraction * 100.0);
+    assert!(
+        fraction >= 0.995,
+        "{label}: only {:.3}% of pixels within 2/255",
+        fraction * 100.0
+    );
 }
 
 #[test]

@@ -1,6 +1,7 @@
 //! The command line: `raylab [SCENE.ron]` starts the editor, `raylab render` renders
 //! headless. `main.rs` only calls [`run`].
 
+mod bench;
 mod import;
 mod render;
 
@@ -9,6 +10,7 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
+pub use bench::BenchArgs;
 pub use import::ImportArgs;
 pub use render::RenderArgs;
 
@@ -30,6 +32,8 @@ pub enum Command {
     Render(RenderArgs),
     /// Import a legacy COSC342 text scene as a RON scene.
     Import(ImportArgs),
+    /// Measure throughput, preview latency and speed against error.
+    Bench(BenchArgs),
 }
 
 /// Parses the command line and runs it. Errors are printed to stderr with a non-zero exit.
@@ -39,6 +43,7 @@ pub fn run() -> ExitCode {
     let result = match cli.command {
         Some(Command::Render(args)) => render::run(&args),
         Some(Command::Import(args)) => import::run(&args),
+        Some(Command::Bench(args)) => bench::run(&args),
         None => start_editor(cli.scene),
     };
     match result {

@@ -1,6 +1,7 @@
 //! The tracer: pure functions from a compiled [`World`] and a ray to a colour, and from
 //! a world to an image. No threads of its own beyond rayon's, no I/O, no UI.
 
+pub mod adaptive;
 pub mod bounds;
 pub mod camera;
 pub mod image;
@@ -15,6 +16,7 @@ pub mod spawn;
 pub mod terms;
 pub mod world;
 
+pub use adaptive::{AdaptiveOptions, AdaptiveRender, render_adaptive};
 pub use camera::PinholeCamera;
 pub use image::Image;
 pub use ray::Ray;

@@ -211,18 +211,30 @@ fn render_tile(
             let mut sum = DVec3::ZERO;
             for index in samples.clone() {
                 let offset = sample_in_pixel(px, py, index, options.samples_per_pixel);
-                let point = DVec2::new(f64::from(px), f64::from(py)) + offset;
-                let colour =
-                    tracer.trace_primary(&camera.ray(point), &mut tile.rays, &mut NoRecorder);
-                // The guard: a non-finite sample would poison the pixel; count it instead.
-                if colour.is_finite() {
-                    sum += colour;
-                } else {
-                    tile.non_finite += 1;
+                match trace_sample(tracer, camera, px, py, offset, &mut tile.rays) {
+                    Some(colour) => sum += colour,
+                    None => tile.non_finite += 1,
                 }
             }
             tile.sums.push(sum);
         }
     }
     tile
+}
+
+/// One camera sample at `offset` (in [0, 1)^2) within pixel `(px, py)`. `None` when the
+/// colour came out non-finite: the guard that keeps NaN and infinity out of every pixel
+/// (the caller counts these; they should never happen).
+#[inline]
+pub fn trace_sample(
+    tracer: &Tracer,
+    camera: &PinholeCamera,
+    px: u32,
+    py: u32,
+    offset: DVec2,
+    rays: &mut RayCounts,
+) -> Option<DVec3> {
+    let point = DVec2::new(f64::from(px), f64::from(py)) + offset;
+    let colour = tracer.trace_primary(&camera.ray(point), rays, &mut NoRecorder);
+    colour.is_finite().then_some(colour)
 }

@@ -22,6 +22,20 @@ pub fn sample_in_pixel(px: u32, py: u32, index: u32, count: u32) -> DVec2 {
     (cell + jitter) / DVec2::new(f64::from(columns), f64::from(rows))
 }
 
+/// Sample `index` of an open-ended low-discrepancy sequence within pixel `(px, py)`: the
+/// R2 sequence (additive recurrence on the plastic number), shifted per pixel by a hash.
+/// Any prefix is well spread, so it suits sample counts decided on the fly.
+#[must_use]
+pub fn sample_sequence(px: u32, py: u32, index: u32) -> DVec2 {
+    const PLASTIC: f64 = 1.324_717_957_244_746;
+    let alpha = DVec2::new(1.0 / PLASTIC, 1.0 / (PLASTIC * PLASTIC));
+    let shift = DVec2::new(
+        unit_hash(px, py, u32::MAX, 0x27d4_eb2f),
+        unit_hash(px, py, u32::MAX, 0x1656_67b1),
+    );
+    (shift + alpha * f64::from(index)).fract()
+}
+
 /// A hash of the inputs mapped to [0, 1).
 fn unit_hash(x: u32, y: u32, i: u32, salt: u32) -> f64 {
     let mut h = u64::from(x) | (u64::from(y) << 32);

@@ -1,0 +1,36 @@
+//! `raylab bench`: throughput, speed against error, and the cost of double precision.
+//! Everything here calls the same tracer as the editor and the command line.
+
+pub mod convergence;
+pub mod plot;
+pub mod precision;
+pub mod throughput;
+
+use serde::Serialize;
+
+pub use convergence::{CurvePoint, convergence_curves};
+pub use precision::{PrecisionCost, precision_cost};
+pub use throughput::{SceneThroughput, scene_throughput};
+
+/// Everything one `raylab bench` run measured.
+#[derive(Clone, Debug, Serialize)]
+pub struct BenchReport {
+    /// Whether this was a `--quick` run.
+    pub quick: bool,
+    /// Worker threads rayon used.
+    pub threads: usize,
+    /// Throughput of the default scene at 1 sample per pixel, millions of rays per second.
+    pub throughput_mrays_per_s: f64,
+    /// Time of a full 800x600 frame of the default scene at 1 sample per pixel.
+    pub full_frame_1spp_ms: f64,
+    /// Edit to first coarse preview frame, through the preview worker.
+    pub first_preview_ms: Option<f64>,
+    /// Edit to first full-resolution preview frame, through the preview worker.
+    pub first_full_preview_ms: Option<f64>,
+    /// Per example scene.
+    pub scenes: Vec<SceneThroughput>,
+    /// Error against time for the default scene, per strategy.
+    pub curve: Vec<CurvePoint>,
+    /// The intersection kernel in f32 and f64.
+    pub precision: PrecisionCost,
+}

@@ -1,0 +1,74 @@
+//! Rays per second on whole frames at one sample per pixel, all cores.
+
+use std::path::Path;
+use std::time::Instant;
+
+use serde::Serialize;
+
+use crate::scene::load_scene;
+use crate::trace::{RenderOptions, RenderProgress, World, render};
+
+/// Throughput of one scene.
+#[derive(Clone, Debug, Serialize)]
+pub struct SceneThroughput {
+    /// File name of the scene.
+    pub scene: String,
+    /// Frame size.
+    pub width: u32,
+    /// Frame size.
+    pub height: u32,
+    /// Best time of the runs, milliseconds.
+    pub frame_ms: f64,
+    /// Primary rays per frame.
+    pub primary_rays: u64,
+    /// Shadow rays per frame.
+    pub shadow_rays: u64,
+    /// Mirror rays per frame.
+    pub reflection_rays: u64,
+    /// All rays per second, millions.
+    pub mrays_per_s: f64,
+}
+
+/// Renders `scene_path` at `width` x `height`, 1 sample per pixel, `runs` times and
+/// keeps the best time.
+///
+/// # Errors
+/// The scene's load error.
+pub fn scene_throughput(
+    scene_path: &Path,
+    width: u32,
+    height: u32,
+    runs: u32,
+) -> Result<SceneThroughput, String> {
+    let scene = load_scene(scene_path).map_err(|e| format!("{}: {e}", scene_path.display()))?;
+    let world = World::new(&scene).map_err(|e| e.to_string())?;
+    let options = RenderOptions {
+        width,
+        height,
+        samples_per_pixel: 1,
+        ..RenderOptions::from_scene(&scene)
+    };
+    let mut best = f64::INFINITY;
+    let mut rays = Default::default();
+    for _ in 0..runs.max(1) {
+        let started = Instant::now();
+        let (_, counts) =
+            render(&world, &options, &RenderProgress::default()).ok_or("cancelled")?;
+        best = best.min(started.elapsed().as_secs_f64());
+        rays = counts;
+    }
+    let rays: crate::trace::RayCounts = rays;
+    Ok(SceneThroughput {
+        scene: scene_path
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default(),
+        width,
+        height,
+        frame_ms: best * 1e3,
+        primary_rays: rays.primary,
+        shadow_rays: rays.shadow,
+        reflection_rays: rays.reflection,
+        mrays_per_s: rays.total() as f64 / best / 1e6,
+    })
+}

@@ -1,0 +1,159 @@
+//! `raylab bench`: the benchmark report (see docs/BENCHMARKS.md).
+
+use std::path::{Path, PathBuf};
+
+use clap::Args;
+
+use crate::bench::convergence::ConvergencePlan;
+use crate::bench::plot::plot_curve;
+use crate::bench::{BenchReport, convergence_curves, precision_cost, scene_throughput};
+use crate::scene::load_scene;
+
+/// Arguments of `raylab bench`.
+#[derive(Debug, Args)]
+pub struct BenchArgs {
+    /// A short run (well under a minute on 2 cores): fewer runs, smaller convergence images.
+    #[arg(long)]
+    pub quick: bool,
+    /// Print one JSON object instead of the tables.
+    #[arg(long)]
+    pub json: bool,
+    /// Also draw the error-against-time plot to this PNG.
+    #[arg(long)]
+    pub plot: Option<PathBuf>,
+    /// Folder of the example scenes.
+    #[arg(long, default_value = "scenes")]
+    pub scenes: PathBuf,
+}
+
+/// Runs the benchmark and prints the report.
+///
+/// # Errors
+/// A message when a scene cannot be loaded or the plot cannot be written.
+pub fn run(args: &BenchArgs) -> Result<(), String> {
+    let report = measure(args)?;
+    if let Some(path) = &args.plot {
+        let title = format!(
+            "default scene, {}: error against time",
+            if args.quick { "quick run" } else { "full run" }
+        );
+        plot_curve(&report.curve, path, &title)?;
+    }
+    if args.json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?
+        );
+    } else {
+        print_tables(&report);
+    }
+    Ok(())
+}
+
+fn example_scenes(folder: &Path) -> Result<Vec<PathBuf>, String> {
+    let mut paths: Vec<PathBuf> = std::fs::read_dir(folder)
+        .map_err(|e| format!("cannot read {}: {e}", folder.display()))?
+        .filter_map(|entry| entry.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "ron"))
+        .collect();
+    paths.sort();
+    Ok(paths)
+}
+
+fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
+    let runs = if args.quick { 2 } else { 5 };
+    let default_path = args.scenes.join("default.ron");
+    let default_scene =
+        load_scene(&default_path).map_err(|e| format!("{}: {e}", default_path.display()))?;
+    let mut scenes = Vec::new();
+    for path in example_scenes(&args.scenes)? {
+        eprintln!("throughput: {}", path.display());
+        scenes.push(scene_throughput(&path, 800, 600, runs)?);
+    }
+    let default = scenes
+        .iter()
+        .find(|s| s.scene == "default.ron")
+        .ok_or("the scenes folder has no default.ron")?
+        .clone();
+    eprintln!("speed against error: default scene");
+    let plan = if args.quick {
+        ConvergencePlan {
+            width: 200,
+            height: 150,
+            reference_spp: 256,
+            uniform_spp: vec![1, 2, 4, 8, 16],
+            adaptive_spp: vec![4, 8, 16],
+        }
+    } else {
+        ConvergencePlan {
+            width: 400,
+            height: 300,
+            reference_spp: 1024,
+            uniform_spp: vec![1, 2, 4, 8, 16, 32, 64],
+            adaptive_spp: vec![4, 8, 16, 32, 64],
+        }
+    };
+    let curve = convergence_curves(&default_scene, &plan)?;
+    eprintln!("precision: f32 and f64 kernels");
+    let precision = precision_cost(if args.quick { 200_000 } else { 1_000_000 }, runs);
+    Ok(BenchReport {
+        quick: args.quick,
+        threads: rayon::current_num_threads(),
+        throughput_mrays_per_s: default.mrays_per_s,
+        full_frame_1spp_ms: default.frame_ms,
+        first_preview_ms: None,
+        first_full_preview_ms: None,
+        scenes,
+        curve,
+        precision,
+    })
+}
+
+fn print_tables(report: &BenchReport) {
+    println!(
+        "threads: {}{}",
+        report.threads,
+        if report.quick { " (quick run)" } else { "" }
+    );
+    println!();
+    println!("| scene | size | frame (ms) | primary | shadow | reflection | Mrays/s |");
+    println!("|---|---|---|---|---|---|---|");
+    for s in &report.scenes {
+        println!(
+            "| {} | {}x{} | {:.1} | {} | {} | {} | {:.2} |",
+            s.scene,
+            s.width,
+            s.height,
+            s.frame_ms,
+            s.primary_rays,
+            s.shadow_rays,
+            s.reflection_rays,
+            s.mrays_per_s
+        );
+    }
+    println!();
+    let latency = |v: Option<f64>| v.map_or("not measured".to_owned(), |ms| format!("{ms:.1} ms"));
+    println!(
+        "edit to first coarse preview frame: {}",
+        latency(report.first_preview_ms)
+    );
+    println!(
+        "edit to first full-resolution preview frame: {}",
+        latency(report.first_full_preview_ms)
+    );
+    println!();
+    println!("| strategy | spp | time (ms) | RMSE | PSNR (dB) |");
+    println!("|---|---|---|---|---|");
+    for p in &report.curve {
+        println!(
+            "| {} | {:.3} | {:.1} | {:.5} | {:.2} |",
+            p.strategy, p.spp, p.time_ms, p.rmse, p.psnr
+        );
+    }
+    println!();
+    let p = &report.precision;
+    println!(
+        "intersection kernel, {} rays x 8 spheres: f32 {:.1} ns/ray, f64 {:.1} ns/ray, f64/f32 = {:.2}",
+        p.rays, p.f32_ns_per_ray, p.f64_ns_per_ray, p.f64_over_f32
+    );
+}
