@@ -182,7 +182,9 @@ fn check_transform(transform: &Transform) -> Result<(), SceneError> {
         Transform::Matrix(_) => {
             let m = transform.world_from_object().matrix3;
             let size = m.x_axis.length() * m.y_axis.length() * m.z_axis.length();
-            if !(m.determinant().abs() > 1e-12 * size) || size == 0.0 {
+            // Written so that a NaN determinant counts as singular too.
+            let invertible = m.determinant().abs() > 1e-12 * size;
+            if !invertible || size == 0.0 {
                 return invalid(
                     "transform matrix is singular (its 3x3 part has no inverse)".to_owned(),
                 );

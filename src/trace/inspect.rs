@@ -1,0 +1,136 @@
+//! The pixel inspector: every number behind one pixel, recorded by the tracer's own
+//! shading code through a [`Recorder`], so what it shows is what the image computed.
+
+use glam::{DVec2, DVec3};
+
+use super::camera::PinholeCamera;
+use super::ray::Ray;
+use super::render::RenderOptions;
+use super::shade::{LightRecord, RayCounts, Recorder, Tracer};
+use super::world::{SurfacePoint, World};
+
+/// What one ray of the chain (the camera ray, then each mirror bounce) met.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BounceReport {
+    /// 0 for the camera ray, then 1, 2, ... for mirror bounces.
+    pub depth: u32,
+    /// The ray.
+    pub ray: Ray,
+    /// The surface hit, or `None` for a miss.
+    pub hit: Option<SurfacePoint>,
+    /// Colour returned by a miss (background, or black where the switches hide it).
+    pub background: DVec3,
+    /// The ambient term added.
+    pub ambient: DVec3,
+    /// Each light that can reach the point (in front of it or not, inside any spot cone).
+    pub lights: Vec<LightRecord>,
+    /// `(km, colour of the reflected ray)` when a mirror ray was cast.
+    pub reflection: Option<(DVec3, DVec3)>,
+    /// The colour this ray returned.
+    pub colour: DVec3,
+}
+
+impl BounceReport {
+    fn new(depth: u32, ray: Ray) -> Self {
+        Self {
+            depth,
+            ray,
+            hit: None,
+            background: DVec3::ZERO,
+            ambient: DVec3::ZERO,
+            lights: Vec::new(),
+            reflection: None,
+            colour: DVec3::ZERO,
+        }
+    }
+
+    /// The sum of the recorded terms; equals `colour` (checked by the tests).
+    #[must_use]
+    pub fn sum_of_terms(&self) -> DVec3 {
+        let local: DVec3 = self.lights.iter().map(|l| l.diffuse + l.specular).sum();
+        let mirror = self.reflection.map_or(DVec3::ZERO, |(km, c)| km * c);
+        if self.hit.is_some() {
+            self.ambient + local + mirror
+        } else {
+            self.background
+        }
+    }
+}
+
+/// Everything behind one pixel's centre sample.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PixelReport {
+    /// The pixel.
+    pub pixel: (u32, u32),
+    /// The camera ray and each mirror bounce, in order.
+    pub bounces: Vec<BounceReport>,
+    /// The pixel's colour before clamping.
+    pub unclamped: DVec3,
+    /// The colour written: clamped to [0, 1].
+    pub clamped: DVec3,
+}
+
+/// Collects a [`PixelReport`] as the shader runs. The mirror chain is a single path, so
+/// each depth has exactly one ray.
+#[derive(Default)]
+struct ReportRecorder {
+    bounces: Vec<BounceReport>,
+}
+
+impl ReportRecorder {
+    fn at(&mut self, depth: u32, ray: &Ray) -> &mut BounceReport {
+        let index = depth as usize;
+        if self.bounces.len() <= index {
+            self.bounces.push(BounceReport::new(depth, *ray));
+        }
+        &mut self.bounces[index]
+    }
+}
+
+impl Recorder for ReportRecorder {
+    fn hit(&mut self, depth: u32, ray: &Ray, hit: &SurfacePoint) {
+        self.at(depth, ray).hit = Some(*hit);
+    }
+    fn miss(&mut self, depth: u32, ray: &Ray, background: DVec3) {
+        self.at(depth, ray).background = background;
+    }
+    fn ambient(&mut self, depth: u32, colour: DVec3) {
+        self.bounces[depth as usize].ambient = colour;
+    }
+    fn light(&mut self, depth: u32, record: &LightRecord) {
+        self.bounces[depth as usize].lights.push(*record);
+    }
+    fn reflection(&mut self, depth: u32, km: DVec3, reflected: DVec3) {
+        self.bounces[depth as usize].reflection = Some((km, reflected));
+    }
+    fn result(&mut self, depth: u32, colour: DVec3) {
+        self.bounces[depth as usize].colour = colour;
+    }
+}
+
+/// Inspects the centre of pixel `(px, py)` of an image rendered with `options` (beauty
+/// view with its term switches), through the same code path as the renderer.
+#[must_use]
+pub fn inspect_pixel(world: &World, options: &RenderOptions, px: u32, py: u32) -> PixelReport {
+    let camera = PinholeCamera::new(&world.camera, options.width, options.height);
+    let tracer = Tracer::new(world, options.switches, super::terms::View::Beauty);
+    let ray = camera.ray(DVec2::new(f64::from(px) + 0.5, f64::from(py) + 0.5));
+    let mut recorder = ReportRecorder::default();
+    let unclamped = tracer.trace_primary(&ray, &mut RayCounts::default(), &mut recorder);
+    PixelReport {
+        pixel: (px, py),
+        bounces: recorder.bounces,
+        unclamped,
+        clamped: unclamped.clamp(DVec3::ZERO, DVec3::ONE),
+    }
+}
+
+/// The object under pixel point `(x, y)` (in pixels, fractional) of a `width` x `height`
+/// image: the tracer's own primary ray, so picking is exact.
+#[must_use]
+pub fn pick(world: &World, width: u32, height: u32, point: DVec2) -> Option<usize> {
+    let camera = PinholeCamera::new(&world.camera, width, height);
+    world
+        .intersect(&camera.ray(point), f64::INFINITY)
+        .map(|hit| hit.object)
+}
