@@ -154,7 +154,11 @@ impl<'e> Converter<'e> {
                 let world_from_camera = compose(transforms.iter().map(|t| &t.value));
                 self.camera = Some((*focal_length, world_from_camera, parsed.at.clone()));
             }
-            Block::Light { kind, settings } => self.light_block(*kind, settings, &parsed.at),
+            Block::Light {
+                kind,
+                settings,
+                broken,
+            } => self.light_block(*kind, settings, broken, &parsed.at),
             Block::Material { name, edits } => self.material_block(name, edits, &parsed.at),
             Block::Object { kind, settings } => self.object_block(*kind, settings, &parsed.at),
         }
@@ -175,7 +179,15 @@ impl<'e> Converter<'e> {
         }
     }
 
-    fn light_block(&mut self, kind: LightKind, settings: &[Item<LightSetting>], at: &At) {
+    /// A light; the `broken` keywords are missing because they were wrong, and their
+    /// absence is not reported again.
+    fn light_block(
+        &mut self,
+        kind: LightKind,
+        settings: &[Item<LightSetting>],
+        broken: &[String],
+        at: &At,
+    ) {
         let (mut colour, mut location, mut direction, mut angle) = (None, None, None, None);
         for setting in settings {
             let used = match setting.value {
@@ -206,14 +218,14 @@ impl<'e> Converter<'e> {
                 );
             }
         }
-        let colour = self.need(colour, at, "a `Colour`");
+        let colour = self.need(colour, "Colour", broken, at);
         let light = match kind {
             LightKind::Ambient => colour.map(|colour| Light::Ambient {
                 colour,
                 intensity: 1.0,
             }),
             LightKind::Point => {
-                let position = self.need(location, at, "a `Location`");
+                let position = self.need(location, "Location", broken, at);
                 colour.zip(position).map(|(colour, position)| Light::Point {
                     position,
                     colour,
@@ -221,7 +233,7 @@ impl<'e> Converter<'e> {
                 })
             }
             LightKind::Directional => {
-                let direction = self.need(direction, at, "a `Direction`");
+                let direction = self.need(direction, "Direction", broken, at);
                 colour
                     .zip(direction)
                     .map(|(colour, direction)| Light::Directional {
@@ -231,9 +243,9 @@ impl<'e> Converter<'e> {
                     })
             }
             LightKind::Spot => {
-                let position = self.need(location, at, "a `Location`");
-                let direction = self.need(direction, at, "a `Direction`");
-                let angle_deg = self.need(angle, at, "an `Angle` (its half-angle in degrees)");
+                let position = self.need(location, "Location", broken, at);
+                let direction = self.need(direction, "Direction", broken, at);
+                let angle_deg = self.need(angle, "Angle", broken, at);
                 match (colour, position, direction, angle_deg) {
                     (Some(colour), Some(position), Some(direction), Some(angle_deg)) => {
                         Some(Light::Spot {
@@ -253,9 +265,20 @@ impl<'e> Converter<'e> {
         }
     }
 
-    /// `value`, or an error at the light's kind saying it needs `what`.
-    fn need<T>(&mut self, value: Option<T>, at: &At, what: &str) -> Option<T> {
-        if value.is_none() {
+    /// `value`, or an error at the light's kind saying it needs `keyword` (unless the
+    /// keyword is there but `broken`, which was reported already).
+    fn need<T>(
+        &mut self,
+        value: Option<T>,
+        keyword: &str,
+        broken: &[String],
+        at: &At,
+    ) -> Option<T> {
+        if value.is_none() && !broken.iter().any(|b| b == keyword) {
+            let what = match keyword {
+                "Angle" => "an `Angle` (its half-angle in degrees)".to_owned(),
+                _ => format!("a `{keyword}`"),
+            };
             self.errors.push(LegacyError::new(
                 at.line,
                 &at.token,

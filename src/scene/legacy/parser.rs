@@ -196,10 +196,7 @@ fn parse_block(tokens: &[Token<'_>], errors: &mut Vec<LegacyError>) -> Option<Pa
     let (first, rest) = tokens.split_first()?;
     match block_word(first) {
         Some("Scene") => {
-            let settings = entries(rest, SCENE_WORDS, first, errors)
-                .iter()
-                .filter_map(|entry| scene_setting(entry, errors).map(|value| item(value, entry)))
-                .collect();
+            let (settings, _) = decode(rest, SCENE_WORDS, first, errors, scene_setting);
             Some(ParsedBlock {
                 block: Block::Scene(settings),
                 at: at(first),
@@ -279,10 +276,7 @@ fn parse_camera(
     } else {
         None
     };
-    let transforms: Vec<Item<TransformStep>> = entries(header.body, TRANSFORM_WORDS, word, errors)
-        .iter()
-        .filter_map(|entry| transform_step(entry, errors).map(|value| item(value, entry)))
-        .collect();
+    let (transforms, _) = decode(header.body, TRANSFORM_WORDS, word, errors, transform_step);
     Some(ParsedBlock {
         block: Block::Camera {
             focal_length: focal_length?,
@@ -333,15 +327,13 @@ fn parse_light(
         ));
     }
     let numbers_ok = no_numbers(&header, errors);
-    let settings = entries(header.body, LIGHT_WORDS, word, errors)
-        .iter()
-        .filter_map(|entry| light_setting(entry, errors).map(|value| item(value, entry)))
-        .collect();
+    let (settings, broken) = decode(header.body, LIGHT_WORDS, word, errors, light_setting);
     numbers_ok.then_some(())?;
     Some(ParsedBlock {
         block: Block::Light {
             kind: kind?,
             settings,
+            broken,
         },
         at: at(&header.kind),
     })
@@ -354,10 +346,7 @@ fn parse_material(
 ) -> Option<ParsedBlock> {
     let header = header(word, rest, "a name: `Material NAME`", errors)?;
     let numbers_ok = no_numbers(&header, errors);
-    let edits = entries(header.body, MATERIAL_WORDS, word, errors)
-        .iter()
-        .filter_map(|entry| surface_edit(entry, errors).map(|value| item(value, entry)))
-        .collect();
+    let (edits, _) = decode(header.body, MATERIAL_WORDS, word, errors, surface_edit);
     numbers_ok.then_some(())?;
     Some(ParsedBlock {
         block: Block::Material {
@@ -391,10 +380,7 @@ fn parse_object(
         ));
     }
     let numbers_ok = no_numbers(&header, errors);
-    let settings = entries(header.body, OBJECT_WORDS, word, errors)
-        .iter()
-        .filter_map(|entry| object_setting(entry, errors).map(|value| item(value, entry)))
-        .collect();
+    let (settings, _) = decode(header.body, OBJECT_WORDS, word, errors, object_setting);
     numbers_ok.then_some(())?;
     Some(ParsedBlock {
         block: Block::Object {
@@ -412,13 +398,37 @@ fn item<T>(value: T, entry: &Entry<'_, '_>) -> Item<T> {
     }
 }
 
-/// Splits a block body into keyword entries; unknown keywords are reported and skipped.
+/// Decodes every entry of a block body with `decode_entry`, reporting errors in token
+/// order. Returns the decoded items and the keywords that failed (as the grammar spells
+/// them).
+fn decode<T>(
+    body: &[Token<'_>],
+    words: &[Word],
+    block: &Token<'_>,
+    errors: &mut Vec<LegacyError>,
+    decode_entry: fn(&Entry<'_, '_>, &mut Vec<LegacyError>) -> Option<T>,
+) -> (Vec<Item<T>>, Vec<String>) {
+    let mut items = Vec::new();
+    let mut broken = Vec::new();
+    for entry in entries(body, words, block) {
+        match entry {
+            Ok(entry) => match decode_entry(&entry, errors) {
+                Some(value) => items.push(item(value, &entry)),
+                None => broken.push(entry.word.name().to_owned()),
+            },
+            Err(error) => errors.push(error),
+        }
+    }
+    (items, broken)
+}
+
+/// Splits a block body into keyword entries, and errors for unknown keywords (which are
+/// skipped with the numbers after them).
 fn entries<'t, 'a>(
     body: &'t [Token<'a>],
     words: &[Word],
     block: &Token<'_>,
-    errors: &mut Vec<LegacyError>,
-) -> Vec<Entry<'t, 'a>> {
+) -> Vec<Result<Entry<'t, 'a>, LegacyError>> {
     let mut out = Vec::new();
     let mut i = 0;
     while let Some(token) = body.get(i) {
@@ -436,14 +446,14 @@ fn entries<'t, 'a>(
         while body.get(j).is_some_and(|t| looks_numeric(t.text)) {
             j += 1;
         }
-        match word {
-            Some(word) => out.push(Entry {
+        out.push(match word {
+            Some(word) => Ok(Entry {
                 word,
                 keyword: *token,
                 args: &body[i + 1..j],
             }),
-            None => errors.push(unknown_keyword(token, words, block)),
-        }
+            None => Err(unknown_keyword(token, words, block)),
+        });
         i = j;
     }
     out

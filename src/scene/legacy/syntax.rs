@@ -156,6 +156,9 @@ pub enum Block {
         kind: LightKind,
         /// Its keywords, in file order.
         settings: Vec<Item<LightSetting>>,
+        /// Keywords that had an error and so are missing from `settings`, as written;
+        /// their absence is not reported a second time.
+        broken: Vec<String>,
     },
     /// `Material NAME ... End`.
     Material {
