@@ -1,8 +1,8 @@
 //! Import of the legacy COSC342 text scene format (`shared/COSC342_FORMAT.md`) into a
 //! [`Scene`].
 //!
-//! The text goes through three stages: [`lexer`] (tokens with line numbers, comments
-//! dropped), [`parser`] (blocks of typed keywords, numbers checked) and [`convert`]
+//! The text goes through three stages: `lexer` (tokens with line numbers, comments
+//! dropped), `parser` (blocks of typed keywords, numbers checked) and `convert`
 //! (materials resolved in file order, transforms composed, camera and lights converted).
 //! Every stage collects its errors instead of stopping, so a broken file reports all of
 //! its problems at once, each with its line and token, and nothing is imported from it.
@@ -10,13 +10,13 @@
 //! Imports set `samples_per_pixel: 1`, as the legacy renderer has no anti-aliasing, so
 //! an imported scene renders the legacy picture (the editor can raise it).
 
-pub mod camera;
-pub mod convert;
+mod camera;
+mod convert;
 mod error;
-pub mod lexer;
-pub mod parser;
-pub mod syntax;
-pub mod transform;
+mod lexer;
+mod parser;
+mod syntax;
+mod transform;
 
 use std::path::Path;
 

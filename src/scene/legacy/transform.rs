@@ -76,7 +76,7 @@ pub fn as_trs(m: &DAffine3) -> Option<Trs> {
 fn decompose(m: &DAffine3) -> Option<Trs> {
     let a = m.matrix3;
     let lengths = DVec3::new(a.x_axis.length(), a.y_axis.length(), a.z_axis.length());
-    if !(lengths.min_element() > 0.0) || !lengths.is_finite() {
+    if lengths.min_element() <= 0.0 || !lengths.is_finite() {
         return None;
     }
     let candidates: Vec<DVec3> = if a.determinant() >= 0.0 {
