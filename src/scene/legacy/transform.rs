@@ -11,28 +11,51 @@
 use glam::{DAffine3, DMat3, DVec3};
 
 use super::syntax::{Axis, TransformStep};
-use crate::scene::{Transform, Trs, rows_from_affine};
+use crate::scene::{MatrixRows, Transform, Trs, rows_from_affine};
 
 /// Relative agreement a recomposed translate / rotate / scale must reach.
 const RECOMPOSE_TOLERANCE: f64 = 1e-12;
-/// How far (relative) a decomposed number may move to become a short decimal.
-const SNAP_TOLERANCE: f64 = 1e-13;
+/// How far (relative) a decomposed number may move to become a short decimal: a few
+/// units in the last place.
+const SNAP_TOLERANCE: f64 = 1e-15;
+/// The size angles (in degrees) are measured against when snapping.
+const FULL_TURN_DEG: f64 = 360.0;
 
 /// The object-to-world matrix of one step.
 #[must_use]
 pub fn step_affine(step: &TransformStep) -> DAffine3 {
     match *step {
         TransformStep::Translate(offset) => DAffine3::from_translation(offset),
-        TransformStep::Rotate { axis, angle_deg } => {
-            let angle = angle_deg.to_radians();
-            match axis {
-                Axis::X => DAffine3::from_rotation_x(angle),
-                Axis::Y => DAffine3::from_rotation_y(angle),
-                Axis::Z => DAffine3::from_rotation_z(angle),
-            }
-        }
+        TransformStep::Rotate { axis, angle_deg } => DAffine3::from_mat3(rotation(axis, angle_deg)),
         TransformStep::Scale(s) => DAffine3::from_scale(DVec3::splat(s)),
         TransformStep::Scale3(s) => DAffine3::from_scale(s),
+    }
+}
+
+/// A right-handed rotation about a coordinate axis (as glam's `from_rotation_*`).
+fn rotation(axis: Axis, angle_deg: f64) -> DMat3 {
+    let (s, c) = sin_cos_deg(angle_deg);
+    match axis {
+        Axis::X => DMat3::from_cols(DVec3::X, DVec3::new(0.0, c, s), DVec3::new(0.0, -s, c)),
+        Axis::Y => DMat3::from_cols(DVec3::new(c, 0.0, -s), DVec3::Y, DVec3::new(s, 0.0, c)),
+        Axis::Z => DMat3::from_cols(DVec3::new(c, s, 0.0), DVec3::new(-s, c, 0.0), DVec3::Z),
+    }
+}
+
+/// Sine and cosine of an angle in degrees, exact for multiples of 90 degrees (so
+/// `Rotate X 180` turns +Y into exactly -Y, with no 1e-16 left over).
+fn sin_cos_deg(angle_deg: f64) -> (f64, f64) {
+    let quarter_turns = angle_deg / 90.0;
+    if quarter_turns.fract() == 0.0 && quarter_turns.abs() < 1e15 {
+        // Whole and small, so the conversion is exact.
+        match (quarter_turns as i64).rem_euclid(4) {
+            0 => (0.0, 1.0),
+            1 => (1.0, 0.0),
+            2 => (0.0, -1.0),
+            _ => (-1.0, 0.0),
+        }
+    } else {
+        angle_deg.to_radians().sin_cos()
     }
 }
 
@@ -52,8 +75,28 @@ pub fn compose<'a>(steps: impl IntoIterator<Item = &'a TransformStep>) -> DAffin
 pub fn scene_transform(world_from_object: &DAffine3) -> Transform {
     match as_trs(world_from_object) {
         Some(trs) => Transform::Trs(trs),
-        None => Transform::Matrix(rows_from_affine(world_from_object)),
+        None => Transform::Matrix(snapped_rows(world_from_object)),
     }
+}
+
+/// The matrix rows, each number moved to a short decimal where that changes it by at
+/// most a relative 1e-15 (of the linear part's or the translation's size), so that
+/// 0.49999999999999994 is written as 0.5.
+fn snapped_rows(m: &DAffine3) -> MatrixRows {
+    let linear_size = max_abs(&m.matrix3);
+    let translation_size = m.translation.abs().max_element();
+    rows_from_affine(m).map(|row| {
+        [
+            snap(row[0], linear_size),
+            snap(row[1], linear_size),
+            snap(row[2], linear_size),
+            snap(row[3], translation_size),
+        ]
+    })
+}
+
+fn max_abs(m: &DMat3) -> f64 {
+    m.abs().to_cols_array().into_iter().fold(0.0, f64::max)
 }
 
 /// The translate / rotate / scale equal to `m`, if there is one.
@@ -62,7 +105,7 @@ pub fn as_trs(m: &DAffine3) -> Option<Trs> {
     let raw = decompose(m)?;
     let snapped = Trs {
         translate: snap_vector(raw.translate),
-        rotate_deg: raw.rotate_deg.map(|a| snap(a, 1.0)),
+        rotate_deg: raw.rotate_deg.map(|a| snap(a, FULL_TURN_DEG)),
         scale: snap_vector(raw.scale),
     };
     [snapped, raw]
@@ -123,17 +166,8 @@ fn euler_xyz_deg(rotation: &DMat3) -> DVec3 {
 
 /// Whether two transforms agree to a relative 1e-12, linear part and translation apart.
 fn agrees(p: &DAffine3, q: &DAffine3) -> bool {
-    let linear_size = q
-        .matrix3
-        .abs()
-        .to_cols_array()
-        .into_iter()
-        .fold(0.0, f64::max);
-    let linear_error = (p.matrix3 - q.matrix3)
-        .abs()
-        .to_cols_array()
-        .into_iter()
-        .fold(0.0, f64::max);
+    let linear_size = max_abs(&q.matrix3);
+    let linear_error = max_abs(&(p.matrix3 - q.matrix3));
     let translation_error = (p.translation - q.translation).abs().max_element();
     linear_error <= RECOMPOSE_TOLERANCE * linear_size
         && translation_error <= RECOMPOSE_TOLERANCE * q.translation.abs().max_element()
@@ -144,8 +178,8 @@ fn snap_vector(v: DVec3) -> DVec3 {
     v.map(|x| snap(x, size))
 }
 
-/// The shortest decimal (up to 12 places) within a relative 1e-13 of `x`, so that
-/// 29.999999999999996 reads as 30 and rounding noise next to 1 reads as 0.
+/// The shortest decimal (up to 12 places) within a relative 1e-15 of `x` or of `size`,
+/// so that 29.999999999999996 reads as 30 and rounding noise next to 1 reads as 0.
 fn snap(x: f64, size: f64) -> f64 {
     let tolerance = SNAP_TOLERANCE * x.abs().max(size);
     (0..=12)
@@ -223,7 +257,50 @@ mod tests {
             TransformStep::Scale3(DVec3::new(1.0, 2.0, 1.0)),
         ];
         let m = compose(&steps);
-        assert_eq!(scene_transform(&m), Transform::Matrix(rows_from_affine(&m)));
+        let Transform::Matrix(rows) = scene_transform(&m) else {
+            panic!("expected a matrix");
+        };
+        assert!(agrees(&crate::scene::affine_from_rows(&rows), &m));
+        // sin 30 degrees comes out of the float maths as 0.49999999999999994.
+        assert_eq!(rows[0][1], -0.5);
+    }
+
+    #[test]
+    fn every_sequence_survives_conversion() {
+        // A fixed pseudo-random walk over all step kinds: whatever form the result takes,
+        // it reproduces the composed matrix.
+        let mut state = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let axes = [Axis::X, Axis::Y, Axis::Z];
+        for _ in 0..500 {
+            let steps: Vec<TransformStep> = (0..1 + (next() * 5.0) as usize)
+                .map(|_| {
+                    let kind = (next() * 4.0) as usize;
+                    let v = DVec3::new(next() - 0.5, next() - 0.5, next() - 0.5) * 8.0;
+                    match kind {
+                        0 => TransformStep::Translate(v),
+                        1 => rotate(axes[(next() * 3.0) as usize % 3], (next() - 0.5) * 720.0),
+                        2 => TransformStep::Scale(v.x + 4.5),
+                        _ => TransformStep::Scale3(v + DVec3::splat(4.5)),
+                    }
+                })
+                .collect();
+            let m = compose(&steps);
+            let back = scene_transform(&m).world_from_object();
+            assert!(agrees(&back, &m), "{steps:?}");
+        }
+    }
+
+    #[test]
+    fn quarter_turns_are_exact() {
+        let m = compose(&[rotate(Axis::X, 180.0), rotate(Axis::Y, -270.0)]);
+        assert_eq!(m.transform_vector3(DVec3::Y), DVec3::NEG_Y);
+        assert_eq!(m.transform_vector3(DVec3::Z), DVec3::NEG_X);
     }
 
     #[test]
