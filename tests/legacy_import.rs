@@ -738,8 +738,30 @@ fn a_lit_sphere_matches_the_hand_computed_colour() {
 }
 
 #[test]
+fn ray_depth_counts_mirror_bounces() {
+    let text = std::fs::read_to_string(legacy_path("mirror.txt")).expect("read mirror.txt");
+    let one_bounce = import_text(&text).scene;
+    assert_eq!(one_bounce.render.max_depth, 1);
+    let centre = render_scene(&one_bounce).get(10, 10);
+    let expected = Vec3::new(0.3, 0.1, 0.2);
+    assert!(
+        (centre - expected).abs().max_element() < 1e-6,
+        "{centre} expected {expected}"
+    );
+
+    let no_bounce = import_text(&text.replace("rayDepth 1", "rayDepth 0")).scene;
+    assert_eq!(no_bounce.render.max_depth, 0);
+    assert_eq!(render_scene(&no_bounce).get(10, 10), Vec3::ZERO);
+}
+
+#[test]
 fn round_trip_through_ron_renders_identical_pixels() {
-    for name in ["full.txt", "camera_pixel.txt", "lit_sphere.txt"] {
+    for name in [
+        "full.txt",
+        "camera_pixel.txt",
+        "lit_sphere.txt",
+        "mirror.txt",
+    ] {
         let imported = import_file(name).scene;
         let text = scene_to_ron(&imported);
         let loaded = parse_scene(&text).unwrap_or_else(|e| panic!("{name}: {e}\n{text}"));
