@@ -5,10 +5,12 @@
 //! y = -H/W + (v + 0.5) 2/W, v = 0 the top row, so image "up" is the camera's -Y. After
 //! the camera's transform M:
 //!
-//!     position = M (0, 0, 0)      forward = M (0, 0, 1) as a direction
-//!     look_at  = position + forward
-//!     up       = M (0, -1, 0) as a direction
-//!     tan(fov_y / 2) = (H / W) / F
+//! ```text
+//! position = M (0, 0, 0)      forward = M (0, 0, 1) as a direction
+//! look_at  = position + forward
+//! up       = M (0, -1, 0) as a direction
+//! tan(fov_y / 2) = (H / W) / F
+//! ```
 //!
 //! That is exact when M is a rotation, a translation and a uniform scale; a non-uniform
 //! scale, a shear or a mirror of the camera bends the legacy rays in ways a pinhole
