@@ -184,7 +184,8 @@ impl<'w> Tracer<'w> {
         // diffuse and specular, light by light
         let has_local = material.diffuse != DVec3::ZERO || material.specular != DVec3::ZERO;
         if (terms.diffuse || terms.specular) && has_local {
-            let view_dir = -ray.dir.normalize();
+            // Camera rays are unit length and mirror reflection keeps the length.
+            let view_dir = -ray.dir;
             for (index, light) in world.lights.iter().enumerate() {
                 let Some(sample) = light.sample(hit.p) else {
                     continue;
@@ -215,7 +216,7 @@ impl<'w> Tracer<'w> {
                             if r_dot_v > 0.0 {
                                 record.specular = material.specular
                                     * sample.radiance
-                                    * r_dot_v.powf(material.shininess);
+                                    * phong_power(r_dot_v, material.shininess);
                             }
                         }
                         colour += record.diffuse + record.specular;
@@ -248,14 +249,20 @@ impl<'w> Tracer<'w> {
         counts: &mut RayCounts,
     ) -> Option<usize> {
         counts.shadow += 1;
+        // Every shape is convex or flat: a shadow ray leaving a solid on its outer side,
+        // or leaving a plane, cannot meet the surface it starts on.
+        let leaves_outward = self.world.objects[hit.object].shape == crate::scene::Shape::Plane
+            || hit.n_outward.dot(sample.to_light) > 0.0;
+        let except = leaves_outward.then_some(hit.object);
         match sample.light_position {
             Some(position) => {
                 let (ray, t_max) = spawn_ray_to(hit, position);
-                self.world.occluder(&ray, t_max)
+                self.world.occluder_except(&ray, t_max, except)
             }
-            None => self
-                .world
-                .occluder(&spawn_ray(hit, sample.to_light), f64::INFINITY),
+            None => {
+                self.world
+                    .occluder_except(&spawn_ray(hit, sample.to_light), f64::INFINITY, except)
+            }
         }
     }
 
@@ -281,6 +288,16 @@ impl<'w> Tracer<'w> {
         } else {
             f64::from(visible) / f64::from(reaching)
         }
+    }
+}
+
+/// `x^s` for the Phong lobe; whole exponents (the usual case) by repeated squaring.
+#[inline]
+fn phong_power(x: f64, s: f64) -> f64 {
+    if s.fract() == 0.0 && s <= 1024.0 {
+        x.powi(s as i32)
+    } else {
+        x.powf(s)
     }
 }
 

@@ -28,6 +28,9 @@ pub struct WorldObject {
     pub material: usize,
     /// Whether the exact test is cheap enough that a bounds test first does not pay.
     skip_bounds: bool,
+    /// Component-wise absolute values of the two 3x3 parts, for the error bounds.
+    abs_world_from_object: DMat3,
+    abs_object_from_world: DMat3,
 }
 
 /// A point on a surface where a ray hit, in world space.
@@ -87,6 +90,7 @@ impl World {
             .iter()
             .map(|object| {
                 let world_from_object = object.transform.world_from_object();
+                let object_from_world = world_from_object.inverse();
                 let material = material_names
                     .binary_search(&object.material)
                     .expect("validated: every material exists");
@@ -94,11 +98,13 @@ impl World {
                     name: object.name.clone(),
                     shape: object.shape,
                     world_from_object,
-                    object_from_world: world_from_object.inverse(),
+                    object_from_world,
                     normal_from_object: world_from_object.matrix3.inverse().transpose(),
                     bounds: shapes::object_bounds(object.shape).transformed(&world_from_object),
                     material,
                     skip_bounds: object.shape == Shape::Sphere,
+                    abs_world_from_object: abs_mat(&world_from_object.matrix3),
+                    abs_object_from_world: abs_mat(&object_from_world.matrix3),
                 }
             })
             .collect();
@@ -150,9 +156,17 @@ impl World {
     /// The first object found between the ray's origin and `t_max`, if any.
     #[must_use]
     pub fn occluder(&self, ray: &Ray, t_max: f64) -> Option<usize> {
+        self.occluder_except(ray, t_max, None)
+    }
+
+    /// As [`World::occluder`], not testing object `except`: a ray leaving a convex surface
+    /// on its outer side (or leaving a plane) cannot meet that surface again.
+    #[must_use]
+    pub fn occluder_except(&self, ray: &Ray, t_max: f64, except: Option<usize>) -> Option<usize> {
         let inv_dir = ray.dir.recip();
-        self.objects.iter().position(|object| {
-            (object.skip_bounds || object.bounds.hit_by(ray, inv_dir, t_max))
+        self.objects.iter().enumerate().position(|(index, object)| {
+            Some(index) != except
+                && (object.skip_bounds || object.bounds.hit_by(ray, inv_dir, t_max))
                 && shapes::occluded(
                     object.shape,
                     &ray.transformed(&object.object_from_world),
@@ -187,8 +201,8 @@ impl World {
 /// carried through the matrix, the rounding of the transform itself, and the rounding
 /// a spawned ray suffers on its way back to object space (mapped to world units).
 fn world_error(object: &WorldObject, hit: &ShapeHit, p_world: DVec3) -> DVec3 {
-    let m = abs_mat(&object.world_from_object.matrix3);
-    let inv = abs_mat(&object.object_from_world.matrix3);
+    let m = object.abs_world_from_object;
+    let inv = object.abs_object_from_world;
     let carried = m * hit.p_error;
     let forward = gamma(3) * (m * hit.p.abs() + object.world_from_object.translation.abs());
     let back_in_object =
