@@ -26,6 +26,12 @@ pub enum SceneError {
         /// The operating system's reason.
         source: std::io::Error,
     },
+    /// The file is over the size limit for scene files.
+    #[error("cannot read {path}: the file is larger than {} MiB, the limit for scene files", super::text_file::MAX_SCENE_FILE_BYTES >> 20)]
+    TooLarge {
+        /// The file.
+        path: PathBuf,
+    },
     /// The file could not be written; the previous file, if any, is intact.
     #[error("cannot write {path}: {source}")]
     Write {

@@ -8,6 +8,7 @@ use ron::extensions::Extensions;
 
 use super::error::SceneError;
 use super::model::Scene;
+use super::text_file::{TextFileError, read_text_file};
 use super::validate::validate;
 
 /// Deepest nesting accepted in a scene file; real scenes need about 6 levels.
@@ -37,23 +38,21 @@ pub fn parse_scene(text: &str) -> Result<Scene, SceneError> {
 /// # Errors
 /// As [`parse_scene`], plus [`SceneError::Read`] when the file cannot be read.
 pub fn load_scene(path: &Path) -> Result<Scene, SceneError> {
-    let bytes = std::fs::read(path).map_err(|source| SceneError::Read {
-        path: path.to_owned(),
-        source,
-    })?;
-    let text = std::str::from_utf8(&bytes).map_err(|e| {
-        let line = bytes[..e.valid_up_to()]
-            .iter()
-            .filter(|&&b| b == b'\n')
-            .count()
-            + 1;
-        SceneError::Syntax {
+    let text = read_text_file(path).map_err(|e| match e {
+        TextFileError::NotUtf8 { line } => SceneError::Syntax {
             line,
             column: 1,
             message: "the file is not UTF-8 text".to_owned(),
-        }
+        },
+        TextFileError::TooLarge => SceneError::TooLarge {
+            path: path.to_owned(),
+        },
+        TextFileError::Read(source) => SceneError::Read {
+            path: path.to_owned(),
+            source,
+        },
     })?;
-    parse_scene(text)
+    parse_scene(&text)
 }
 
 /// The scene as RON text, in the layout of the contract (`Scene(...)`).

@@ -66,6 +66,12 @@ pub enum LegacyImportFileError {
         /// The operating system's reason.
         source: std::io::Error,
     },
+    /// The file is over the size limit for scene files.
+    #[error("cannot read {path}: the file is larger than {} MiB, the limit for scene files", crate::scene::MAX_SCENE_FILE_BYTES >> 20)]
+    TooLarge {
+        /// The file.
+        path: PathBuf,
+    },
     /// The file is not UTF-8 text.
     #[error("{path}: line {line}: the file is not UTF-8 text")]
     NotText {

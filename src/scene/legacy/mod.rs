@@ -22,7 +22,7 @@ use std::path::Path;
 
 pub use error::{LegacyError, LegacyErrors, LegacyImportFileError};
 
-use crate::scene::Scene;
+use crate::scene::{Scene, TextFileError, read_text_file};
 
 /// A successful import: the scene, and warnings about what was skipped or changed.
 #[derive(Clone, Debug, PartialEq)]
@@ -60,18 +60,20 @@ pub fn import_legacy(text: &str) -> Result<LegacyImport, LegacyErrors> {
 /// [`LegacyImportFileError::NotText`] when it is not UTF-8, and
 /// [`LegacyImportFileError::Legacy`] with every problem in the text.
 pub fn import_legacy_file(path: &Path) -> Result<LegacyImport, LegacyImportFileError> {
-    let bytes = std::fs::read(path).map_err(|source| LegacyImportFileError::Read {
-        path: path.to_owned(),
-        source,
+    let text = read_text_file(path).map_err(|e| match e {
+        TextFileError::Read(source) => LegacyImportFileError::Read {
+            path: path.to_owned(),
+            source,
+        },
+        TextFileError::TooLarge => LegacyImportFileError::TooLarge {
+            path: path.to_owned(),
+        },
+        TextFileError::NotUtf8 { line } => LegacyImportFileError::NotText {
+            path: path.to_owned(),
+            line,
+        },
     })?;
-    let text = std::str::from_utf8(&bytes).map_err(|e| LegacyImportFileError::NotText {
-        path: path.to_owned(),
-        line: 1 + bytes[..e.valid_up_to()]
-            .iter()
-            .filter(|&&b| b == b'\n')
-            .count(),
-    })?;
-    import_legacy(text).map_err(|errors| LegacyImportFileError::Legacy {
+    import_legacy(&text).map_err(|errors| LegacyImportFileError::Legacy {
         path: path.to_owned(),
         errors,
     })
