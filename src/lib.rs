@@ -7,6 +7,7 @@
 
 pub mod bench;
 pub mod cli;
+pub mod gizmo;
 pub mod scene;
 pub mod trace;
 #[cfg(feature = "editor")]

@@ -8,7 +8,7 @@ mod file;
 pub mod legacy;
 mod model;
 mod text_file;
-mod transform;
+pub mod transform;
 mod validate;
 
 pub use error::SceneError;

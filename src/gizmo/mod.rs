@@ -1,0 +1,71 @@
+//! The math of the viewport gizmos and camera navigation, in plain functions over glam
+//! types: no egui here, so every drag is unit-tested without a window. The editor's
+//! viewport turns pointer positions into rays with [`crate::trace::PinholeCamera`] (the
+//! tracer's own camera) and feeds them to these functions.
+
+pub mod handles;
+pub mod navigate;
+pub mod snap;
+pub mod spot;
+pub mod transform_drag;
+
+use glam::DVec3;
+
+use crate::trace::Ray;
+
+/// The point of the line `origin + s * axis` closest to `ray`, as the parameter `s`;
+/// `None` when the ray is parallel to the line (no unique closest point).
+#[must_use]
+pub fn closest_on_line_to_ray(origin: DVec3, axis: DVec3, ray: &Ray) -> Option<f64> {
+    // Minimise |origin + s axis - (ray.origin + t ray.dir)| over s and t.
+    let w = origin - ray.origin;
+    let (a, b, c) = (axis.dot(axis), axis.dot(ray.dir), ray.dir.dot(ray.dir));
+    let (d, e) = (axis.dot(w), ray.dir.dot(w));
+    let denominator = a * c - b * b;
+    if denominator.abs() <= 1e-12 * a * c {
+        return None;
+    }
+    Some((b * e - c * d) / denominator)
+}
+
+/// Where `ray` meets the plane through `point` with normal `normal`, ahead of its origin.
+#[must_use]
+pub fn ray_plane(ray: &Ray, point: DVec3, normal: DVec3) -> Option<DVec3> {
+    let denominator = ray.dir.dot(normal);
+    if denominator.abs() <= 1e-12 * ray.dir.length() * normal.length() {
+        return None;
+    }
+    let t = (point - ray.origin).dot(normal) / denominator;
+    (t > 0.0).then(|| ray.at(t))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn closest_point_on_a_line_to_a_crossing_ray() {
+        // The x axis and a ray going down the line x = 2, z = 1.
+        let ray = Ray::new(DVec3::new(2.0, 5.0, 1.0), -DVec3::Y);
+        assert_eq!(
+            closest_on_line_to_ray(DVec3::ZERO, DVec3::X, &ray),
+            Some(2.0)
+        );
+        let parallel = Ray::new(DVec3::new(0.0, 1.0, 0.0), DVec3::X);
+        assert_eq!(
+            closest_on_line_to_ray(DVec3::ZERO, DVec3::X, &parallel),
+            None
+        );
+    }
+
+    #[test]
+    fn ray_meets_plane_ahead_only() {
+        let ray = Ray::new(DVec3::new(1.0, 4.0, 2.0), -DVec3::Y);
+        assert_eq!(
+            ray_plane(&ray, DVec3::ZERO, DVec3::Y),
+            Some(DVec3::new(1.0, 0.0, 2.0))
+        );
+        let away = Ray::new(DVec3::new(1.0, 4.0, 2.0), DVec3::Y);
+        assert_eq!(ray_plane(&away, DVec3::ZERO, DVec3::Y), None);
+    }
+}
