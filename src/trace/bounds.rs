@@ -57,3 +57,51 @@ impl Aabb {
         near <= far || near.is_nan() || far.is_nan()
     }
 }
+
+/// A bounding sphere, for objects whose box is loose (spheres of any orientation).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BoundingSphere {
+    /// Centre.
+    pub centre: DVec3,
+    /// Radius squared, slightly padded.
+    pub radius_sq: f64,
+}
+
+impl BoundingSphere {
+    /// The sphere around the unit sphere placed by `world_from_object`: radius the longest
+    /// axis (exact for a uniform scale), padded by a relative 1e-9.
+    #[must_use]
+    pub fn around_unit_sphere(world_from_object: &DAffine3) -> Self {
+        let m = world_from_object.matrix3;
+        let radius = m
+            .x_axis
+            .length()
+            .max(m.y_axis.length())
+            .max(m.z_axis.length())
+            * (1.0 + 1e-9);
+        Self {
+            centre: world_from_object.translation,
+            radius_sq: radius * radius,
+        }
+    }
+
+    /// Whether the ray can meet the sphere at some t in [0, t_max]. Conservative.
+    #[must_use]
+    pub fn hit_by(&self, ray: &Ray, t_max: f64) -> bool {
+        let to_centre = self.centre - ray.origin;
+        let d2 = ray.dir.length_squared();
+        let along = to_centre.dot(ray.dir); // t of the closest approach, times |d|^2
+        let distance_sq = to_centre.length_squared();
+        if along < 0.0 {
+            // Moving away: only a ray starting inside can meet it.
+            return distance_sq <= self.radius_sq;
+        }
+        let miss_sq = distance_sq - along * along / d2;
+        if miss_sq > self.radius_sq {
+            return false;
+        }
+        // The nearest crossing must not be beyond t_max: t_near = (along - chord) / d2.
+        let chord = ((self.radius_sq - miss_sq).max(0.0) * d2).sqrt();
+        distance_sq <= self.radius_sq || along - chord <= t_max * d2 * (1.0 + 1e-9)
+    }
+}

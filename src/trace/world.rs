@@ -3,7 +3,7 @@
 
 use glam::{DAffine3, DMat3, DVec3};
 
-use super::bounds::Aabb;
+use super::bounds::{Aabb, BoundingSphere};
 use super::lights::WorldLight;
 use super::ray::Ray;
 use super::shapes::{self, ShapeHit, gamma};
@@ -26,11 +26,23 @@ pub struct WorldObject {
     pub bounds: Aabb,
     /// Index into [`World::materials`].
     pub material: usize,
-    /// Whether the exact test is cheap enough that a bounds test first does not pay.
-    skip_bounds: bool,
+    /// For spheres: a bounding sphere, tighter than the box and tested without
+    /// transforming the ray.
+    bounding_sphere: Option<BoundingSphere>,
     /// Component-wise absolute values of the two 3x3 parts, for the error bounds.
     abs_world_from_object: DMat3,
     abs_object_from_world: DMat3,
+}
+
+impl WorldObject {
+    /// The bounds test: whether the ray may meet the object before `t_max`.
+    #[inline]
+    fn may_be_hit(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> bool {
+        match &self.bounding_sphere {
+            Some(sphere) => sphere.hit_by(ray, t_max),
+            None => self.bounds.hit_by(ray, inv_dir, t_max),
+        }
+    }
 }
 
 /// A point on a surface where a ray hit, in world space.
@@ -102,7 +114,8 @@ impl World {
                     normal_from_object: world_from_object.matrix3.inverse().transpose(),
                     bounds: shapes::object_bounds(object.shape).transformed(&world_from_object),
                     material,
-                    skip_bounds: object.shape == Shape::Sphere,
+                    bounding_sphere: (object.shape == Shape::Sphere)
+                        .then(|| BoundingSphere::around_unit_sphere(&world_from_object)),
                     abs_world_from_object: abs_mat(&world_from_object.matrix3),
                     abs_object_from_world: abs_mat(&object_from_world.matrix3),
                 }
@@ -141,7 +154,7 @@ impl World {
         let mut closest: Option<(usize, ShapeHit)> = None;
         let mut t_limit = t_max;
         for (index, object) in self.objects.iter().enumerate() {
-            if !object.skip_bounds && !object.bounds.hit_by(ray, inv_dir, t_limit) {
+            if !object.may_be_hit(ray, inv_dir, t_limit) {
                 continue;
             }
             let ray_in_object = ray.transformed(&object.object_from_world);
@@ -166,7 +179,7 @@ impl World {
         let inv_dir = ray.dir.recip();
         self.objects.iter().enumerate().position(|(index, object)| {
             Some(index) != except
-                && (object.skip_bounds || object.bounds.hit_by(ray, inv_dir, t_max))
+                && object.may_be_hit(ray, inv_dir, t_max)
                 && shapes::occluded(
                     object.shape,
                     &ray.transformed(&object.object_from_world),
