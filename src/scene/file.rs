@@ -87,12 +87,27 @@ pub fn save_scene(scene: &Scene, path: &Path) -> Result<(), SceneError> {
 /// # Errors
 /// The I/O error; the temporary file is removed on failure.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    write_atomically_with(path, bytes, || {})
+}
+
+/// [`write_atomically`] with a hook run after the temporary file is complete and synced,
+/// just before the rename: the one moment a crash would matter, which tests use to kill
+/// the process there.
+///
+/// # Errors
+/// The I/O error; the temporary file is removed on failure.
+pub fn write_atomically_with(
+    path: &Path,
+    bytes: &[u8],
+    before_rename: impl FnOnce(),
+) -> std::io::Result<()> {
     let temporary = temporary_path(path);
     let result = (|| {
         let mut file = std::fs::File::create(&temporary)?;
         file.write_all(bytes)?;
         file.sync_all()?;
         drop(file);
+        before_rename();
         std::fs::rename(&temporary, path)
     })();
     if result.is_err() {
