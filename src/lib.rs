@@ -6,6 +6,7 @@
 #![warn(missing_docs)]
 
 pub mod cli;
+pub mod preview;
 pub mod scene;
 pub mod trace;
 #[cfg(feature = "editor")]

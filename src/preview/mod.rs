@@ -1,0 +1,18 @@
+//! The background preview worker: the editor sends immutable scene snapshots, each with a
+//! generation number; a worker thread renders them progressively (a coarse pass, then
+//! full resolution at one sample, then accumulated anti-aliasing samples) and publishes
+//! each finished pass as `(generation, frame)`. No egui types here: the UI passes a waker
+//! closure and polls [`PreviewWorker::latest`].
+//!
+//! Ordering guarantee: a frame of an older generation is never published after a frame of
+//! a newer one, and a submit cancels the running pass at its next tile boundary.
+
+mod frame;
+mod plan;
+mod request;
+mod worker;
+
+pub use frame::{Frame, Published};
+pub use plan::{Pass, coarse_divider, plan_passes};
+pub use request::PreviewRequest;
+pub use worker::{PreviewWorker, Waker};
