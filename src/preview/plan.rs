@@ -108,10 +108,22 @@ mod tests {
             plan,
             vec![
                 Pass::Coarse { divider: 8 },
-                Pass::Full { samples: 1, target: 1 },
-                Pass::Full { samples: 4, target: 16 },
-                Pass::Full { samples: 8, target: 16 },
-                Pass::Full { samples: 16, target: 16 },
+                Pass::Full {
+                    samples: 1,
+                    target: 1
+                },
+                Pass::Full {
+                    samples: 4,
+                    target: 16
+                },
+                Pass::Full {
+                    samples: 8,
+                    target: 16
+                },
+                Pass::Full {
+                    samples: 16,
+                    target: 16
+                },
             ]
         );
         assert_eq!(Pass::Coarse { divider: 8 }.size(801, 600), (101, 75));
@@ -120,6 +132,12 @@ mod tests {
     #[test]
     fn one_sample_target_ends_at_the_full_pass() {
         let plan = plan_passes(&options(32, 32, 1));
-        assert_eq!(plan, vec![Pass::Full { samples: 1, target: 1 }]);
+        assert_eq!(
+            plan,
+            vec![Pass::Full {
+                samples: 1,
+                target: 1
+            }]
+        );
     }
 }

@@ -142,7 +142,9 @@ impl Drop for PreviewWorker {
 
 /// Locks the mailbox; a panic elsewhere cannot leave it inconsistent, so poison is ignored.
 fn lock(mutex: &Mutex<Mailbox>) -> MutexGuard<'_, Mailbox> {
-    mutex.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
+    mutex
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
 }
 
 /// The thread's loop: wait for a request, render it, repeat until shutdown.
@@ -255,7 +257,10 @@ fn render_pass(
             let sums = render_samples(world, &options, 0..1, progress)?;
             Some((sums.average(1), sums.rays))
         }
-        Pass::Full { samples, target: count } => {
+        Pass::Full {
+            samples,
+            target: count,
+        } => {
             let options = RenderOptions {
                 samples_per_pixel: count,
                 ..*target
