@@ -50,6 +50,8 @@ pub fn run(scene: Option<PathBuf>) -> Result<(), String> {
         .with_drag_and_drop(true);
     let native = eframe::NativeOptions {
         viewport,
+        // A screenshot run must look the same every time: no restored window size.
+        persist_window: options.screenshot.is_none(),
         ..eframe::NativeOptions::default()
     };
     eframe::run_native(

@@ -205,10 +205,12 @@ mod tests {
         let camera = PinholeCamera::new(&scene.camera, scene.camera.width, scene.camera.height);
         for name in ["red ball", "blue box", "gold cone"] {
             let index = scene.objects.iter().position(|o| o.name == name).unwrap();
+            // A point inside each shape (the cone's origin is its apex, so go up its axis).
+            let inside = glam::DVec3::new(0.0, 0.0, if name == "gold cone" { 0.8 } else { 0.0 });
             let centre = scene.objects[index]
                 .transform
                 .world_from_object()
-                .translation;
+                .transform_point3(inside);
             let p = camera.project(centre).unwrap();
             assert_eq!(pick_object(&scene, p), Some(index), "{name}");
         }
