@@ -30,6 +30,8 @@ pub struct EditorOptions {
     pub preview: bool,
     /// Save a screenshot here once the first full-resolution frame is shown, then close.
     pub screenshot: Option<PathBuf>,
+    /// Wait for the final (fully sampled) frame instead of the first full-resolution one.
+    pub screenshot_final: bool,
 }
 
 /// An action that would drop unsaved changes, waiting for the user's answer.
@@ -73,6 +75,7 @@ pub struct EditorApp {
     title: String,
     styled: bool,
     screenshot: Option<ScreenshotHook>,
+    screenshot_final: bool,
 }
 
 impl EditorApp {
@@ -101,6 +104,7 @@ impl EditorApp {
             title: String::new(),
             styled: false,
             screenshot: options.screenshot.map(ScreenshotHook::new),
+            screenshot_final: options.screenshot_final,
         };
         app.undoer.add_undo(&app.scene);
         if let Some(path) = options.scene {
@@ -211,10 +215,10 @@ impl EditorApp {
             self.title = title;
         }
         if let Some(hook) = &mut self.screenshot {
-            let ready = self
-                .preview
-                .as_ref()
-                .is_some_and(PreviewLink::shows_full_resolution);
+            let ready = self.preview.as_ref().is_some_and(|p| {
+                p.shows_full_resolution()
+                    && (!self.screenshot_final || p.shown().is_some_and(|s| s.is_final))
+            });
             if let Some(outcome) = hook.step(&ctx, ready) {
                 if let Err(error) = outcome {
                     eprintln!("raylab: screenshot failed: {error}");

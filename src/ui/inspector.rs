@@ -116,6 +116,27 @@ fn object_ui(
     if edited != *object {
         commands.push(Command::Edit(SceneEdit::SetObject(index, edited)));
     }
+    // The material's values right here, since that is what one tunes next.
+    if let Some(material) = scene.materials.get(&object.material) {
+        ui.add_space(6.0);
+        egui::CollapsingHeader::new(
+            egui::RichText::new(format!("Material \u{201c}{}\u{201d}", object.material)).strong(),
+        )
+        .id_salt("object material")
+        .default_open(true)
+        .show(ui, |ui| {
+            let mut edited = material.clone();
+            grid_ui(ui, "object material", |ui| {
+                material_rows_ui(ui, &mut edited)
+            });
+            if edited != *material {
+                commands.push(Command::Edit(SceneEdit::SetMaterial(
+                    object.material.clone(),
+                    edited,
+                )));
+            }
+        });
+    }
 }
 
 fn transform_ui(ui: &mut Ui, transform: &mut Transform) {
@@ -187,12 +208,14 @@ fn vec3_row(
 ) {
     ui.label(label);
     ui.horizontal(|ui| {
+        let width = field_width(ui, 3, 0.0);
         for (axis, component) in
             ["x", "y", "z"]
                 .into_iter()
                 .zip([&mut value.x, &mut value.y, &mut value.z])
         {
-            ui.add(
+            ui.add_sized(
+                [width, ui.spacing().interact_size.y],
                 DragValue::new(component)
                     .speed(speed)
                     .range(range.clone())
@@ -205,25 +228,42 @@ fn vec3_row(
     ui.end_row();
 }
 
+/// The width of one of `count` fields sharing a row after `reserved` points.
+fn field_width(ui: &Ui, count: usize, reserved: f32) -> f32 {
+    let spacing = ui.spacing().item_spacing.x * (count as f32 - 1.0);
+    ((ui.available_width() - reserved - spacing) / count as f32).clamp(44.0, 96.0)
+}
+
 /// A linear-RGB colour: a picker plus the three numbers (lights may exceed 1).
 fn colour_row(ui: &mut Ui, label: &str, colour: &mut DVec3) {
     ui.label(label);
     ui.horizontal(|ui| {
-        let mut rgb = colour.as_vec3().to_array();
-        let clamped = rgb.map(|c| c.clamp(0.0, 1.0));
+        let width = field_width(
+            ui,
+            3,
+            ui.spacing().interact_size.x + ui.spacing().item_spacing.x,
+        );
+        // The picker works in f32 through HSV and may hand back a value that moved by
+        // rounding alone: only a real change from the user is taken.
+        let clamped = colour.as_vec3().to_array().map(|c| c.clamp(0.0, 1.0));
         let mut picked = clamped;
-        ui.color_edit_button_rgb(&mut picked)
+        let response = ui
+            .color_edit_button_rgb(&mut picked)
             .accessible_name(format!("{label} colour"));
-        if picked != clamped {
-            rgb = picked;
-            *colour = glam::Vec3::from_array(rgb).as_dvec3();
+        let moved = picked
+            .iter()
+            .zip(clamped)
+            .any(|(a, b)| (a - b).abs() > 1e-4);
+        if response.changed() && moved {
+            *colour = glam::Vec3::from_array(picked).as_dvec3();
         }
         for (channel, component) in
             ["r", "g", "b"]
                 .into_iter()
                 .zip([&mut colour.x, &mut colour.y, &mut colour.z])
         {
-            ui.add(
+            ui.add_sized(
+                [width, ui.spacing().interact_size.y],
                 DragValue::new(component)
                     .speed(0.005)
                     .range(0.0..=f64::INFINITY)
@@ -358,11 +398,7 @@ fn material_ui(
             ui.data_mut(|d| d.insert_temp(id, buffer));
         }
         ui.end_row();
-        colour_row(ui, "ambient", &mut edited.ambient);
-        colour_row(ui, "diffuse", &mut edited.diffuse);
-        colour_row(ui, "specular", &mut edited.specular);
-        number_row(ui, "shininess", &mut edited.shininess, 0.5, 1e-3..=10_000.0);
-        colour_row(ui, "mirror", &mut edited.mirror);
+        material_rows_ui(ui, &mut edited);
     });
     if edited != *material {
         commands.push(Command::Edit(SceneEdit::SetMaterial(
@@ -370,6 +406,21 @@ fn material_ui(
             edited,
         )));
     }
+}
+
+/// The rows of a material's values.
+fn material_rows_ui(ui: &mut Ui, material: &mut Material) {
+    colour_row(ui, "ambient", &mut material.ambient);
+    colour_row(ui, "diffuse", &mut material.diffuse);
+    colour_row(ui, "specular", &mut material.specular);
+    number_row(
+        ui,
+        "shininess",
+        &mut material.shininess,
+        0.5,
+        1e-3..=10_000.0,
+    );
+    colour_row(ui, "mirror", &mut material.mirror);
 }
 
 fn camera_ui(ui: &mut Ui, camera: &Camera, commands: &mut Vec<Command>) {

@@ -31,6 +31,13 @@ pub use viewport::{VIEWPORT_LABEL, letterbox, pick_object};
 /// full-resolution preview is shown, save it there, and quit.
 pub const SCREENSHOT_ENV: &str = "RAYLAB_SCREENSHOT";
 
+/// With [`SCREENSHOT_ENV`]: the name of an object to select before the screenshot (so
+/// the documentation's picture shows a filled inspector).
+pub const SCREENSHOT_SELECT_ENV: &str = "RAYLAB_SCREENSHOT_SELECT";
+
+/// With [`SCREENSHOT_ENV`]: when set, wait for the final anti-aliased frame.
+pub const SCREENSHOT_FINAL_ENV: &str = "RAYLAB_SCREENSHOT_FINAL";
+
 /// Opens the editor on `scene`, or on the embedded default scene.
 ///
 /// # Errors
@@ -41,6 +48,7 @@ pub fn run(scene: Option<PathBuf>) -> Result<(), String> {
         scene,
         preview: true,
         screenshot,
+        screenshot_final: std::env::var_os(SCREENSHOT_FINAL_ENV).is_some(),
     };
     let viewport = egui::ViewportBuilder::default()
         .with_title("raylab")
@@ -63,7 +71,14 @@ pub fn run(scene: Option<PathBuf>) -> Result<(), String> {
             } else {
                 recent::RecentFiles::load(cc.storage)
             };
-            Ok(Box::new(EditorApp::new(options, recent)))
+            let mut app = EditorApp::new(options, recent);
+            if let Some(name) = std::env::var_os(SCREENSHOT_SELECT_ENV) {
+                let name = name.to_string_lossy();
+                if let Some(index) = app.scene().objects.iter().position(|o| o.name == name) {
+                    app.push(Command::Select(Selection::Object(index)));
+                }
+            }
+            Ok(Box::new(app))
         }),
     )
     .map_err(|e| format!("cannot open the editor window: {e}"))

@@ -19,8 +19,8 @@ pub fn apply_style(ctx: &egui::Context) {
     visuals.window_fill = Color32::from_gray(34);
     visuals.extreme_bg_color = Color32::from_gray(20);
     visuals.faint_bg_color = Color32::from_gray(36);
-    visuals.selection.bg_fill = Color32::from_rgb(150, 92, 28);
-    visuals.selection.stroke = Stroke::new(1.0, ACCENT);
+    visuals.selection.bg_fill = Color32::from_rgb(128, 78, 24);
+    visuals.selection.stroke = Stroke::new(1.0, Color32::from_rgb(255, 236, 214));
     visuals.widgets.noninteractive.bg_stroke = Stroke::new(1.0, Color32::from_gray(48));
     visuals.widgets.inactive.corner_radius = CornerRadius::same(3);
     visuals.widgets.hovered.corner_radius = CornerRadius::same(3);

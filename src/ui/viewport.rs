@@ -175,7 +175,7 @@ fn selection_marker(painter: &egui::Painter, picture: Rect, scene: &Scene, selec
     if !picture.contains(pos) {
         return;
     }
-    let accent = Color32::from_rgb(255, 170, 60);
+    let accent = super::style::ACCENT;
     painter.circle_stroke(pos, 6.0, Stroke::new(2.0, Color32::from_black_alpha(160)));
     painter.circle_stroke(pos, 5.0, Stroke::new(1.5, accent));
     painter.text(
