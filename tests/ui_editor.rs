@@ -496,3 +496,102 @@ fn click_at(harness: &mut Harness<'_, EditorApp>, pos: Pos2) {
     }
     harness.run_ok();
 }
+
+/// A file dropped on the window, as the native integration hands it over.
+#[derive(Debug)]
+struct DroppedPath(PathBuf);
+
+impl egui::DroppedFile for DroppedPath {
+    fn path(&self) -> &Path {
+        &self.0
+    }
+    fn bytes(&self) -> Result<Vec<u8>, String> {
+        std::fs::read(&self.0).map_err(|e| e.to_string())
+    }
+}
+
+fn drop_file(harness: &mut Harness<'_, EditorApp>, path: &Path) {
+    harness
+        .input_mut()
+        .dropped_files
+        .push(std::sync::Arc::new(DroppedPath(path.to_owned())));
+    harness.run();
+}
+
+#[test]
+fn dropping_a_ron_file_opens_it_and_other_files_are_refused() {
+    let dir = temp_dir("drop");
+    let path = dir.join("dropped.ron");
+    let mut scene = new_scene();
+    scene.camera.fov_deg = 50.0;
+    save_scene_to(&scene, &path).unwrap();
+    let mut harness = harness();
+
+    drop_file(&mut harness, &dir.join("picture.png"));
+    assert!(harness.state().error().unwrap().contains(".ron"));
+    assert_eq!(harness.state().scene(), &default_scene());
+
+    drop_file(&mut harness, &path);
+    assert_eq!(harness.state().scene(), &scene);
+    assert_eq!(harness.state().path(), Some(path.as_path()));
+}
+
+#[test]
+fn closing_the_window_with_unsaved_changes_asks_first() {
+    let mut harness = harness();
+    harness.state_mut().push(Command::Edit(SceneEdit::AddObject(
+        raylab::scene::Shape::Cube,
+    )));
+    harness.run();
+    let close = |harness: &mut Harness<'_, EditorApp>| {
+        harness
+            .input_mut()
+            .viewports
+            .entry(egui::ViewportId::ROOT)
+            .or_default()
+            .events
+            .push(egui::ViewportEvent::Close);
+        harness.run();
+    };
+    close(&mut harness);
+    assert_eq!(
+        harness.state().pending_discard(),
+        Some(&raylab::ui::DiscardAction::Quit)
+    );
+    harness.get_by_label("Cancel").click();
+    harness.run();
+    assert_eq!(harness.state().pending_discard(), None);
+    assert_eq!(
+        harness.state().scene().objects.len(),
+        7,
+        "nothing was dropped"
+    );
+
+    // Without unsaved changes the window closes without asking.
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    harness.run();
+    assert!(!harness.state().is_dirty());
+    close(&mut harness);
+    assert_eq!(harness.state().pending_discard(), None);
+}
+
+#[test]
+fn import_legacy_goes_through_the_adapter_and_keeps_the_scene_on_failure() {
+    let dir = temp_dir("legacy");
+    let path = dir.join("old.txt");
+    std::fs::write(&path, "this is not a legacy scene\n").unwrap();
+    let mut harness = harness();
+    harness
+        .state_mut()
+        .push(Command::ImportLegacy(path.clone()));
+    harness.run();
+    let expected = raylab::ui::files::import_legacy(&path);
+    match expected {
+        Ok((scene, _)) => assert_eq!(harness.state().scene(), &scene),
+        Err(error) => {
+            assert_eq!(harness.state().scene(), &default_scene());
+            let shown = harness.state().error().expect("the error is shown");
+            assert!(shown.contains(&error), "{shown}");
+        }
+    }
+}
