@@ -324,6 +324,8 @@ impl EditorApp {
                     &mut self.focus_name,
                     &mut commands,
                 );
+                // A rename asked for an item without a name field: forget it.
+                self.focus_name = false;
             });
         egui::CentralPanel::no_frame().show(ui, |ui| {
             viewport_ui(
@@ -397,9 +399,11 @@ impl EditorApp {
             },
             Command::SaveAsDialog => self.save_as_dialog(),
             Command::SaveAs(path) => self.save_as(&path),
-            Command::ShowExport => self.export.show(&self.scene),
+            Command::ShowExport => {
+                let default = self.path.as_ref().map(|p| p.with_extension("png"));
+                self.export.show(&self.scene, default);
+            }
             Command::ShowHelp => self.show_help = !self.show_help,
-            Command::ForgetRecent(path) => self.recent.remove(&path),
             Command::DismissError => self.error = None,
             Command::FocusName => self.focus_name = true,
         }
@@ -456,7 +460,11 @@ impl EditorApp {
                 self.recent.push(path);
                 self.message = Some(format!("Opened {}", path.display()));
             }
-            Err(error) => self.error = Some(error),
+            Err(error) => {
+                // A recent file that no longer opens leaves the list.
+                self.recent.remove(path);
+                self.error = Some(error);
+            }
         }
     }
 

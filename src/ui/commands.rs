@@ -154,8 +154,6 @@ pub enum Command {
     ShowHelp,
     /// Close the window (asks first if there are unsaved changes).
     Quit,
-    /// Remove a file from the recent list.
-    ForgetRecent(PathBuf),
     /// Hide the error area.
     DismissError,
     /// Put the keyboard focus in the inspector's name field (outliner "Rename").

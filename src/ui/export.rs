@@ -60,9 +60,14 @@ pub struct ExportState {
 }
 
 impl ExportState {
-    /// Opens the window with the scene's size and samples.
-    pub fn show(&mut self, scene: &Scene) {
+    /// Opens the window with the scene's size and samples; `default_path` fills an empty
+    /// file field (e.g. the scene's file with `.png`).
+    pub fn show(&mut self, scene: &Scene, default_path: Option<PathBuf>) {
         self.open = true;
+        if self.path.trim().is_empty() {
+            let path = default_path.unwrap_or_else(|| PathBuf::from("render.png"));
+            self.path = path.display().to_string();
+        }
         if self.job.is_none() {
             self.settings = Some(ExportSettings::from_scene(scene));
         }

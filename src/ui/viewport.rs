@@ -53,7 +53,10 @@ pub fn viewport_ui(
     selection: &Selection,
     commands: &mut Vec<Command>,
 ) {
-    let outer = ui.available_rect_before_wrap();
+    let full = ui.available_rect_before_wrap();
+    let header = Rect::from_min_size(full.min, Vec2::new(full.width(), HEADER_HEIGHT));
+    let outer = Rect::from_min_max(Pos2::new(full.min.x, header.max.y), full.max);
+    header_ui(ui, header, scene);
     ui.painter()
         .rect_filled(outer, CornerRadius::ZERO, Color32::from_gray(14));
     let aspect = scene.camera.width as f32 / scene.camera.height.max(1) as f32;
@@ -104,6 +107,41 @@ pub fn viewport_ui(
         let selection = pick_object(scene, image_point).map_or(Selection::None, Selection::Object);
         commands.push(Command::Select(selection));
     }
+}
+
+/// Height of the strip above the picture (where the term toolbar will go).
+const HEADER_HEIGHT: f32 = 28.0;
+
+/// The strip above the picture: title, output size, samples and depth.
+fn header_ui(ui: &mut egui::Ui, header: Rect, scene: &Scene) {
+    let painter = ui.painter_at(header);
+    painter.rect_filled(header, CornerRadius::ZERO, Color32::from_gray(24));
+    painter.hline(
+        header.x_range(),
+        header.max.y - 0.5,
+        Stroke::new(1.0, Color32::from_gray(40)),
+    );
+    painter.text(
+        header.left_center() + Vec2::new(10.0, 0.0),
+        Align2::LEFT_CENTER,
+        "VIEWPORT",
+        FontId::proportional(10.0),
+        Color32::from_gray(150),
+    );
+    let info = format!(
+        "{} × {}  ·  {} spp  ·  depth {}",
+        scene.camera.width,
+        scene.camera.height,
+        scene.render.samples_per_pixel,
+        scene.render.max_depth
+    );
+    painter.text(
+        header.right_center() - Vec2::new(10.0, 0.0),
+        Align2::RIGHT_CENTER,
+        info,
+        FontId::proportional(12.0),
+        Color32::from_gray(170),
+    );
 }
 
 /// Scene output pixels of a screen position over the picture.
