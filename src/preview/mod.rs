@@ -14,5 +14,5 @@ mod worker;
 
 pub use frame::{Frame, Published};
 pub use plan::{Pass, coarse_divider, plan_passes};
-pub use request::PreviewRequest;
+pub use request::{MAX_PREVIEW_LONG_SIDE, PreviewRequest};
 pub use worker::{PreviewWorker, Waker};

@@ -143,15 +143,15 @@ fn transform_ui(ui: &mut Ui, transform: &mut Transform) {
     match transform {
         Transform::Trs(trs) => {
             grid_ui(ui, "trs", |ui| {
-                vec3_row(
+                vec3_row_ui(
                     ui,
                     "translate",
                     &mut trs.translate,
                     0.01,
                     f64::NEG_INFINITY..=f64::INFINITY,
                 );
-                vec3_row(ui, "rotate", &mut trs.rotate_deg, 0.5, -360.0..=360.0);
-                vec3_row(ui, "scale", &mut trs.scale, 0.01, 1e-4..=f64::INFINITY);
+                vec3_row_ui(ui, "rotate", &mut trs.rotate_deg, 0.5, -360.0..=360.0);
+                vec3_row_ui(ui, "scale", &mut trs.scale, 0.01, 1e-4..=f64::INFINITY);
             });
         }
         Transform::Matrix(rows) => {
@@ -199,7 +199,7 @@ pub fn trs_from_matrix(affine: &glam::DAffine3) -> Trs {
 }
 
 /// Three drag values named "`label` x/y/z".
-fn vec3_row(
+fn vec3_row_ui(
     ui: &mut Ui,
     label: &str,
     value: &mut DVec3,
@@ -235,7 +235,7 @@ fn field_width(ui: &Ui, count: usize, reserved: f32) -> f32 {
 }
 
 /// A linear-RGB colour: a picker plus the three numbers (lights may exceed 1).
-fn colour_row(ui: &mut Ui, label: &str, colour: &mut DVec3) {
+fn colour_row_ui(ui: &mut Ui, label: &str, colour: &mut DVec3) {
     ui.label(label);
     ui.horizontal(|ui| {
         let width = field_width(
@@ -277,7 +277,7 @@ fn colour_row(ui: &mut Ui, label: &str, colour: &mut DVec3) {
 }
 
 /// One labelled drag value.
-fn number_row<N: egui::emath::Numeric>(
+fn number_row_ui<N: egui::emath::Numeric>(
     ui: &mut Ui,
     label: &str,
     value: &mut N,
@@ -300,38 +300,38 @@ fn light_ui(ui: &mut Ui, index: usize, light: &Light, commands: &mut Vec<Command
     let mut edited = light.clone();
     grid_ui(ui, "light", |ui| match &mut edited {
         Light::Ambient { colour, intensity } => {
-            colour_row(ui, "colour", colour);
-            number_row(ui, "intensity", intensity, 0.01, 0.0..=f64::INFINITY);
+            colour_row_ui(ui, "colour", colour);
+            number_row_ui(ui, "intensity", intensity, 0.01, 0.0..=f64::INFINITY);
         }
         Light::Point {
             position,
             colour,
             intensity,
         } => {
-            vec3_row(
+            vec3_row_ui(
                 ui,
                 "position",
                 position,
                 0.02,
                 f64::NEG_INFINITY..=f64::INFINITY,
             );
-            colour_row(ui, "colour", colour);
-            number_row(ui, "intensity", intensity, 0.1, 0.0..=f64::INFINITY);
+            colour_row_ui(ui, "colour", colour);
+            number_row_ui(ui, "intensity", intensity, 0.1, 0.0..=f64::INFINITY);
         }
         Light::Directional {
             direction,
             colour,
             intensity,
         } => {
-            vec3_row(
+            vec3_row_ui(
                 ui,
                 "direction",
                 direction,
                 0.01,
                 f64::NEG_INFINITY..=f64::INFINITY,
             );
-            colour_row(ui, "colour", colour);
-            number_row(ui, "intensity", intensity, 0.01, 0.0..=f64::INFINITY);
+            colour_row_ui(ui, "colour", colour);
+            number_row_ui(ui, "intensity", intensity, 0.01, 0.0..=f64::INFINITY);
         }
         Light::Spot {
             position,
@@ -340,23 +340,23 @@ fn light_ui(ui: &mut Ui, index: usize, light: &Light, commands: &mut Vec<Command
             colour,
             intensity,
         } => {
-            vec3_row(
+            vec3_row_ui(
                 ui,
                 "position",
                 position,
                 0.02,
                 f64::NEG_INFINITY..=f64::INFINITY,
             );
-            vec3_row(
+            vec3_row_ui(
                 ui,
                 "direction",
                 direction,
                 0.01,
                 f64::NEG_INFINITY..=f64::INFINITY,
             );
-            number_row(ui, "angle", angle_deg, 0.2, 0.1..=90.0);
-            colour_row(ui, "colour", colour);
-            number_row(ui, "intensity", intensity, 0.1, 0.0..=f64::INFINITY);
+            number_row_ui(ui, "angle", angle_deg, 0.2, 0.1..=90.0);
+            colour_row_ui(ui, "colour", colour);
+            number_row_ui(ui, "intensity", intensity, 0.1, 0.0..=f64::INFINITY);
         }
     });
     if edited != *light {
@@ -410,47 +410,47 @@ fn material_ui(
 
 /// The rows of a material's values.
 fn material_rows_ui(ui: &mut Ui, material: &mut Material) {
-    colour_row(ui, "ambient", &mut material.ambient);
-    colour_row(ui, "diffuse", &mut material.diffuse);
-    colour_row(ui, "specular", &mut material.specular);
-    number_row(
+    colour_row_ui(ui, "ambient", &mut material.ambient);
+    colour_row_ui(ui, "diffuse", &mut material.diffuse);
+    colour_row_ui(ui, "specular", &mut material.specular);
+    number_row_ui(
         ui,
         "shininess",
         &mut material.shininess,
         0.5,
         1e-3..=10_000.0,
     );
-    colour_row(ui, "mirror", &mut material.mirror);
+    colour_row_ui(ui, "mirror", &mut material.mirror);
 }
 
 fn camera_ui(ui: &mut Ui, camera: &Camera, commands: &mut Vec<Command>) {
     heading_ui(ui, "CAMERA", "Camera");
     let mut edited = camera.clone();
     grid_ui(ui, "camera", |ui| {
-        vec3_row(
+        vec3_row_ui(
             ui,
             "position",
             &mut edited.position,
             0.02,
             f64::NEG_INFINITY..=f64::INFINITY,
         );
-        vec3_row(
+        vec3_row_ui(
             ui,
             "look at",
             &mut edited.look_at,
             0.02,
             f64::NEG_INFINITY..=f64::INFINITY,
         );
-        vec3_row(
+        vec3_row_ui(
             ui,
             "up",
             &mut edited.up,
             0.01,
             f64::NEG_INFINITY..=f64::INFINITY,
         );
-        number_row(ui, "fov", &mut edited.fov_deg, 0.2, 1.0..=179.0);
-        number_row(ui, "width", &mut edited.width, 1.0, 1..=MAX_IMAGE_SIDE);
-        number_row(ui, "height", &mut edited.height, 1.0, 1..=MAX_IMAGE_SIDE);
+        number_row_ui(ui, "fov", &mut edited.fov_deg, 0.2, 1.0..=179.0);
+        number_row_ui(ui, "width", &mut edited.width, 1.0, 1..=MAX_IMAGE_SIDE);
+        number_row_ui(ui, "height", &mut edited.height, 1.0, 1..=MAX_IMAGE_SIDE);
     });
     ui.weak("fov is the vertical field of view, in degrees. Width and height are the output size.");
     if edited != *camera {
@@ -462,9 +462,9 @@ fn render_ui(ui: &mut Ui, render: &RenderSettings, commands: &mut Vec<Command>) 
     heading_ui(ui, "RENDER", "Render settings");
     let mut edited = render.clone();
     grid_ui(ui, "render", |ui| {
-        number_row(ui, "max depth", &mut edited.max_depth, 0.1, 0..=MAX_DEPTH);
-        colour_row(ui, "background", &mut edited.background);
-        number_row(
+        number_row_ui(ui, "max depth", &mut edited.max_depth, 0.1, 0..=MAX_DEPTH);
+        colour_row_ui(ui, "background", &mut edited.background);
+        number_row_ui(
             ui,
             "samples per pixel",
             &mut edited.samples_per_pixel,

@@ -23,7 +23,7 @@ pub fn menu_ui(ui: &mut Ui, state: &MenuState<'_>, commands: &mut Vec<Command>) 
         ui.menu_button("File", |ui| file_menu_ui(ui, state, commands));
         ui.menu_button("Edit", |ui| edit_menu_ui(ui, state, commands));
         ui.menu_button("Help", |ui| {
-            entry(
+            entry_ui(
                 ui,
                 "Keyboard shortcuts",
                 "Keyboard shortcuts",
@@ -39,7 +39,7 @@ pub fn menu_ui(ui: &mut Ui, state: &MenuState<'_>, commands: &mut Vec<Command>) 
 }
 
 /// A menu entry with its shortcut shown on the right.
-fn entry(
+fn entry_ui(
     ui: &mut Ui,
     label: &str,
     shortcut: &str,
@@ -58,8 +58,8 @@ fn entry(
 }
 
 fn file_menu_ui(ui: &mut Ui, state: &MenuState<'_>, commands: &mut Vec<Command>) {
-    entry(ui, "New", "New scene", true, Command::New, commands);
-    entry(ui, "Open…", "Open…", true, Command::OpenDialog, commands);
+    entry_ui(ui, "New", "New scene", true, Command::New, commands);
+    entry_ui(ui, "Open…", "Open…", true, Command::OpenDialog, commands);
     ui.menu_button("Open Recent", |ui| {
         if state.recent.is_empty() {
             ui.weak("No recent files");
@@ -79,8 +79,8 @@ fn file_menu_ui(ui: &mut Ui, state: &MenuState<'_>, commands: &mut Vec<Command>)
         }
     });
     ui.separator();
-    entry(ui, "Save", "Save", true, Command::Save, commands);
-    entry(
+    entry_ui(ui, "Save", "Save", true, Command::Save, commands);
+    entry_ui(
         ui,
         "Save As…",
         "Save As…",
@@ -89,7 +89,7 @@ fn file_menu_ui(ui: &mut Ui, state: &MenuState<'_>, commands: &mut Vec<Command>)
         commands,
     );
     ui.separator();
-    entry(
+    entry_ui(
         ui,
         "Import Legacy…",
         "",
@@ -97,7 +97,7 @@ fn file_menu_ui(ui: &mut Ui, state: &MenuState<'_>, commands: &mut Vec<Command>)
         Command::ImportLegacyDialog,
         commands,
     );
-    entry(
+    entry_ui(
         ui,
         "Export PNG…",
         "Export PNG…",
@@ -106,14 +106,14 @@ fn file_menu_ui(ui: &mut Ui, state: &MenuState<'_>, commands: &mut Vec<Command>)
         commands,
     );
     ui.separator();
-    entry(ui, "Quit", "", true, Command::Quit, commands);
+    entry_ui(ui, "Quit", "", true, Command::Quit, commands);
 }
 
 fn edit_menu_ui(ui: &mut Ui, state: &MenuState<'_>, commands: &mut Vec<Command>) {
-    entry(ui, "Undo", "Undo", state.can_undo, Command::Undo, commands);
-    entry(ui, "Redo", "Redo", state.can_redo, Command::Redo, commands);
+    entry_ui(ui, "Undo", "Undo", state.can_undo, Command::Undo, commands);
+    entry_ui(ui, "Redo", "Redo", state.can_redo, Command::Redo, commands);
     ui.separator();
-    entry(
+    entry_ui(
         ui,
         "Duplicate",
         "Duplicate selection",
@@ -121,7 +121,7 @@ fn edit_menu_ui(ui: &mut Ui, state: &MenuState<'_>, commands: &mut Vec<Command>)
         Command::Edit(SceneEdit::DuplicateSelected),
         commands,
     );
-    entry(
+    entry_ui(
         ui,
         "Delete",
         "Delete selection",

@@ -5,7 +5,7 @@ use std::time::Duration;
 
 use egui::{ColorImage, TextureHandle, TextureOptions};
 
-use crate::preview::{Pass, PreviewRequest, PreviewWorker};
+use crate::preview::{MAX_PREVIEW_LONG_SIDE, Pass, PreviewRequest, PreviewWorker};
 use crate::scene::Scene;
 
 /// What is on screen: the pass, how long it took, whether more will follow.
@@ -54,8 +54,11 @@ impl PreviewLink {
             return;
         }
         self.generation += 1;
-        self.worker
-            .submit(PreviewRequest::for_scene(self.generation, scene.clone()));
+        self.worker.submit(PreviewRequest::for_scene_capped(
+            self.generation,
+            scene.clone(),
+            MAX_PREVIEW_LONG_SIDE,
+        ));
         self.submitted = Some(scene.clone());
     }
 

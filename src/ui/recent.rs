@@ -54,6 +54,35 @@ impl RecentFiles {
 mod tests {
     use super::*;
 
+    /// eframe's storage interface over a map, as the native one is over a file.
+    #[derive(Default)]
+    struct MapStorage(std::collections::HashMap<String, String>);
+
+    impl eframe::Storage for MapStorage {
+        fn get_string(&self, key: &str) -> Option<String> {
+            self.0.get(key).cloned()
+        }
+        fn set_string(&mut self, key: &str, value: String) {
+            self.0.insert(key.to_owned(), value);
+        }
+        fn remove_string(&mut self, key: &str) {
+            self.0.remove(key);
+        }
+        fn flush(&mut self) {}
+    }
+
+    #[test]
+    fn the_list_survives_a_restart_through_storage() {
+        let mut storage = MapStorage::default();
+        assert_eq!(RecentFiles::load(Some(&storage)), RecentFiles::default());
+        let mut recent = RecentFiles::default();
+        recent.push(Path::new("/nonexistent/a.ron"));
+        recent.push(Path::new("/nonexistent/b.ron"));
+        recent.save(&mut storage);
+        assert_eq!(RecentFiles::load(Some(&storage)), recent);
+        assert_eq!(RecentFiles::load(None), RecentFiles::default());
+    }
+
     #[test]
     fn newest_first_without_duplicates_and_bounded() {
         let mut recent = RecentFiles::default();
