@@ -45,8 +45,8 @@ fn until_final(worker: &mut PreviewWorker, generation: u64) -> Vec<Published> {
         let Some(message) = worker.recv_timeout(Duration::from_millis(200)) else {
             continue;
         };
-        let done = message.generation == generation
-            && message.result.as_ref().is_ok_and(|f| f.is_final);
+        let done =
+            message.generation == generation && message.result.as_ref().is_ok_and(|f| f.is_final);
         seen.push(message);
         if done {
             return seen;
@@ -68,8 +68,14 @@ fn passes_arrive_coarse_first_then_full_then_samples() {
         passes,
         vec![
             Pass::Coarse { divider: 4 },
-            Pass::Full { samples: 1, target: 1 },
-            Pass::Full { samples: 4, target: 4 },
+            Pass::Full {
+                samples: 1,
+                target: 1
+            },
+            Pass::Full {
+                samples: 4,
+                target: 4
+            },
         ]
     );
     let first = messages[0].result.as_ref().unwrap();
@@ -82,7 +88,11 @@ fn passes_arrive_coarse_first_then_full_then_samples() {
     while wakes.load(Ordering::SeqCst) < 3 && waited.elapsed() < WAIT {
         std::thread::sleep(Duration::from_millis(5));
     }
-    assert_eq!(wakes.load(Ordering::SeqCst), 3, "the waker runs once per publish");
+    assert_eq!(
+        wakes.load(Ordering::SeqCst),
+        3,
+        "the waker runs once per publish"
+    );
 }
 
 #[test]
@@ -95,10 +105,7 @@ fn after_a_submit_the_next_frame_carries_the_new_generation() {
     worker.submit(PreviewRequest::for_scene(2, edited));
     let message = next(&mut worker);
     assert_eq!(message.generation, 2);
-    assert!(matches!(
-        message.result.unwrap().pass,
-        Pass::Coarse { .. }
-    ));
+    assert!(matches!(message.result.unwrap().pass, Pass::Coarse { .. }));
 }
 
 #[test]
@@ -164,4 +171,27 @@ fn an_invalid_scene_publishes_its_error() {
     assert_eq!(message.generation, 7);
     let error = message.result.expect_err("the scene is invalid");
     assert!(error.contains("no such material"), "{error}");
+}
+
+#[test]
+fn the_final_frame_matches_a_direct_render_of_the_same_options() {
+    let (mut worker, _) = worker_with_counter();
+    let scene = small_scene(160, 120, 16);
+    let request = PreviewRequest::for_scene(1, scene.clone());
+    let options = request.options;
+    worker.submit(request);
+    let messages = until_final(&mut worker, 1);
+    let last = messages.last().unwrap().result.as_ref().unwrap();
+    let world = raylab::trace::World::new(&scene).unwrap();
+    let progress = raylab::trace::RenderProgress::default();
+    let (direct, _) = raylab::trace::render(&world, &options, &progress).unwrap();
+    assert_eq!(last.image.to_rgba8(), direct.to_rgba8());
+    let max_difference = last
+        .image
+        .pixels
+        .iter()
+        .zip(&direct.pixels)
+        .map(|(a, b)| (*a - *b).abs().max_element())
+        .fold(0.0f32, f32::max);
+    assert!(max_difference < 1e-6, "{max_difference}");
 }

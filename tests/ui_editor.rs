@@ -595,3 +595,41 @@ fn import_legacy_goes_through_the_adapter_and_keeps_the_scene_on_failure() {
         }
     }
 }
+
+#[test]
+fn a_matrix_transform_is_read_only_until_reset_to_translate_rotate_scale() {
+    let dir = temp_dir("matrix");
+    let path = dir.join("matrix.ron");
+    let mut scene = new_scene();
+    scene.objects.push(raylab::scene::Object {
+        name: "tilted".to_owned(),
+        shape: raylab::scene::Shape::Cube,
+        transform: Transform::Matrix([
+            [0.0, -2.0, 0.0, 1.0],
+            [1.0, 0.0, 0.0, 2.0],
+            [0.0, 0.0, 0.5, -3.0],
+        ]),
+        material: "default".to_owned(),
+    });
+    save_scene_to(&scene, &path).unwrap();
+    let mut harness = harness();
+    harness.state_mut().push(Command::Open(path));
+    harness.run();
+    harness.get_by_label("tilted").click();
+    harness.run();
+    assert!(
+        harness.query_by_label("translate x").is_none(),
+        "no editable fields"
+    );
+    let before = harness.state().scene().objects[0]
+        .transform
+        .world_from_object();
+    harness
+        .get_by_label("Reset to translate/rotate/scale")
+        .click();
+    harness.run();
+    let transform = harness.state().scene().objects[0].transform;
+    assert!(matches!(transform, Transform::Trs(_)));
+    assert!(transform.world_from_object().abs_diff_eq(before, 1e-12));
+    harness.get_by_label("translate x");
+}
