@@ -220,7 +220,8 @@ fn vec3_row_ui(
                     .speed(speed)
                     .range(range.clone())
                     .max_decimals(3)
-                    .prefix(format!("{axis} ")),
+                    .prefix(format!("{axis} "))
+                    .suffix(if label == "rotate" { "°" } else { "" }),
             )
             .accessible_name(format!("{label} {axis}"));
         }
@@ -284,14 +285,15 @@ fn number_row_ui<N: egui::emath::Numeric>(
     speed: f64,
     range: std::ops::RangeInclusive<N>,
 ) {
+    let mut drag = DragValue::new(value).speed(speed).range(range);
+    if !N::INTEGRAL {
+        drag = drag.max_decimals(3);
+    }
+    if matches!(label, "angle" | "fov") {
+        drag = drag.suffix("°");
+    }
     let label = ui.label(label);
-    ui.add(
-        DragValue::new(value)
-            .speed(speed)
-            .range(range)
-            .max_decimals(3),
-    )
-    .labelled_by(label.id);
+    ui.add(drag).labelled_by(label.id);
     ui.end_row();
 }
 
@@ -464,14 +466,12 @@ fn render_ui(ui: &mut Ui, render: &RenderSettings, commands: &mut Vec<Command>) 
     grid_ui(ui, "render", |ui| {
         number_row_ui(ui, "max depth", &mut edited.max_depth, 0.1, 0..=MAX_DEPTH);
         colour_row_ui(ui, "background", &mut edited.background);
-        number_row_ui(
-            ui,
-            "samples per pixel",
-            &mut edited.samples_per_pixel,
-            0.2,
-            1..=1024,
-        );
+        number_row_ui(ui, "samples", &mut edited.samples_per_pixel, 0.2, 1..=1024);
     });
+    ui.weak(
+        "max depth: mirror bounces. samples: anti-aliasing samples per pixel; \
+         the preview refines up to this and Export PNG uses it.",
+    );
     if edited != *render {
         commands.push(Command::Edit(SceneEdit::SetRender(edited)));
     }

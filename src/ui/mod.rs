@@ -31,8 +31,8 @@ pub use viewport::{VIEWPORT_LABEL, letterbox, pick_object};
 /// full-resolution preview is shown, save it there, and quit.
 pub const SCREENSHOT_ENV: &str = "RAYLAB_SCREENSHOT";
 
-/// With [`SCREENSHOT_ENV`]: the name of an object to select before the screenshot (so
-/// the documentation's picture shows a filled inspector).
+/// With [`SCREENSHOT_ENV`]: the outliner label of an item to select before the screenshot
+/// (so the documentation's picture shows a filled inspector).
 pub const SCREENSHOT_SELECT_ENV: &str = "RAYLAB_SCREENSHOT_SELECT";
 
 /// With [`SCREENSHOT_ENV`]: when set, wait for the final anti-aliased frame.
@@ -72,14 +72,36 @@ pub fn run(scene: Option<PathBuf>) -> Result<(), String> {
                 recent::RecentFiles::load(cc.storage)
             };
             let mut app = EditorApp::new(options, recent);
-            if let Some(name) = std::env::var_os(SCREENSHOT_SELECT_ENV) {
-                let name = name.to_string_lossy();
-                if let Some(index) = app.scene().objects.iter().position(|o| o.name == name) {
-                    app.push(Command::Select(Selection::Object(index)));
+            if let Some(label) = std::env::var_os(SCREENSHOT_SELECT_ENV) {
+                if let Some(selection) = selection_by_label(app.scene(), &label.to_string_lossy()) {
+                    app.push(Command::Select(selection));
                 }
             }
             Ok(Box::new(app))
         }),
     )
     .map_err(|e| format!("cannot open the editor window: {e}"))
+}
+
+/// The item whose outliner row reads `label`: an object, "Camera", "Render settings", a
+/// material or a light ("Point light 2").
+#[must_use]
+pub fn selection_by_label(scene: &crate::scene::Scene, label: &str) -> Option<Selection> {
+    if let Some(index) = scene.objects.iter().position(|o| o.name == label) {
+        return Some(Selection::Object(index));
+    }
+    match label {
+        "Camera" => return Some(Selection::Camera),
+        "Render settings" => return Some(Selection::Render),
+        _ => {}
+    }
+    if scene.materials.contains_key(label) {
+        return Some(Selection::Material(label.to_owned()));
+    }
+    scene
+        .lights
+        .iter()
+        .enumerate()
+        .position(|(i, l)| light_label(l, i) == label)
+        .map(Selection::Light)
 }
