@@ -198,6 +198,8 @@ pub fn export_window(ctx: &egui::Context, state: &mut ExportState, scene: &Scene
         .resizable(false)
         .collapsible(false)
         .default_width(360.0)
+        .pivot(egui::Align2::CENTER_CENTER)
+        .default_pos(ctx.content_rect().center())
         .show(ctx, |ui| export_ui(ui, state, scene));
     state.open = open || state.is_running();
     state.poll();
