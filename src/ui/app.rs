@@ -7,6 +7,7 @@ use egui::util::undoer::{Settings as UndoSettings, Undoer};
 use egui::{Color32, RichText, ViewportCommand};
 
 use super::commands::{Command, SceneEdit, Selection, repair_selection};
+use super::confirm::{DiscardAction, discard_modal};
 use super::export::{ExportState, export_window};
 use super::files;
 use super::inspector::inspector_ui;
@@ -32,23 +33,6 @@ pub struct EditorOptions {
     pub screenshot: Option<PathBuf>,
     /// Wait for the final (fully sampled) frame instead of the first full-resolution one.
     pub screenshot_final: bool,
-}
-
-/// An action that would drop unsaved changes, waiting for the user's answer.
-#[derive(Clone, Debug, PartialEq)]
-pub enum DiscardAction {
-    /// File > New.
-    New,
-    /// File > Open… (the dialog comes after the answer).
-    OpenDialog,
-    /// Open this file.
-    Open(PathBuf),
-    /// File > Import Legacy… (the dialog comes after the answer).
-    ImportDialog,
-    /// Import this legacy file.
-    Import(PathBuf),
-    /// Close the window.
-    Quit,
 }
 
 /// The editor.
@@ -553,38 +537,6 @@ fn panel_title_ui(ui: &mut egui::Ui, title: &str) {
             .color(Color32::from_gray(150)),
     );
     ui.add_space(2.0);
-}
-
-/// Asks whether to drop unsaved changes: `Some(true)` discard, `Some(false)` cancel.
-fn discard_modal(ctx: &egui::Context, action: &DiscardAction) -> Option<bool> {
-    let what = match action {
-        DiscardAction::New => "start a new scene",
-        DiscardAction::OpenDialog | DiscardAction::Open(_) => "open another scene",
-        DiscardAction::ImportDialog | DiscardAction::Import(_) => "import a scene",
-        DiscardAction::Quit => "quit",
-    };
-    let mut answer = None;
-    let modal = egui::Modal::new(egui::Id::unique("discard changes")).show(ctx, |ui| {
-        ui.set_width(340.0);
-        ui.heading("Unsaved changes");
-        ui.add_space(4.0);
-        ui.label(format!(
-            "The scene has unsaved changes. Discard them and {what}?"
-        ));
-        ui.add_space(8.0);
-        ui.horizontal(|ui| {
-            if ui.button("Discard changes").clicked() {
-                answer = Some(true);
-            }
-            if ui.button("Cancel").clicked() {
-                answer = Some(false);
-            }
-        });
-    });
-    if modal.should_close() && answer.is_none() {
-        answer = Some(false);
-    }
-    answer
 }
 
 impl eframe::App for EditorApp {

@@ -4,6 +4,7 @@
 
 mod app;
 pub mod commands;
+mod confirm;
 mod export;
 pub mod files;
 mod inspector;
@@ -19,8 +20,9 @@ mod viewport;
 
 use std::path::PathBuf;
 
-pub use app::{DiscardAction, EditorApp, EditorOptions};
+pub use app::{EditorApp, EditorOptions};
 pub use commands::{Command, LightKind, SceneEdit, Selection};
+pub use confirm::DiscardAction;
 pub use export::{ExportSettings, ExportState};
 pub use inspector::trs_from_matrix;
 pub use outliner::light_label;
@@ -72,10 +74,10 @@ pub fn run(scene: Option<PathBuf>) -> Result<(), String> {
                 recent::RecentFiles::load(cc.storage)
             };
             let mut app = EditorApp::new(options, recent);
-            if let Some(label) = std::env::var_os(SCREENSHOT_SELECT_ENV) {
-                if let Some(selection) = selection_by_label(app.scene(), &label.to_string_lossy()) {
-                    app.push(Command::Select(selection));
-                }
+            if let Some(label) = std::env::var_os(SCREENSHOT_SELECT_ENV)
+                && let Some(selection) = selection_by_label(app.scene(), &label.to_string_lossy())
+            {
+                app.push(Command::Select(selection));
             }
             Ok(Box::new(app))
         }),
