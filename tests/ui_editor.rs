@@ -231,6 +231,10 @@ fn renaming_an_object_in_the_inspector() {
     name.focus();
     name.type_text("!");
     harness.run();
+    // While typing, Delete belongs to the text field, not to the selection.
+    harness.key_press(Key::Delete);
+    harness.run();
+    assert_eq!(harness.state().scene().objects.len(), 6);
     // Click elsewhere to leave the field; the rename is one undo step.
     harness.get_by_label("Camera").click();
     harness.run();

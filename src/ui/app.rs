@@ -234,6 +234,9 @@ impl EditorApp {
                 ));
             }
         }
+        if ctx.input(|i| !i.raw.hovered_files.is_empty()) {
+            drop_hint(ctx);
+        }
         if ctx.input(|i| i.viewport().close_requested()) && !self.allow_close && self.is_dirty() {
             ctx.send_viewport_cmd(ViewportCommand::CancelClose);
             self.pending = Some(DiscardAction::Quit);
@@ -351,7 +354,7 @@ impl EditorApp {
             self.execute(command, ctx);
         }
         repair_selection(&self.scene, &mut self.selection);
-        let editing = ctx.input(|i| i.pointer.any_down()) || ctx.egui_wants_keyboard_input();
+        let editing = ctx.input(|i| i.pointer.any_down()) || ctx.text_edit_focused();
         if !editing {
             self.undoer.add_undo(&self.scene);
         }
@@ -526,6 +529,23 @@ fn undoer() -> Undoer<Scene> {
 
 fn scene_dialog() -> rfd::FileDialog {
     rfd::FileDialog::new().add_filter("raylab scene", &["ron"])
+}
+
+/// While files are dragged over the window: say what dropping does.
+fn drop_hint(ctx: &egui::Context) {
+    let painter = ctx.layer_painter(egui::LayerId::new(
+        egui::Order::Foreground,
+        egui::Id::unique("drop hint"),
+    ));
+    let rect = ctx.content_rect();
+    painter.rect_filled(rect, 0.0, Color32::from_black_alpha(170));
+    painter.text(
+        rect.center(),
+        egui::Align2::CENTER_CENTER,
+        "Drop a .ron scene to open it",
+        egui::FontId::proportional(22.0),
+        Color32::WHITE,
+    );
 }
 
 fn panel_title_ui(ui: &mut egui::Ui, title: &str) {

@@ -281,9 +281,8 @@ fn duplicate(scene: &mut Scene, selection: &mut Selection) -> Result<(), String>
             scene.materials.insert(new_name.clone(), copy);
             *selection = Selection::Material(new_name);
         }
-        Selection::None | Selection::Camera | Selection::Render => {
-            return Err("select an object, light or material to duplicate".to_owned());
-        }
+        // Nothing duplicable selected: the shortcut does nothing.
+        Selection::None | Selection::Camera | Selection::Render => {}
     }
     Ok(())
 }
@@ -314,7 +313,8 @@ fn delete(scene: &mut Scene, selection: &mut Selection) -> Result<(), String> {
             scene.materials.remove(&name);
             *selection = Selection::None;
         }
-        _ => return Err("select an object, light or material to delete".to_owned()),
+        // Nothing deletable selected (or stale): the shortcut does nothing.
+        _ => {}
     }
     Ok(())
 }

@@ -53,7 +53,7 @@ pub fn shortcut_text(ctx: &egui::Context, description: &str) -> String {
 /// the keyboard, only F1 and the file shortcuts act (Ctrl+Z, Delete... belong to it).
 #[must_use]
 pub fn shortcut_commands(ctx: &egui::Context) -> Vec<Command> {
-    let typing = ctx.egui_wants_keyboard_input();
+    let typing = ctx.text_edit_focused();
     let mut commands = Vec::new();
     ctx.input_mut(|input| {
         for (index, (modifiers, key, _)) in SHORTCUTS.iter().enumerate() {
