@@ -129,36 +129,61 @@ fn stale_generations_are_never_published_after_a_newer_one() {
     assert!(worker.recv_timeout(Duration::from_millis(500)).is_none());
 }
 
+/// Submits a render far longer than the bounds below and waits until its first
+/// anti-aliasing pass (4 samples a pixel) is under way. Returns how long the one-sample
+/// full-resolution pass took: the pass being rendered takes about four times that.
+fn start_long_render(worker: &mut PreviewWorker, generation: u64) -> Duration {
+    worker.submit(PreviewRequest::for_scene(
+        generation,
+        small_scene(2000, 1500, 1024),
+    ));
+    let one_sample = loop {
+        let message = next(worker);
+        assert_eq!(message.generation, generation);
+        let frame = message.result.unwrap();
+        if frame.pass
+            == (Pass::Full {
+                samples: 1,
+                target: 1,
+            })
+        {
+            break frame.elapsed;
+        }
+    };
+    let started = Instant::now();
+    while worker.pass_progress().is_none_or(|p| p <= 0.0) {
+        assert!(started.elapsed() < WAIT, "the sampling pass never started");
+        std::thread::sleep(Duration::from_millis(2));
+    }
+    one_sample
+}
+
 #[test]
 fn a_long_render_is_cancelled_quickly_by_a_new_submit_and_by_drop() {
     let (mut worker, _) = worker_with_counter();
-    // Big enough to take far longer than the bound below.
-    worker.submit(PreviewRequest::for_scene(1, small_scene(4000, 3000, 1024)));
-    let started = Instant::now();
-    while worker.pass_progress().is_none_or(|p| p <= 0.0) {
-        assert!(started.elapsed() < WAIT, "the long render never started");
-        std::thread::sleep(Duration::from_millis(5));
-    }
+    let one_sample = start_long_render(&mut worker, 1);
     let submitted = Instant::now();
     worker.submit(PreviewRequest::for_scene(2, small_scene(64, 48, 1)));
-    let message = loop {
-        let message = next(&mut worker);
-        if message.generation == 2 {
-            break message;
-        }
-    };
+    let message = next(&mut worker);
+    assert_eq!(
+        message.generation, 2,
+        "nothing more of the cancelled render"
+    );
     assert!(message.result.is_ok());
     let took = submitted.elapsed();
-    assert!(took < Duration::from_secs(20), "restart took {took:?}");
+    assert!(
+        took < Duration::from_secs(10) && took < one_sample,
+        "restart took {took:?}; a one-sample pass takes {one_sample:?}"
+    );
 
-    worker.submit(PreviewRequest::for_scene(3, small_scene(4000, 3000, 1024)));
-    while worker.pass_progress().is_none_or(|p| p <= 0.0) {
-        std::thread::sleep(Duration::from_millis(5));
-    }
+    let one_sample = start_long_render(&mut worker, 3);
     let dropping = Instant::now();
     drop(worker);
     let took = dropping.elapsed();
-    assert!(took < Duration::from_secs(20), "drop took {took:?}");
+    assert!(
+        took < Duration::from_secs(10) && took < one_sample,
+        "drop took {took:?}; a one-sample pass takes {one_sample:?}"
+    );
 }
 
 #[test]
