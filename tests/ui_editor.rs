@@ -637,3 +637,63 @@ fn a_matrix_transform_is_read_only_until_reset_to_translate_rotate_scale() {
     assert!(transform.world_from_object().abs_diff_eq(before, 1e-12));
     harness.get_by_label("translate x");
 }
+
+#[test]
+fn ctrl_s_saves_to_the_open_file_and_recent_files_reopen_it() {
+    let dir = temp_dir("ctrl-s");
+    let path = dir.join("scene.ron");
+    save_scene_to(&default_scene(), &path).unwrap();
+    let mut harness = harness();
+    harness.state_mut().push(Command::Open(path.clone()));
+    harness.run();
+    select_red_ball(&mut harness);
+    harness.get_by_label("scale x").set_value_accesskit(1.5);
+    harness.run();
+    assert!(harness.state().is_dirty());
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::S);
+    harness.run();
+    assert!(!harness.state().is_dirty());
+    assert_eq!(&load_scene(&path).unwrap(), harness.state().scene());
+
+    // File > New, then File > Open Recent > scene.ron brings it back.
+    harness.state_mut().push(Command::New);
+    harness.run();
+    assert_eq!(harness.state().scene(), &new_scene());
+    harness.get_by_label("File").click();
+    harness.run();
+    harness.get_by_label("Open Recent").click();
+    harness.run();
+    harness.get_by_label("scene.ron").click();
+    harness.run();
+    assert_eq!(&load_scene(&path).unwrap(), harness.state().scene());
+}
+
+#[test]
+fn a_running_export_can_be_cancelled_and_writes_nothing() {
+    let dir = temp_dir("export-cancel");
+    let path = dir.join("big.png");
+    let mut harness = harness();
+    harness.state_mut().push(Command::ShowExport);
+    harness.run();
+    // Far too much work to finish before the click below.
+    harness
+        .get_by_label("export width")
+        .set_value_accesskit(4000.0);
+    harness
+        .get_by_label("export height")
+        .set_value_accesskit(3000.0);
+    harness
+        .get_by_label("export samples")
+        .set_value_accesskit(4096.0);
+    harness.run();
+    set_export_path(&mut harness, &path);
+    harness.get_by_label("Render and save").click();
+    harness.run_ok();
+    assert!(harness.state().export().is_running());
+    harness.get_by_label("Cancel").click();
+    harness.run_ok();
+    step_until(&mut harness, "the cancel", |app| !app.export().is_running());
+    let status = harness.state().export().status.clone();
+    assert_eq!(status, Some(Err("export cancelled".to_owned())));
+    assert!(!path.exists());
+}
