@@ -220,3 +220,30 @@ fn the_final_frame_matches_a_direct_render_of_the_same_options() {
         .fold(0.0f32, f32::max);
     assert!(max_difference < 1e-6, "{max_difference}");
 }
+
+#[test]
+fn a_panic_on_the_worker_thread_is_reported_and_the_worker_carries_on() {
+    // The waker runs on the worker thread inside its guard: make the first call panic.
+    let calls = Arc::new(AtomicUsize::new(0));
+    let counter = Arc::clone(&calls);
+    let mut worker = PreviewWorker::spawn(Box::new(move || {
+        if counter.fetch_add(1, Ordering::SeqCst) == 0 {
+            panic!("boom");
+        }
+    }));
+    worker.submit(PreviewRequest::for_scene(1, small_scene(320, 240, 1)));
+    let first = next(&mut worker);
+    assert!(first.result.is_ok(), "the frame went out before the panic");
+    let report = next(&mut worker);
+    assert_eq!(report.generation, 1);
+    let error = report.result.expect_err("the panic is reported");
+    assert!(
+        error.contains("crashed") && error.contains("boom"),
+        "{error}"
+    );
+
+    worker.submit(PreviewRequest::for_scene(2, small_scene(64, 48, 1)));
+    let message = next(&mut worker);
+    assert_eq!(message.generation, 2);
+    assert!(message.result.is_ok(), "the worker still renders");
+}

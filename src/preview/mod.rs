@@ -5,7 +5,8 @@
 //! closure and polls [`PreviewWorker::latest`].
 //!
 //! Ordering guarantee: a frame of an older generation is never published after a frame of
-//! a newer one, and a submit cancels the running pass at its next tile boundary.
+//! a newer one, and a submit cancels the running pass at its next tile boundary. A panic
+//! while rendering is published as an error and the worker waits for the next request.
 
 mod frame;
 mod plan;

@@ -97,13 +97,6 @@ impl PreviewWorker {
         self.accept(message)
     }
 
-    /// Whether the thread is rendering or has a request waiting.
-    #[must_use]
-    pub fn is_busy(&self) -> bool {
-        let mailbox = lock(&self.shared.mailbox);
-        mailbox.next.is_some() || mailbox.running.is_some()
-    }
-
     /// Fraction of the running pass done, 0 to 1; `None` when idle.
     #[must_use]
     pub fn pass_progress(&self) -> Option<f64> {
@@ -161,9 +154,22 @@ fn run(shared: &Shared, sender: &Sender<Published>, waker: &Waker) {
                 }
             }
         };
-        match World::new(&request.scene) {
-            Ok(world) => render_plan(shared, &world, &request.options, &publish),
-            Err(error) => publish(Err(error.to_string())),
+        // A panic in the tracer must not end the worker: report it and wait for the next
+        // request (an edit may well avoid whatever caused it).
+        let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            match World::new(&request.scene) {
+                Ok(world) => render_plan(shared, &world, &request.options, &publish),
+                Err(error) => publish(Err(error.to_string())),
+            }
+        }));
+        if let Err(panic) = outcome {
+            lock(&shared.mailbox).running = None;
+            let reason = panic
+                .downcast_ref::<&str>()
+                .map(|s| (*s).to_owned())
+                .or_else(|| panic.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "unknown reason".to_owned());
+            publish(Err(format!("the renderer crashed: {reason}")));
         }
     }
 }
