@@ -22,6 +22,8 @@ use super::style::apply_style;
 use super::viewport::viewport_ui;
 use crate::scene::Scene;
 
+mod document;
+
 /// How to start the editor.
 #[derive(Clone, Debug, Default)]
 pub struct EditorOptions {
@@ -402,110 +404,6 @@ impl EditorApp {
         }
     }
 
-    /// Does `action` now, or asks first when it would drop unsaved changes.
-    fn guard(&mut self, action: DiscardAction, ctx: &egui::Context) {
-        if self.is_dirty() {
-            self.pending = Some(action);
-        } else {
-            self.perform(action, ctx);
-        }
-    }
-
-    fn perform(&mut self, action: DiscardAction, ctx: &egui::Context) {
-        match action {
-            DiscardAction::New => {
-                self.replace_scene(files::new_scene(), None);
-                self.unnamed = "untitled";
-            }
-            DiscardAction::OpenDialog => {
-                if let Some(path) = scene_dialog().pick_file() {
-                    self.open(&path);
-                }
-            }
-            DiscardAction::Open(path) => self.open(&path),
-            DiscardAction::ImportDialog => {
-                if let Some(path) = rfd::FileDialog::new()
-                    .set_title("Import legacy scene")
-                    .pick_file()
-                {
-                    self.import(&path);
-                }
-            }
-            DiscardAction::Import(path) => self.import(&path),
-            DiscardAction::Quit => {
-                self.allow_close = true;
-                ctx.send_viewport_cmd(ViewportCommand::Close);
-            }
-        }
-    }
-
-    /// Opens a scene file; on failure the error is shown and the scene stays as it was.
-    fn open(&mut self, path: &Path) {
-        match files::open_scene(path) {
-            Ok(scene) => {
-                self.replace_scene(scene, Some(path.to_owned()));
-                self.recent.push(path);
-                self.message = Some(format!("Opened {}", path.display()));
-            }
-            Err(error) => {
-                // A recent file that no longer opens leaves the list.
-                self.recent.remove(path);
-                self.error = Some(error);
-            }
-        }
-    }
-
-    fn import(&mut self, path: &Path) {
-        match files::import_legacy(path) {
-            Ok((scene, warnings)) => {
-                self.replace_scene(scene, None);
-                self.unnamed = "imported scene";
-                // An imported scene has no file yet: everything is unsaved.
-                self.saved = files::new_scene();
-                if !warnings.is_empty() {
-                    self.error = Some(format!("Imported with warnings: {}", warnings.join("; ")));
-                }
-            }
-            Err(error) => self.error = Some(format!("{}: {error}", path.display())),
-        }
-    }
-
-    /// Saves to `path`, which becomes the scene's file; errors are shown.
-    fn save_as(&mut self, path: &Path) {
-        match files::save_scene_to(&self.scene, path) {
-            Ok(()) => {
-                self.saved = self.scene.clone();
-                self.path = Some(path.to_owned());
-                self.recent.push(path);
-                self.message = Some(format!("Saved {}", path.display()));
-            }
-            Err(error) => self.error = Some(error),
-        }
-    }
-
-    fn save_as_dialog(&mut self) {
-        let name = format!("{}.ron", self.file_label().trim_end_matches(".ron"));
-        if let Some(path) = scene_dialog().set_file_name(name).save_file() {
-            let path = if files::is_scene_file(&path) {
-                path
-            } else {
-                path.with_extension("ron")
-            };
-            self.save_as(&path);
-        }
-    }
-
-    /// A new document: fresh undo history, nothing unsaved, selection cleared.
-    fn replace_scene(&mut self, scene: Scene, path: Option<PathBuf>) {
-        self.saved = scene.clone();
-        self.scene = scene;
-        self.path = path;
-        self.undoer = undoer();
-        self.undoer.add_undo(&self.scene);
-        self.selection = Selection::None;
-        self.error = None;
-    }
-
     /// Persists editor state (recent files) in eframe's storage.
     pub fn save_state(&self, storage: &mut dyn eframe::Storage) {
         if self.screenshot.is_none() {
@@ -520,15 +418,12 @@ impl EditorApp {
     }
 }
 
+/// A fresh undo history.
 fn undoer() -> Undoer<Scene> {
     Undoer::with_settings(UndoSettings {
         max_undos: 200,
         ..UndoSettings::default()
     })
-}
-
-fn scene_dialog() -> rfd::FileDialog {
-    rfd::FileDialog::new().add_filter("raylab scene", &["ron"])
 }
 
 /// While files are dragged over the window: say what dropping does.
