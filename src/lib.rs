@@ -8,6 +8,7 @@
 pub mod bench;
 pub mod cli;
 pub mod gizmo;
+pub mod preview;
 pub mod recovery;
 pub mod scene;
 pub mod trace;

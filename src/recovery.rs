@@ -103,7 +103,7 @@ impl RecoveryStore {
                 Some(Orphan { path, recovery })
             })
             .collect();
-        orphans.sort_by(|a, b| b.recovery.saved_at_unix.cmp(&a.recovery.saved_at_unix));
+        orphans.sort_by_key(|o| std::cmp::Reverse(o.recovery.saved_at_unix));
         orphans
     }
 
@@ -116,7 +116,10 @@ impl RecoveryStore {
 /// The process id in a recovery file's name.
 fn recovery_pid(path: &Path) -> Option<u32> {
     let name = path.file_name()?.to_str()?;
-    name.strip_prefix(PREFIX)?.strip_suffix(SUFFIX)?.parse().ok()
+    name.strip_prefix(PREFIX)?
+        .strip_suffix(SUFFIX)?
+        .parse()
+        .ok()
 }
 
 /// Whether a process with this id is running (Linux: `/proc/<pid>`; elsewhere assume
@@ -130,7 +133,8 @@ mod tests {
     use super::*;
 
     fn folder(name: &str) -> PathBuf {
-        let dir = std::env::temp_dir().join(format!("raylab-recovery-{name}-{}", std::process::id()));
+        let dir =
+            std::env::temp_dir().join(format!("raylab-recovery-{name}-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&dir);
         dir
     }
@@ -148,7 +152,10 @@ mod tests {
         let orphans = me.orphans();
         assert_eq!(orphans.len(), 1);
         assert_eq!(orphans[0].recovery.scene, scene);
-        assert_eq!(orphans[0].recovery.source.as_deref(), Some(Path::new("/tmp/a.ron")));
+        assert_eq!(
+            orphans[0].recovery.source.as_deref(),
+            Some(Path::new("/tmp/a.ron"))
+        );
         // Our own file is not an orphan for us, and clearing removes it.
         me.clear();
         assert!(!me.own_path().exists());

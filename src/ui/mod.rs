@@ -1,11 +1,109 @@
-//! The desktop editor (eframe/egui). Placeholder until the editor lands.
+//! The desktop editor (eframe/egui). A thin shell composes one panel per file: menu,
+//! outliner, inspector, viewport, status bar. Panels push [`Command`]s, applied once per
+//! frame in [`EditorApp`], which also feeds undo and restarts the preview.
+
+mod app;
+pub mod commands;
+mod confirm;
+mod export;
+pub mod files;
+mod inspector;
+mod menu;
+mod outliner;
+mod preview_link;
+pub mod recent;
+mod screenshot;
+mod shortcuts;
+mod status_bar;
+mod style;
+mod viewport;
 
 use std::path::PathBuf;
+
+pub use app::{EditorApp, EditorOptions};
+pub use commands::{Command, LightKind, SceneEdit, Selection};
+pub use confirm::DiscardAction;
+pub use export::{ExportSettings, ExportState};
+pub use inspector::trs_from_matrix;
+pub use outliner::light_label;
+pub use preview_link::{PreviewLink, ShownFrame};
+pub use viewport::{VIEWPORT_LABEL, letterbox, pick_object};
+
+/// Environment variable naming a PNG file: take a screenshot once the first
+/// full-resolution preview is shown, save it there, and quit.
+pub const SCREENSHOT_ENV: &str = "RAYLAB_SCREENSHOT";
+
+/// With [`SCREENSHOT_ENV`]: the outliner label of an item to select before the screenshot
+/// (so the documentation's picture shows a filled inspector).
+pub const SCREENSHOT_SELECT_ENV: &str = "RAYLAB_SCREENSHOT_SELECT";
+
+/// With [`SCREENSHOT_ENV`]: when set, wait for the final anti-aliased frame.
+pub const SCREENSHOT_FINAL_ENV: &str = "RAYLAB_SCREENSHOT_FINAL";
 
 /// Opens the editor on `scene`, or on the embedded default scene.
 ///
 /// # Errors
 /// When the window cannot be created.
-pub fn run(_scene: Option<PathBuf>) -> Result<(), String> {
-    Err("the editor is not built yet; use `raylab render`".to_owned())
+pub fn run(scene: Option<PathBuf>) -> Result<(), String> {
+    let screenshot = std::env::var_os(SCREENSHOT_ENV).map(PathBuf::from);
+    let options = EditorOptions {
+        scene,
+        preview: true,
+        screenshot,
+        screenshot_final: std::env::var_os(SCREENSHOT_FINAL_ENV).is_some(),
+    };
+    let viewport = egui::ViewportBuilder::default()
+        .with_title("raylab")
+        .with_app_id("raylab")
+        .with_inner_size([1280.0, 800.0])
+        .with_min_inner_size([720.0, 480.0])
+        .with_drag_and_drop(true);
+    let native = eframe::NativeOptions {
+        viewport,
+        // A screenshot run must look the same every time: no restored window size.
+        persist_window: options.screenshot.is_none(),
+        ..eframe::NativeOptions::default()
+    };
+    eframe::run_native(
+        "raylab",
+        native,
+        Box::new(move |cc| {
+            let recent = if options.screenshot.is_some() {
+                recent::RecentFiles::default()
+            } else {
+                recent::RecentFiles::load(cc.storage)
+            };
+            let mut app = EditorApp::new(options, recent);
+            if let Some(label) = std::env::var_os(SCREENSHOT_SELECT_ENV)
+                && let Some(selection) = selection_by_label(app.scene(), &label.to_string_lossy())
+            {
+                app.push(Command::Select(selection));
+            }
+            Ok(Box::new(app))
+        }),
+    )
+    .map_err(|e| format!("cannot open the editor window: {e}"))
+}
+
+/// The item whose outliner row reads `label`: an object, "Camera", "Render settings", a
+/// material or a light ("Point light 2").
+#[must_use]
+pub fn selection_by_label(scene: &crate::scene::Scene, label: &str) -> Option<Selection> {
+    if let Some(index) = scene.objects.iter().position(|o| o.name == label) {
+        return Some(Selection::Object(index));
+    }
+    match label {
+        "Camera" => return Some(Selection::Camera),
+        "Render settings" => return Some(Selection::Render),
+        _ => {}
+    }
+    if scene.materials.contains_key(label) {
+        return Some(Selection::Material(label.to_owned()));
+    }
+    scene
+        .lights
+        .iter()
+        .enumerate()
+        .position(|(i, l)| light_label(l, i) == label)
+        .map(Selection::Light)
 }

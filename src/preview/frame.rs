@@ -1,0 +1,30 @@
+//! What the worker publishes: finished passes, or why the scene cannot be rendered.
+
+use std::time::Duration;
+
+use super::plan::Pass;
+use crate::trace::{Image, RayCounts};
+
+/// One finished pass of a preview render.
+#[derive(Clone, Debug)]
+pub struct Frame {
+    /// The picture (linear RGB); its size is the pass's size, not always the target's.
+    pub image: Image,
+    /// Which pass of the plan this is.
+    pub pass: Pass,
+    /// Wall time spent rendering this pass.
+    pub elapsed: Duration,
+    /// Rays cast in this pass.
+    pub rays: RayCounts,
+    /// Whether this is the last pass of the plan (nothing sharper will follow).
+    pub is_final: bool,
+}
+
+/// A message from the worker, tagged with the generation of the request it answers.
+#[derive(Clone, Debug)]
+pub struct Published {
+    /// The generation of the request this answers.
+    pub generation: u64,
+    /// A finished pass, or the message of a scene that cannot be rendered.
+    pub result: Result<Frame, String>,
+}

@@ -1,0 +1,143 @@
+//! The progressive plan: which passes a preview renders, in order.
+
+use crate::trace::RenderOptions;
+
+/// Shortest long side of the coarse pass, in pixels.
+pub const COARSE_MIN_LONG_SIDE: u32 = 64;
+/// Largest resolution divider of the coarse pass.
+pub const COARSE_MAX_DIVIDER: u32 = 8;
+
+/// One pass of a progressive render.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Pass {
+    /// The image at `1 / divider` of the target resolution, one sample per pixel.
+    Coarse {
+        /// Resolution divider (> 1).
+        divider: u32,
+    },
+    /// Full resolution; `samples` of `target` anti-aliasing samples accumulated so far.
+    /// `target == 1` is the one-sample pass through pixel centres.
+    Full {
+        /// Samples accumulated so far (the sum of this pass and the ones before).
+        samples: u32,
+        /// Stratification count: the samples come from a grid of this many cells.
+        target: u32,
+    },
+}
+
+impl Pass {
+    /// The image size of this pass for a target of `width` x `height`.
+    #[must_use]
+    pub fn size(self, width: u32, height: u32) -> (u32, u32) {
+        match self {
+            Pass::Coarse { divider } => (
+                width.div_ceil(divider).max(1),
+                height.div_ceil(divider).max(1),
+            ),
+            Pass::Full { .. } => (width, height),
+        }
+    }
+}
+
+/// The coarse pass's divider: the largest of 8, 4, 2 that keeps the long side at least
+/// 64 pixels; `None` when the target is already that small.
+#[must_use]
+pub fn coarse_divider(width: u32, height: u32) -> Option<u32> {
+    let long = width.max(height);
+    let mut divider = COARSE_MAX_DIVIDER;
+    while divider > 1 && long / divider < COARSE_MIN_LONG_SIDE {
+        divider /= 2;
+    }
+    (divider > 1).then_some(divider)
+}
+
+/// The passes for `options`: coarse (when the image is big enough to need one), full
+/// resolution at one sample, then anti-aliasing samples in doubling batches (4, 8, 16...)
+/// up to `options.samples_per_pixel`.
+#[must_use]
+pub fn plan_passes(options: &RenderOptions) -> Vec<Pass> {
+    let mut passes = Vec::new();
+    if let Some(divider) = coarse_divider(options.width, options.height) {
+        passes.push(Pass::Coarse { divider });
+    }
+    passes.push(Pass::Full {
+        samples: 1,
+        target: 1,
+    });
+    let target = options.samples_per_pixel;
+    if target > 1 {
+        let mut samples = 4.min(target);
+        loop {
+            passes.push(Pass::Full { samples, target });
+            if samples == target {
+                break;
+            }
+            samples = (samples * 2).min(target);
+        }
+    }
+    passes
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::trace::{TermSwitches, View};
+
+    fn options(width: u32, height: u32, samples_per_pixel: u32) -> RenderOptions {
+        RenderOptions {
+            width,
+            height,
+            samples_per_pixel,
+            switches: TermSwitches::ALL_ON,
+            view: View::Beauty,
+        }
+    }
+
+    #[test]
+    fn coarse_keeps_the_long_side_at_least_64() {
+        assert_eq!(coarse_divider(800, 600), Some(8));
+        assert_eq!(coarse_divider(300, 200), Some(4));
+        assert_eq!(coarse_divider(130, 40), Some(2));
+        assert_eq!(coarse_divider(64, 64), None);
+    }
+
+    #[test]
+    fn plan_goes_coarse_full_then_doubling_samples() {
+        let plan = plan_passes(&options(800, 600, 16));
+        assert_eq!(
+            plan,
+            vec![
+                Pass::Coarse { divider: 8 },
+                Pass::Full {
+                    samples: 1,
+                    target: 1
+                },
+                Pass::Full {
+                    samples: 4,
+                    target: 16
+                },
+                Pass::Full {
+                    samples: 8,
+                    target: 16
+                },
+                Pass::Full {
+                    samples: 16,
+                    target: 16
+                },
+            ]
+        );
+        assert_eq!(Pass::Coarse { divider: 8 }.size(801, 600), (101, 75));
+    }
+
+    #[test]
+    fn one_sample_target_ends_at_the_full_pass() {
+        let plan = plan_passes(&options(32, 32, 1));
+        assert_eq!(
+            plan,
+            vec![Pass::Full {
+                samples: 1,
+                target: 1
+            }]
+        );
+    }
+}

@@ -1,0 +1,128 @@
+//! File operations as plain functions of paths. The menu's native dialogs only pick a
+//! path and call these, so tests call exactly what the dialogs call.
+
+use std::path::{Path, PathBuf};
+
+use glam::DVec3;
+
+use crate::scene::{Light, Scene, load_scene, parse_scene, save_scene, write_atomically};
+use crate::trace::Image;
+
+/// The scene the editor opens when no file is given.
+pub const DEFAULT_SCENE_RON: &str = include_str!("../../scenes/default.ron");
+
+/// The embedded default scene.
+///
+/// # Panics
+/// Never in a released build: a test checks that the embedded file loads.
+#[must_use]
+pub fn default_scene() -> Scene {
+    parse_scene(DEFAULT_SCENE_RON).expect("the embedded default scene is valid")
+}
+
+/// What File > New starts from: the default camera, one grey material, an ambient and a
+/// point light, no objects.
+#[must_use]
+pub fn new_scene() -> Scene {
+    let mut scene = Scene::empty();
+    scene.materials.insert(
+        "default".to_owned(),
+        crate::scene::Material {
+            ambient: DVec3::splat(0.1),
+            diffuse: DVec3::splat(0.6),
+            specular: DVec3::splat(0.3),
+            shininess: 32.0,
+            mirror: DVec3::ZERO,
+        },
+    );
+    scene.render.background = DVec3::new(0.05, 0.06, 0.09);
+    scene.lights = vec![
+        Light::Ambient {
+            colour: DVec3::splat(0.1),
+            intensity: 1.0,
+        },
+        Light::Point {
+            position: DVec3::new(-4.0, 6.0, 5.0),
+            colour: DVec3::ONE,
+            intensity: 40.0,
+        },
+    ];
+    scene
+}
+
+/// Loads a scene file; the message names the file and, for syntax errors, the line and
+/// column.
+///
+/// # Errors
+/// The file cannot be read, is not a scene, or describes an impossible scene.
+pub fn open_scene(path: &Path) -> Result<Scene, String> {
+    load_scene(path).map_err(|e| format!("{}: {e}", path.display()))
+}
+
+/// Saves a scene atomically (a temporary file renamed over the target).
+///
+/// # Errors
+/// The scene is invalid, or the file cannot be written; the old file is then intact.
+pub fn save_scene_to(scene: &Scene, path: &Path) -> Result<(), String> {
+    save_scene(scene, path).map_err(|e| match e {
+        crate::scene::SceneError::Write { .. } => e.to_string(),
+        other => format!("cannot save {}: {other}", path.display()),
+    })
+}
+
+/// Imports a legacy COSC342 text scene: the scene and the importer's warnings.
+///
+/// # Errors
+/// The importer's message.
+pub fn import_legacy(path: &Path) -> Result<(Scene, Vec<String>), String> {
+    crate::scene::legacy::import_legacy_file(path)
+        .map(|import| (import.scene, import.warnings))
+        .map_err(|e| e.to_string())
+}
+
+/// Writes an image as PNG atomically.
+///
+/// # Errors
+/// The file cannot be written; the message names it.
+pub fn write_png(image: &Image, path: &Path) -> Result<(), String> {
+    write_atomically(path, &image.png_bytes())
+        .map_err(|e| format!("cannot write {}: {e}", path.display()))
+}
+
+/// Whether a dropped file looks like a scene (`.ron`).
+#[must_use]
+pub fn is_scene_file(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("ron"))
+}
+
+/// `path` with the `.png` extension when it has none.
+#[must_use]
+pub fn with_png_extension(path: PathBuf) -> PathBuf {
+    if path.extension().is_some() {
+        path
+    } else {
+        path.with_extension("png")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn embedded_and_new_scenes_are_valid() {
+        assert_eq!(default_scene().objects.len(), 6);
+        crate::scene::validate(&new_scene()).unwrap();
+    }
+
+    #[test]
+    fn only_ron_files_are_scenes() {
+        assert!(is_scene_file(Path::new("a/b.RON")));
+        assert!(!is_scene_file(Path::new("a/b.png")));
+        assert_eq!(
+            with_png_extension(PathBuf::from("out")),
+            PathBuf::from("out.png")
+        );
+    }
+}

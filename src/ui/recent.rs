@@ -1,0 +1,104 @@
+//! Recently opened and saved files, remembered across runs in eframe's storage (editor
+//! state, never part of a scene file).
+
+use std::path::{Path, PathBuf};
+
+use serde::{Deserialize, Serialize};
+
+/// Storage key of the list.
+const KEY: &str = "raylab.recent_files";
+/// How many files are remembered.
+pub const MAX_RECENT: usize = 10;
+
+/// Most recent first, no duplicates.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub struct RecentFiles {
+    paths: Vec<PathBuf>,
+}
+
+impl RecentFiles {
+    /// The list saved by an earlier run, or an empty one.
+    #[must_use]
+    pub fn load(storage: Option<&dyn eframe::Storage>) -> Self {
+        storage
+            .and_then(|s| eframe::get_value(s, KEY))
+            .unwrap_or_default()
+    }
+
+    /// Writes the list to storage.
+    pub fn save(&self, storage: &mut dyn eframe::Storage) {
+        eframe::set_value(storage, KEY, self);
+    }
+
+    /// Moves (or adds) `path` to the front.
+    pub fn push(&mut self, path: &Path) {
+        let path = std::fs::canonicalize(path).unwrap_or_else(|_| path.to_owned());
+        self.paths.retain(|p| *p != path);
+        self.paths.insert(0, path);
+        self.paths.truncate(MAX_RECENT);
+    }
+
+    /// Forgets `path` (e.g. it no longer opens).
+    pub fn remove(&mut self, path: &Path) {
+        self.paths.retain(|p| p != path);
+    }
+
+    /// The files, most recent first.
+    #[must_use]
+    pub fn paths(&self) -> &[PathBuf] {
+        &self.paths
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// eframe's storage interface over a map, as the native one is over a file.
+    #[derive(Default)]
+    struct MapStorage(std::collections::HashMap<String, String>);
+
+    impl eframe::Storage for MapStorage {
+        fn get_string(&self, key: &str) -> Option<String> {
+            self.0.get(key).cloned()
+        }
+        fn set_string(&mut self, key: &str, value: String) {
+            self.0.insert(key.to_owned(), value);
+        }
+        fn remove_string(&mut self, key: &str) {
+            self.0.remove(key);
+        }
+        fn flush(&mut self) {}
+    }
+
+    #[test]
+    fn the_list_survives_a_restart_through_storage() {
+        let mut storage = MapStorage::default();
+        assert_eq!(RecentFiles::load(Some(&storage)), RecentFiles::default());
+        let mut recent = RecentFiles::default();
+        recent.push(Path::new("/nonexistent/a.ron"));
+        recent.push(Path::new("/nonexistent/b.ron"));
+        recent.save(&mut storage);
+        assert_eq!(RecentFiles::load(Some(&storage)), recent);
+        assert_eq!(RecentFiles::load(None), RecentFiles::default());
+    }
+
+    #[test]
+    fn newest_first_without_duplicates_and_bounded() {
+        let mut recent = RecentFiles::default();
+        for i in 0..12 {
+            recent.push(Path::new(&format!("/nonexistent/{i}.ron")));
+        }
+        recent.push(Path::new("/nonexistent/5.ron"));
+        assert_eq!(recent.paths().len(), MAX_RECENT);
+        assert_eq!(recent.paths()[0], Path::new("/nonexistent/5.ron"));
+        assert_eq!(
+            recent
+                .paths()
+                .iter()
+                .filter(|p| p.ends_with("5.ron"))
+                .count(),
+            1
+        );
+    }
+}

@@ -1,0 +1,69 @@
+//! The status bar: scene file, counts, the preview's pass and render time, errors.
+
+use egui::{Color32, RichText, Ui};
+
+use super::preview_link::ShownFrame;
+use crate::preview::Pass;
+
+/// What the status bar shows.
+pub struct StatusInfo<'a> {
+    /// The scene's file, or what stands for it ("default scene", "untitled").
+    pub file: &'a str,
+    /// Whether there are unsaved changes.
+    pub dirty: bool,
+    /// Number of objects.
+    pub objects: usize,
+    /// Number of lights.
+    pub lights: usize,
+    /// The frame on screen.
+    pub frame: Option<ShownFrame>,
+    /// Fraction of the pass being rendered.
+    pub progress: Option<f64>,
+    /// The latest error, if any.
+    pub error: Option<&'a str>,
+    /// The latest message (e.g. "Saved"), if any.
+    pub message: Option<&'a str>,
+}
+
+/// Shows the status bar.
+pub fn status_bar_ui(ui: &mut Ui, info: &StatusInfo<'_>) {
+    ui.horizontal(|ui| {
+        let marker = if info.dirty { " •" } else { "" };
+        ui.label(RichText::new(format!("{}{marker}", info.file)).strong());
+        ui.separator();
+        ui.label(format!("{} objects, {} lights", info.objects, info.lights));
+        ui.separator();
+        match info.frame {
+            Some(frame) => {
+                let pass = match frame.pass {
+                    Pass::Coarse { divider } => format!("coarse 1/{divider}"),
+                    Pass::Full { target: 1, .. } => "full, 1 sample".to_owned(),
+                    Pass::Full { samples, target } => format!("full, {samples}/{target} samples"),
+                };
+                let state = if frame.is_final { "final" } else { "refining" };
+                ui.label(format!(
+                    "{pass} · {:.0} ms · {:.1} Mrays/s · {state}",
+                    frame.elapsed.as_secs_f64() * 1000.0,
+                    frame.rays_per_second / 1e6
+                ));
+            }
+            None => {
+                ui.weak("no preview");
+            }
+        }
+        if let Some(progress) = info.progress {
+            ui.add(
+                egui::ProgressBar::new(progress as f32)
+                    .desired_width(80.0)
+                    .desired_height(10.0),
+            );
+        }
+        ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+            if let Some(error) = info.error {
+                ui.label(RichText::new(error).color(Color32::from_rgb(255, 120, 110)));
+            } else if let Some(message) = info.message {
+                ui.label(RichText::new(message).color(Color32::from_rgb(140, 200, 140)));
+            }
+        });
+    });
+}
