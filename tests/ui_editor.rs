@@ -711,3 +711,53 @@ fn a_running_export_can_be_cancelled_and_writes_nothing() {
     assert_eq!(status, Some(Err("export cancelled".to_owned())));
     assert!(!path.exists());
 }
+
+#[test]
+fn unsaved_work_of_a_killed_editor_is_offered_and_restored() {
+    use raylab::recovery::RecoveryStore;
+    let dir = temp_dir("recovery");
+    // An editor that died (a pid that cannot be running) left its unsaved scene.
+    let mut lost = default_scene();
+    lost.objects[0].name = "edited before the crash".to_owned();
+    RecoveryStore::with_pid(dir.clone(), u32::MAX - 7)
+        .save(&lost, None)
+        .unwrap();
+    let mut harness = harness_with(EditorOptions {
+        recovery: Some(RecoveryStore::new(dir.clone())),
+        ..EditorOptions::default()
+    });
+    assert!(harness.state().has_restore_offer());
+    harness.get_by_label("Restore").click();
+    harness.run();
+    assert!(!harness.state().has_restore_offer());
+    assert_eq!(harness.state().scene(), &lost);
+    assert!(harness.state().is_dirty(), "restored edits are unsaved");
+    // The offer was used up: a new editor in the same folder offers nothing.
+    assert!(RecoveryStore::new(dir).orphans().is_empty());
+}
+
+#[test]
+fn unsaved_edits_reach_the_recovery_file_and_leave_it_on_save() {
+    use raylab::recovery::RecoveryStore;
+    let dir = temp_dir("autosave");
+    let store = RecoveryStore::new(dir.clone());
+    let own = store.own_path();
+    let mut harness = harness_with(EditorOptions {
+        recovery: Some(store),
+        ..EditorOptions::default()
+    });
+    assert!(!own.exists());
+    harness.get_by_label("red ball").click();
+    harness.run();
+    harness.key_press(Key::Delete);
+    harness.run();
+    assert!(harness.state().is_dirty());
+    assert!(own.exists(), "the unsaved edit was written at once");
+    harness
+        .state_mut()
+        .push(Command::SaveAs(dir.join("saved.ron")));
+    harness.run();
+    harness.run();
+    assert!(!harness.state().is_dirty());
+    assert!(!own.exists(), "nothing left to recover after a save");
+}

@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 use egui::util::undoer::{Settings as UndoSettings, Undoer};
 use egui::{Color32, RichText, ViewportCommand};
 
+use super::autosave::{Autosave, RestoreAnswer};
 use super::commands::{Command, SceneEdit, Selection, repair_selection};
 use super::confirm::{DiscardAction, discard_modal};
 use super::export::{ExportState, export_window};
@@ -35,6 +36,8 @@ pub struct EditorOptions {
     pub screenshot: Option<PathBuf>,
     /// Wait for the final (fully sampled) frame instead of the first full-resolution one.
     pub screenshot_final: bool,
+    /// Where unsaved work is kept for crash recovery (none: no autosave).
+    pub recovery: Option<crate::recovery::RecoveryStore>,
 }
 
 /// The editor.
@@ -62,6 +65,7 @@ pub struct EditorApp {
     styled: bool,
     screenshot: Option<ScreenshotHook>,
     screenshot_final: bool,
+    autosave: Autosave,
 }
 
 impl EditorApp {
@@ -91,6 +95,7 @@ impl EditorApp {
             styled: false,
             screenshot: options.screenshot.map(ScreenshotHook::new),
             screenshot_final: options.screenshot_final,
+            autosave: Autosave::new(options.recovery),
         };
         app.undoer.add_undo(&app.scene);
         if let Some(path) = options.scene {
@@ -192,6 +197,14 @@ impl EditorApp {
         self.panels_ui(ui);
         self.dialogs(&ctx);
         self.apply_commands(&ctx);
+        let dirty = self.is_dirty();
+        let now = std::time::Instant::now();
+        if let Some(wait) = self
+            .autosave
+            .tick(&self.scene, dirty, self.path.as_deref(), now)
+        {
+            ctx.request_repaint_after(wait);
+        }
         if let Some(preview) = &mut self.preview {
             preview.sync(&self.scene);
         }
@@ -329,6 +342,9 @@ impl EditorApp {
     }
 
     fn dialogs(&mut self, ctx: &egui::Context) {
+        if let Some(answer) = self.autosave.offer_ui(ctx) {
+            self.restore(answer);
+        }
         help_window(ctx, &mut self.show_help);
         export_window(ctx, &mut self.export, &self.scene);
         if let Some(action) = self.pending.clone() {
@@ -404,6 +420,39 @@ impl EditorApp {
         }
     }
 
+    /// Answers the crash-recovery offer as its buttons do (for tests and the window).
+    pub fn answer_restore(&mut self, restore: bool) {
+        if let Some(answer) = self.autosave.answer(restore) {
+            self.restore(answer);
+        }
+    }
+
+    /// Whether a crash-recovery offer is waiting.
+    #[must_use]
+    pub fn has_restore_offer(&self) -> bool {
+        self.autosave.has_offer()
+    }
+
+    /// Opens a recovered scene: its file (when it still loads) is what it is compared
+    /// with, so the recovered edits show as unsaved changes.
+    fn restore(&mut self, answer: RestoreAnswer) {
+        let RestoreAnswer::Restore(scene, source) = answer else {
+            return;
+        };
+        let saved = source
+            .as_deref()
+            .and_then(|p| crate::scene::load_scene(p).ok())
+            .unwrap_or_else(files::new_scene);
+        self.replace_scene(*scene, source);
+        self.saved = saved;
+        self.message = Some("Restored unsaved work from the last session".to_owned());
+    }
+
+    /// The end of a clean session: nothing left to recover.
+    pub fn on_clean_exit(&mut self) {
+        self.autosave.clear();
+    }
+
     /// Persists editor state (recent files) in eframe's storage.
     pub fn save_state(&self, storage: &mut dyn eframe::Storage) {
         if self.screenshot.is_none() {
@@ -465,5 +514,9 @@ impl eframe::App for EditorApp {
 
     fn persist_egui_memory(&self) -> bool {
         !self.is_screenshot_run()
+    }
+
+    fn on_exit(&mut self, _gl: Option<&eframe::glow::Context>) {
+        self.on_clean_exit();
     }
 }

@@ -3,6 +3,7 @@
 //! frame in [`EditorApp`], which also feeds undo and restarts the preview.
 
 mod app;
+mod autosave;
 pub mod commands;
 mod confirm;
 mod export;
@@ -49,8 +50,15 @@ pub fn run(scene: Option<PathBuf>) -> Result<(), String> {
     let options = EditorOptions {
         scene,
         preview: true,
-        screenshot,
+        screenshot: screenshot.clone(),
         screenshot_final: std::env::var_os(SCREENSHOT_FINAL_ENV).is_some(),
+        // Screenshot runs are throwaway: they neither keep nor offer recovered work.
+        recovery: if screenshot.is_some() {
+            None
+        } else {
+            eframe::storage_dir("raylab")
+                .map(|dir| crate::recovery::RecoveryStore::new(dir.join("recovery")))
+        },
     };
     let viewport = egui::ViewportBuilder::default()
         .with_title("raylab")

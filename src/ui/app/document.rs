@@ -106,7 +106,7 @@ impl EditorApp {
     }
 
     /// A new document: fresh undo history, nothing unsaved, selection cleared.
-    fn replace_scene(&mut self, scene: Scene, path: Option<PathBuf>) {
+    pub(super) fn replace_scene(&mut self, scene: Scene, path: Option<PathBuf>) {
         self.saved = scene.clone();
         self.scene = scene;
         self.path = path;
