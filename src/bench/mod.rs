@@ -2,6 +2,7 @@
 //! Everything here calls the same tracer as the editor and the command line.
 
 pub mod convergence;
+pub mod latency;
 pub mod plot;
 pub mod precision;
 pub mod throughput;
@@ -9,6 +10,7 @@ pub mod throughput;
 use serde::Serialize;
 
 pub use convergence::{CurvePoint, convergence_curves};
+pub use latency::{PreviewLatency, preview_latency};
 pub use precision::{PrecisionCost, precision_cost};
 pub use throughput::{SceneThroughput, scene_throughput};
 

@@ -6,7 +6,9 @@ use clap::Args;
 
 use crate::bench::convergence::ConvergencePlan;
 use crate::bench::plot::plot_curve;
-use crate::bench::{BenchReport, convergence_curves, precision_cost, scene_throughput};
+use crate::bench::{
+    BenchReport, convergence_curves, precision_cost, preview_latency, scene_throughput,
+};
 use crate::scene::load_scene;
 
 /// Arguments of `raylab bench`.
@@ -94,6 +96,8 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
         }
     };
     let curve = convergence_curves(&default_scene, &plan)?;
+    eprintln!("preview latency: default scene through the preview worker");
+    let latency = preview_latency(&default_scene, if args.quick { 5 } else { 20 })?;
     eprintln!("precision: f32 and f64 kernels");
     let precision = precision_cost(if args.quick { 200_000 } else { 1_000_000 }, runs);
     Ok(BenchReport {
@@ -101,8 +105,8 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
         threads: rayon::current_num_threads(),
         throughput_mrays_per_s: default.mrays_per_s,
         full_frame_1spp_ms: default.frame_ms,
-        first_preview_ms: None,
-        first_full_preview_ms: None,
+        first_preview_ms: Some(latency.first_frame_ms),
+        first_full_preview_ms: Some(latency.full_frame_ms),
         scenes,
         curve,
         precision,
