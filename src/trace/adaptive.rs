@@ -10,7 +10,7 @@ use rayon::prelude::*;
 use super::camera::PinholeCamera;
 use super::image::Image;
 use super::render::{RenderOptions, RenderProgress, trace_sample};
-use super::sampling::{sample_in_pixel, sample_sequence};
+use super::sampling::{Strata, sample_sequence};
 use super::shade::{RayCounts, Tracer};
 use super::world::World;
 
@@ -57,6 +57,7 @@ pub fn render_adaptive(
     let camera = PinholeCamera::new(&world.camera, width, height);
     let tracer = Tracer::new(world, options.switches, options.view);
     let pilot = adaptive.pilot_spp.max(1);
+    let strata = Strata::for_count(pilot);
 
     // pilot: stratified samples in every pixel
     let (mut stats, mut rays) = rows_in_parallel(width, height, progress, |px, py, rays| {
@@ -64,14 +65,7 @@ pub fn render_adaptive(
         for i in 0..pilot {
             add_sample(
                 &mut s,
-                trace_sample(
-                    &tracer,
-                    &camera,
-                    px,
-                    py,
-                    sample_in_pixel(px, py, i, pilot),
-                    rays,
-                ),
+                trace_sample(&tracer, &camera, px, py, strata.sample(px, py, i), rays),
             );
         }
         s

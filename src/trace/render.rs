@@ -9,7 +9,7 @@ use rayon::prelude::*;
 
 use super::camera::PinholeCamera;
 use super::image::Image;
-use super::sampling::sample_in_pixel;
+use super::sampling::Strata;
 use super::shade::{NoRecorder, RayCounts, Tracer};
 use super::terms::{TermSwitches, View};
 use super::world::World;
@@ -206,11 +206,12 @@ fn render_tile(
         rays: RayCounts::default(),
         non_finite: 0,
     };
+    let strata = Strata::for_count(options.samples_per_pixel);
     for py in y0..y0 + h {
         for px in x0..x0 + w {
             let mut sum = DVec3::ZERO;
             for index in samples.clone() {
-                let offset = sample_in_pixel(px, py, index, options.samples_per_pixel);
+                let offset = strata.sample(px, py, index);
                 match trace_sample(tracer, camera, px, py, offset, &mut tile.rays) {
                     Some(colour) => sum += colour,
                     None => tile.non_finite += 1,

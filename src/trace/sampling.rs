@@ -2,24 +2,56 @@
 
 use glam::DVec2;
 
-/// The position within pixel `(px, py)` (each coordinate in [0, 1)) of sample `index` out
-/// of `count`. One sample is the pixel centre. More samples are stratified: the pixel is
-/// cut into a grid of about `count` cells, sample `index` takes cell `index`, and a
-/// deterministic hash of the pixel and index jitters it within its cell, so renders are
-/// repeatable and samples can be added one pass at a time.
+/// The stratification of `count` samples per pixel: a grid of exactly `count` equal
+/// cells (`rows` the largest divisor of `count` not above its square root), so every
+/// stratum has the same area and no part of the pixel is left out, whatever the count.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Strata {
+    columns: u32,
+    rows: u32,
+}
+
+impl Strata {
+    /// The grid for `count` samples (at least 1).
+    #[must_use]
+    pub fn for_count(count: u32) -> Self {
+        let count = count.max(1);
+        let mut rows = (f64::from(count).sqrt() as u32).max(1);
+        while count % rows != 0 {
+            rows -= 1;
+        }
+        Self {
+            columns: count / rows,
+            rows,
+        }
+    }
+
+    /// The position within pixel `(px, py)` (each coordinate in [0, 1)) of sample
+    /// `index`. One sample is the pixel centre. More samples take one cell each, jittered
+    /// within it by a deterministic hash of the pixel and index, so renders are
+    /// repeatable and samples can be added one pass at a time.
+    #[must_use]
+    pub fn sample(&self, px: u32, py: u32, index: u32) -> DVec2 {
+        if self.columns * self.rows == 1 {
+            return DVec2::splat(0.5);
+        }
+        let cell = DVec2::new(
+            f64::from(index % self.columns),
+            f64::from(index / self.columns % self.rows),
+        );
+        let jitter = DVec2::new(
+            unit_hash(px, py, index, 0x9e37_79b9),
+            unit_hash(px, py, index, 0x85eb_ca6b),
+        );
+        (cell + jitter) / DVec2::new(f64::from(self.columns), f64::from(self.rows))
+    }
+}
+
+/// Sample `index` of `count` within pixel `(px, py)`; see [`Strata::sample`]. Callers
+/// that take many samples build the [`Strata`] once.
 #[must_use]
 pub fn sample_in_pixel(px: u32, py: u32, index: u32, count: u32) -> DVec2 {
-    if count <= 1 {
-        return DVec2::splat(0.5);
-    }
-    let columns = (f64::from(count).sqrt().ceil() as u32).max(1);
-    let rows = count.div_ceil(columns);
-    let cell = DVec2::new(f64::from(index % columns), f64::from(index / columns));
-    let jitter = DVec2::new(
-        unit_hash(px, py, index, 0x9e37_79b9),
-        unit_hash(px, py, index, 0x85eb_ca6b),
-    );
-    (cell + jitter) / DVec2::new(f64::from(columns), f64::from(rows))
+    Strata::for_count(count).sample(px, py, index)
 }
 
 /// Sample `index` of an open-ended low-discrepancy sequence within pixel `(px, py)`: the
@@ -67,5 +99,23 @@ mod tests {
         }
         assert_eq!(cells.len(), 16);
         assert_eq!(sample_in_pixel(1, 2, 5, 16), sample_in_pixel(1, 2, 5, 16));
+    }
+
+    #[test]
+    fn any_count_covers_the_pixel_with_equal_strata() {
+        for (count, columns, rows) in [(2, 2, 1), (7, 7, 1), (12, 4, 3), (32, 8, 4), (64, 8, 8)] {
+            assert_eq!(Strata::for_count(count), Strata { columns, rows });
+            // Every cell holds exactly one sample.
+            let strata = Strata::for_count(count);
+            let mut cells = std::collections::HashSet::new();
+            for i in 0..count {
+                let s = strata.sample(9, 4, i);
+                cells.insert((
+                    (s.x * f64::from(columns)) as u32,
+                    (s.y * f64::from(rows)) as u32,
+                ));
+            }
+            assert_eq!(cells.len() as u32, count);
+        }
     }
 }
