@@ -17,7 +17,7 @@ impl Strata {
     pub fn for_count(count: u32) -> Self {
         let count = count.max(1);
         let mut rows = (f64::from(count).sqrt() as u32).max(1);
-        while count % rows != 0 {
+        while !count.is_multiple_of(rows) {
             rows -= 1;
         }
         Self {
