@@ -2,6 +2,7 @@
 //! Everything here calls the same tracer as the editor and the command line.
 
 pub mod convergence;
+pub mod crossover;
 pub mod latency;
 pub mod plot;
 pub mod precision;
@@ -10,6 +11,7 @@ pub mod throughput;
 use serde::Serialize;
 
 pub use convergence::{CurvePoint, convergence_curves};
+pub use crossover::{CrossoverPoint, bvh_crossover};
 pub use latency::{PreviewLatency, preview_latency};
 pub use precision::{PrecisionCost, precision_cost};
 pub use throughput::{SceneThroughput, scene_throughput};
@@ -35,4 +37,6 @@ pub struct BenchReport {
     pub curve: Vec<CurvePoint>,
     /// The intersection kernel in f32 and f64.
     pub precision: PrecisionCost,
+    /// Flat list against BVH for growing object counts.
+    pub bvh_crossover: Vec<CrossoverPoint>,
 }

@@ -7,7 +7,8 @@ use clap::Args;
 use crate::bench::convergence::ConvergencePlan;
 use crate::bench::plot::plot_curve;
 use crate::bench::{
-    BenchReport, convergence_curves, precision_cost, preview_latency, scene_throughput,
+    BenchReport, bvh_crossover, convergence_curves, precision_cost, preview_latency,
+    scene_throughput,
 };
 use crate::scene::load_scene;
 
@@ -98,6 +99,13 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
     let curve = convergence_curves(&default_scene, &plan)?;
     eprintln!("preview latency: default scene through the preview worker");
     let latency = preview_latency(&default_scene, if args.quick { 5 } else { 20 })?;
+    eprintln!("acceleration: flat list against BVH");
+    let counts: &[usize] = if args.quick {
+        &[4, 16, 64]
+    } else {
+        &[2, 4, 8, 12, 16, 24, 32, 64, 128, 256]
+    };
+    let bvh_crossover = bvh_crossover(counts, 320, 240, runs)?;
     eprintln!("precision: f32 and f64 kernels");
     let precision = precision_cost(if args.quick { 200_000 } else { 1_000_000 }, runs);
     Ok(BenchReport {
@@ -110,6 +118,7 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
         scenes,
         curve,
         precision,
+        bvh_crossover,
     })
 }
 
@@ -152,6 +161,18 @@ fn print_tables(report: &BenchReport) {
         println!(
             "| {} | {:.3} | {:.1} | {:.5} | {:.2} |",
             p.strategy, p.spp, p.time_ms, p.rmse, p.psnr
+        );
+    }
+    println!();
+    println!("| objects | flat list (ms) | BVH (ms) | BVH / flat |");
+    println!("|---|---|---|---|");
+    for c in &report.bvh_crossover {
+        println!(
+            "| {} | {:.1} | {:.1} | {:.2} |",
+            c.objects,
+            c.flat_ms,
+            c.bvh_ms,
+            c.bvh_ms / c.flat_ms
         );
     }
     println!();

@@ -3,6 +3,7 @@
 
 pub mod adaptive;
 pub mod bounds;
+pub mod bvh;
 pub mod camera;
 pub mod image;
 pub mod inspect;
@@ -25,4 +26,4 @@ pub use ray::Ray;
 pub use render::{RenderOptions, RenderProgress, SampleSums, render, render_samples};
 pub use shade::{LightRecord, NoRecorder, RayCounts, Recorder, Tracer};
 pub use terms::{Term, TermSwitches, View};
-pub use world::{SurfacePoint, World};
+pub use world::{Acceleration, BVH_MIN_OBJECTS, SurfacePoint, World};

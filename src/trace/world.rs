@@ -4,6 +4,7 @@
 use glam::{DAffine3, DMat3, DVec3};
 
 use super::bounds::{Aabb, BoundingSphere};
+use super::bvh::Bvh;
 use super::lights::WorldLight;
 use super::ray::Ray;
 use super::shapes::{self, ShapeHit, gamma};
@@ -86,7 +87,22 @@ pub struct World {
     pub camera: crate::scene::Camera,
     /// A length typical of the scene: the camera's distance to its target.
     pub view_distance: f64,
+    /// The hierarchy over the objects, for scenes large enough to need one.
+    bvh: Option<Bvh>,
 }
+
+/// How rays find the objects they may hit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Acceleration {
+    /// Test every object in turn (fastest for small scenes).
+    Flat,
+    /// Walk a bounding volume hierarchy.
+    Bvh,
+}
+
+/// From this many objects on, the world builds a BVH: below it the flat list is faster
+/// (measured by `raylab bench`, see docs/BENCHMARKS.md).
+pub const BVH_MIN_OBJECTS: usize = 16;
 
 impl World {
     /// Validates and compiles a scene.
@@ -144,7 +160,24 @@ impl World {
             max_depth: scene.render.max_depth,
             camera: scene.camera.clone(),
             view_distance: (scene.camera.look_at - scene.camera.position).length(),
+            bvh: None,
         })
+        .map(|mut world: World| {
+            if world.objects.len() >= BVH_MIN_OBJECTS {
+                world.set_acceleration(Acceleration::Bvh);
+            }
+            world
+        })
+    }
+
+    /// Chooses how rays find objects (the default follows [`BVH_MIN_OBJECTS`]).
+    pub fn set_acceleration(&mut self, acceleration: Acceleration) {
+        self.bvh = match acceleration {
+            Acceleration::Flat => None,
+            Acceleration::Bvh => Some(Bvh::build(
+                &self.objects.iter().map(|o| o.bounds).collect::<Vec<_>>(),
+            )),
+        };
     }
 
     /// The closest hit along a world ray with `t` in (0, t_max).
@@ -152,15 +185,27 @@ impl World {
     pub fn intersect(&self, ray: &Ray, t_max: f64) -> Option<SurfacePoint> {
         let inv_dir = ray.dir.recip();
         let mut closest: Option<(usize, ShapeHit)> = None;
-        let mut t_limit = t_max;
-        for (index, object) in self.objects.iter().enumerate() {
+        let mut test = |index: usize, t_limit: f64| -> Option<f64> {
+            let object = &self.objects[index];
             if !object.may_be_hit(ray, inv_dir, t_limit) {
-                continue;
+                return None;
             }
             let ray_in_object = ray.transformed(&object.object_from_world);
-            if let Some(hit) = shapes::intersect(object.shape, &ray_in_object, t_limit) {
-                t_limit = hit.t;
-                closest = Some((index, hit));
+            let hit = shapes::intersect(object.shape, &ray_in_object, t_limit)?;
+            closest = Some((index, hit));
+            Some(hit.t)
+        };
+        match &self.bvh {
+            Some(bvh) => bvh.traverse(ray, inv_dir, t_max, |index, t_limit| {
+                Ok(test(index, t_limit))
+            }),
+            None => {
+                let mut t_limit = t_max;
+                for index in 0..self.objects.len() {
+                    if let Some(t) = test(index, t_limit) {
+                        t_limit = t;
+                    }
+                }
             }
         }
         closest.map(|(index, hit)| self.surface_point(index, ray, &hit))
@@ -177,7 +222,8 @@ impl World {
     #[must_use]
     pub fn occluder_except(&self, ray: &Ray, t_max: f64, except: Option<usize>) -> Option<usize> {
         let inv_dir = ray.dir.recip();
-        self.objects.iter().enumerate().position(|(index, object)| {
+        let blocks = |index: usize| {
+            let object = &self.objects[index];
             Some(index) != except
                 && object.may_be_hit(ray, inv_dir, t_max)
                 && shapes::occluded(
@@ -185,7 +231,22 @@ impl World {
                     &ray.transformed(&object.object_from_world),
                     t_max,
                 )
-        })
+        };
+        match &self.bvh {
+            Some(bvh) => {
+                let mut found = None;
+                bvh.traverse(ray, inv_dir, t_max, |index, _| {
+                    if blocks(index) {
+                        found = Some(index);
+                        Err(())
+                    } else {
+                        Ok(None)
+                    }
+                });
+                found
+            }
+            None => (0..self.objects.len()).find(|&index| blocks(index)),
+        }
     }
 
     /// World-space details of an object-space hit.

@@ -1,0 +1,198 @@
+//! A bounding volume hierarchy over the objects' world boxes, for scenes with many
+//! objects. Small scenes are faster with the flat list (see docs/BENCHMARKS.md for the
+//! measured crossover), so the world only builds one above that size.
+
+use glam::DVec3;
+
+use super::bounds::Aabb;
+use super::ray::Ray;
+
+/// Objects per leaf at most.
+const LEAF_SIZE: usize = 4;
+
+/// One node: a leaf holds `count > 0` objects from `first` in [`Bvh::order`]; an inner
+/// node (`count == 0`) has its children at `first` and `first + 1`.
+#[derive(Clone, Copy, Debug)]
+struct Node {
+    bounds: Aabb,
+    first: u32,
+    count: u32,
+}
+
+/// The hierarchy: nodes in one array, children of a node next to each other.
+#[derive(Clone, Debug)]
+pub struct Bvh {
+    nodes: Vec<Node>,
+    /// Object indices, leaves' ranges point into this.
+    order: Vec<u32>,
+}
+
+impl Bvh {
+    /// Builds over the objects' boxes: split at the median of the box centres along the
+    /// axis where they spread most.
+    #[must_use]
+    pub fn build(boxes: &[Aabb]) -> Self {
+        let mut bvh = Self {
+            nodes: Vec::with_capacity(boxes.len() * 2),
+            order: (0..boxes.len() as u32).collect(),
+        };
+        if boxes.is_empty() {
+            return bvh;
+        }
+        bvh.nodes.push(Node {
+            bounds: union(boxes, &bvh.order),
+            first: 0,
+            count: boxes.len() as u32,
+        });
+        let mut pending = vec![0usize];
+        while let Some(index) = pending.pop() {
+            let node = bvh.nodes[index];
+            let (start, count) = (node.first as usize, node.count as usize);
+            if count <= LEAF_SIZE {
+                continue;
+            }
+            let slice = &mut bvh.order[start..start + count];
+            let centre = |i: u32| (boxes[i as usize].min + boxes[i as usize].max) * 0.5;
+            let (lo, hi) = slice
+                .iter()
+                .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), &i| {
+                    (lo.min(centre(i)), hi.max(centre(i)))
+                });
+            let axis = (hi - lo).max_position();
+            let half = count / 2;
+            slice
+                .select_nth_unstable_by(half, |&a, &b| centre(a)[axis].total_cmp(&centre(b)[axis]));
+            let left = bvh.nodes.len();
+            for (first, len) in [(start, half), (start + half, count - half)] {
+                let ids = &bvh.order[first..first + len];
+                bvh.nodes.push(Node {
+                    bounds: union(boxes, ids),
+                    first: first as u32,
+                    count: len as u32,
+                });
+            }
+            bvh.nodes[index].first = left as u32;
+            bvh.nodes[index].count = 0;
+            pending.extend([left, left + 1]);
+        }
+        bvh
+    }
+
+    /// Visits the objects whose boxes the ray may meet before the current limit, nearer
+    /// subtrees first. `visit(object, t_limit)` returns a new, smaller limit when it
+    /// found a hit, or `Err(())` to stop (an occlusion query's first hit).
+    pub fn traverse(
+        &self,
+        ray: &Ray,
+        inv_dir: DVec3,
+        mut t_limit: f64,
+        mut visit: impl FnMut(usize, f64) -> Result<Option<f64>, ()>,
+    ) {
+        if self.nodes.is_empty() {
+            return;
+        }
+        let mut stack = [0u32; 64];
+        let mut depth = 1;
+        while depth > 0 {
+            depth -= 1;
+            let node = self.nodes[stack[depth] as usize];
+            if !node.bounds.hit_by(ray, inv_dir, t_limit) {
+                continue;
+            }
+            if node.count > 0 {
+                for &object in &self.order[node.first as usize..(node.first + node.count) as usize]
+                {
+                    match visit(object as usize, t_limit) {
+                        Ok(Some(t)) => t_limit = t,
+                        Ok(None) => {}
+                        Err(()) => return,
+                    }
+                }
+            } else if depth + 2 <= stack.len() {
+                // Push the far child first so the near one is tested first.
+                let (a, b) = (node.first, node.first + 1);
+                let axis_dir = ray.dir[longest_axis(
+                    &self.nodes[a as usize].bounds,
+                    &self.nodes[b as usize].bounds,
+                )];
+                let (near, far) = if axis_dir >= 0.0 { (a, b) } else { (b, a) };
+                stack[depth] = far;
+                stack[depth + 1] = near;
+                depth += 2;
+            }
+        }
+    }
+}
+
+/// The axis along which two sibling boxes' centres are farthest apart.
+fn longest_axis(a: &Aabb, b: &Aabb) -> usize {
+    (((b.min + b.max) - (a.min + a.max)).abs()).max_position()
+}
+
+fn union(boxes: &[Aabb], ids: &[u32]) -> Aabb {
+    ids.iter().fold(
+        Aabb::new(DVec3::INFINITY, DVec3::NEG_INFINITY),
+        |acc, &i| {
+            Aabb::new(
+                acc.min.min(boxes[i as usize].min),
+                acc.max.max(boxes[i as usize].max),
+            )
+        },
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_object_is_in_exactly_one_leaf() {
+        let boxes: Vec<Aabb> = (0..37)
+            .map(|i| {
+                let c = DVec3::new(f64::from(i % 7), f64::from(i / 7), f64::from(i % 3));
+                Aabb::new(c - 0.3, c + 0.3)
+            })
+            .collect();
+        let bvh = Bvh::build(&boxes);
+        let mut seen = vec![0; boxes.len()];
+        for node in bvh.nodes.iter().filter(|n| n.count > 0) {
+            assert!(node.count as usize <= LEAF_SIZE);
+            for &i in &bvh.order[node.first as usize..(node.first + node.count) as usize] {
+                seen[i as usize] += 1;
+                assert!(node.bounds.min.cmple(boxes[i as usize].min).all());
+            }
+        }
+        assert!(seen.iter().all(|&n| n == 1));
+    }
+
+    #[test]
+    fn traversal_visits_the_boxes_a_ray_crosses() {
+        let boxes: Vec<Aabb> = (0..20)
+            .map(|i| {
+                let c = DVec3::new(f64::from(i) * 2.0, 0.0, 0.0);
+                Aabb::new(c - 0.5, c + 0.5)
+            })
+            .collect();
+        let bvh = Bvh::build(&boxes);
+        // Down the line y = 0 from the left: every box; from above x = 10: box 5 only.
+        let along = Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X);
+        let mut visited = Vec::new();
+        bvh.traverse(&along, along.dir.recip(), f64::INFINITY, |i, _| {
+            visited.push(i);
+            Ok(None)
+        });
+        visited.sort_unstable();
+        assert_eq!(visited, (0..20).collect::<Vec<_>>());
+        let down = Ray::new(DVec3::new(10.0, 5.0, 0.0), -DVec3::Y);
+        let mut visited = Vec::new();
+        bvh.traverse(&down, down.dir.recip(), f64::INFINITY, |i, _| {
+            visited.push(i);
+            Ok(None)
+        });
+        // Box 5 and at most the other objects of its leaf; nothing else.
+        assert!(
+            visited.contains(&5) && visited.len() <= LEAF_SIZE,
+            "{visited:?}"
+        );
+    }
+}

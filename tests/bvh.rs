@@ -1,0 +1,75 @@
+//! The BVH finds exactly what the flat list finds.
+
+mod common;
+
+use common::*;
+use glam::DVec3;
+use proptest::prelude::*;
+use raylab::scene::{Material, Shape};
+use raylab::trace::{Acceleration, Ray, World};
+
+fn crowded_scene(seed: u64, count: usize) -> raylab::scene::Scene {
+    let mut state = seed | 1;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut scene = bare_scene(Material {
+        diffuse: DVec3::ONE,
+        ..Material::default()
+    });
+    scene.objects.push(floor(-1.0, 30.0));
+    for i in 0..count {
+        let shape = Shape::ALL[i % 5];
+        let translate = DVec3::new(next() * 20.0 - 10.0, next() * 4.0, next() * 20.0 - 10.0);
+        let rotate = DVec3::new(next() * 360.0, next() * 360.0, next() * 360.0);
+        let scale = DVec3::new(0.2 + next(), 0.2 + next(), 0.2 + next());
+        scene.objects.push(object(shape, translate, rotate, scale));
+    }
+    scene
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 2000, ..ProptestConfig::default() })]
+
+    #[test]
+    fn bvh_and_flat_list_agree(seed in any::<u64>(), origin in (-12.0..12.0f64, 0.0..8.0f64, -12.0..12.0f64), target in (-10.0..10.0f64, -1.0..4.0f64, -10.0..10.0f64)) {
+        let scene = crowded_scene(seed % 8, 60);
+        let mut flat = World::new(&scene).unwrap();
+        flat.set_acceleration(Acceleration::Flat);
+        let mut bvh = World::new(&scene).unwrap();
+        bvh.set_acceleration(Acceleration::Bvh);
+        let origin = DVec3::new(origin.0, origin.1, origin.2);
+        let ray = Ray::new(origin, (DVec3::new(target.0, target.1, target.2) - origin).normalize_or(DVec3::Y));
+        let (a, b) = (flat.intersect(&ray, f64::INFINITY), bvh.intersect(&ray, f64::INFINITY));
+        prop_assert_eq!(a.map(|h| h.t), b.map(|h| h.t));
+        prop_assert_eq!(a.map(|h| h.p), b.map(|h| h.p));
+        let limit = a.map_or(50.0, |h| h.t * 0.999);
+        prop_assert_eq!(flat.occluder(&ray, limit).is_some(), bvh.occluder(&ray, limit).is_some());
+    }
+}
+
+#[test]
+fn large_scenes_build_a_bvh_and_render_the_same_picture() {
+    use raylab::trace::{RenderOptions, RenderProgress, render};
+    let mut scene = crowded_scene(3, 60);
+    scene
+        .lights
+        .push(point_light(DVec3::new(0.0, 10.0, 5.0), 100.0));
+    scene.camera.position = DVec3::new(0.0, 6.0, 18.0);
+    let auto = World::new(&scene).unwrap();
+    let mut flat = auto.clone();
+    flat.set_acceleration(Acceleration::Flat);
+    let options = RenderOptions {
+        width: 64,
+        height: 48,
+        samples_per_pixel: 1,
+        ..RenderOptions::from_scene(&scene)
+    };
+    let progress = RenderProgress::default();
+    let a = render(&auto, &options, &progress).unwrap().0;
+    let b = render(&flat, &options, &progress).unwrap().0;
+    assert_eq!(a.to_rgba8(), b.to_rgba8());
+}
