@@ -8,11 +8,13 @@
 //! a newer one, and a submit cancels the running pass at its next tile boundary. A panic
 //! while rendering is published as an error and the worker waits for the next request.
 
+mod crash;
 mod frame;
 mod plan;
 mod request;
 mod worker;
 
+pub use crash::panic_message;
 pub use frame::{Frame, Published};
 pub use plan::{COARSE_MAX_DIVIDER, COARSE_MIN_LONG_SIDE, Pass, coarse_divider, plan_passes};
 pub use request::{MAX_PREVIEW_LONG_SIDE, PreviewRequest};

@@ -111,9 +111,21 @@ impl ExportState {
         std::thread::Builder::new()
             .name("raylab-export".to_owned())
             .spawn(move || {
-                let image = render(&world, &options, &thread_progress)
-                    .map(|(image, _)| image)
-                    .ok_or_else(|| "export cancelled".to_owned());
+                // A panic in the tracer is reported like any other failure; the editor
+                // and its scene are untouched.
+                let image = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                    render(&world, &options, &thread_progress)
+                }))
+                .map_err(|panic| {
+                    format!(
+                        "the export crashed: {}",
+                        crate::preview::panic_message(panic.as_ref())
+                    )
+                })
+                .and_then(|done| {
+                    done.map(|(image, _)| image)
+                        .ok_or_else(|| "export cancelled".to_owned())
+                });
                 let _ = sender.send(image);
                 ctx.request_repaint();
             })
