@@ -3,10 +3,14 @@
 //! frame in [`EditorApp`], which also feeds undo and restarts the preview.
 
 mod app;
+mod camera_navigation;
 pub mod commands;
 mod confirm;
 mod export;
 pub mod files;
+mod gizmo_drag;
+mod gizmo_overlay;
+mod gizmo_toolbar;
 mod inspector;
 mod menu;
 mod outliner;
