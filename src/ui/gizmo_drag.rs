@@ -9,8 +9,8 @@ use glam::{DVec2, DVec3};
 use super::camera_navigation::{CameraDrag, drag_camera, frame_selection, zoom_with_wheel};
 use super::commands::{Command, SceneEdit, Selection};
 use super::gizmo_overlay::{
-    GizmoMode, HandleId, ViewMapping, cone_length, gizmo_elements, handle_shapes, paint_elements,
-    paint_matrix_hint, paint_readout, sun_anchor,
+    GizmoMode, HandleId, Part, ViewMapping, cone_length, gizmo_elements, handle_shapes,
+    paint_elements, paint_matrix_hint, paint_readout, sun_anchor,
 };
 use super::gizmo_toolbar::{ToolbarAction, toolbar_ui};
 use crate::gizmo::handles::{HandleShape, pick_handle};
@@ -221,7 +221,7 @@ fn format_direction(d: DVec3) -> String {
 enum Drag {
     Handle {
         handle: HandleId,
-        grabbed: Grabbed,
+        grabbed: Box<Grabbed>,
         geometry: DragGeometry,
         start: Pos2,
     },
@@ -347,6 +347,15 @@ pub fn gizmo_ui(
         && state.drag.is_some()
     {
         paint_readout(&painter, pos, text);
+    } else if let Selection::Light(i) = selection
+        && let Some(Light::Spot { angle_deg, .. }) = scene.lights.get(*i)
+        && let Some(rim) = elements.iter().find_map(|e| match e.part {
+            Part::Dot(p, _) if e.handle == Some(HandleId::SpotRim) => Some(p),
+            _ => None,
+        })
+    {
+        // The cone's angle beside its rim handle.
+        paint_readout(&painter, rim, &format!("{angle_deg:.1}°"));
     }
     match (&state.drag, hot) {
         (Some(Drag::Camera { .. }), _) => ctx.set_cursor_icon(CursorIcon::AllScroll),
@@ -398,7 +407,7 @@ fn start_drag(
         };
         return Some(Drag::Handle {
             handle,
-            grabbed,
+            grabbed: Box::new(grabbed),
             geometry,
             start,
         });

@@ -202,22 +202,23 @@ pub fn gizmo_elements(
                 }
             }
         }
-        Selection::Light(index) => match scene.lights.get(*index) {
-            Some(Light::Point { position, .. } | Light::Spot { position, .. }) => {
+        Selection::Light(index) => {
+            if let Some(Light::Point { position, .. } | Light::Spot { position, .. }) =
+                scene.lights.get(*index)
+            {
                 let size = view.world_per_point(scene, *position);
                 translate_elements(&mut out, view, *position, size);
-                if let Some(Light::Spot {
-                    position,
-                    direction,
-                    angle_deg,
-                    ..
-                }) = scene.lights.get(*index)
-                {
-                    spot_handles(&mut out, scene, view, *position, *direction, *angle_deg);
-                }
             }
-            _ => {}
-        },
+            if let Some(Light::Spot {
+                position,
+                direction,
+                angle_deg,
+                ..
+            }) = scene.lights.get(*index)
+            {
+                spot_handles(&mut out, scene, view, *position, *direction, *angle_deg);
+            }
+        }
         _ => {}
     }
     out
@@ -292,7 +293,7 @@ fn light_colour(light: &Light) -> Color32 {
 /// Three axis arrows and three plane handles at `origin`; `size` is world units per point.
 fn translate_elements(out: &mut Vec<Element>, view: &ViewMapping, origin: DVec3, size: f64) {
     let length = ARROW_PX * size;
-    for normal in 0..3 {
+    for (normal, colour) in AXIS_COLOURS.iter().enumerate() {
         let (a, b) = (world_axis(normal + 1), world_axis(normal + 2));
         let corners = [(0.28, 0.28), (0.5, 0.28), (0.5, 0.5), (0.28, 0.5)]
             .map(|(s, t)| view.project(origin + (a * s + b * t) * length));
@@ -301,12 +302,12 @@ fn translate_elements(out: &mut Vec<Element>, view: &ViewMapping, origin: DVec3,
         {
             out.push(Element {
                 part: Part::Quad([p0, p1, p2, p3]),
-                colour: AXIS_COLOURS[normal],
+                colour: *colour,
                 handle: Some(HandleId::Translate(TranslateHandle::Plane(normal))),
             });
         }
     }
-    for axis in 0..3 {
+    for (axis, colour) in AXIS_COLOURS.iter().enumerate() {
         let direction = world_axis(axis);
         if let (Some(from), Some(to)) = (
             view.project(origin + direction * length * 0.18),
@@ -315,7 +316,7 @@ fn translate_elements(out: &mut Vec<Element>, view: &ViewMapping, origin: DVec3,
         {
             out.push(Element {
                 part: Part::Arrow(from, to),
-                colour: AXIS_COLOURS[axis],
+                colour: *colour,
                 handle: Some(HandleId::Translate(TranslateHandle::Axis(axis))),
             });
         }
