@@ -577,3 +577,81 @@ pub fn paint_matrix_hint(painter: &egui::Painter, at: Pos2) {
         Color32::from_gray(220),
     );
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::MatrixRows;
+
+    fn scene_and_view() -> (Scene, ViewMapping) {
+        let scene = super::super::files::default_scene();
+        let picture = Rect::from_min_size(Pos2::new(100.0, 50.0), Vec2::new(400.0, 300.0));
+        let view = ViewMapping::new(&scene, picture);
+        (scene, view)
+    }
+
+    fn handles(elements: &[Element]) -> Vec<HandleId> {
+        elements.iter().filter_map(|e| e.handle).collect()
+    }
+
+    #[test]
+    fn the_ray_through_a_projected_point_passes_through_it() {
+        let (_, view) = scene_and_view();
+        for p in [DVec3::new(0.3, 1.2, -0.5), DVec3::new(-2.0, 0.1, 1.5)] {
+            let pos = view.project(p).unwrap();
+            assert!(view.screen_from_image.to().contains(pos), "{pos:?}");
+            let ray = view.ray(pos);
+            let to_p = p - ray.origin;
+            let miss = (to_p - ray.dir * to_p.dot(ray.dir)).length();
+            assert!(miss < 1e-5 * to_p.length(), "{miss}");
+        }
+    }
+
+    #[test]
+    fn a_selected_spotlight_has_tip_and_rim_handles_and_lights_have_markers() {
+        let (scene, view) = scene_and_view();
+        let elements = gizmo_elements(&scene, &Selection::Light(3), GizmoMode::Rotate, &view);
+        let handles = handles(&elements);
+        for wanted in [
+            HandleId::SpotTip,
+            HandleId::SpotRim,
+            HandleId::Marker(1),
+            HandleId::Marker(2),
+            HandleId::Marker(3),
+            HandleId::Translate(TranslateHandle::Axis(0)),
+        ] {
+            assert!(handles.contains(&wanted), "{wanted:?}");
+        }
+        assert!(
+            !handles.contains(&HandleId::Marker(0)),
+            "ambient has no place"
+        );
+        assert!(!handles.contains(&HandleId::Ring(0)), "lights only move");
+    }
+
+    #[test]
+    fn each_mode_shows_its_handles_and_a_matrix_transform_none() {
+        let (mut scene, view) = scene_and_view();
+        let select = Selection::Object(1);
+        let only = |mode| {
+            let elements = gizmo_elements(&scene, &select, mode, &view);
+            handles(&elements)
+                .into_iter()
+                .filter(|h| !matches!(h, HandleId::Marker(_)))
+                .collect::<Vec<_>>()
+        };
+        assert!(
+            only(GizmoMode::Translate).contains(&HandleId::Translate(TranslateHandle::Plane(1)))
+        );
+        assert!(only(GizmoMode::Rotate).contains(&HandleId::Ring(2)));
+        assert!(only(GizmoMode::Scale).contains(&HandleId::Scale(0)));
+        let rows: MatrixRows = scene.objects[1].transform.to_rows();
+        scene.objects[1].transform = Transform::Matrix(rows);
+        let elements = gizmo_elements(&scene, &select, GizmoMode::Translate, &view);
+        assert!(
+            handles(&elements)
+                .iter()
+                .all(|h| matches!(h, HandleId::Marker(_)))
+        );
+    }
+}
