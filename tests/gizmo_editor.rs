@@ -396,3 +396,40 @@ fn w_e_r_switch_the_gizmo_and_rings_rotate() {
     drag(&mut harness, from, to, Modifiers::NONE);
     assert!((trs(harness.state().scene(), 2).translate.x - (c.x + 0.5)).abs() < 2e-3);
 }
+
+#[test]
+fn a_middle_drag_pans_even_over_a_handle() {
+    let mut harness = harness();
+    select(&mut harness, "red ball");
+    let before = harness.state().scene().clone();
+    let origin = trs(&before, 1).translate;
+    let length = ARROW_POINTS * world_per_point(&harness, origin);
+    let from = screen(&harness, origin + DVec3::X * length * 0.7);
+    let to = from + Vec2::new(-30.0, 25.0);
+    harness.event(Event::PointerMoved(from));
+    harness.event(Event::PointerButton {
+        pos: from,
+        button: PointerButton::Middle,
+        pressed: true,
+        modifiers: Modifiers::NONE,
+    });
+    harness.step();
+    for i in 1..=6 {
+        harness.event(Event::PointerMoved(from + (to - from) * (i as f32 / 6.0)));
+        harness.step();
+    }
+    harness.event(Event::PointerButton {
+        pos: to,
+        button: PointerButton::Middle,
+        pressed: false,
+        modifiers: Modifiers::NONE,
+    });
+    harness.run();
+    let after = harness.state().scene();
+    assert_eq!(after.objects, before.objects, "the object stays");
+    let shift = after.camera.look_at - before.camera.look_at;
+    assert!(shift.length() > 0.0, "panned");
+    assert!(((after.camera.position - before.camera.position) - shift).length() < 1e-9);
+    undo(&mut harness);
+    assert_eq!(harness.state().scene(), &before, "one undo for the pan");
+}

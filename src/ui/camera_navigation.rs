@@ -46,7 +46,7 @@ pub fn drag_camera(
     commands: &mut Vec<Command>,
 ) {
     let camera = drag.camera(now - start, height_points);
-    commands.push(Command::Edit(SceneEdit::SetCamera(camera)));
+    push_camera(camera, commands);
 }
 
 /// Wheel steps this frame (one per notch; trackpads give fractions), positive towards
@@ -78,8 +78,7 @@ pub fn zoom_with_wheel(ctx: &egui::Context, scene: &Scene, commands: &mut Vec<Co
     if steps == 0.0 || !steps.is_finite() {
         return;
     }
-    let camera = zoom(&scene.camera, steps);
-    commands.push(Command::Edit(SceneEdit::SetCamera(camera)));
+    push_camera(zoom(&scene.camera, steps), commands);
     let now = ctx.input(|i| i.time);
     ctx.data_mut(|d| d.insert_temp(zoom_id(), now));
 }
@@ -134,9 +133,13 @@ pub fn frame_selection(scene: &Scene, selection: &Selection, commands: &mut Vec<
         && centre.is_finite()
         && radius.is_finite()
     {
-        let camera = frame(&scene.camera, centre, radius);
-        if camera.position.is_finite() {
-            commands.push(Command::Edit(SceneEdit::SetCamera(camera)));
-        }
+        push_camera(frame(&scene.camera, centre, radius), commands);
+    }
+}
+
+/// Pushes a camera edit, unless a degenerate camera (eye on its target) made it NaN.
+fn push_camera(camera: Camera, commands: &mut Vec<Command>) {
+    if camera.position.is_finite() && camera.look_at.is_finite() {
+        commands.push(Command::Edit(SceneEdit::SetCamera(camera)));
     }
 }

@@ -190,7 +190,8 @@ fn light_drag(
             HandleId::SpotRim,
         ) => {
             let radial = rim_radial(*direction, *position - geometry.eye);
-            let mut angle = angle_from_rim_drag(*position, *direction, radial, now)?;
+            let mut angle = angle_from_rim_drag(*position, *direction, radial, now)
+                .filter(|a| a.is_finite())?;
             if snapped {
                 angle = snap(angle, ROTATE_STEP_DEG).clamp(
                     crate::gizmo::spot::MIN_ANGLE_DEG,
