@@ -8,6 +8,7 @@ pub mod navigate;
 pub mod snap;
 pub mod spot;
 pub mod transform_drag;
+pub mod view;
 
 use glam::DVec3;
 

@@ -372,7 +372,9 @@ impl EditorApp {
             self.execute(command, ctx);
         }
         repair_selection(&self.scene, &mut self.selection);
-        let editing = ctx.input(|i| i.pointer.any_down()) || ctx.text_edit_focused();
+        let editing = ctx.input(|i| i.pointer.any_down())
+            || ctx.text_edit_focused()
+            || super::camera_navigation::zoom_in_progress(ctx);
         if !editing {
             self.undoer.add_undo(&self.scene);
         }

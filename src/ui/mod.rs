@@ -4,10 +4,16 @@
 
 mod app;
 mod autosave;
+mod camera_navigation;
 pub mod commands;
 mod confirm;
 mod export;
 pub mod files;
+mod gizmo_drag;
+mod gizmo_edit;
+mod gizmo_overlay;
+mod gizmo_paint;
+mod gizmo_toolbar;
 mod inspector;
 mod menu;
 mod outliner;

@@ -91,6 +91,11 @@ pub fn help_window(ctx: &egui::Context, open: &mut bool) {
                 });
             ui.separator();
             ui.label("Click an object in the viewport to select it.");
+            ui.label("W / E / R: move, rotate, scale gizmo · F: frame the selection.");
+            ui.label(
+                "Drag: orbit (Alt+drag over a handle) · Shift or middle drag: pan · wheel: zoom.",
+            );
+            ui.label("Hold Shift while dragging a handle to snap.");
             ui.label("Drop a .ron file on the window to open it.");
         });
 }

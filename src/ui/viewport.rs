@@ -61,7 +61,7 @@ pub fn viewport_ui(
         .rect_filled(outer, CornerRadius::ZERO, Color32::from_gray(14));
     let aspect = scene.camera.width as f32 / scene.camera.height.max(1) as f32;
     let picture = letterbox(outer.shrink(16.0), aspect);
-    let response = ui.allocate_rect(picture, Sense::click());
+    let response = ui.allocate_rect(picture, Sense::click_and_drag());
     response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, VIEWPORT_LABEL));
     let painter = ui.painter_at(outer);
     let texture = preview.and_then(PreviewLink::texture);
@@ -99,9 +99,11 @@ pub fn viewport_ui(
     if response.hovered() {
         ui.ctx().set_cursor_icon(egui::CursorIcon::Crosshair);
     }
+    let gizmo_took_click =
+        super::gizmo_drag::gizmo_ui(ui, &response, picture, scene, selection, commands);
     if let Some(pos) = response
         .interact_pointer_pos()
-        .filter(|_| response.clicked())
+        .filter(|_| response.clicked() && !gizmo_took_click)
     {
         let image_point = image_from_screen(picture, scene, pos);
         let selection = pick_object(scene, image_point).map_or(Selection::None, Selection::Object);

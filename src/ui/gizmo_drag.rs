@@ -1,0 +1,241 @@
+//! The viewport's gizmo adapter: reads the picture's response, picks handles, turns
+//! drags into scene edits with [`super::gizmo_edit`] (always computed from the values at
+//! the drag's start, so the point under the cursor stays under it) and pushes them as
+//! commands. A drag holds the mouse button, so the app records one undo step for the
+//! whole gesture.
+
+use egui::{CursorIcon, Id, Key, Modifiers, PointerButton, Pos2, Rect, Response};
+use glam::DVec2;
+
+use super::camera_navigation::{CameraDrag, drag_camera, frame_selection, zoom_with_wheel};
+use super::commands::{Command, Selection};
+use super::gizmo_edit::{DragGeometry, Grabbed, drag_edit, grab};
+use super::gizmo_overlay::{
+    GizmoMode, HandleId, Part, ViewMapping, cone_length, gizmo_elements, handle_shapes, sun_anchor,
+};
+use super::gizmo_paint::{paint_elements, paint_matrix_hint, paint_readout};
+use super::gizmo_toolbar::{ToolbarAction, toolbar_ui};
+use crate::gizmo::handles::{HandleShape, pick_handle};
+use crate::scene::{Light, Scene, Transform};
+
+/// A drag in progress.
+#[derive(Clone, Debug)]
+enum Drag {
+    Handle {
+        handle: HandleId,
+        grabbed: Box<Grabbed>,
+        geometry: DragGeometry,
+        start: Pos2,
+    },
+    Camera {
+        drag: CameraDrag,
+        start: Pos2,
+    },
+}
+
+/// The gizmos' state between frames (egui's temporary memory).
+#[derive(Clone, Debug, Default)]
+struct GizmoState {
+    mode: GizmoMode,
+    drag: Option<Drag>,
+    readout: Option<String>,
+}
+
+fn to_dvec(p: Pos2) -> DVec2 {
+    DVec2::new(f64::from(p.x), f64::from(p.y))
+}
+
+/// Draws the gizmos over the picture and handles their input and camera navigation.
+/// Returns whether a click was taken (a light marker or handle), so the viewport does
+/// not also pick an object under it.
+pub fn gizmo_ui(
+    ui: &mut egui::Ui,
+    response: &Response,
+    picture: Rect,
+    scene: &Scene,
+    selection: &Selection,
+    commands: &mut Vec<Command>,
+) -> bool {
+    let ctx = ui.ctx().clone();
+    let id = Id::unique("raylab gizmo");
+    let mut state: GizmoState = ctx.data(|d| d.get_temp(id)).unwrap_or_default();
+
+    if !ctx.text_edit_focused() {
+        let keys = [
+            (Key::W, GizmoMode::Translate),
+            (Key::E, GizmoMode::Rotate),
+            (Key::R, GizmoMode::Scale),
+        ];
+        for (key, mode) in keys {
+            if ctx.input_mut(|i| i.consume_key(Modifiers::NONE, key)) {
+                state.mode = mode;
+            }
+        }
+        if ctx.input_mut(|i| i.consume_key(Modifiers::NONE, Key::F)) {
+            frame_selection(scene, selection, commands);
+        }
+    }
+
+    let view = ViewMapping::new(scene, picture);
+    let elements = gizmo_elements(scene, selection, state.mode, &view);
+    let shapes = handle_shapes(&elements);
+    let hit_shapes: Vec<HandleShape> = shapes.iter().map(|(s, _)| *s).collect();
+    let pick = |pos: Pos2| pick_handle(to_dvec(pos), &hit_shapes).map(|k| shapes[k].1);
+
+    let modifiers = ctx.input(|i| i.modifiers);
+    if response.drag_started() {
+        let start = ctx
+            .input(|i| i.pointer.press_origin())
+            .or_else(|| response.interact_pointer_pos());
+        if let Some(start) = start {
+            state.drag = start_drag(response, scene, selection, &view, modifiers, start, pick);
+        }
+    }
+    let now = ctx.input(|i| i.pointer.latest_pos());
+    if let (Some(drag), Some(now)) = (&state.drag, now)
+        && (response.dragged() || response.drag_stopped())
+    {
+        state.readout = continue_drag(drag, &view, now, modifiers.shift, picture, commands);
+    }
+    let mut took_click = false;
+    if response.clicked()
+        && let Some(pos) = response.interact_pointer_pos()
+    {
+        match pick(pos) {
+            Some(HandleId::Marker(i)) => {
+                commands.push(Command::Select(Selection::Light(i)));
+                took_click = true;
+            }
+            Some(_) => took_click = true,
+            None => {}
+        }
+    }
+    if response.hovered() {
+        zoom_with_wheel(&ctx, scene, commands);
+    }
+
+    // Paint, with the dragged or hovered handle highlighted.
+    let dragged_handle = match &state.drag {
+        Some(Drag::Handle { handle, .. }) => Some(*handle),
+        _ => None,
+    };
+    let hot = dragged_handle.or_else(|| response.hover_pos().and_then(pick));
+    let painter = ui.painter_at(picture);
+    paint_elements(&painter, &elements, hot);
+    if let Selection::Object(i) = selection
+        && let Some(object) = scene.objects.get(*i)
+        && matches!(object.transform, Transform::Matrix(_))
+        && let Some(p) = view.project(object.transform.world_from_object().translation)
+    {
+        paint_matrix_hint(&painter, p);
+    }
+    if let (Some(text), Some(pos)) = (&state.readout, now)
+        && state.drag.is_some()
+    {
+        paint_readout(&painter, pos, text);
+    } else if let Selection::Light(i) = selection
+        && let Some(Light::Spot { angle_deg, .. }) = scene.lights.get(*i)
+        && let Some(rim) = elements.iter().find_map(|e| match e.part {
+            Part::Dot(p, _) if e.handle == Some(HandleId::SpotRim) => Some(p),
+            _ => None,
+        })
+    {
+        // The cone's angle beside its rim handle.
+        paint_readout(&painter, rim, &format!("{angle_deg:.1}°"));
+    }
+    match (&state.drag, hot) {
+        (Some(Drag::Camera { .. }), _) => ctx.set_cursor_icon(CursorIcon::AllScroll),
+        (Some(Drag::Handle { .. }), _) => ctx.set_cursor_icon(CursorIcon::Grabbing),
+        (None, Some(HandleId::Marker(_))) => ctx.set_cursor_icon(CursorIcon::PointingHand),
+        (None, Some(_)) => ctx.set_cursor_icon(CursorIcon::Grab),
+        (None, None) => {}
+    }
+
+    match toolbar_ui(ui, picture, &mut state.mode) {
+        Some(ToolbarAction::Frame) => frame_selection(scene, selection, commands),
+        None => {}
+    }
+
+    if response.drag_stopped() || !ctx.input(|i| i.pointer.any_down()) {
+        state.drag = None;
+        state.readout = None;
+    }
+    ctx.data_mut(|d| d.insert_temp(id, state));
+    took_click
+}
+
+/// What a drag starting at `start` does: a handle drag on a handle (unless Alt orbits),
+/// a pan with the middle button or Shift, an orbit otherwise.
+fn start_drag(
+    response: &Response,
+    scene: &Scene,
+    selection: &Selection,
+    view: &ViewMapping,
+    modifiers: Modifiers,
+    start: Pos2,
+    pick: impl Fn(Pos2) -> Option<HandleId>,
+) -> Option<Drag> {
+    let camera = scene.camera.clone();
+    if response.drag_started_by(PointerButton::Middle) {
+        return Some(Drag::Camera {
+            drag: CameraDrag::Pan(camera),
+            start,
+        });
+    }
+    if !modifiers.alt
+        && let Some(handle) = pick(start)
+        && let Some(grabbed) = grab(scene, selection, handle)
+    {
+        let geometry = DragGeometry {
+            eye: scene.camera.position,
+            cone_length: cone_length(scene),
+            sun: sun_anchor(scene, view),
+        };
+        return Some(Drag::Handle {
+            handle,
+            grabbed: Box::new(grabbed),
+            geometry,
+            start,
+        });
+    }
+    let drag = if modifiers.shift && !modifiers.alt {
+        CameraDrag::Pan(camera)
+    } else {
+        CameraDrag::Orbit(camera)
+    };
+    Some(Drag::Camera { drag, start })
+}
+
+/// Pushes the edit of a drag now at `now`; returns the readout to show.
+fn continue_drag(
+    drag: &Drag,
+    view: &ViewMapping,
+    now: Pos2,
+    snapped: bool,
+    picture: Rect,
+    commands: &mut Vec<Command>,
+) -> Option<String> {
+    match drag {
+        Drag::Handle {
+            handle,
+            grabbed,
+            geometry,
+            start,
+        } => {
+            let edit = drag_edit(
+                *handle,
+                grabbed,
+                geometry,
+                &view.ray(*start),
+                &view.ray(now),
+                snapped,
+            )?;
+            commands.push(Command::Edit(edit.edit));
+            Some(edit.readout)
+        }
+        Drag::Camera { drag, start } => {
+            drag_camera(drag, *start, now, picture.height(), commands);
+            None
+        }
+    }
+}
