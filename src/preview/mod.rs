@@ -14,6 +14,8 @@ mod request;
 mod worker;
 
 pub use frame::{Frame, Published};
-pub use plan::{COARSE_MAX_DIVIDER, COARSE_MIN_LONG_SIDE, Pass, coarse_divider, plan_passes};
+pub use plan::{
+    COARSE_MAX_DIVIDER, COARSE_MIN_LONG_SIDE, Pass, coarse_divider, coarse_dividers, plan_passes,
+};
 pub use request::{MAX_PREVIEW_LONG_SIDE, PreviewRequest};
 pub use worker::{PreviewWorker, Waker};
