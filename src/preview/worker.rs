@@ -90,6 +90,18 @@ impl PreviewWorker {
         self.accept(newest)
     }
 
+    /// Every message published since the last call, oldest first, without any older than
+    /// one already handed out (for a view that follows each pass, such as a curve).
+    pub fn drain(&mut self) -> Vec<Published> {
+        let mut messages = Vec::new();
+        while let Ok(message) = self.published.try_recv() {
+            if let Some(message) = self.accept(Some(message)) {
+                messages.push(message);
+            }
+        }
+        messages
+    }
+
     /// Waits up to `timeout` for the next message (for tests and headless use).
     pub fn recv_timeout(&mut self, timeout: Duration) -> Option<Published> {
         let message = self.published.recv_timeout(timeout).ok();
