@@ -8,12 +8,15 @@ use egui::{Color32, RichText, ViewportCommand};
 
 use super::commands::{Command, SceneEdit, Selection, repair_selection};
 use super::confirm::{DiscardAction, discard_modal};
+use super::convergence_plot::convergence_plot_ui;
 use super::export::{ExportState, export_window};
 use super::files;
 use super::inspector::inspector_ui;
 use super::menu::{MenuState, menu_ui};
 use super::outliner::outliner_ui;
+use super::pixel_inspector::{PixelInspection, pixel_inspector_ui};
 use super::preview_link::PreviewLink;
+use super::preview_settings::PreviewSettings;
 use super::recent::RecentFiles;
 use super::screenshot::ScreenshotHook;
 use super::shortcuts::{help_window, shortcut_commands};
@@ -50,6 +53,10 @@ pub struct EditorApp {
     commands: Vec<Command>,
     preview_enabled: bool,
     preview: Option<PreviewLink>,
+    /// The toolbar's switches, view and overlays (editor state).
+    preview_settings: PreviewSettings,
+    /// The pixel under the inspector, kept current with the scene and switches.
+    inspection: Option<PixelInspection>,
     export: ExportState,
     recent: RecentFiles,
     pending: Option<DiscardAction>,
@@ -79,6 +86,8 @@ impl EditorApp {
             commands: Vec::new(),
             preview_enabled: options.preview,
             preview: None,
+            preview_settings: PreviewSettings::default(),
+            inspection: None,
             export: ExportState::default(),
             recent,
             pending: None,
@@ -159,6 +168,18 @@ impl EditorApp {
         self.preview.as_ref()
     }
 
+    /// The toolbar's settings.
+    #[must_use]
+    pub fn preview_settings(&self) -> &PreviewSettings {
+        &self.preview_settings
+    }
+
+    /// The pixel inspector's contents, when open.
+    #[must_use]
+    pub fn inspection(&self) -> Option<&PixelInspection> {
+        self.inspection.as_ref()
+    }
+
     /// Recent files.
     #[must_use]
     pub fn recent(&self) -> &RecentFiles {
@@ -186,14 +207,14 @@ impl EditorApp {
             self.preview = Some(PreviewLink::new(&ctx));
         }
         if let Some(preview) = &mut self.preview {
-            preview.poll(&ctx);
+            preview.poll(&ctx, self.preview_settings.nan_guard);
         }
         self.input(&ctx);
         self.panels_ui(ui);
         self.dialogs(&ctx);
         self.apply_commands(&ctx);
         if let Some(preview) = &mut self.preview {
-            preview.sync(&self.scene);
+            preview.sync(&self.scene, &self.preview_settings);
         }
         let title = self.title();
         if title != self.title {
@@ -322,6 +343,7 @@ impl EditorApp {
                 &self.scene,
                 self.preview.as_ref(),
                 &self.selection,
+                &self.preview_settings,
                 &mut commands,
             );
         });
@@ -331,6 +353,19 @@ impl EditorApp {
     fn dialogs(&mut self, ctx: &egui::Context) {
         help_window(ctx, &mut self.show_help);
         export_window(ctx, &mut self.export, &self.scene);
+        if let Some(inspection) = &self.inspection {
+            pixel_inspector_ui(ctx, inspection, &mut self.commands);
+        }
+        if self.preview_settings.show_convergence
+            && let Some(preview) = &self.preview
+        {
+            convergence_plot_ui(
+                ctx,
+                preview.convergence(),
+                &self.preview_settings,
+                &mut self.commands,
+            );
+        }
         if let Some(action) = self.pending.clone() {
             let answer = discard_modal(ctx, &action);
             match answer {
@@ -356,6 +391,16 @@ impl EditorApp {
             self.execute(command, ctx);
         }
         repair_selection(&self.scene, &mut self.selection);
+        if let Some(inspection) = &self.inspection
+            && !inspection.is_current(&self.scene, self.preview_settings.switches)
+        {
+            let pixel = inspection.pixel;
+            self.inspection = Some(PixelInspection::new(
+                &self.scene,
+                self.preview_settings.switches,
+                pixel,
+            ));
+        }
         let editing = ctx.input(|i| i.pointer.any_down()) || ctx.text_edit_focused();
         if !editing {
             self.undoer.add_undo(&self.scene);
@@ -395,6 +440,12 @@ impl EditorApp {
             Command::ShowHelp => self.show_help = !self.show_help,
             Command::DismissError => self.error = None,
             Command::FocusName => self.focus_name = true,
+            Command::SetPreviewSettings(settings) => self.preview_settings = settings,
+            Command::InspectPixel(pixel) => {
+                self.inspection = pixel.map(|pixel| {
+                    PixelInspection::new(&self.scene, self.preview_settings.switches, pixel)
+                });
+            }
         }
     }
 
@@ -408,6 +459,7 @@ impl EditorApp {
     pub fn save_state(&self, storage: &mut dyn eframe::Storage) {
         if self.screenshot.is_none() {
             self.recent.save(storage);
+            self.preview_settings.save(storage);
         }
     }
 
