@@ -10,12 +10,14 @@
 
 mod convergence;
 mod frame;
+mod latency;
 mod plan;
 mod request;
 mod worker;
 
 pub use convergence::{ConvergenceCurve, ConvergencePoint, rmse_nearest};
 pub use frame::{Frame, Published};
+pub use latency::{PreviewLatency, measure_latency};
 pub use plan::{
     COARSE_MAX_DIVIDER, COARSE_MIN_LONG_SIDE, Pass, coarse_divider, coarse_dividers, plan_passes,
 };

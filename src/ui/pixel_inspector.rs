@@ -259,7 +259,7 @@ pub fn switches_text(switches: TermSwitches) -> String {
 
 fn pixel_ui(ui: &mut egui::Ui, pixel: &InspectedPixel) {
     egui::ScrollArea::vertical()
-        .max_height(520.0)
+        .max_height(380.0)
         .show(ui, |ui| {
             for bounce in &pixel.bounces {
                 let title = match bounce.depth {
