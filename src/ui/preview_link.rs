@@ -69,21 +69,22 @@ impl PreviewLink {
     /// Sends `scene` with the toolbar's switches and view to the worker if either differs
     /// from what was last sent.
     pub fn sync(&mut self, scene: &Scene, settings: &PreviewSettings) {
-        let mut request = PreviewRequest::for_scene_capped(
-            self.generation + 1,
-            scene.clone(),
-            MAX_PREVIEW_LONG_SIDE,
-        );
-        request.options.switches = settings.switches;
-        request.options.view = settings.view;
-        if self.submitted.as_ref() == Some(scene) && self.submitted_options == Some(request.options)
-        {
+        let options = RenderOptions {
+            switches: settings.switches,
+            view: settings.view,
+            ..PreviewRequest::capped_options(scene, MAX_PREVIEW_LONG_SIDE)
+        };
+        if self.submitted.as_ref() == Some(scene) && self.submitted_options == Some(options) {
             return;
         }
         self.generation += 1;
         self.submitted = Some(scene.clone());
-        self.submitted_options = Some(request.options);
-        self.worker.submit(request);
+        self.submitted_options = Some(options);
+        self.worker.submit(PreviewRequest {
+            generation: self.generation,
+            scene: std::sync::Arc::new(scene.clone()),
+            options,
+        });
     }
 
     /// Takes the published frames (or error): each feeds the convergence curve, the
