@@ -104,6 +104,26 @@ fn passes_arrive_coarse_first_then_full_then_samples() {
 }
 
 #[test]
+fn drain_hands_out_every_pass_in_plan_order() {
+    let (mut worker, _) = worker_with_counter();
+    let scene = small_scene(320, 240, 16);
+    let request = PreviewRequest::for_scene(1, scene);
+    let plan = raylab::preview::plan_passes(&request.options);
+    worker.submit(request);
+    let deadline = Instant::now() + WAIT;
+    let mut passes = Vec::new();
+    while passes.len() < plan.len() {
+        assert!(Instant::now() < deadline, "got only {passes:?}");
+        std::thread::sleep(Duration::from_millis(5));
+        for message in worker.drain() {
+            assert_eq!(message.generation, 1);
+            passes.push(message.result.unwrap().pass);
+        }
+    }
+    assert_eq!(passes, plan);
+}
+
+#[test]
 fn after_a_submit_the_next_frame_carries_the_new_generation() {
     let (mut worker, _) = worker_with_counter();
     worker.submit(PreviewRequest::for_scene(1, small_scene(320, 240, 1)));

@@ -374,3 +374,12 @@ fn the_convergence_plot_has_a_point_per_pass_after_the_first() {
             .all(|w| w[0].render_time <= w[1].render_time)
     );
 }
+
+#[test]
+fn the_status_bar_shows_samples_so_far_of_the_target_and_final() {
+    let mut harness = harness("status");
+    wait_for_final(&mut harness);
+    let status = harness.get_by_label_contains("4/4 samples");
+    let text = format!("{status:?}");
+    assert!(text.contains("final") && text.contains("Mrays/s"), "{text}");
+}
