@@ -27,6 +27,11 @@ fn small_scene() -> Scene {
 
 /// An editor with the preview running on `small_scene`, saved to a temporary file.
 fn harness(name: &str) -> Harness<'static, EditorApp> {
+    harness_sized(name, Vec2::new(1280.0, 800.0))
+}
+
+/// As [`harness`], in a window of `size`.
+fn harness_sized(name: &str, size: Vec2) -> Harness<'static, EditorApp> {
     let dir = std::env::temp_dir().join(format!("raylab-ui-preview-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
@@ -39,7 +44,7 @@ fn harness(name: &str) -> Harness<'static, EditorApp> {
     };
     let app = EditorApp::new(options, RecentFiles::default());
     let mut harness = Harness::builder()
-        .with_size(Vec2::new(1280.0, 800.0))
+        .with_size(size)
         .with_max_steps(64)
         .build_ui_state(|ui, app: &mut EditorApp| app.editor_ui(ui), app);
     harness.run_ok();
@@ -382,4 +387,27 @@ fn the_status_bar_shows_samples_so_far_of_the_target_and_final() {
     let status = harness.get_by_label_contains("4/4 samples");
     let text = format!("{status:?}");
     assert!(text.contains("final") && text.contains("Mrays/s"), "{text}");
+}
+
+#[test]
+fn a_narrow_viewport_scrolls_the_toolbar_to_its_last_toggle() {
+    let mut harness = harness_sized("narrow", Vec2::new(760.0, 600.0));
+    let toggle = harness.get_by_role_and_label(egui::Role::Button, "Convergence");
+    toggle.scroll_to_me();
+    harness.run_ok();
+    toggle_at_visible(&mut harness, "Convergence");
+    assert!(harness.state().preview_settings().show_convergence);
+}
+
+/// Clicks a toggle after scrolling it into view.
+fn toggle_at_visible(harness: &mut Harness<'_, EditorApp>, label: &str) {
+    let viewport = harness.get_by_label(VIEWPORT_LABEL).rect();
+    let toggle = harness.get_by_role_and_label(egui::Role::Button, label);
+    let rect = toggle.rect();
+    assert!(
+        rect.max.x <= viewport.max.x + 16.0 && rect.min.x >= viewport.min.x - 16.0,
+        "{label} at {rect:?} is outside the viewport {viewport:?}"
+    );
+    toggle.click();
+    harness.run_ok();
 }

@@ -35,20 +35,26 @@ pub fn toolbar_ui(
         .max_rect(rect.shrink2(egui::vec2(8.0, 3.0)))
         .layout(Layout::top_down(Align::Min));
     ui.scope_builder(builder, |ui| {
-        ui.spacing_mut().item_spacing = egui::vec2(4.0, 2.0);
-        ui.horizontal(|ui| terms_ui(ui, &mut edited));
-        ui.horizontal(|ui| {
-            view_ui(ui, &mut edited);
-            ui.separator();
-            guard_ui(ui, &mut edited, non_finite);
-            ui.separator();
-            ui.toggle_value(&mut edited.inspect, "Inspect")
-                .on_hover_text(
-                    "Click a pixel to see every number behind it (or hold Alt and click)",
-                );
-            ui.toggle_value(&mut edited.show_convergence, "Convergence")
-                .on_hover_text("Plot how much each preview pass still changes the picture");
-        });
+        ui.set_clip_rect(rect);
+        // A narrow viewport scrolls the toolbar sideways rather than hiding its end.
+        egui::ScrollArea::horizontal()
+            .id_salt("toolbar")
+            .show(ui, |ui| {
+                ui.spacing_mut().item_spacing = egui::vec2(4.0, 2.0);
+                ui.horizontal(|ui| terms_ui(ui, &mut edited));
+                ui.horizontal(|ui| {
+                    view_ui(ui, &mut edited);
+                    ui.separator();
+                    guard_ui(ui, &mut edited, non_finite);
+                    ui.separator();
+                    ui.toggle_value(&mut edited.inspect, "Inspect")
+                        .on_hover_text(
+                            "Click a pixel to see every number behind it (or hold Alt and click)",
+                        );
+                    ui.toggle_value(&mut edited.show_convergence, "Convergence")
+                        .on_hover_text("Plot how much each preview pass still changes the picture");
+                });
+            });
     });
     if edited != *settings {
         commands.push(Command::SetPreviewSettings(edited));
