@@ -4,8 +4,13 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
+use raylab::cli::RenderArgs;
 use raylab::preview::{Pass, PreviewRequest, PreviewWorker, Published};
 use raylab::scene::{Scene, parse_scene};
+use raylab::trace::{
+    Image, RenderOptions, RenderProgress, SampleSums, Term, View, World, render, render_samples,
+    render_samples_into,
+};
 
 /// Generous: the machine may be busy with other builds.
 const WAIT: Duration = Duration::from_secs(60);
@@ -68,6 +73,7 @@ fn passes_arrive_coarse_first_then_full_then_samples() {
         passes,
         vec![
             Pass::Coarse { divider: 4 },
+            Pass::Coarse { divider: 2 },
             Pass::Full {
                 samples: 1,
                 target: 1
@@ -80,19 +86,41 @@ fn passes_arrive_coarse_first_then_full_then_samples() {
     );
     let first = messages[0].result.as_ref().unwrap();
     assert_eq!((first.image.width, first.image.height), (80, 60));
+    let second = messages[1].result.as_ref().unwrap();
+    assert_eq!((second.image.width, second.image.height), (160, 120));
     let last = messages.last().unwrap().result.as_ref().unwrap();
     assert_eq!((last.image.width, last.image.height), (320, 240));
     assert!(last.is_final);
     // The waker runs just after each send; give the last one a moment.
     let waited = Instant::now();
-    while wakes.load(Ordering::SeqCst) < 3 && waited.elapsed() < WAIT {
+    while wakes.load(Ordering::SeqCst) < 4 && waited.elapsed() < WAIT {
         std::thread::sleep(Duration::from_millis(5));
     }
     assert_eq!(
         wakes.load(Ordering::SeqCst),
-        3,
+        4,
         "the waker runs once per publish"
     );
+}
+
+#[test]
+fn drain_hands_out_every_pass_in_plan_order() {
+    let (mut worker, _) = worker_with_counter();
+    let scene = small_scene(320, 240, 16);
+    let request = PreviewRequest::for_scene(1, scene);
+    let plan = raylab::preview::plan_passes(&request.options);
+    worker.submit(request);
+    let deadline = Instant::now() + WAIT;
+    let mut passes = Vec::new();
+    while passes.len() < plan.len() {
+        assert!(Instant::now() < deadline, "got only {passes:?}");
+        std::thread::sleep(Duration::from_millis(5));
+        for message in worker.drain() {
+            assert_eq!(message.generation, 1);
+            passes.push(message.result.unwrap().pass);
+        }
+    }
+    assert_eq!(passes, plan);
 }
 
 #[test]
@@ -105,7 +133,41 @@ fn after_a_submit_the_next_frame_carries_the_new_generation() {
     worker.submit(PreviewRequest::for_scene(2, edited));
     let message = next(&mut worker);
     assert_eq!(message.generation, 2);
-    assert!(matches!(message.result.unwrap().pass, Pass::Coarse { .. }));
+    let frame = message.result.unwrap();
+    assert_eq!(
+        frame.pass,
+        Pass::Coarse { divider: 4 },
+        "an edit restarts coarse"
+    );
+    // The new background shows in the very first frame of the new generation.
+    assert_eq!(frame.image.get(0, 0), glam::Vec3::new(1.0, 0.0, 0.0));
+}
+
+#[test]
+fn the_default_scene_refines_8_4_2_then_full_resolution() {
+    let (mut worker, _) = worker_with_counter();
+    worker.submit(PreviewRequest::for_scene(1, small_scene(800, 600, 1)));
+    let messages = until_final(&mut worker, 1);
+    let sizes: Vec<(Pass, u32, u32)> = messages
+        .iter()
+        .map(|m| {
+            let frame = m.result.as_ref().unwrap();
+            (frame.pass, frame.image.width, frame.image.height)
+        })
+        .collect();
+    let full = Pass::Full {
+        samples: 1,
+        target: 1,
+    };
+    assert_eq!(
+        sizes,
+        vec![
+            (Pass::Coarse { divider: 8 }, 100, 75),
+            (Pass::Coarse { divider: 4 }, 200, 150),
+            (Pass::Coarse { divider: 2 }, 400, 300),
+            (full, 800, 600),
+        ]
+    );
 }
 
 #[test]
@@ -198,27 +260,93 @@ fn an_invalid_scene_publishes_its_error() {
     assert!(error.contains("no such material"), "{error}");
 }
 
+/// Render options as `raylab render` builds them from its arguments.
+fn cli_options(scene: &Scene, off: &[Term], solo: Option<Term>, view: View) -> RenderOptions {
+    let args = RenderArgs {
+        scene: "scene.ron".into(),
+        output: "out.png".into(),
+        width: None,
+        height: None,
+        spp: None,
+        off: off.to_vec(),
+        solo,
+        view,
+    };
+    args.options(scene)
+}
+
+/// Whether two images are equal pixel for pixel (exact f32 equality).
+fn identical(a: &Image, b: &Image) -> bool {
+    a.width == b.width && a.height == b.height && a.pixels == b.pixels
+}
+
 #[test]
-fn the_final_frame_matches_a_direct_render_of_the_same_options() {
+fn the_final_frame_is_bit_identical_to_the_cli_render_for_the_same_switches() {
     let (mut worker, _) = worker_with_counter();
     let scene = small_scene(160, 120, 16);
-    let request = PreviewRequest::for_scene(1, scene.clone());
-    let options = request.options;
+    let world = World::new(&scene).unwrap();
+    let cases: [(&[Term], Option<Term>, View); 5] = [
+        (&[], None, View::Beauty),
+        (&[Term::Diffuse], None, View::Beauty),
+        (&[Term::Shadows], Some(Term::Specular), View::Beauty),
+        (&[], Some(Term::Reflection), View::Beauty),
+        (&[Term::Ambient], None, View::Normal),
+    ];
+    for (generation, (off, solo, view)) in (1..).zip(cases) {
+        let options = cli_options(&scene, off, solo, view);
+        let mut request = PreviewRequest::for_scene(generation, scene.clone());
+        request.options = options;
+        worker.submit(request);
+        let messages = until_final(&mut worker, generation);
+        let last = messages.last().unwrap().result.as_ref().unwrap();
+        assert_eq!(
+            last.pass,
+            Pass::Full {
+                samples: 16,
+                target: 16
+            }
+        );
+        let (direct, _) = render(&world, &options, &RenderProgress::default()).unwrap();
+        assert!(
+            identical(&last.image, &direct),
+            "off {off:?} solo {solo:?} view {view}: the preview differs from the CLI"
+        );
+        assert_eq!(last.non_finite_samples, 0);
+    }
+}
+
+#[test]
+fn a_one_sample_scene_ends_on_the_cli_image_too() {
+    let (mut worker, _) = worker_with_counter();
+    let scene = small_scene(200, 100, 1);
+    let options = cli_options(&scene, &[Term::Specular], None, View::ShadowMask);
+    let mut request = PreviewRequest::for_scene(1, scene.clone());
+    request.options = options;
     worker.submit(request);
     let messages = until_final(&mut worker, 1);
     let last = messages.last().unwrap().result.as_ref().unwrap();
-    let world = raylab::trace::World::new(&scene).unwrap();
-    let progress = raylab::trace::RenderProgress::default();
-    let (direct, _) = raylab::trace::render(&world, &options, &progress).unwrap();
-    assert_eq!(last.image.to_rgba8(), direct.to_rgba8());
-    let max_difference = last
-        .image
-        .pixels
-        .iter()
-        .zip(&direct.pixels)
-        .map(|(a, b)| (*a - *b).abs().max_element())
-        .fold(0.0f32, f32::max);
-    assert!(max_difference < 1e-6, "{max_difference}");
+    let world = World::new(&scene).unwrap();
+    let (direct, _) = render(&world, &options, &RenderProgress::default()).unwrap();
+    assert!(identical(&last.image, &direct));
+}
+
+#[test]
+fn samples_added_in_batches_sum_exactly_as_in_one_go() {
+    let scene = small_scene(48, 32, 8);
+    let world = World::new(&scene).unwrap();
+    let options = RenderOptions::from_scene(&scene);
+    let progress = RenderProgress::default();
+    let at_once = render_samples(&world, &options, 0..8, &progress).unwrap();
+    let mut batched = SampleSums::zero(48, 32);
+    let mut rays = 0;
+    for batch in [0..1, 1..4, 4..8] {
+        rays += render_samples_into(&world, &options, batch, &mut batched, &progress)
+            .unwrap()
+            .total();
+    }
+    assert_eq!(batched.sums, at_once.sums);
+    assert_eq!(batched.rays, at_once.rays);
+    assert_eq!(rays, at_once.rays.total());
 }
 
 #[test]

@@ -3,7 +3,6 @@
 
 pub mod convergence;
 pub mod crossover;
-pub mod latency;
 pub mod plot;
 pub mod precision;
 pub mod throughput;
@@ -12,7 +11,6 @@ use serde::Serialize;
 
 pub use convergence::{CurvePoint, convergence_curves};
 pub use crossover::{CrossoverPoint, bvh_crossover};
-pub use latency::{PreviewLatency, preview_latency};
 pub use precision::{PrecisionCost, precision_cost};
 pub use throughput::{SceneThroughput, scene_throughput};
 

@@ -7,8 +7,7 @@ use clap::Args;
 use crate::bench::convergence::ConvergencePlan;
 use crate::bench::plot::plot_curve;
 use crate::bench::{
-    BenchReport, bvh_crossover, convergence_curves, precision_cost, preview_latency,
-    scene_throughput,
+    BenchReport, bvh_crossover, convergence_curves, precision_cost, scene_throughput,
 };
 use crate::scene::load_scene;
 
@@ -98,7 +97,12 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
     };
     let curve = convergence_curves(&default_scene, &plan)?;
     eprintln!("preview latency: default scene through the preview worker");
-    let latency = preview_latency(&default_scene, if args.quick { 5 } else { 20 })?;
+    let latency = crate::preview::measure_latency(
+        &default_scene,
+        if args.quick { 5 } else { 20 },
+        std::time::Duration::from_secs(60),
+    )
+    .ok_or("the preview worker did not answer")?;
     eprintln!("acceleration: flat list against BVH");
     let counts: &[usize] = if args.quick {
         &[4, 16, 64]
@@ -113,8 +117,8 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
         threads: rayon::current_num_threads(),
         throughput_mrays_per_s: default.mrays_per_s,
         full_frame_1spp_ms: default.frame_ms,
-        first_preview_ms: Some(latency.first_frame_ms),
-        first_full_preview_ms: Some(latency.full_frame_ms),
+        first_preview_ms: Some(latency.first_frame.as_secs_f64() * 1e3),
+        first_full_preview_ms: Some(latency.full_resolution.as_secs_f64() * 1e3),
         scenes,
         curve,
         precision,

@@ -18,6 +18,11 @@ pub struct Frame {
     pub rays: RayCounts,
     /// Whether this is the last pass of the plan (nothing sharper will follow).
     pub is_final: bool,
+    /// Samples behind this image that came out non-finite and were replaced by black: the
+    /// renderer's own guard count (should stay 0).
+    pub non_finite_samples: u64,
+    /// Row-major indices into `image` of the pixels with such a sample, ascending.
+    pub non_finite_pixels: Vec<u32>,
 }
 
 /// A message from the worker, tagged with the generation of the request it answers.

@@ -8,14 +8,20 @@
 //! a newer one, and a submit cancels the running pass at its next tile boundary. A panic
 //! while rendering is published as an error and the worker waits for the next request.
 
+mod convergence;
 mod crash;
 mod frame;
+mod latency;
 mod plan;
 mod request;
 mod worker;
 
+pub use convergence::{ConvergenceCurve, ConvergencePoint, rmse_nearest};
 pub use crash::panic_message;
 pub use frame::{Frame, Published};
-pub use plan::{COARSE_MAX_DIVIDER, COARSE_MIN_LONG_SIDE, Pass, coarse_divider, plan_passes};
+pub use latency::{PreviewLatency, measure_latency};
+pub use plan::{
+    COARSE_MAX_DIVIDER, COARSE_MIN_LONG_SIDE, Pass, coarse_divider, coarse_dividers, plan_passes,
+};
 pub use request::{MAX_PREVIEW_LONG_SIDE, PreviewRequest};
 pub use worker::{PreviewWorker, Waker};

@@ -51,15 +51,25 @@ pub fn coarse_divider(width: u32, height: u32) -> Option<u32> {
     (divider > 1).then_some(divider)
 }
 
-/// The passes for `options`: coarse (when the image is big enough to need one), full
-/// resolution at one sample, then anti-aliasing samples in doubling batches (4, 8, 16...)
-/// up to `options.samples_per_pixel`.
+/// Every coarse pass's divider, coarsest first: 8, 4, 2 while the long side stays at least
+/// 64 pixels (so the first is [`coarse_divider`]); empty when the target is that small.
+#[must_use]
+pub fn coarse_dividers(width: u32, height: u32) -> Vec<u32> {
+    let Some(first) = coarse_divider(width, height) else {
+        return Vec::new();
+    };
+    std::iter::successors(Some(first), |d| (*d > 2).then_some(d / 2)).collect()
+}
+
+/// The passes for `options`: coarse passes at dividers 8, 4, 2 (those whose long side is
+/// at least 64 pixels), full resolution at one sample, then anti-aliasing samples in
+/// doubling batches (4, 8, 16...) up to `options.samples_per_pixel`.
 #[must_use]
 pub fn plan_passes(options: &RenderOptions) -> Vec<Pass> {
-    let mut passes = Vec::new();
-    if let Some(divider) = coarse_divider(options.width, options.height) {
-        passes.push(Pass::Coarse { divider });
-    }
+    let mut passes: Vec<Pass> = coarse_dividers(options.width, options.height)
+        .into_iter()
+        .map(|divider| Pass::Coarse { divider })
+        .collect();
     passes.push(Pass::Full {
         samples: 1,
         target: 1,
@@ -102,12 +112,26 @@ mod tests {
     }
 
     #[test]
+    fn coarse_passes_halve_the_divider_down_to_2() {
+        assert_eq!(coarse_dividers(800, 600), vec![8, 4, 2]);
+        assert_eq!(coarse_dividers(600, 800), vec![8, 4, 2]);
+        assert_eq!(coarse_dividers(511, 300), vec![4, 2]);
+        assert_eq!(coarse_dividers(300, 200), vec![4, 2]);
+        assert_eq!(coarse_dividers(130, 40), vec![2]);
+        assert_eq!(coarse_dividers(127, 40), Vec::<u32>::new());
+        assert_eq!(coarse_dividers(64, 64), Vec::<u32>::new());
+        assert_eq!(coarse_dividers(1, 1), Vec::<u32>::new());
+    }
+
+    #[test]
     fn plan_goes_coarse_full_then_doubling_samples() {
         let plan = plan_passes(&options(800, 600, 16));
         assert_eq!(
             plan,
             vec![
                 Pass::Coarse { divider: 8 },
+                Pass::Coarse { divider: 4 },
+                Pass::Coarse { divider: 2 },
                 Pass::Full {
                     samples: 1,
                     target: 1
@@ -131,6 +155,17 @@ mod tests {
 
     #[test]
     fn one_sample_target_ends_at_the_full_pass() {
+        assert_eq!(
+            plan_passes(&options(300, 200, 1)),
+            vec![
+                Pass::Coarse { divider: 4 },
+                Pass::Coarse { divider: 2 },
+                Pass::Full {
+                    samples: 1,
+                    target: 1
+                },
+            ]
+        );
         let plan = plan_passes(&options(32, 32, 1));
         assert_eq!(
             plan,

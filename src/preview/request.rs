@@ -37,16 +37,27 @@ impl PreviewRequest {
     /// side is at most `max_long_side`.
     #[must_use]
     pub fn for_scene_capped(generation: u64, scene: Scene, max_long_side: u32) -> Self {
-        let mut request = Self::for_scene(generation, scene);
-        let (width, height) = (request.options.width, request.options.height);
+        let options = Self::capped_options(&scene, max_long_side);
+        Self {
+            generation,
+            scene: Arc::new(scene),
+            options,
+        }
+    }
+
+    /// The options of [`Self::for_scene_capped`], without building a request.
+    #[must_use]
+    pub fn capped_options(scene: &Scene, max_long_side: u32) -> RenderOptions {
+        let mut options = RenderOptions::from_scene(scene);
+        let (width, height) = (options.width, options.height);
         let long = width.max(height);
         if long > max_long_side {
             let scale = f64::from(max_long_side) / f64::from(long);
             let side = |s: u32| ((f64::from(s) * scale).round() as u32).max(1);
-            request.options.width = side(width);
-            request.options.height = side(height);
+            options.width = side(width);
+            options.height = side(height);
         }
-        request
+        options
     }
 }
 

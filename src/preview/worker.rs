@@ -9,9 +9,8 @@ use std::time::{Duration, Instant};
 use super::frame::{Frame, Published};
 use super::plan::{Pass, plan_passes};
 use super::request::PreviewRequest;
-use crate::trace::{
-    Image, RayCounts, RenderOptions, RenderProgress, SampleSums, World, render_samples,
-};
+use crate::trace::{Image, RayCounts, RenderOptions, RenderProgress, SampleSums, World};
+use crate::trace::{render_samples, render_samples_into};
 
 /// Called after every publish, from the worker thread (the editor asks for a repaint).
 pub type Waker = Box<dyn Fn() + Send + Sync>;
@@ -91,6 +90,18 @@ impl PreviewWorker {
         self.accept(newest)
     }
 
+    /// Every message published since the last call, oldest first, without any older than
+    /// one already handed out (for a view that follows each pass, such as a curve).
+    pub fn drain(&mut self) -> Vec<Published> {
+        let mut messages = Vec::new();
+        while let Ok(message) = self.published.try_recv() {
+            if let Some(message) = self.accept(Some(message)) {
+                messages.push(message);
+            }
+        }
+        messages
+    }
+
     /// Waits up to `timeout` for the next message (for tests and headless use).
     pub fn recv_timeout(&mut self, timeout: Duration) -> Option<Published> {
         let message = self.published.recv_timeout(timeout).ok();
@@ -164,11 +175,7 @@ fn run(shared: &Shared, sender: &Sender<Published>, waker: &Waker) {
         }));
         if let Err(panic) = outcome {
             lock(&shared.mailbox).running = None;
-            let reason = panic
-                .downcast_ref::<&str>()
-                .map(|s| (*s).to_owned())
-                .or_else(|| panic.downcast_ref::<String>().cloned())
-                .unwrap_or_else(|| "unknown reason".to_owned());
+            let reason = super::crash::panic_message(panic.as_ref());
             publish(Err(format!("the renderer crashed: {reason}")));
         }
     }
@@ -213,15 +220,17 @@ fn render_plan(
         let started = Instant::now();
         let image_and_rays = render_pass(world, target, pass, &mut accumulated, &progress);
         lock(&shared.mailbox).running = None;
-        let Some((image, rays)) = image_and_rays else {
+        let Some(rendered) = image_and_rays else {
             return;
         };
         publish(Ok(Frame {
-            image,
+            image: rendered.image,
             pass,
             elapsed: started.elapsed(),
-            rays,
+            rays: rendered.rays,
             is_final: index + 1 == passes.len(),
+            non_finite_samples: rendered.non_finite_samples,
+            non_finite_pixels: rendered.non_finite_pixels,
         }));
     }
 }
@@ -243,14 +252,36 @@ struct Accumulated {
     samples: u32,
 }
 
-/// Renders one pass; accumulating passes add to `accumulated`. `None` if cancelled.
+/// What one pass made.
+struct Rendered {
+    image: Image,
+    /// Rays of this pass alone.
+    rays: RayCounts,
+    non_finite_samples: u64,
+    non_finite_pixels: Vec<u32>,
+}
+
+impl Rendered {
+    fn new(sums: &SampleSums, count: u32, rays: RayCounts) -> Self {
+        Self {
+            image: sums.average(count),
+            rays,
+            non_finite_samples: sums.non_finite,
+            non_finite_pixels: sums.non_finite_pixels.clone(),
+        }
+    }
+}
+
+/// Renders one pass; accumulating passes continue the sums in `accumulated` (sample by
+/// sample in index order, exactly as [`crate::trace::render`] sums them, so the final
+/// frame is bit-identical to a direct render). `None` if cancelled.
 fn render_pass(
     world: &World,
     target: &RenderOptions,
     pass: Pass,
     accumulated: &mut Option<Accumulated>,
     progress: &RenderProgress,
-) -> Option<(Image, RayCounts)> {
+) -> Option<Rendered> {
     match pass {
         Pass::Coarse { .. } | Pass::Full { target: 1, .. } => {
             let (width, height) = pass.size(target.width, target.height);
@@ -261,7 +292,7 @@ fn render_pass(
                 ..*target
             };
             let sums = render_samples(world, &options, 0..1, progress)?;
-            Some((sums.average(1), sums.rays))
+            Some(Rendered::new(&sums, 1, sums.rays))
         }
         Pass::Full {
             samples,
@@ -271,21 +302,19 @@ fn render_pass(
                 samples_per_pixel: count,
                 ..*target
             };
-            let done = accumulated.as_ref().map_or(0, |a| a.samples);
-            let batch = render_samples(world, &options, done..samples, progress)?;
-            let rays = batch.rays;
-            let sums = match accumulated.take() {
-                Some(mut before) => {
-                    for (sum, add) in before.sums.sums.iter_mut().zip(&batch.sums) {
-                        *sum += *add;
-                    }
-                    before.sums
-                }
-                None => batch,
-            };
-            let image = sums.average(samples);
-            *accumulated = Some(Accumulated { sums, samples });
-            Some((image, rays))
+            let state = accumulated.get_or_insert_with(|| Accumulated {
+                sums: SampleSums::zero(options.width, options.height),
+                samples: 0,
+            });
+            let rays = render_samples_into(
+                world,
+                &options,
+                state.samples..samples,
+                &mut state.sums,
+                progress,
+            )?;
+            state.samples = samples;
+            Some(Rendered::new(&state.sums, samples, rays))
         }
     }
 }

@@ -23,7 +23,9 @@ pub use camera::PinholeCamera;
 pub use image::Image;
 pub use inspect::{BounceReport, PixelReport, inspect_pixel, pick};
 pub use ray::Ray;
-pub use render::{RenderOptions, RenderProgress, SampleSums, render, render_samples};
+pub use render::{
+    RenderOptions, RenderProgress, SampleSums, render, render_samples, render_samples_into,
+};
 pub use shade::{LightRecord, NoRecorder, RayCounts, Recorder, Tracer};
 pub use terms::{Term, TermSwitches, View};
 pub use world::{Acceleration, BVH_MIN_OBJECTS, SurfacePoint, World};

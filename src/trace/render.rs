@@ -96,72 +96,25 @@ pub struct SampleSums {
     pub rays: RayCounts,
     /// Samples that came out non-finite and were replaced by black (should stay 0).
     pub non_finite: u64,
-}
-
-/// Renders the samples `samples` (of `options.samples_per_pixel`) of every pixel and
-/// returns their sums, or `None` if cancelled.
-#[must_use]
-pub fn render_samples(
-    world: &World,
-    options: &RenderOptions,
-    samples: Range<u32>,
-    progress: &RenderProgress,
-) -> Option<SampleSums> {
-    let (width, height) = (options.width, options.height);
-    let camera = PinholeCamera::new(&world.camera, width, height);
-    let tracer = Tracer::new(world, options.switches, options.view);
-    let tiles_x = width.div_ceil(TILE_SIZE);
-    let tiles_y = height.div_ceil(TILE_SIZE);
-    let tile_count = (tiles_x * tiles_y) as usize;
-    progress.tiles_total.store(tile_count, Ordering::Relaxed);
-    progress.tiles_done.store(0, Ordering::Relaxed);
-
-    let tiles: Vec<Option<Tile>> = (0..tile_count)
-        .into_par_iter()
-        .map(|index| {
-            if progress.is_cancelled() {
-                return None;
-            }
-            let x0 = (index as u32 % tiles_x) * TILE_SIZE;
-            let y0 = (index as u32 / tiles_x) * TILE_SIZE;
-            let tile = render_tile(&tracer, &camera, options, samples.clone(), x0, y0);
-            progress.tiles_done.fetch_add(1, Ordering::Relaxed);
-            Some(tile)
-        })
-        .collect();
-
-    let mut out = SampleSums {
-        width,
-        height,
-        sums: vec![DVec3::ZERO; width as usize * height as usize],
-        rays: RayCounts::default(),
-        non_finite: 0,
-    };
-    for tile in tiles {
-        let tile = tile?;
-        out.rays.add(&tile.rays);
-        out.non_finite += tile.non_finite;
-        for (row, chunk) in tile.sums.chunks(tile.w as usize).enumerate() {
-            let start = (tile.y0 as usize + row) * width as usize + tile.x0 as usize;
-            out.sums[start..start + chunk.len()].copy_from_slice(chunk);
-        }
-    }
-    Some(out)
-}
-
-/// Renders a whole image with all of `options.samples_per_pixel`; `None` if cancelled.
-#[must_use]
-pub fn render(
-    world: &World,
-    options: &RenderOptions,
-    progress: &RenderProgress,
-) -> Option<(Image, RayCounts)> {
-    let sums = render_samples(world, options, 0..options.samples_per_pixel, progress)?;
-    let image = sums.average(options.samples_per_pixel);
-    Some((image, sums.rays))
+    /// Row-major indices (`y * width + x`) of the pixels with at least one non-finite
+    /// sample, ascending, each once (should stay empty).
+    pub non_finite_pixels: Vec<u32>,
 }
 
 impl SampleSums {
+    /// Sums of no samples yet: black, nothing counted.
+    #[must_use]
+    pub fn zero(width: u32, height: u32) -> Self {
+        Self {
+            width,
+            height,
+            sums: vec![DVec3::ZERO; width as usize * height as usize],
+            rays: RayCounts::default(),
+            non_finite: 0,
+            non_finite_pixels: Vec::new(),
+        }
+    }
+
     /// The image these sums make when divided by `count` samples.
     #[must_use]
     pub fn average(&self, count: u32) -> Image {
@@ -178,6 +131,96 @@ impl SampleSums {
     }
 }
 
+/// Renders the samples `samples` (of `options.samples_per_pixel`) of every pixel and
+/// returns their sums, or `None` if cancelled.
+#[must_use]
+pub fn render_samples(
+    world: &World,
+    options: &RenderOptions,
+    samples: Range<u32>,
+    progress: &RenderProgress,
+) -> Option<SampleSums> {
+    let mut sums = SampleSums::zero(options.width, options.height);
+    render_samples_into(world, options, samples, &mut sums, progress)?;
+    Some(sums)
+}
+
+/// Continues `sums` with the samples `samples` (of `options.samples_per_pixel`): each
+/// pixel's sum goes on adding its samples in index order, so rendering `0..4` then `4..8`
+/// gives exactly the numbers of `0..8` at once. Returns the rays of this batch (they are
+/// also added to `sums.rays`), or `None` if cancelled, leaving `sums` untouched.
+///
+/// # Panics
+/// When `sums` is not `options.width` x `options.height`.
+pub fn render_samples_into(
+    world: &World,
+    options: &RenderOptions,
+    samples: Range<u32>,
+    sums: &mut SampleSums,
+    progress: &RenderProgress,
+) -> Option<RayCounts> {
+    let (width, height) = (options.width, options.height);
+    assert_eq!(
+        (sums.width, sums.height),
+        (width, height),
+        "sums of another size"
+    );
+    let camera = PinholeCamera::new(&world.camera, width, height);
+    let tracer = Tracer::new(world, options.switches, options.view);
+    let tiles_x = width.div_ceil(TILE_SIZE);
+    let tiles_y = height.div_ceil(TILE_SIZE);
+    let tile_count = (tiles_x * tiles_y) as usize;
+    progress.tiles_total.store(tile_count, Ordering::Relaxed);
+    progress.tiles_done.store(0, Ordering::Relaxed);
+
+    let before: &SampleSums = sums;
+    let tiles: Vec<Option<Tile>> = (0..tile_count)
+        .into_par_iter()
+        .map(|index| {
+            if progress.is_cancelled() {
+                return None;
+            }
+            let x0 = (index as u32 % tiles_x) * TILE_SIZE;
+            let y0 = (index as u32 / tiles_x) * TILE_SIZE;
+            let tile = render_tile(&tracer, &camera, options, samples.clone(), before, x0, y0);
+            progress.tiles_done.fetch_add(1, Ordering::Relaxed);
+            Some(tile)
+        })
+        .collect();
+    let tiles: Vec<Tile> = tiles.into_iter().collect::<Option<_>>()?;
+
+    let mut rays = RayCounts::default();
+    let mut new_pixels = Vec::new();
+    for tile in tiles {
+        rays.add(&tile.rays);
+        sums.non_finite += tile.non_finite;
+        new_pixels.extend(tile.non_finite_pixels);
+        for (row, chunk) in tile.sums.chunks(tile.w as usize).enumerate() {
+            let start = (tile.y0 as usize + row) * width as usize + tile.x0 as usize;
+            sums.sums[start..start + chunk.len()].copy_from_slice(chunk);
+        }
+    }
+    sums.rays.add(&rays);
+    if !new_pixels.is_empty() {
+        sums.non_finite_pixels.extend(new_pixels);
+        sums.non_finite_pixels.sort_unstable();
+        sums.non_finite_pixels.dedup();
+    }
+    Some(rays)
+}
+
+/// Renders a whole image with all of `options.samples_per_pixel`; `None` if cancelled.
+#[must_use]
+pub fn render(
+    world: &World,
+    options: &RenderOptions,
+    progress: &RenderProgress,
+) -> Option<(Image, RayCounts)> {
+    let sums = render_samples(world, options, 0..options.samples_per_pixel, progress)?;
+    let image = sums.average(options.samples_per_pixel);
+    Some((image, sums.rays))
+}
+
 /// One finished tile.
 struct Tile {
     x0: u32,
@@ -186,13 +229,16 @@ struct Tile {
     sums: Vec<DVec3>,
     rays: RayCounts,
     non_finite: u64,
+    non_finite_pixels: Vec<u32>,
 }
 
+/// Renders one tile, each pixel's sum continuing from its sum in `before`.
 fn render_tile(
     tracer: &Tracer,
     camera: &PinholeCamera,
     options: &RenderOptions,
     samples: Range<u32>,
+    before: &SampleSums,
     x0: u32,
     y0: u32,
 ) -> Tile {
@@ -205,17 +251,26 @@ fn render_tile(
         sums: Vec::with_capacity((w * h) as usize),
         rays: RayCounts::default(),
         non_finite: 0,
+        non_finite_pixels: Vec::new(),
     };
     let strata = Strata::for_count(options.samples_per_pixel);
     for py in y0..y0 + h {
         for px in x0..x0 + w {
-            let mut sum = DVec3::ZERO;
+            let pixel = py * options.width + px;
+            let mut sum = before.sums[pixel as usize];
+            let mut finite = true;
             for index in samples.clone() {
                 let offset = strata.sample(px, py, index);
                 match trace_sample(tracer, camera, px, py, offset, &mut tile.rays) {
                     Some(colour) => sum += colour,
-                    None => tile.non_finite += 1,
+                    None => {
+                        tile.non_finite += 1;
+                        finite = false;
+                    }
                 }
+            }
+            if !finite {
+                tile.non_finite_pixels.push(pixel);
             }
             tile.sums.push(sum);
         }

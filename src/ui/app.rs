@@ -9,12 +9,15 @@ use egui::{Color32, RichText, ViewportCommand};
 use super::autosave::{Autosave, RestoreAnswer};
 use super::commands::{Command, SceneEdit, Selection, repair_selection};
 use super::confirm::{DiscardAction, discard_modal};
+use super::convergence_plot::convergence_plot_ui;
 use super::export::{ExportState, export_window};
 use super::files;
 use super::inspector::inspector_ui;
 use super::menu::{MenuState, menu_ui};
 use super::outliner::outliner_ui;
+use super::pixel_inspector::{PixelInspection, pixel_inspector_ui};
 use super::preview_link::PreviewLink;
+use super::preview_settings::PreviewSettings;
 use super::recent::RecentFiles;
 use super::screenshot::ScreenshotHook;
 use super::shortcuts::{help_window, shortcut_commands};
@@ -53,6 +56,10 @@ pub struct EditorApp {
     commands: Vec<Command>,
     preview_enabled: bool,
     preview: Option<PreviewLink>,
+    /// The toolbar's switches, view and overlays (editor state).
+    preview_settings: PreviewSettings,
+    /// The pixel under the inspector, kept current with the scene and switches.
+    inspection: Option<PixelInspection>,
     export: ExportState,
     recent: RecentFiles,
     pending: Option<DiscardAction>,
@@ -83,6 +90,8 @@ impl EditorApp {
             commands: Vec::new(),
             preview_enabled: options.preview,
             preview: None,
+            preview_settings: PreviewSettings::default(),
+            inspection: None,
             export: ExportState::default(),
             recent,
             pending: None,
@@ -164,6 +173,18 @@ impl EditorApp {
         self.preview.as_ref()
     }
 
+    /// The toolbar's settings.
+    #[must_use]
+    pub fn preview_settings(&self) -> &PreviewSettings {
+        &self.preview_settings
+    }
+
+    /// The pixel inspector's contents, when open.
+    #[must_use]
+    pub fn inspection(&self) -> Option<&PixelInspection> {
+        self.inspection.as_ref()
+    }
+
     /// Recent files.
     #[must_use]
     pub fn recent(&self) -> &RecentFiles {
@@ -191,7 +212,7 @@ impl EditorApp {
             self.preview = Some(PreviewLink::new(&ctx));
         }
         if let Some(preview) = &mut self.preview {
-            preview.poll(&ctx);
+            preview.poll(&ctx, self.preview_settings.nan_guard);
         }
         self.input(&ctx);
         self.panels_ui(ui);
@@ -206,7 +227,7 @@ impl EditorApp {
             ctx.request_repaint_after(wait);
         }
         if let Some(preview) = &mut self.preview {
-            preview.sync(&self.scene);
+            preview.sync(&self.scene, &self.preview_settings);
         }
         let title = self.title();
         if title != self.title {
@@ -335,6 +356,7 @@ impl EditorApp {
                 &self.scene,
                 self.preview.as_ref(),
                 &self.selection,
+                &self.preview_settings,
                 &mut commands,
             );
         });
@@ -347,6 +369,19 @@ impl EditorApp {
         }
         help_window(ctx, &mut self.show_help);
         export_window(ctx, &mut self.export, &self.scene);
+        if let Some(inspection) = &self.inspection {
+            pixel_inspector_ui(ctx, inspection, &mut self.commands);
+        }
+        if self.preview_settings.show_convergence
+            && let Some(preview) = &self.preview
+        {
+            convergence_plot_ui(
+                ctx,
+                preview.convergence(),
+                &self.preview_settings,
+                &mut self.commands,
+            );
+        }
         if let Some(action) = self.pending.clone() {
             let answer = discard_modal(ctx, &action);
             match answer {
@@ -372,6 +407,16 @@ impl EditorApp {
             self.execute(command, ctx);
         }
         repair_selection(&self.scene, &mut self.selection);
+        if let Some(inspection) = &self.inspection
+            && !inspection.is_current(&self.scene, self.preview_settings.switches)
+        {
+            let pixel = inspection.pixel;
+            self.inspection = Some(PixelInspection::new(
+                &self.scene,
+                self.preview_settings.switches,
+                pixel,
+            ));
+        }
         let editing = ctx.input(|i| i.pointer.any_down())
             || ctx.text_edit_focused()
             || super::camera_navigation::zoom_in_progress(ctx);
@@ -413,6 +458,12 @@ impl EditorApp {
             Command::ShowHelp => self.show_help = !self.show_help,
             Command::DismissError => self.error = None,
             Command::FocusName => self.focus_name = true,
+            Command::SetPreviewSettings(settings) => self.preview_settings = settings,
+            Command::InspectPixel(pixel) => {
+                self.inspection = pixel.map(|pixel| {
+                    PixelInspection::new(&self.scene, self.preview_settings.switches, pixel)
+                });
+            }
         }
     }
 
@@ -459,6 +510,7 @@ impl EditorApp {
     pub fn save_state(&self, storage: &mut dyn eframe::Storage) {
         if self.screenshot.is_none() {
             self.recent.save(storage);
+            self.preview_settings.save(storage);
         }
     }
 

@@ -158,6 +158,10 @@ pub enum Command {
     DismissError,
     /// Put the keyboard focus in the inspector's name field (outliner "Rename").
     FocusName,
+    /// Change the preview's switches, view and debug overlays (editor state, not undoable).
+    SetPreviewSettings(super::preview_settings::PreviewSettings),
+    /// Inspect a pixel of the scene camera's image, or close the pixel inspector (`None`).
+    InspectPixel(Option<(u32, u32)>),
 }
 
 impl SceneEdit {

@@ -7,6 +7,7 @@ mod autosave;
 mod camera_navigation;
 pub mod commands;
 mod confirm;
+mod convergence_plot;
 mod export;
 pub mod files;
 mod gizmo_drag;
@@ -17,12 +18,15 @@ mod gizmo_toolbar;
 mod inspector;
 mod menu;
 mod outliner;
+mod pixel_inspector;
 mod preview_link;
+mod preview_settings;
 pub mod recent;
 mod screenshot;
 mod shortcuts;
 mod status_bar;
 mod style;
+mod toolbar;
 mod viewport;
 
 use std::path::PathBuf;
@@ -30,10 +34,17 @@ use std::path::PathBuf;
 pub use app::{EditorApp, EditorOptions};
 pub use commands::{Command, LightKind, SceneEdit, Selection};
 pub use confirm::DiscardAction;
+pub use convergence_plot::CONVERGENCE_EXPLANATION;
 pub use export::{ExportSettings, ExportState};
 pub use inspector::trs_from_matrix;
 pub use outliner::light_label;
-pub use preview_link::{PreviewLink, ShownFrame};
+pub use pixel_inspector::{
+    FINAL_COLOUR_LABEL, InspectedBounce, InspectedHit, InspectedLight, InspectedPixel,
+    PixelInspection,
+};
+pub use preview_link::{PreviewLink, ShownFrame, frame_rgba};
+pub use preview_settings::PreviewSettings;
+pub use toolbar::{NAN_COLOUR, non_finite_text, view_label};
 pub use viewport::{VIEWPORT_LABEL, letterbox, pick_object};
 
 /// Environment variable naming a PNG file: take a screenshot once the first
@@ -88,6 +99,11 @@ pub fn run(scene: Option<PathBuf>) -> Result<(), String> {
                 recent::RecentFiles::load(cc.storage)
             };
             let mut app = EditorApp::new(options, recent);
+            if !app.is_screenshot_run() {
+                app.push(Command::SetPreviewSettings(PreviewSettings::load(
+                    cc.storage,
+                )));
+            }
             if let Some(label) = std::env::var_os(SCREENSHOT_SELECT_ENV)
                 && let Some(selection) = selection_by_label(app.scene(), &label.to_string_lossy())
             {

@@ -1,12 +1,19 @@
-//! The UI side of the preview worker: submits the scene when it changed (at most once
-//! per frame), takes the newest published frame and keeps its texture alive.
+//! The UI side of the preview worker: submits the scene when it or the toolbar's render
+//! settings changed (at most once per frame), takes the published frames (every pass
+//! feeds the convergence curve, the newest is shown) and keeps the texture alive, with
+//! the NaN guard's overlay when it is on.
 
 use std::time::Duration;
 
 use egui::{ColorImage, TextureHandle, TextureOptions};
 
-use crate::preview::{MAX_PREVIEW_LONG_SIDE, Pass, PreviewRequest, PreviewWorker};
+use super::preview_settings::PreviewSettings;
+use super::toolbar::NAN_COLOUR;
+use crate::preview::{
+    ConvergenceCurve, Frame, MAX_PREVIEW_LONG_SIDE, Pass, PreviewRequest, PreviewWorker,
+};
 use crate::scene::Scene;
+use crate::trace::RenderOptions;
 
 /// What is on screen: the pass, how long it took, whether more will follow.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -27,10 +34,17 @@ pub struct ShownFrame {
 pub struct PreviewLink {
     worker: PreviewWorker,
     submitted: Option<Scene>,
+    /// The options of the last request (size, samples, switches, view).
+    submitted_options: Option<RenderOptions>,
     generation: u64,
     texture: Option<TextureHandle>,
+    /// Whether the texture carries the NaN guard's overlay.
+    texture_guarded: bool,
+    /// The newest frame taken from the worker.
+    frame: Option<Frame>,
     shown: Option<ShownFrame>,
     error: Option<String>,
+    convergence: ConvergenceCurve,
 }
 
 impl PreviewLink {
@@ -41,44 +55,60 @@ impl PreviewLink {
         Self {
             worker: PreviewWorker::spawn(Box::new(move || ctx.request_repaint())),
             submitted: None,
+            submitted_options: None,
             generation: 0,
             texture: None,
+            texture_guarded: false,
+            frame: None,
             shown: None,
             error: None,
+            convergence: ConvergenceCurve::default(),
         }
     }
 
-    /// Sends `scene` to the worker if it differs from the last one sent.
-    pub fn sync(&mut self, scene: &Scene) {
-        if self.submitted.as_ref() == Some(scene) {
+    /// Sends `scene` with the toolbar's switches and view to the worker if either differs
+    /// from what was last sent.
+    pub fn sync(&mut self, scene: &Scene, settings: &PreviewSettings) {
+        let options = RenderOptions {
+            switches: settings.switches,
+            view: settings.view,
+            ..PreviewRequest::capped_options(scene, MAX_PREVIEW_LONG_SIDE)
+        };
+        if self.submitted.as_ref() == Some(scene) && self.submitted_options == Some(options) {
             return;
         }
         self.generation += 1;
-        self.worker.submit(PreviewRequest::for_scene_capped(
-            self.generation,
-            scene.clone(),
-            MAX_PREVIEW_LONG_SIDE,
-        ));
         self.submitted = Some(scene.clone());
+        self.submitted_options = Some(options);
+        self.worker.submit(PreviewRequest {
+            generation: self.generation,
+            scene: std::sync::Arc::new(scene.clone()),
+            options,
+        });
     }
 
-    /// Takes the newest published frame (or error) into the texture.
-    pub fn poll(&mut self, ctx: &egui::Context) {
-        let Some(message) = self.worker.latest() else {
+    /// Takes the published frames (or error): each feeds the convergence curve, the
+    /// newest goes into the texture, painted with the NaN guard's overlay if `nan_guard`.
+    pub fn poll(&mut self, ctx: &egui::Context, nan_guard: bool) {
+        let mut newest = None;
+        for message in self.worker.drain() {
+            if let Ok(frame) = &message.result {
+                self.convergence.add(message.generation, frame);
+            }
+            newest = Some(message);
+        }
+        let Some(message) = newest else {
+            if nan_guard != self.texture_guarded
+                && let Some(frame) = self.frame.take()
+            {
+                self.upload(ctx, &frame, nan_guard);
+                self.frame = Some(frame);
+            }
             return;
         };
         match message.result {
             Ok(frame) => {
-                let size = [frame.image.width as usize, frame.image.height as usize];
-                let image = ColorImage::from_rgba_unmultiplied(size, &frame.image.to_rgba8());
-                let options = match frame.pass {
-                    Pass::Coarse { .. } => TextureOptions::NEAREST,
-                    Pass::Full { .. } => TextureOptions::LINEAR,
-                };
-                match &mut self.texture {
-                    Some(texture) => texture.set(image, options),
-                    None => self.texture = Some(ctx.load_texture("preview", image, options)),
-                }
+                self.upload(ctx, &frame, nan_guard);
                 let seconds = frame.elapsed.as_secs_f64().max(1e-9);
                 self.shown = Some(ShownFrame {
                     generation: message.generation,
@@ -87,10 +117,50 @@ impl PreviewLink {
                     rays_per_second: frame.rays.total() as f64 / seconds,
                     is_final: frame.is_final,
                 });
+                self.frame = Some(frame);
                 self.error = None;
             }
             Err(error) => self.error = Some(error),
         }
+    }
+
+    /// Puts `frame` into the texture.
+    fn upload(&mut self, ctx: &egui::Context, frame: &Frame, nan_guard: bool) {
+        let size = [frame.image.width as usize, frame.image.height as usize];
+        let image = ColorImage::from_rgba_unmultiplied(size, &frame_rgba(frame, nan_guard));
+        let options = match frame.pass {
+            Pass::Coarse { .. } => TextureOptions::NEAREST,
+            Pass::Full { .. } => TextureOptions::LINEAR,
+        };
+        match &mut self.texture {
+            Some(texture) => texture.set(image, options),
+            None => self.texture = Some(ctx.load_texture("preview", image, options)),
+        }
+        self.texture_guarded = nan_guard;
+    }
+
+    /// The newest frame taken from the worker (its exact pixels, before 8-bit encoding).
+    #[must_use]
+    pub fn frame(&self) -> Option<&Frame> {
+        self.frame.as_ref()
+    }
+
+    /// The options of the last request sent to the worker.
+    #[must_use]
+    pub fn submitted_options(&self) -> Option<RenderOptions> {
+        self.submitted_options
+    }
+
+    /// The generation of the last request sent.
+    #[must_use]
+    pub fn generation(&self) -> u64 {
+        self.generation
+    }
+
+    /// The convergence curve of the newest generation shown.
+    #[must_use]
+    pub fn convergence(&self) -> &ConvergenceCurve {
+        &self.convergence
     }
 
     /// The newest frame's texture.
@@ -122,5 +192,57 @@ impl PreviewLink {
     #[must_use]
     pub fn pass_progress(&self) -> Option<f64> {
         self.worker.pass_progress()
+    }
+}
+
+/// The frame as 8-bit RGBA; with `nan_guard`, the pixels with a non-finite sample are
+/// painted in the guard's loud colour.
+#[must_use]
+pub fn frame_rgba(frame: &Frame, nan_guard: bool) -> Vec<u8> {
+    let mut rgba = frame.image.to_rgba8();
+    if nan_guard {
+        let [r, g, b, a] = NAN_COLOUR.to_array();
+        for &index in &frame.non_finite_pixels {
+            let at = index as usize * 4;
+            if let Some(pixel) = rgba.get_mut(at..at + 4) {
+                pixel.copy_from_slice(&[r, g, b, a]);
+            }
+        }
+    }
+    rgba
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::trace::{Image, RayCounts};
+
+    #[test]
+    fn the_guard_paints_exactly_the_listed_pixels() {
+        let mut image = Image::new(3, 2);
+        image.pixels.fill(glam::Vec3::splat(0.5));
+        let frame = Frame {
+            image,
+            pass: Pass::Full {
+                samples: 1,
+                target: 1,
+            },
+            elapsed: Duration::ZERO,
+            rays: RayCounts::default(),
+            is_final: true,
+            non_finite_samples: 2,
+            non_finite_pixels: vec![1, 5],
+        };
+        let plain = frame_rgba(&frame, false);
+        assert!(plain.chunks(4).all(|p| p == [128, 128, 128, 255]));
+        let guarded = frame_rgba(&frame, true);
+        for (i, pixel) in guarded.chunks(4).enumerate() {
+            let expected = if i == 1 || i == 5 {
+                [255, 0, 255, 255]
+            } else {
+                [128, 128, 128, 255]
+            };
+            assert_eq!(pixel, expected, "pixel {i}");
+        }
     }
 }

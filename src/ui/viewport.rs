@@ -5,7 +5,10 @@ use egui::{Align2, Color32, CornerRadius, FontId, Pos2, Rect, Sense, Stroke, Vec
 use glam::DVec2;
 
 use super::commands::{Command, Selection};
+use super::pixel_inspector::inspected_pixel;
 use super::preview_link::PreviewLink;
+use super::preview_settings::PreviewSettings;
+use super::toolbar::{TOOLBAR_HEIGHT, toolbar_ui};
 use crate::preview::Pass;
 use crate::scene::Scene;
 use crate::trace::{PinholeCamera, World};
@@ -51,12 +54,21 @@ pub fn viewport_ui(
     scene: &Scene,
     preview: Option<&PreviewLink>,
     selection: &Selection,
+    settings: &PreviewSettings,
     commands: &mut Vec<Command>,
 ) {
     let full = ui.available_rect_before_wrap();
     let header = Rect::from_min_size(full.min, Vec2::new(full.width(), HEADER_HEIGHT));
-    let outer = Rect::from_min_max(Pos2::new(full.min.x, header.max.y), full.max);
+    let bar = Rect::from_min_size(
+        header.left_bottom(),
+        Vec2::new(full.width(), TOOLBAR_HEIGHT),
+    );
+    let outer = Rect::from_min_max(Pos2::new(full.min.x, bar.max.y), full.max);
     header_ui(ui, header, scene);
+    let non_finite = preview
+        .and_then(PreviewLink::frame)
+        .map(|f| f.non_finite_samples);
+    toolbar_ui(ui, bar, settings, non_finite, commands);
     ui.painter()
         .rect_filled(outer, CornerRadius::ZERO, Color32::from_gray(14));
     let aspect = scene.camera.width as f32 / scene.camera.height.max(1) as f32;
@@ -99,11 +111,31 @@ pub fn viewport_ui(
     if response.hovered() {
         ui.ctx().set_cursor_icon(egui::CursorIcon::Crosshair);
     }
-    let gizmo_took_click =
-        super::gizmo_drag::gizmo_ui(ui, &response, picture, scene, selection, commands);
+    // Inspect mode (the toolbar's toggle, or Alt held): a click, or moving with Alt held
+    // and no button down, inspects the pixel under the pointer instead of selecting.
+    // Alt+drag still orbits the camera through the gizmo layer.
+    let alt = ui.input(|i| i.modifiers.alt);
+    let inspecting = settings.inspect || alt;
+    let gizmo_took_click = !settings.inspect
+        && super::gizmo_drag::gizmo_ui(ui, &response, picture, scene, selection, commands);
+    if inspecting {
+        let moved = alt
+            && response.hovered()
+            && ui.input(|i| i.pointer.delta() != Vec2::ZERO && !i.pointer.any_down());
+        let pos = if (response.clicked() && !gizmo_took_click) || moved {
+            response.interact_pointer_pos().or(response.hover_pos())
+        } else {
+            None
+        };
+        if let Some(pixel) =
+            pos.and_then(|p| inspected_pixel(scene, image_from_screen(picture, scene, p)))
+        {
+            commands.push(Command::InspectPixel(Some(pixel)));
+        }
+    }
     if let Some(pos) = response
         .interact_pointer_pos()
-        .filter(|_| response.clicked() && !gizmo_took_click)
+        .filter(|_| response.clicked() && !inspecting && !gizmo_took_click)
     {
         let image_point = image_from_screen(picture, scene, pos);
         let selection = pick_object(scene, image_point).map_or(Selection::None, Selection::Object);

@@ -1,0 +1,147 @@
+//! The toolbar over the viewport: the five term switches, a solo choice, the view picker,
+//! the NaN guard, the pixel inspector's mode and the convergence plot. It edits editor
+//! state ([`PreviewSettings`]), not the scene: nothing here is an undo step.
+
+use egui::{Align, Color32, CornerRadius, Layout, Rect, RichText, Stroke, UiBuilder};
+
+use super::commands::Command;
+use super::preview_settings::PreviewSettings;
+use crate::trace::{Term, View};
+
+/// Height of the toolbar strip: two rows (terms; view and tools).
+pub const TOOLBAR_HEIGHT: f32 = 50.0;
+
+/// The guard's loud colour for pixels with a non-finite sample.
+pub const NAN_COLOUR: Color32 = Color32::from_rgb(255, 0, 255);
+
+/// Shows the toolbar in `rect`; pushes [`Command::SetPreviewSettings`] on a change.
+/// `non_finite` is the guard count of the frame on screen, if there is one.
+pub fn toolbar_ui(
+    ui: &mut egui::Ui,
+    rect: Rect,
+    settings: &PreviewSettings,
+    non_finite: Option<u64>,
+    commands: &mut Vec<Command>,
+) {
+    let painter = ui.painter_at(rect);
+    painter.rect_filled(rect, CornerRadius::ZERO, Color32::from_gray(20));
+    painter.hline(
+        rect.x_range(),
+        rect.max.y - 0.5,
+        Stroke::new(1.0, Color32::from_gray(40)),
+    );
+    let mut edited = *settings;
+    let builder = UiBuilder::new()
+        .max_rect(rect.shrink2(egui::vec2(8.0, 3.0)))
+        .layout(Layout::top_down(Align::Min));
+    ui.scope_builder(builder, |ui| {
+        ui.set_clip_rect(rect);
+        // A narrow viewport scrolls the toolbar sideways rather than hiding its end.
+        egui::ScrollArea::horizontal()
+            .id_salt("toolbar")
+            .show(ui, |ui| {
+                ui.spacing_mut().item_spacing = egui::vec2(4.0, 2.0);
+                ui.horizontal(|ui| terms_ui(ui, &mut edited));
+                ui.horizontal(|ui| {
+                    view_ui(ui, &mut edited);
+                    ui.separator();
+                    guard_ui(ui, &mut edited, non_finite);
+                    ui.separator();
+                    ui.toggle_value(&mut edited.inspect, "Inspect")
+                        .on_hover_text(
+                            "Click a pixel to see every number behind it (or hold Alt and click)",
+                        );
+                    ui.toggle_value(&mut edited.show_convergence, "Convergence")
+                        .on_hover_text("Plot how much each preview pass still changes the picture");
+                });
+            });
+    });
+    if edited != *settings {
+        commands.push(Command::SetPreviewSettings(edited));
+    }
+}
+
+/// The NaN guard toggle and, when on, the count of the frame on screen.
+fn guard_ui(ui: &mut egui::Ui, settings: &mut PreviewSettings, non_finite: Option<u64>) {
+    ui.toggle_value(&mut settings.nan_guard, "NaN guard")
+        .on_hover_text("Paint pixels whose samples came out NaN or infinite in magenta");
+    if settings.nan_guard
+        && let Some(count) = non_finite
+    {
+        let colour = if count == 0 {
+            Color32::from_gray(170)
+        } else {
+            NAN_COLOUR
+        };
+        ui.label(RichText::new(non_finite_text(count)).small().color(colour));
+    }
+}
+
+/// "0 non-finite samples", "1 non-finite sample".
+#[must_use]
+pub fn non_finite_text(count: u64) -> String {
+    let s = if count == 1 { "" } else { "s" };
+    format!("{count} non-finite sample{s}")
+}
+
+/// The five switches and the solo choice.
+fn terms_ui(ui: &mut egui::Ui, settings: &mut PreviewSettings) {
+    for term in Term::ALL {
+        let mut on = settings.switches.is_on(term);
+        let dimmed = settings.switches.solo.is_some_and(|s| s != term) && term != Term::Shadows;
+        let text = if dimmed {
+            RichText::new(term.name()).weak()
+        } else {
+            RichText::new(term.name())
+        };
+        if ui
+            .toggle_value(&mut on, text)
+            .on_hover_text(format!("Switch the {term} term on or off"))
+            .changed()
+        {
+            settings.switches.set(term, on);
+        }
+    }
+    let solo_text = settings.switches.solo.map_or("none", Term::name);
+    egui::ComboBox::from_id_salt("solo")
+        .selected_text(format!("solo: {solo_text}"))
+        .width(118.0)
+        .show_ui(ui, |ui| {
+            ui.selectable_value(&mut settings.switches.solo, None, "none")
+                .accessible_name("solo none");
+            for term in Term::ALL {
+                ui.selectable_value(&mut settings.switches.solo, Some(term), term.name())
+                    .accessible_name(format!("solo {term}"));
+            }
+        })
+        .response
+        .on_hover_text("Show one term alone (reflected colours keep the other switches)")
+        .accessible_name("solo");
+}
+
+/// The view picker.
+fn view_ui(ui: &mut egui::Ui, settings: &mut PreviewSettings) {
+    egui::ComboBox::from_id_salt("view")
+        .selected_text(view_label(settings.view))
+        .width(100.0)
+        .show_ui(ui, |ui| {
+            for view in View::ALL {
+                ui.selectable_value(&mut settings.view, view, view_label(view))
+                    .accessible_name(format!("view {}", view_label(view)));
+            }
+        })
+        .response
+        .accessible_name("view");
+}
+
+/// The view's name in the editor: "beauty", "normal", "depth", "object id", "shadow mask".
+#[must_use]
+pub fn view_label(view: View) -> &'static str {
+    match view {
+        View::Beauty => "beauty",
+        View::Normal => "normal",
+        View::Depth => "depth",
+        View::ObjectId => "object id",
+        View::ShadowMask => "shadow mask",
+    }
+}
