@@ -3,67 +3,19 @@
 //! (package `xvfb` and `xauth`); without it the test fails under CI and is skipped
 //! elsewhere with a notice.
 
+mod window;
+
 use std::collections::HashSet;
-use std::path::PathBuf;
-use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
 
-const TIMEOUT: Duration = Duration::from_secs(120);
-
-fn has_xvfb_run() -> bool {
-    std::env::var_os("PATH").is_some_and(|paths| {
-        std::env::split_paths(&paths).any(|dir| dir.join("xvfb-run").is_file())
-    })
-}
+use window::{editor_screenshot, fresh_dir, xvfb_available};
 
 #[test]
 fn the_editor_window_shows_a_rendered_picture() {
-    if !has_xvfb_run() {
-        assert!(
-            std::env::var_os("CI").is_none(),
-            "xvfb-run is missing: install xvfb and xauth"
-        );
-        eprintln!("notice: xvfb-run not found; skipping the editor window test");
+    if !xvfb_available("the editor window test") {
         return;
     }
-    let dir = std::env::temp_dir().join(format!("raylab-window-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    let shot: PathBuf = dir.join("editor.png");
-
-    let mut child = Command::new("xvfb-run")
-        .args(["-a", "-s", "-screen 0 1280x800x24"])
-        .arg(env!("CARGO_BIN_EXE_raylab"))
-        .env("RAYLAB_SCREENSHOT", &shot)
-        // Keep the user's stored editor state out of it, and ours out of theirs.
-        .env("XDG_DATA_HOME", dir.join("data"))
-        .env("XDG_CONFIG_HOME", dir.join("config"))
-        .env_remove("WAYLAND_DISPLAY")
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("xvfb-run starts");
-    let started = Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status;
-        }
-        if started.elapsed() > TIMEOUT {
-            let _ = child.kill();
-            let output = child.wait_with_output().unwrap();
-            panic!(
-                "the editor did not finish within {TIMEOUT:?}\nstderr:\n{}",
-                String::from_utf8_lossy(&output.stderr)
-            );
-        }
-        std::thread::sleep(Duration::from_millis(100));
-    };
-    let output = child.wait_with_output().unwrap();
-    assert!(
-        status.success() && shot.exists(),
-        "the editor exited with {status} without a screenshot\nstderr:\n{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    let dir = fresh_dir("window");
+    let shot = editor_screenshot(&dir, "editor.png", &[], &[]);
 
     let image = image::open(&shot)
         .expect("the screenshot is a PNG")

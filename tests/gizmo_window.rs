@@ -7,66 +7,31 @@
 //! The documentation's picture comes from the same run:
 //! `RAYLAB_GIZMO_DOCS=1 cargo test --test gizmo_window` writes `docs/gizmos.png`.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+mod window;
+
+use std::path::Path;
 
 use glam::DVec3;
 use raylab::ui::files::{default_scene, save_scene_to};
-
-const TIMEOUT: Duration = Duration::from_secs(120);
+use window::{editor_screenshot, fresh_dir, xvfb_available};
 
 /// The cone's colour and the x axis colour, as the overlay paints them.
 const CONE: [u8; 3] = [255, 196, 64];
 const X_AXIS: [u8; 3] = [236, 72, 80];
 
-fn has_xvfb_run() -> bool {
-    std::env::var_os("PATH").is_some_and(|paths| {
-        std::env::split_paths(&paths).any(|dir| dir.join("xvfb-run").is_file())
-    })
-}
-
 /// Runs the editor on `scene` with `select` selected, returns the screenshot.
-fn screenshot(dir: &Path, scene: &Path, select: &str, name: &str, final_frame: bool) -> PathBuf {
-    let shot = dir.join(name);
-    let mut command = Command::new("xvfb-run");
-    command
-        .args(["-a", "-s", "-screen 0 1280x800x24"])
-        .arg(env!("CARGO_BIN_EXE_raylab"))
-        .arg(scene)
-        .env("RAYLAB_SCREENSHOT", &shot)
-        .env("RAYLAB_SCREENSHOT_SELECT", select)
-        .env("XDG_DATA_HOME", dir.join("data"))
-        .env("XDG_CONFIG_HOME", dir.join("config"))
-        .env_remove("WAYLAND_DISPLAY")
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped());
+fn screenshot(
+    dir: &Path,
+    scene: &Path,
+    select: &str,
+    name: &str,
+    final_frame: bool,
+) -> std::path::PathBuf {
+    let mut env = vec![("RAYLAB_SCREENSHOT_SELECT", select)];
     if final_frame {
-        command.env("RAYLAB_SCREENSHOT_FINAL", "1");
+        env.push(("RAYLAB_SCREENSHOT_FINAL", "1"));
     }
-    let mut child = command.spawn().expect("xvfb-run starts");
-    let started = Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            break status;
-        }
-        if started.elapsed() > TIMEOUT {
-            let _ = child.kill();
-            let output = child.wait_with_output().unwrap();
-            panic!(
-                "the editor did not finish within {TIMEOUT:?}\nstderr:\n{}",
-                String::from_utf8_lossy(&output.stderr)
-            );
-        }
-        std::thread::sleep(Duration::from_millis(100));
-    };
-    let output = child.wait_with_output().unwrap();
-    assert!(
-        status.success() && shot.exists(),
-        "the editor exited with {status} without a screenshot\nstderr:\n{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    shot
+    editor_screenshot(dir, name, &[scene], &env)
 }
 
 /// Pixels within a small distance of `colour`.
@@ -83,17 +48,10 @@ fn count_near(image: &image::RgbImage, colour: [u8; 3]) -> usize {
 
 #[test]
 fn a_selected_spotlight_shows_its_cone_and_handles_over_the_preview() {
-    if !has_xvfb_run() {
-        assert!(
-            std::env::var_os("CI").is_none(),
-            "xvfb-run is missing: install xvfb and xauth"
-        );
-        eprintln!("notice: xvfb-run not found; skipping the gizmo window test");
+    if !xvfb_available("the gizmo window test") {
         return;
     }
-    let dir = std::env::temp_dir().join(format!("raylab-gizmo-window-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = fresh_dir("gizmo-window");
     // The default scene seen from higher up and further back, so the spotlight is in view.
     let mut scene = default_scene();
     scene.camera.position = DVec3::new(4.6, 6.8, 12.8);

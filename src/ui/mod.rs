@@ -26,6 +26,8 @@ mod screenshot;
 mod shortcuts;
 mod status_bar;
 mod style;
+#[cfg(test)]
+mod test_storage;
 mod toolbar;
 mod viewport;
 

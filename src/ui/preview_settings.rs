@@ -106,21 +106,7 @@ impl PreviewSettings {
 mod tests {
     use super::*;
 
-    #[derive(Default)]
-    struct MapStorage(std::collections::HashMap<String, String>);
-
-    impl eframe::Storage for MapStorage {
-        fn get_string(&self, key: &str) -> Option<String> {
-            self.0.get(key).cloned()
-        }
-        fn set_string(&mut self, key: &str, value: String) {
-            self.0.insert(key.to_owned(), value);
-        }
-        fn remove_string(&mut self, key: &str) {
-            self.0.remove(key);
-        }
-        fn flush(&mut self) {}
-    }
+    use crate::ui::test_storage::MapStorage;
 
     #[test]
     fn settings_survive_storage_except_the_inspect_mode() {

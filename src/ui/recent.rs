@@ -54,22 +54,7 @@ impl RecentFiles {
 mod tests {
     use super::*;
 
-    /// eframe's storage interface over a map, as the native one is over a file.
-    #[derive(Default)]
-    struct MapStorage(std::collections::HashMap<String, String>);
-
-    impl eframe::Storage for MapStorage {
-        fn get_string(&self, key: &str) -> Option<String> {
-            self.0.get(key).cloned()
-        }
-        fn set_string(&mut self, key: &str, value: String) {
-            self.0.insert(key.to_owned(), value);
-        }
-        fn remove_string(&mut self, key: &str) {
-            self.0.remove(key);
-        }
-        fn flush(&mut self) {}
-    }
+    use crate::ui::test_storage::MapStorage;
 
     #[test]
     fn the_list_survives_a_restart_through_storage() {
