@@ -102,7 +102,7 @@ pub enum Acceleration {
 
 /// From this many objects on, the world builds a BVH: below it the flat list is faster
 /// (measured by `raylab bench`, see docs/BENCHMARKS.md).
-pub const BVH_MIN_OBJECTS: usize = 16;
+pub const BVH_MIN_OBJECTS: usize = 32;
 
 impl World {
     /// Validates and compiles a scene.
