@@ -2,6 +2,9 @@
 //! pointer events on the picture drag handles, the scene follows by the expected world
 //! amounts, and each gesture is one undo step.
 
+mod editor_harness;
+
+use editor_harness::{click_at, editor_harness};
 use egui::{Event, Key, Modifiers, PointerButton, Pos2, Rect, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -10,20 +13,13 @@ use raylab::gizmo::spot::{rim_handle, rim_radial};
 use raylab::gizmo::view::{bounding_sphere, world_per_pixel};
 use raylab::scene::{Light, Scene, Transform, Trs};
 use raylab::trace::PinholeCamera;
-use raylab::ui::recent::RecentFiles;
 use raylab::ui::{EditorApp, EditorOptions, Selection, VIEWPORT_LABEL};
 
 /// Length of the translate and scale arrows on screen, as the overlay draws them.
 const ARROW_POINTS: f64 = 84.0;
 
 fn harness() -> Harness<'static, EditorApp> {
-    let app = EditorApp::new(EditorOptions::default(), RecentFiles::default());
-    let mut harness = Harness::builder()
-        .with_size(Vec2::new(1280.0, 800.0))
-        .with_max_steps(96)
-        .build_ui_state(|ui, app: &mut EditorApp| app.editor_ui(ui), app);
-    harness.run();
-    harness
+    editor_harness(EditorOptions::default(), Vec2::new(1280.0, 800.0), 96)
 }
 
 fn select(harness: &mut Harness<'_, EditorApp>, label: &str) {
@@ -242,16 +238,7 @@ fn clicking_a_light_marker_selects_the_light() {
         panic!("light 2 is a point light");
     };
     let pos = screen(&harness, position);
-    harness.event(Event::PointerMoved(pos));
-    for pressed in [true, false] {
-        harness.event(Event::PointerButton {
-            pos,
-            button: PointerButton::Primary,
-            pressed,
-            modifiers: Modifiers::NONE,
-        });
-    }
-    harness.run();
+    click_at(&mut harness, pos);
     assert_eq!(harness.state().selection(), &Selection::Light(1));
 }
 

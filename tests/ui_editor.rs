@@ -3,38 +3,26 @@
 //! The preview worker is off here (it has its own tests), except where a test waits for
 //! its frame deterministically.
 
+mod editor_harness;
+
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
+use editor_harness::{click_at, editor_harness, temp_dir};
 use egui::{Event, Key, Modifiers, PointerButton, Pos2, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use glam::DVec3;
 use raylab::scene::{Transform, load_scene};
 use raylab::ui::files::{default_scene, new_scene, open_scene, save_scene_to};
-use raylab::ui::recent::RecentFiles;
 use raylab::ui::{Command, EditorApp, EditorOptions, SceneEdit, Selection, VIEWPORT_LABEL};
 
 fn harness_with(options: EditorOptions) -> Harness<'static, EditorApp> {
-    let app = EditorApp::new(options, RecentFiles::default());
-    let mut harness = Harness::builder()
-        .with_size(Vec2::new(1280.0, 800.0))
-        .with_max_steps(64)
-        .build_ui_state(|ui, app: &mut EditorApp| app.editor_ui(ui), app);
-    harness.run();
-    harness
+    editor_harness(options, Vec2::new(1280.0, 800.0), 64)
 }
 
 fn harness() -> Harness<'static, EditorApp> {
     harness_with(EditorOptions::default())
-}
-
-/// A fresh folder under the system's temporary folder.
-fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("raylab-ui-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
 }
 
 fn translate(app: &EditorApp, index: usize) -> DVec3 {
@@ -486,19 +474,6 @@ fn clicking_the_viewport_picks_the_object_under_the_cursor() {
         picture.min + Vec2::new(picture.width() * 0.5, 4.0),
     );
     assert_eq!(harness.state().selection(), &Selection::None, "the sky");
-}
-
-fn click_at(harness: &mut Harness<'_, EditorApp>, pos: Pos2) {
-    harness.event(Event::PointerMoved(pos));
-    for pressed in [true, false] {
-        harness.event(Event::PointerButton {
-            pos,
-            button: PointerButton::Primary,
-            pressed,
-            modifiers: Modifiers::NONE,
-        });
-    }
-    harness.run_ok();
 }
 
 /// A file dropped on the window, as the native integration hands it over.

@@ -2,9 +2,12 @@
 //! through AccessKit with the real preview worker (on a small scene, so the final frame
 //! comes quickly).
 
+mod editor_harness;
+
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
+use editor_harness::{click_at, editor_harness};
 use egui::{Event, Modifiers, PointerButton, Pos2, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -13,7 +16,6 @@ use raylab::preview::Pass;
 use raylab::scene::{Scene, save_scene};
 use raylab::trace::{PinholeCamera, RenderProgress, Term, View, World, render};
 use raylab::ui::files::default_scene;
-use raylab::ui::recent::RecentFiles;
 use raylab::ui::{EditorApp, EditorOptions, Selection, VIEWPORT_LABEL};
 
 /// The default scene, small: 160 x 120 at 4 samples a pixel.
@@ -42,11 +44,7 @@ fn harness_sized(name: &str, size: Vec2) -> Harness<'static, EditorApp> {
         preview: true,
         ..EditorOptions::default()
     };
-    let app = EditorApp::new(options, RecentFiles::default());
-    let mut harness = Harness::builder()
-        .with_size(size)
-        .with_max_steps(64)
-        .build_ui_state(|ui, app: &mut EditorApp| app.editor_ui(ui), app);
+    let mut harness = editor_harness(options, size, 64);
     harness.run_ok();
     assert_eq!(harness.state().scene(), &small_scene());
     harness
@@ -83,19 +81,6 @@ fn toggle(harness: &mut Harness<'_, EditorApp>, label: &str) {
     harness
         .get_by_role_and_label(egui::Role::Button, label)
         .click();
-    harness.run_ok();
-}
-
-fn click_at(harness: &mut Harness<'_, EditorApp>, pos: Pos2) {
-    harness.event(Event::PointerMoved(pos));
-    for pressed in [true, false] {
-        harness.event(Event::PointerButton {
-            pos,
-            button: PointerButton::Primary,
-            pressed,
-            modifiers: Modifiers::NONE,
-        });
-    }
     harness.run_ok();
 }
 
