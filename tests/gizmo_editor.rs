@@ -420,3 +420,49 @@ fn a_middle_drag_pans_even_over_a_handle() {
     undo(&mut harness);
     assert_eq!(harness.state().scene(), &before, "one undo for the pan");
 }
+
+#[test]
+fn deleting_the_selection_mid_drag_ends_the_drag_without_editing_another_object() {
+    let mut harness = harness();
+    select(&mut harness, "red ball");
+    let before = harness.state().scene().clone();
+    let origin = trs(&before, 1).translate;
+    let grab = origin + DVec3::X * ARROW_POINTS * world_per_point(&harness, origin) * 0.7;
+    let (from, to) = (
+        screen(&harness, grab),
+        screen(&harness, grab + DVec3::X * 1.25),
+    );
+    harness.event(Event::PointerMoved(from));
+    harness.event(Event::PointerButton {
+        pos: from,
+        button: PointerButton::Primary,
+        pressed: true,
+        modifiers: Modifiers::NONE,
+    });
+    harness.step();
+    for i in 1..=10 {
+        if i == 5 {
+            // Delete the dragged object halfway: "mirror ball" takes its index.
+            harness.key_press(Key::Delete);
+        }
+        harness.event(Event::PointerMoved(from + (to - from) * (i as f32 / 10.0)));
+        harness.step();
+    }
+    harness.event(Event::PointerButton {
+        pos: to,
+        button: PointerButton::Primary,
+        pressed: false,
+        modifiers: Modifiers::NONE,
+    });
+    harness.run();
+    let after = harness.state().scene();
+    assert_eq!(
+        after.objects.len(),
+        before.objects.len() - 1,
+        "the red ball was deleted"
+    );
+    assert_eq!(
+        after.objects[1], before.objects[2],
+        "the object now at its index was not dragged"
+    );
+}

@@ -403,8 +403,26 @@ impl EditorApp {
             // What the commands changed is drawn in the next frame.
             ctx.request_repaint();
         }
+        // Panels compute edits against the scene as it was laid out. Once a command has
+        // reshuffled the lists (a delete, an add, an undo...), a later edit by index in
+        // the same frame could name another item, so it is dropped.
+        let mut reshuffled = false;
         for command in commands {
+            if reshuffled && matches!(&command, Command::Edit(edit) if edit.is_by_index()) {
+                continue;
+            }
+            let lists = (self.scene.objects.len(), self.scene.lights.len());
+            let may_reshuffle = matches!(
+                command,
+                Command::Undo
+                    | Command::Redo
+                    | Command::New
+                    | Command::Open(_)
+                    | Command::ImportLegacy(_)
+            );
             self.execute(command, ctx);
+            reshuffled |=
+                may_reshuffle || lists != (self.scene.objects.len(), self.scene.lights.len());
         }
         repair_selection(&self.scene, &mut self.selection);
         if let Some(inspection) = &self.inspection

@@ -121,6 +121,14 @@ pub enum SceneEdit {
     },
 }
 
+impl SceneEdit {
+    /// Whether the edit names an object or light by its index.
+    #[must_use]
+    pub fn is_by_index(&self) -> bool {
+        matches!(self, SceneEdit::SetObject(..) | SceneEdit::SetLight(..))
+    }
+}
+
 /// Everything a panel, shortcut or dialog can ask the app to do.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Command {

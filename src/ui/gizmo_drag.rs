@@ -26,6 +26,9 @@ enum Drag {
         grabbed: Box<Grabbed>,
         geometry: DragGeometry,
         start: Pos2,
+        /// What was selected when the drag began, and how many objects and lights there
+        /// were: the drag edits that item only, and ends if either changes.
+        target: (Selection, usize, usize),
     },
     Camera {
         drag: CameraDrag,
@@ -90,6 +93,13 @@ pub fn gizmo_ui(
         if let Some(start) = start {
             state.drag = start_drag(response, scene, selection, &view, modifiers, start, pick);
         }
+    }
+    // The selection or the lists changed under the drag (a delete, an undo, another
+    // pick): its index may now name another item, so the drag ends here.
+    if let Some(Drag::Handle { target, .. }) = &state.drag
+        && *target != (selection.clone(), scene.objects.len(), scene.lights.len())
+    {
+        state.drag = None;
     }
     let now = ctx.input(|i| i.pointer.latest_pos());
     if let (Some(drag), Some(now)) = (&state.drag, now)
@@ -196,6 +206,7 @@ fn start_drag(
             grabbed: Box::new(grabbed),
             geometry,
             start,
+            target: (selection.clone(), scene.objects.len(), scene.lights.len()),
         });
     }
     let drag = if modifiers.shift && !modifiers.alt {
@@ -221,6 +232,7 @@ fn continue_drag(
             grabbed,
             geometry,
             start,
+            ..
         } => {
             let edit = drag_edit(
                 *handle,
