@@ -1,14 +1,15 @@
-//! Speed against error: RMSE and PSNR against a converged reference, against render time,
+//! Speed against error: RMSE and PSNR against a converged reference (the preview's own
+//! clamped, nearest-neighbour `rmse_nearest`), against render time,
 //! for the progressive preview passes, uniform stratified sampling and adaptive sampling.
 
 use std::time::Instant;
 
-use glam::Vec3;
 use serde::Serialize;
 
+use crate::preview::rmse_nearest;
 use crate::scene::Scene;
 use crate::trace::{
-    AdaptiveOptions, Image, RenderOptions, RenderProgress, World, render, render_adaptive,
+    AdaptiveOptions, RenderOptions, RenderProgress, World, render, render_adaptive,
 };
 
 /// One point of an error-against-time curve.
@@ -41,19 +42,6 @@ pub struct ConvergencePlan {
     pub adaptive_spp: Vec<u32>,
 }
 
-/// Error of `image` against `reference`: RMSE of displayed (clamped) values.
-#[must_use]
-pub fn rmse(image: &Image, reference: &Image) -> f64 {
-    let clamp = |v: Vec3| v.clamp(Vec3::ZERO, Vec3::ONE);
-    let sum: f64 = image
-        .pixels
-        .iter()
-        .zip(&reference.pixels)
-        .map(|(a, b)| f64::from((clamp(*a) - clamp(*b)).length_squared()))
-        .sum();
-    (sum / (3.0 * image.pixels.len() as f64)).sqrt()
-}
-
 fn point(strategy: &str, spp: f64, seconds: f64, error: f64) -> CurvePoint {
     CurvePoint {
         time_ms: seconds * 1e3,
@@ -62,19 +50,6 @@ fn point(strategy: &str, spp: f64, seconds: f64, error: f64) -> CurvePoint {
         spp,
         strategy: strategy.to_owned(),
     }
-}
-
-/// Nearest-neighbour enlargement of a pass rendered at `1 / divider` resolution.
-fn upscale(small: &Image, width: u32, height: u32) -> Image {
-    let mut out = Image::new(width, height);
-    for y in 0..height {
-        for x in 0..width {
-            let sx = (x * small.width / width).min(small.width - 1);
-            let sy = (y * small.height / height).min(small.height - 1);
-            out.pixels[(y * width + x) as usize] = small.get(sx, sy);
-        }
-    }
-    out
 }
 
 /// Measures the curves for `scene`.
@@ -114,7 +89,7 @@ pub fn convergence_curves(
         };
         let (image, seconds) = timed(&options);
         elapsed += seconds;
-        let error = rmse(&upscale(&image, plan.width, plan.height), &reference);
+        let error = rmse_nearest(&image, &reference);
         curve.push(point(
             "progressive",
             1.0 / f64::from(divider * divider),
@@ -131,7 +106,7 @@ pub fn convergence_curves(
             "uniform",
             f64::from(spp),
             seconds,
-            rmse(&image, &reference),
+            rmse_nearest(&image, &reference),
         ));
     }
     for &spp in &plan.adaptive_spp {
@@ -148,7 +123,7 @@ pub fn convergence_curves(
             "adaptive",
             mean,
             seconds,
-            rmse(&result.image, &reference),
+            rmse_nearest(&result.image, &reference),
         ));
     }
     Ok(curve)

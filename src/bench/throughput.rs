@@ -49,7 +49,7 @@ pub fn scene_throughput(
         ..RenderOptions::from_scene(&scene)
     };
     let mut best = f64::INFINITY;
-    let mut rays = Default::default();
+    let mut rays = crate::trace::RayCounts::default();
     for _ in 0..runs.max(1) {
         let started = Instant::now();
         let (_, counts) =
@@ -57,7 +57,6 @@ pub fn scene_throughput(
         best = best.min(started.elapsed().as_secs_f64());
         rays = counts;
     }
-    let rays: crate::trace::RayCounts = rays;
     Ok(SceneThroughput {
         scene: scene_path
             .file_name()

@@ -145,7 +145,7 @@ impl<'w> Tracer<'w> {
                 .world
                 .intersect(ray, f64::INFINITY)
                 .map_or(DVec3::ZERO, |hit| {
-                    DVec3::splat(self.shadow_mask(ray, &hit, counts))
+                    DVec3::splat(self.shadow_mask(&hit, counts))
                 }),
         }
     }
@@ -268,7 +268,7 @@ impl<'w> Tracer<'w> {
 
     /// Fraction of the lights that reach `hit` (in front, inside any spot cone) whose
     /// shadow ray is clear; 0 where no light reaches.
-    fn shadow_mask(&self, _ray: &Ray, hit: &SurfacePoint, counts: &mut RayCounts) -> f64 {
+    fn shadow_mask(&self, hit: &SurfacePoint, counts: &mut RayCounts) -> f64 {
         let mut reaching = 0u32;
         let mut visible = 0u32;
         for light in &self.world.lights {

@@ -149,7 +149,7 @@ impl World {
                 }
             }
         }
-        Ok(Self {
+        let mut world = Self {
             objects,
             materials,
             material_names,
@@ -161,13 +161,11 @@ impl World {
             camera: scene.camera.clone(),
             view_distance: (scene.camera.look_at - scene.camera.position).length(),
             bvh: None,
-        })
-        .map(|mut world: World| {
-            if world.objects.len() >= BVH_MIN_OBJECTS {
-                world.set_acceleration(Acceleration::Bvh);
-            }
-            world
-        })
+        };
+        if world.objects.len() >= BVH_MIN_OBJECTS {
+            world.set_acceleration(Acceleration::Bvh);
+        }
+        Ok(world)
     }
 
     /// Chooses how rays find objects (the default follows [`BVH_MIN_OBJECTS`]).
