@@ -259,7 +259,7 @@ fn inspecting_a_pixel_shows_its_object_and_terms_that_add_up_to_its_colour() {
     // The window shows the object's name (the outliner row is the other "red ball").
     assert!(harness.get_all_by_label("red ball").count() >= 2);
     harness.get_by_label(raylab::ui::FINAL_COLOUR_LABEL);
-    for bounce in &pixel.bounces {
+    for bounce in &pixel.report.bounces {
         let sum = bounce.sum_of_terms();
         assert!(
             (sum - bounce.colour).abs().max_element() < 1e-12,
@@ -267,7 +267,7 @@ fn inspecting_a_pixel_shows_its_object_and_terms_that_add_up_to_its_colour() {
             bounce.depth
         );
     }
-    assert_eq!(pixel.bounces[0].colour, pixel.unclamped);
+    assert_eq!(pixel.report.bounces[0].colour, pixel.report.unclamped);
     // The inspected pixel is the image's pixel: same numbers as the one-sample render.
     let scene = harness.state().scene().clone();
     let world = World::new(&scene).unwrap();
@@ -277,13 +277,13 @@ fn inspecting_a_pixel_shows_its_object_and_terms_that_add_up_to_its_colour() {
     };
     let (image, _) = render(&world, &options, &RenderProgress::default()).unwrap();
     let (x, y) = inspection.pixel;
-    assert_eq!(pixel.unclamped.as_vec3(), image.get(x, y));
+    assert_eq!(pixel.report.unclamped.as_vec3(), image.get(x, y));
 
     // Switching a term off updates the open inspector.
     toggle(&mut harness, "specular");
     let updated = harness.state().inspection().unwrap();
     assert!(!updated.switches.is_on(Term::Specular));
-    let lights = &updated.result.as_ref().unwrap().bounces[0].lights;
+    let lights = &updated.result.as_ref().unwrap().report.bounces[0].lights;
     assert!(lights.iter().all(|l| l.specular == glam::DVec3::ZERO));
 
     // Closing the window closes the inspector.

@@ -1,11 +1,10 @@
 //! Rays per second on whole frames at one sample per pixel, all cores.
 
-use std::path::Path;
 use std::time::Instant;
 
 use serde::Serialize;
 
-use crate::scene::load_scene;
+use crate::scene::Scene;
 use crate::trace::{RenderOptions, RenderProgress, World, render};
 
 /// Throughput of one scene.
@@ -29,24 +28,24 @@ pub struct SceneThroughput {
     pub mrays_per_s: f64,
 }
 
-/// Renders `scene_path` at `width` x `height`, 1 sample per pixel, `runs` times and
-/// keeps the best time.
+/// Renders `scene` (called `name` in the report) at `width` x `height`, 1 sample per
+/// pixel, `runs` times and keeps the best time.
 ///
 /// # Errors
-/// The scene's load error.
+/// The scene cannot be rendered.
 pub fn scene_throughput(
-    scene_path: &Path,
+    name: &str,
+    scene: &Scene,
     width: u32,
     height: u32,
     runs: u32,
 ) -> Result<SceneThroughput, String> {
-    let scene = load_scene(scene_path).map_err(|e| format!("{}: {e}", scene_path.display()))?;
-    let world = World::new(&scene).map_err(|e| e.to_string())?;
+    let world = World::new(scene).map_err(|e| format!("{name}: {e}"))?;
     let options = RenderOptions {
         width,
         height,
         samples_per_pixel: 1,
-        ..RenderOptions::from_scene(&scene)
+        ..RenderOptions::from_scene(scene)
     };
     let mut best = f64::INFINITY;
     let mut rays = crate::trace::RayCounts::default();
@@ -58,10 +57,7 @@ pub fn scene_throughput(
         rays = counts;
     }
     Ok(SceneThroughput {
-        scene: scene_path
-            .file_name()
-            .map(|n| n.to_string_lossy().into_owned())
-            .unwrap_or_default(),
+        scene: name.to_owned(),
         width,
         height,
         frame_ms: best * 1e3,

@@ -9,7 +9,8 @@ use crate::bench::plot::plot_curve;
 use crate::bench::{
     BenchReport, bvh_crossover, convergence_curves, precision_cost, scene_throughput,
 };
-use crate::scene::load_scene;
+use crate::scene::examples::EXAMPLE_SCENES;
+use crate::scene::{Scene, load_scene, parse_scene};
 
 /// Arguments of `raylab bench`.
 #[derive(Debug, Args)]
@@ -23,9 +24,9 @@ pub struct BenchArgs {
     /// Also draw the error-against-time plot to this PNG.
     #[arg(long)]
     pub plot: Option<PathBuf>,
-    /// Folder of the example scenes.
-    #[arg(long, default_value = "scenes")]
-    pub scenes: PathBuf,
+    /// Measure the RON scenes of this folder instead of the embedded example scenes.
+    #[arg(long)]
+    pub scenes: Option<PathBuf>,
 }
 
 /// Runs the benchmark and prints the report.
@@ -52,25 +53,47 @@ pub fn run(args: &BenchArgs) -> Result<(), String> {
     Ok(())
 }
 
-fn example_scenes(folder: &Path) -> Result<Vec<PathBuf>, String> {
+/// The scenes to measure, by file name: the embedded examples, or a folder's RON files.
+fn example_scenes(folder: Option<&Path>) -> Result<Vec<(String, Scene)>, String> {
+    let Some(folder) = folder else {
+        return EXAMPLE_SCENES
+            .iter()
+            .map(|(name, text)| {
+                parse_scene(text)
+                    .map(|scene| ((*name).to_owned(), scene))
+                    .map_err(|e| format!("{name}: {e}"))
+            })
+            .collect();
+    };
     let mut paths: Vec<PathBuf> = std::fs::read_dir(folder)
         .map_err(|e| format!("cannot read {}: {e}", folder.display()))?
         .filter_map(|entry| entry.ok().map(|e| e.path()))
         .filter(|p| p.extension().is_some_and(|x| x == "ron"))
         .collect();
     paths.sort();
-    Ok(paths)
+    paths
+        .iter()
+        .map(|path| {
+            let name = path.file_name().unwrap_or_default().to_string_lossy();
+            load_scene(path)
+                .map(|scene| (name.into_owned(), scene))
+                .map_err(|e| format!("{}: {e}", path.display()))
+        })
+        .collect()
 }
 
 fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
     let runs = if args.quick { 2 } else { 5 };
-    let default_path = args.scenes.join("default.ron");
-    let default_scene =
-        load_scene(&default_path).map_err(|e| format!("{}: {e}", default_path.display()))?;
+    let examples = example_scenes(args.scenes.as_deref())?;
+    let default_scene = examples
+        .iter()
+        .find(|(name, _)| name == "default.ron")
+        .map(|(_, scene)| scene.clone())
+        .ok_or("the scenes folder has no default.ron")?;
     let mut scenes = Vec::new();
-    for path in example_scenes(&args.scenes)? {
-        eprintln!("throughput: {}", path.display());
-        scenes.push(scene_throughput(&path, 800, 600, runs)?);
+    for (name, scene) in &examples {
+        eprintln!("throughput: {name}");
+        scenes.push(scene_throughput(name, scene, 800, 600, runs)?);
     }
     let default = scenes
         .iter()

@@ -1,13 +1,14 @@
 //! `raylab render`: a scene file to a PNG, with the term switches and debug views.
 
 use std::path::PathBuf;
-use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use clap::Args;
 
+use crate::preview::BackgroundJob;
+use crate::scene::Scene;
 use crate::scene::{MAX_IMAGE_SIDE, load_scene, write_atomically};
-use crate::trace::{RenderOptions, RenderProgress, Term, TermSwitches, View, World, render};
+use crate::trace::{Image, RayCounts, RenderOptions, Term, TermSwitches, View, World, render};
 
 /// Arguments of `raylab render`.
 #[derive(Debug, Args)]
@@ -40,7 +41,7 @@ pub struct RenderArgs {
 impl RenderArgs {
     /// The render options these arguments ask for, given the scene's defaults.
     #[must_use]
-    pub fn options(&self, scene: &crate::scene::Scene) -> RenderOptions {
+    pub fn options(&self, scene: &Scene) -> RenderOptions {
         let mut options = RenderOptions::from_scene(scene);
         let aspect = f64::from(scene.camera.width) / f64::from(scene.camera.height);
         let side = |x: f64| (x.round() as u32).clamp(1, MAX_IMAGE_SIDE);
@@ -72,9 +73,7 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     let world = World::new(&scene).map_err(|e| format!("{}: {e}", args.scene.display()))?;
     let options = args.options(&scene);
     let started = Instant::now();
-    let progress = Arc::new(RenderProgress::default());
-    let (image, rays) = with_progress_bar(&progress, || render(&world, &options, &progress))
-        .ok_or("render cancelled")?;
+    let (image, rays) = render_with_progress_bar(world, options)?;
     let elapsed = started.elapsed();
     write_atomically(&args.output, &image.png_bytes())
         .map_err(|e| format!("cannot write {}: {e}", args.output.display()))?;
@@ -91,38 +90,38 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     Ok(())
 }
 
-/// Runs `work` while a progress bar on stderr follows `progress`; the bar appears only
-/// if the work takes longer than a moment.
-fn with_progress_bar<T: Send>(progress: &RenderProgress, work: impl FnOnce() -> T + Send) -> T {
+/// Renders on a background job while a progress bar on stderr follows it; the bar
+/// appears only if the render takes longer than a moment, and the wait ends the moment
+/// the render does (a tiny render pays no polling delay).
+///
+/// # Errors
+/// The render panicked.
+pub fn render_with_progress_bar(
+    world: World,
+    options: RenderOptions,
+) -> Result<(Image, RayCounts), String> {
     const SHOW_AFTER: Duration = Duration::from_millis(300);
-    let done = std::sync::atomic::AtomicBool::new(false);
-    std::thread::scope(|scope| {
-        let watcher = scope.spawn(|| {
-            let started = Instant::now();
-            let mut bar: Option<indicatif::ProgressBar> = None;
-            while !done.load(std::sync::atomic::Ordering::Acquire) {
-                std::thread::sleep(Duration::from_millis(50));
-                if bar.is_none() && started.elapsed() > SHOW_AFTER {
-                    let b = indicatif::ProgressBar::new(1000);
-                    b.set_style(
-                        indicatif::ProgressStyle::with_template(
-                            "rendering {bar:40} {percent:>3}% {elapsed} (eta {eta})",
-                        )
-                        .expect("valid template"),
-                    );
-                    bar = Some(b);
-                }
-                if let Some(b) = &bar {
-                    b.set_position((progress.fraction() * 1000.0) as u64);
-                }
-            }
-            if let Some(b) = bar {
-                b.finish_and_clear();
-            }
-        });
-        let result = work();
-        done.store(true, std::sync::atomic::Ordering::Release);
-        let _ = watcher.join();
-        result
-    })
+    const TICK: Duration = Duration::from_millis(50);
+    let job = BackgroundJob::spawn("render", move |p| render(&world, &options, p), || {})?;
+    let started = Instant::now();
+    let mut bar: Option<indicatif::ProgressBar> = None;
+    let outcome = job.wait(TICK, |fraction| {
+        if bar.is_none() && started.elapsed() > SHOW_AFTER {
+            let b = indicatif::ProgressBar::new(1000);
+            b.set_style(
+                indicatif::ProgressStyle::with_template(
+                    "rendering {bar:40} {percent:>3}% {elapsed} (eta {eta})",
+                )
+                .expect("valid template"),
+            );
+            bar = Some(b);
+        }
+        if let Some(b) = &bar {
+            b.set_position((fraction * 1000.0) as u64);
+        }
+    });
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    outcome
 }

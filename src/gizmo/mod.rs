@@ -3,6 +3,7 @@
 //! viewport turns pointer positions into rays with [`crate::trace::PinholeCamera`] (the
 //! tracer's own camera) and feeds them to these functions.
 
+pub mod handle;
 pub mod handles;
 pub mod navigate;
 pub mod snap;
@@ -13,6 +14,8 @@ pub mod view;
 use glam::DVec3;
 
 use crate::trace::Ray;
+
+pub use handle::{GizmoMode, HandleId};
 
 /// The point of the line `origin + s * axis` closest to `ray`, as the parameter `s`;
 /// `None` when the ray is parallel to the line (no unique closest point).

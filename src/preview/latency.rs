@@ -73,8 +73,7 @@ mod tests {
 
     #[test]
     fn a_small_scene_reports_its_coarse_then_full_latency() {
-        let mut scene =
-            crate::scene::parse_scene(include_str!("../../scenes/default.ron")).unwrap();
+        let mut scene = crate::scene::examples::default_scene();
         scene.camera.width = 160;
         scene.camera.height = 120;
         scene.render.samples_per_pixel = 1;

@@ -9,16 +9,16 @@
 //! while rendering is published as an error and the worker waits for the next request.
 
 mod convergence;
-mod crash;
 mod frame;
+mod job;
 mod latency;
 mod plan;
 mod request;
 mod worker;
 
 pub use convergence::{ConvergenceCurve, ConvergencePoint, rmse_nearest};
-pub use crash::panic_message;
 pub use frame::{Frame, Published};
+pub use job::{BackgroundJob, panic_message, run_caught};
 pub use latency::{PreviewLatency, measure_latency};
 pub use plan::{
     COARSE_MAX_DIVIDER, COARSE_MIN_LONG_SIDE, Pass, coarse_divider, coarse_dividers, plan_passes,

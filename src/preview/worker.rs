@@ -7,6 +7,7 @@ use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
 use super::frame::{Frame, Published};
+use super::job::run_caught;
 use super::plan::{Pass, plan_passes};
 use super::request::PreviewRequest;
 use crate::trace::{Image, RayCounts, RenderOptions, RenderProgress, SampleSums, World};
@@ -167,16 +168,13 @@ fn run(shared: &Shared, sender: &Sender<Published>, waker: &Waker) {
         };
         // A panic in the tracer must not end the worker: report it and wait for the next
         // request (an edit may well avoid whatever caused it).
-        let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-            match World::new(&request.scene) {
-                Ok(world) => render_plan(shared, &world, &request.options, &publish),
-                Err(error) => publish(Err(error.to_string())),
-            }
-        }));
-        if let Err(panic) = outcome {
+        let outcome = run_caught("the renderer", || match World::new(&request.scene) {
+            Ok(world) => render_plan(shared, &world, &request.options, &publish),
+            Err(error) => publish(Err(error.to_string())),
+        });
+        if let Err(message) = outcome {
             lock(&shared.mailbox).running = None;
-            let reason = super::crash::panic_message(panic.as_ref());
-            publish(Err(format!("the renderer crashed: {reason}")));
+            publish(Err(message));
         }
     }
 }

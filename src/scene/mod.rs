@@ -4,6 +4,7 @@
 //! render-ready world.
 
 mod error;
+pub mod examples;
 mod file;
 pub mod legacy;
 mod model;

@@ -3,51 +3,38 @@
 //! frame in [`EditorApp`], which also feeds undo and restarts the preview.
 
 mod app;
-mod autosave;
-mod camera_navigation;
 pub mod commands;
-mod confirm;
-mod convergence_plot;
-mod export;
-pub mod files;
-mod gizmo_drag;
-mod gizmo_edit;
-mod gizmo_overlay;
-mod gizmo_paint;
-mod gizmo_toolbar;
-mod inspector;
-mod menu;
-mod outliner;
-mod pixel_inspector;
-mod preview_link;
-mod preview_settings;
-pub mod recent;
+pub mod document;
+pub mod gizmo;
+pub mod panels;
 mod screenshot;
 mod shortcuts;
-mod status_bar;
 mod style;
 #[cfg(test)]
 mod test_storage;
-mod toolbar;
-mod viewport;
+pub mod viewport;
 
 use std::path::PathBuf;
 
 pub use app::{EditorApp, EditorOptions};
 pub use commands::{Command, LightKind, SceneEdit, Selection};
-pub use confirm::DiscardAction;
-pub use convergence_plot::CONVERGENCE_EXPLANATION;
-pub use export::{ExportSettings, ExportState};
-pub use inspector::trs_from_matrix;
-pub use outliner::light_label;
-pub use pixel_inspector::{
+pub use document::confirm::DiscardAction;
+pub use document::export::ExportState;
+pub use document::{files, recent};
+pub use panels::inspector::trs_from_matrix;
+pub use panels::outliner::light_label;
+pub use viewport::convergence_plot::CONVERGENCE_EXPLANATION;
+pub use viewport::picture::{VIEWPORT_LABEL, letterbox, pick_object};
+pub use viewport::pixel_inspector::{
     FINAL_COLOUR_LABEL, InspectedBounce, InspectedHit, InspectedLight, InspectedPixel,
     PixelInspection,
 };
-pub use preview_link::{PreviewLink, ShownFrame, frame_rgba};
-pub use preview_settings::PreviewSettings;
-pub use toolbar::{NAN_COLOUR, non_finite_text, view_label};
-pub use viewport::{VIEWPORT_LABEL, letterbox, pick_object};
+pub use viewport::preview_link::{PreviewLink, ShownFrame, frame_rgba};
+pub use viewport::preview_settings::PreviewSettings;
+pub use viewport::toolbar::{NAN_COLOUR, non_finite_text, view_label};
+
+/// The window and taskbar icon (`assets/icon.png`, rendered by raylab itself).
+pub const ICON_PNG: &[u8] = include_bytes!("../../assets/icon.png");
 
 /// Environment variable naming a PNG file: take a screenshot once the first
 /// full-resolution preview is shown, save it there, and quit.
@@ -84,7 +71,8 @@ pub fn run(scene: Option<PathBuf>) -> Result<(), String> {
         .with_app_id("raylab")
         .with_inner_size([1280.0, 800.0])
         .with_min_inner_size([720.0, 480.0])
-        .with_drag_and_drop(true);
+        .with_drag_and_drop(true)
+        .with_icon(eframe::icon_data::from_png_bytes(ICON_PNG).expect("assets/icon.png is a PNG"));
     let native = eframe::NativeOptions {
         viewport,
         // A screenshot run must look the same every time: no restored window size.
@@ -96,9 +84,9 @@ pub fn run(scene: Option<PathBuf>) -> Result<(), String> {
         native,
         Box::new(move |cc| {
             let recent = if options.screenshot.is_some() {
-                recent::RecentFiles::default()
+                document::recent::RecentFiles::default()
             } else {
-                recent::RecentFiles::load(cc.storage)
+                document::recent::RecentFiles::load(cc.storage)
             };
             let mut app = EditorApp::new(options, recent);
             if !app.is_screenshot_run() {

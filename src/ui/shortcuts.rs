@@ -2,7 +2,7 @@
 
 use egui::{Key, KeyboardShortcut, Modifiers};
 
-use super::commands::{Command, SceneEdit};
+use crate::ui::commands::{Command, SceneEdit};
 
 /// A shortcut, what it does, and the command it sends. Order matters: a shortcut with
 /// Shift comes before the same one without, which would also match.

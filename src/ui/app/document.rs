@@ -8,8 +8,9 @@ use egui::ViewportCommand;
 use super::{EditorApp, undoer};
 use crate::scene::Scene;
 use crate::ui::commands::Selection;
-use crate::ui::confirm::DiscardAction;
-use crate::ui::files;
+use crate::ui::document::autosave::RestoreAnswer;
+use crate::ui::document::confirm::DiscardAction;
+use crate::ui::document::files;
 
 impl EditorApp {
     /// Does `action` now, or asks first when it would drop unsaved changes.
@@ -114,6 +115,34 @@ impl EditorApp {
         self.undoer.add_undo(&self.scene);
         self.selection = Selection::None;
         self.error = None;
+    }
+
+    /// Answers the crash-recovery offer as its buttons do (for tests and the window).
+    pub fn answer_restore(&mut self, restore: bool) {
+        if let Some(answer) = self.autosave.answer(restore) {
+            self.restore(answer);
+        }
+    }
+
+    /// Whether a crash-recovery offer is waiting.
+    #[must_use]
+    pub fn has_restore_offer(&self) -> bool {
+        self.autosave.has_offer()
+    }
+
+    /// Opens a recovered scene: its file (when it still loads) is what it is compared
+    /// with, so the recovered edits show as unsaved changes.
+    pub(super) fn restore(&mut self, answer: RestoreAnswer) {
+        let RestoreAnswer::Restore(scene, source) = answer else {
+            return;
+        };
+        let saved = source
+            .as_deref()
+            .and_then(|p| crate::scene::load_scene(p).ok())
+            .unwrap_or_else(files::new_scene);
+        self.replace_scene(*scene, source);
+        self.saved = saved;
+        self.message = Some("Restored unsaved work from the last session".to_owned());
     }
 }
 

@@ -4,14 +4,14 @@
 use egui::{Align2, Color32, CornerRadius, FontId, Pos2, Rect, Sense, Stroke, Vec2};
 use glam::DVec2;
 
-use super::commands::{Command, Selection};
-use super::pixel_inspector::inspected_pixel;
-use super::preview_link::PreviewLink;
-use super::preview_settings::PreviewSettings;
-use super::toolbar::{TOOLBAR_HEIGHT, toolbar_ui};
 use crate::preview::Pass;
 use crate::scene::Scene;
 use crate::trace::{PinholeCamera, World};
+use crate::ui::commands::{Command, Selection};
+use crate::ui::viewport::pixel_inspector::inspected_pixel;
+use crate::ui::viewport::preview_link::PreviewLink;
+use crate::ui::viewport::preview_settings::PreviewSettings;
+use crate::ui::viewport::toolbar::{TOOLBAR_HEIGHT, toolbar_ui};
 
 /// Accessible name of the picture, for tests and screen readers.
 pub const VIEWPORT_LABEL: &str = "Viewport";
@@ -41,11 +41,8 @@ pub fn pick_object(scene: &Scene, image_point: DVec2) -> Option<usize> {
         return None;
     }
     let world = World::new(scene).ok()?;
-    let camera = PinholeCamera::new(&scene.camera, width, height);
     let pixel_centre = image_point.floor() + DVec2::splat(0.5);
-    world
-        .intersect(&camera.ray(pixel_centre), f64::INFINITY)
-        .map(|hit| hit.object)
+    crate::trace::pick(&world, width, height, pixel_centre)
 }
 
 /// Shows the viewport and pushes a selection when the picture is clicked.
@@ -117,7 +114,7 @@ pub fn viewport_ui(
     let alt = ui.input(|i| i.modifiers.alt);
     let inspecting = settings.inspect || alt;
     let gizmo_took_click = !settings.inspect
-        && super::gizmo_drag::gizmo_ui(ui, &response, picture, scene, selection, commands);
+        && crate::ui::gizmo::drag::gizmo_ui(ui, &response, picture, scene, selection, commands);
     if inspecting {
         let moved = alt
             && response.hovered()
@@ -247,7 +244,7 @@ fn selection_marker(painter: &egui::Painter, picture: Rect, scene: &Scene, selec
     if !picture.contains(pos) {
         return;
     }
-    let accent = super::style::ACCENT;
+    let accent = crate::ui::style::ACCENT;
     painter.circle_stroke(pos, 6.0, Stroke::new(2.0, Color32::from_black_alpha(160)));
     painter.circle_stroke(pos, 5.0, Stroke::new(1.5, accent));
     painter.text(
@@ -273,7 +270,7 @@ mod tests {
 
     #[test]
     fn picking_uses_the_primary_ray_of_the_pixel() {
-        let scene = super::super::files::default_scene();
+        let scene = crate::ui::document::files::default_scene();
         let camera = PinholeCamera::new(&scene.camera, scene.camera.width, scene.camera.height);
         for name in ["red ball", "blue box", "gold cone"] {
             let index = scene.objects.iter().position(|o| o.name == name).unwrap();

@@ -5,20 +5,10 @@ use std::path::{Path, PathBuf};
 
 use glam::DVec3;
 
-use crate::scene::{Light, Scene, load_scene, parse_scene, save_scene, write_atomically};
+use crate::scene::{Light, Scene, load_scene, save_scene, write_atomically};
 use crate::trace::Image;
 
-/// The scene the editor opens when no file is given.
-pub const DEFAULT_SCENE_RON: &str = include_str!("../../scenes/default.ron");
-
-/// The embedded default scene.
-///
-/// # Panics
-/// Never in a released build: a test checks that the embedded file loads.
-#[must_use]
-pub fn default_scene() -> Scene {
-    parse_scene(DEFAULT_SCENE_RON).expect("the embedded default scene is valid")
-}
+pub use crate::scene::examples::{DEFAULT_SCENE_RON, default_scene};
 
 /// What File > New starts from: the default camera, one grey material, an ambient and a
 /// point light, no objects.

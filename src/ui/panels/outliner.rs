@@ -3,8 +3,8 @@
 
 use egui::{RichText, Ui};
 
-use super::commands::{Command, LightKind, SceneEdit, Selection};
 use crate::scene::{Light, Scene, Shape};
+use crate::ui::commands::{Command, LightKind, SceneEdit, Selection};
 
 /// Shows the outliner.
 pub fn outliner_ui(ui: &mut Ui, scene: &Scene, selection: &Selection, commands: &mut Vec<Command>) {

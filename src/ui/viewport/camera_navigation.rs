@@ -6,11 +6,11 @@
 
 use egui::{Id, MouseWheelUnit, Pos2, Vec2};
 
-use super::commands::{Command, SceneEdit, Selection};
-use super::gizmo_overlay::cone_length;
 use crate::gizmo::navigate::{frame, orbit, pan, zoom};
 use crate::gizmo::view::bounding_sphere;
 use crate::scene::{Camera, Light, Scene};
+use crate::ui::commands::{Command, SceneEdit, Selection};
+use crate::ui::gizmo::projection::cone_length;
 
 /// Seconds after the last wheel step during which the zoom is one gesture.
 const ZOOM_GESTURE_SECONDS: f64 = 0.35;

@@ -5,9 +5,9 @@
 use egui::{Color32, RichText};
 use egui_plot::{Line, Plot, PlotPoints, Points};
 
-use super::commands::Command;
-use super::preview_settings::PreviewSettings;
 use crate::preview::{ConvergenceCurve, Pass};
+use crate::ui::commands::Command;
+use crate::ui::viewport::preview_settings::PreviewSettings;
 
 /// What the plot shows, in words (the window says it; a tooltip repeats it).
 pub const CONVERGENCE_EXPLANATION: &str = "Change from the previous pass: RMSE between each \
@@ -61,7 +61,7 @@ fn curve_ui(ui: &mut egui::Ui, curve: &ConvergenceCurve) {
             ui.weak("waiting for a second pass of this edit");
         }
     }
-    let accent = super::style::ACCENT;
+    let accent = crate::ui::style::ACCENT;
     Plot::new("convergence")
         .x_axis_label("render time since the edit (ms)")
         .y_axis_label("RMSE vs previous pass")

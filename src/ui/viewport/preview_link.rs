@@ -7,13 +7,13 @@ use std::time::Duration;
 
 use egui::{ColorImage, TextureHandle, TextureOptions};
 
-use super::preview_settings::PreviewSettings;
-use super::toolbar::NAN_COLOUR;
 use crate::preview::{
     ConvergenceCurve, Frame, MAX_PREVIEW_LONG_SIDE, Pass, PreviewRequest, PreviewWorker,
 };
 use crate::scene::Scene;
 use crate::trace::RenderOptions;
+use crate::ui::viewport::preview_settings::PreviewSettings;
+use crate::ui::viewport::toolbar::NAN_COLOUR;
 
 /// What is on screen: the pass, how long it took, whether more will follow.
 #[derive(Clone, Copy, Debug, PartialEq)]

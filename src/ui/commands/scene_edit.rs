@@ -1,176 +1,10 @@
-//! Everything the panels can ask for, as values. Panels push commands while laying out;
-//! the app applies them once per frame (`app.rs`), which also feeds undo and restarts the
-//! preview. Scene edits are plain functions here, testable without a window.
-
-use std::path::PathBuf;
+//! Scene edits as plain functions: add, duplicate, delete, rename and replace, with the
+//! selection following what was added or removed. Testable without a window.
 
 use glam::DVec3;
 
-use crate::scene::{Camera, Light, Material, Object, RenderSettings, Scene, Shape, Transform};
-
-/// What the inspector shows.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub enum Selection {
-    /// Nothing selected.
-    #[default]
-    None,
-    /// The camera.
-    Camera,
-    /// The render settings.
-    Render,
-    /// An object, by index.
-    Object(usize),
-    /// A material, by name.
-    Material(String),
-    /// A light, by index.
-    Light(usize),
-}
-
-/// The four light kinds, for the "add light" menu.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum LightKind {
-    /// Ambient light.
-    Ambient,
-    /// Point light.
-    Point,
-    /// Directional light.
-    Directional,
-    /// Spot light.
-    Spot,
-}
-
-impl LightKind {
-    /// Every kind, in menu order.
-    pub const ALL: [LightKind; 4] = [
-        LightKind::Ambient,
-        LightKind::Point,
-        LightKind::Directional,
-        LightKind::Spot,
-    ];
-
-    /// The kind's name, as in files.
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        match self {
-            LightKind::Ambient => "Ambient",
-            LightKind::Point => "Point",
-            LightKind::Directional => "Directional",
-            LightKind::Spot => "Spot",
-        }
-    }
-
-    /// A light of this kind with sensible values for the default scene's scale.
-    #[must_use]
-    pub fn new_light(self) -> Light {
-        let colour = DVec3::ONE;
-        match self {
-            LightKind::Ambient => Light::Ambient {
-                colour: DVec3::splat(0.1),
-                intensity: 1.0,
-            },
-            LightKind::Point => Light::Point {
-                position: DVec3::new(2.0, 5.0, 3.0),
-                colour,
-                intensity: 20.0,
-            },
-            LightKind::Directional => Light::Directional {
-                direction: DVec3::new(-1.0, -2.0, -1.0),
-                colour,
-                intensity: 0.8,
-            },
-            LightKind::Spot => Light::Spot {
-                position: DVec3::new(0.0, 5.0, 0.0),
-                direction: DVec3::new(0.0, -1.0, 0.0),
-                angle_deg: 25.0,
-                colour,
-                intensity: 20.0,
-            },
-        }
-    }
-}
-
-/// A change to the scene (and the selection that follows it).
-#[derive(Clone, Debug, PartialEq)]
-pub enum SceneEdit {
-    /// Adds a unit shape with the first material (creating one if there is none).
-    AddObject(Shape),
-    /// Adds a light of a kind.
-    AddLight(LightKind),
-    /// Adds a grey material with a fresh name.
-    AddMaterial,
-    /// Duplicates the selected object, light or material.
-    DuplicateSelected,
-    /// Deletes the selected object, light or (unused) material.
-    DeleteSelected,
-    /// Replaces an object.
-    SetObject(usize, Object),
-    /// Replaces a light.
-    SetLight(usize, Light),
-    /// Replaces the camera.
-    SetCamera(Camera),
-    /// Replaces the render settings.
-    SetRender(RenderSettings),
-    /// Replaces a material's values.
-    SetMaterial(String, Material),
-    /// Renames a material and every reference to it.
-    RenameMaterial {
-        /// The current name.
-        from: String,
-        /// The new name.
-        to: String,
-    },
-}
-
-impl SceneEdit {
-    /// Whether the edit names an object or light by its index.
-    #[must_use]
-    pub fn is_by_index(&self) -> bool {
-        matches!(self, SceneEdit::SetObject(..) | SceneEdit::SetLight(..))
-    }
-}
-
-/// Everything a panel, shortcut or dialog can ask the app to do.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Command {
-    /// Change what the inspector shows.
-    Select(Selection),
-    /// Edit the scene (one undo step, unless part of a drag).
-    Edit(SceneEdit),
-    /// Go back one undo step.
-    Undo,
-    /// Go forward one undo step.
-    Redo,
-    /// Replace the scene by a new one (asks first if there are unsaved changes).
-    New,
-    /// Show the Open dialog (asks first if there are unsaved changes).
-    OpenDialog,
-    /// Open a scene file (asks first if there are unsaved changes).
-    Open(PathBuf),
-    /// Save to the current file, or ask for one.
-    Save,
-    /// Show the Save As dialog.
-    SaveAsDialog,
-    /// Save to a file, which becomes the current file.
-    SaveAs(PathBuf),
-    /// Show the Import Legacy dialog (asks first if there are unsaved changes).
-    ImportLegacyDialog,
-    /// Import a legacy text scene (asks first if there are unsaved changes).
-    ImportLegacy(PathBuf),
-    /// Show the Export PNG window.
-    ShowExport,
-    /// Show the keyboard shortcuts.
-    ShowHelp,
-    /// Close the window (asks first if there are unsaved changes).
-    Quit,
-    /// Hide the error area.
-    DismissError,
-    /// Put the keyboard focus in the inspector's name field (outliner "Rename").
-    FocusName,
-    /// Change the preview's switches, view and debug overlays (editor state, not undoable).
-    SetPreviewSettings(super::preview_settings::PreviewSettings),
-    /// Inspect a pixel of the scene camera's image, or close the pixel inspector (`None`).
-    InspectPixel(Option<(u32, u32)>),
-}
+use super::{SceneEdit, Selection};
+use crate::scene::{Material, Object, Scene, Transform};
 
 impl SceneEdit {
     /// Applies the edit; the selection follows added, duplicated and deleted items.
@@ -367,9 +201,10 @@ fn rename_material(scene: &mut Scene, from: &str, to: &str) -> Result<(), String
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scene::Shape;
 
     fn scene() -> Scene {
-        crate::scene::parse_scene(include_str!("../../scenes/default.ron")).unwrap()
+        crate::scene::examples::default_scene()
     }
 
     #[test]

@@ -2,8 +2,8 @@
 
 use egui::{Button, Ui};
 
-use super::commands::{Command, SceneEdit};
-use super::shortcuts::shortcut_text;
+use crate::ui::commands::{Command, SceneEdit};
+use crate::ui::shortcuts::shortcut_text;
 
 /// What the menus need to know to enable their entries.
 pub struct MenuState<'a> {

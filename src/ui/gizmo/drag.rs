@@ -1,5 +1,5 @@
 //! The viewport's gizmo adapter: reads the picture's response, picks handles, turns
-//! drags into scene edits with [`super::gizmo_edit`] (always computed from the values at
+//! drags into scene edits with [`crate::ui::gizmo::edit`] (always computed from the values at
 //! the drag's start, so the point under the cursor stays under it) and pushes them as
 //! commands. A drag holds the mouse button, so the app records one undo step for the
 //! whole gesture.
@@ -7,16 +7,19 @@
 use egui::{CursorIcon, Id, Key, Modifiers, PointerButton, Pos2, Rect, Response};
 use glam::DVec2;
 
-use super::camera_navigation::{CameraDrag, drag_camera, frame_selection, zoom_with_wheel};
-use super::commands::{Command, Selection};
-use super::gizmo_edit::{DragGeometry, Grabbed, drag_edit, grab};
-use super::gizmo_overlay::{
-    GizmoMode, HandleId, Part, ViewMapping, cone_length, gizmo_elements, handle_shapes, sun_anchor,
-};
-use super::gizmo_paint::{paint_elements, paint_matrix_hint, paint_readout};
-use super::gizmo_toolbar::{ToolbarAction, toolbar_ui};
 use crate::gizmo::handles::{HandleShape, pick_handle};
+use crate::gizmo::{GizmoMode, HandleId};
 use crate::scene::{Light, Scene, Transform};
+use crate::ui::commands::{Command, Selection};
+use crate::ui::gizmo::edit::{DragGeometry, Grabbed, drag_edit, grab};
+use crate::ui::gizmo::hit::handle_shapes;
+use crate::ui::gizmo::overlay::{Part, gizmo_elements};
+use crate::ui::gizmo::paint::{paint_elements, paint_matrix_hint, paint_readout};
+use crate::ui::gizmo::projection::{ViewMapping, cone_length, sun_anchor};
+use crate::ui::gizmo::toolbar::{ToolbarAction, gizmo_modes_ui};
+use crate::ui::viewport::camera_navigation::{
+    CameraDrag, drag_camera, frame_selection, zoom_with_wheel,
+};
 
 /// A drag in progress.
 #[derive(Clone, Debug)]
@@ -161,7 +164,7 @@ pub fn gizmo_ui(
         (None, None) => {}
     }
 
-    match toolbar_ui(ui, picture, &mut state.mode) {
+    match gizmo_modes_ui(ui, picture, &mut state.mode) {
         Some(ToolbarAction::Frame) => frame_selection(scene, selection, commands),
         None => {}
     }

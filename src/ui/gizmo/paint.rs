@@ -3,7 +3,8 @@
 
 use egui::{Align2, Color32, FontId, Pos2, Rect, Shape, Stroke, Vec2};
 
-use super::gizmo_overlay::{Element, HOT_COLOUR, HandleId, Part};
+use crate::gizmo::HandleId;
+use crate::ui::gizmo::overlay::{Element, HOT_COLOUR, Part};
 
 /// Paints the elements; `hot` is the handle under the pointer or being dragged.
 pub fn paint_elements(painter: &egui::Painter, elements: &[Element], hot: Option<HandleId>) {

@@ -4,9 +4,9 @@
 
 use egui::{Align, Color32, CornerRadius, Layout, Rect, RichText, Stroke, UiBuilder};
 
-use super::commands::Command;
-use super::preview_settings::PreviewSettings;
 use crate::trace::{Term, View};
+use crate::ui::commands::Command;
+use crate::ui::viewport::preview_settings::PreviewSettings;
 
 /// Height of the toolbar strip: two rows (terms; view and tools).
 pub const TOOLBAR_HEIGHT: f32 = 50.0;

@@ -3,7 +3,7 @@
 
 use egui::{Color32, CornerRadius, Layout, Rect, RichText, UiBuilder, Vec2};
 
-use super::gizmo_overlay::GizmoMode;
+use crate::gizmo::GizmoMode;
 
 /// What a toolbar click asks for besides a mode change.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -20,7 +20,11 @@ const MODES: [(&str, &str, GizmoMode); 3] = [
 ];
 
 /// Shows the toolbar in the picture's corner (below the pass badge); changes `mode`.
-pub fn toolbar_ui(ui: &mut egui::Ui, picture: Rect, mode: &mut GizmoMode) -> Option<ToolbarAction> {
+pub fn gizmo_modes_ui(
+    ui: &mut egui::Ui,
+    picture: Rect,
+    mode: &mut GizmoMode,
+) -> Option<ToolbarAction> {
     let rect = Rect::from_min_size(
         picture.left_top() + Vec2::new(8.0, 34.0),
         Vec2::new(300.0, 28.0),

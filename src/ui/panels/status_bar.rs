@@ -2,8 +2,8 @@
 
 use egui::{Color32, RichText, Ui};
 
-use super::preview_link::ShownFrame;
 use crate::preview::Pass;
+use crate::ui::viewport::preview_link::ShownFrame;
 
 /// What the status bar shows.
 pub struct StatusInfo<'a> {

@@ -3,43 +3,18 @@
 //! the file cannot be written the render is kept, so it can be saved elsewhere.
 
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
-use std::sync::mpsc::{self, Receiver, TryRecvError};
 use std::time::{Duration, Instant};
 
 use egui::{DragValue, RichText, Ui};
 
-use super::files::{with_png_extension, write_png};
+use crate::preview::BackgroundJob;
 use crate::scene::{MAX_IMAGE_SIDE, Scene};
-use crate::trace::{Image, RenderOptions, RenderProgress, World, render};
-
-/// Size and samples of an export.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct ExportSettings {
-    /// Width in pixels.
-    pub width: u32,
-    /// Height in pixels.
-    pub height: u32,
-    /// Anti-aliasing samples per pixel.
-    pub samples_per_pixel: u32,
-}
-
-impl ExportSettings {
-    /// The scene's own size and samples.
-    #[must_use]
-    pub fn from_scene(scene: &Scene) -> Self {
-        Self {
-            width: scene.camera.width,
-            height: scene.camera.height,
-            samples_per_pixel: scene.render.samples_per_pixel,
-        }
-    }
-}
+use crate::trace::{Image, RenderOptions, World, render};
+use crate::ui::document::files::{with_png_extension, write_png};
 
 /// A render running on its own thread.
 struct ExportJob {
-    progress: Arc<RenderProgress>,
-    result: Receiver<Result<Image, String>>,
+    job: BackgroundJob<Image>,
     path: PathBuf,
     started: Instant,
 }
@@ -49,8 +24,8 @@ struct ExportJob {
 pub struct ExportState {
     /// Whether the window is shown.
     pub open: bool,
-    /// What to render.
-    pub settings: Option<ExportSettings>,
+    /// What to render: size and samples (the switches are always the full picture).
+    pub settings: Option<RenderOptions>,
     /// Where to write, as typed or picked.
     pub path: String,
     job: Option<ExportJob>,
@@ -69,7 +44,7 @@ impl ExportState {
             self.path = path.display().to_string();
         }
         if self.job.is_none() {
-            self.settings = Some(ExportSettings::from_scene(scene));
+            self.settings = Some(RenderOptions::from_scene(scene));
         }
     }
 
@@ -94,45 +69,18 @@ impl ExportState {
         if self.job.is_some() {
             return Err("an export is already running".to_owned());
         }
-        let settings = self
+        let options = self
             .settings
-            .unwrap_or_else(|| ExportSettings::from_scene(scene));
+            .unwrap_or_else(|| RenderOptions::from_scene(scene));
         let world = World::new(scene).map_err(|e| format!("cannot render this scene: {e}"))?;
-        let options = RenderOptions {
-            width: settings.width,
-            height: settings.height,
-            samples_per_pixel: settings.samples_per_pixel,
-            ..RenderOptions::from_scene(scene)
-        };
-        let progress = Arc::new(RenderProgress::default());
-        let (sender, result) = mpsc::channel();
-        let thread_progress = Arc::clone(&progress);
         let ctx = ctx.clone();
-        std::thread::Builder::new()
-            .name("raylab-export".to_owned())
-            .spawn(move || {
-                // A panic in the tracer is reported like any other failure; the editor
-                // and its scene are untouched.
-                let image = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-                    render(&world, &options, &thread_progress)
-                }))
-                .map_err(|panic| {
-                    format!(
-                        "the export crashed: {}",
-                        crate::preview::panic_message(panic.as_ref())
-                    )
-                })
-                .and_then(|done| {
-                    done.map(|(image, _)| image)
-                        .ok_or_else(|| "export cancelled".to_owned())
-                });
-                let _ = sender.send(image);
-                ctx.request_repaint();
-            })
-            .map_err(|e| format!("cannot start the export: {e}"))?;
+        let job = BackgroundJob::spawn(
+            "export",
+            move |progress| render(&world, &options, progress).map(|(image, _)| image),
+            move || ctx.request_repaint(),
+        )?;
         self.job = Some(ExportJob {
-            progress,
-            result,
+            job,
             path: path.to_owned(),
             started: Instant::now(),
         });
@@ -143,7 +91,7 @@ impl ExportState {
     /// Stops the running render at its next tile boundary.
     pub fn cancel(&self) {
         if let Some(job) = &self.job {
-            job.progress.cancel();
+            job.job.cancel();
         }
     }
 
@@ -152,10 +100,8 @@ impl ExportState {
         let Some(job) = &self.job else {
             return;
         };
-        let outcome = match job.result.try_recv() {
-            Ok(outcome) => outcome,
-            Err(TryRecvError::Empty) => return,
-            Err(TryRecvError::Disconnected) => Err("the export stopped unexpectedly".to_owned()),
+        let Some(outcome) = job.job.try_result() else {
+            return;
         };
         let elapsed = job.started.elapsed();
         let path = job.path.clone();
@@ -198,7 +144,7 @@ impl ExportState {
     /// Fraction of the running render done.
     #[must_use]
     pub fn progress(&self) -> Option<f64> {
-        self.job.as_ref().map(|j| j.progress.fraction())
+        self.job.as_ref().map(|j| j.job.fraction())
     }
 }
 
@@ -223,7 +169,7 @@ pub fn export_window(ctx: &egui::Context, state: &mut ExportState, scene: &Scene
 fn export_ui(ui: &mut Ui, state: &mut ExportState, scene: &Scene) {
     let mut settings = state
         .settings
-        .unwrap_or_else(|| ExportSettings::from_scene(scene));
+        .unwrap_or_else(|| RenderOptions::from_scene(scene));
     let running = state.is_running();
     ui.add_enabled_ui(!running, |ui| {
         egui::Grid::new("export settings")

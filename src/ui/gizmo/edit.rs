@@ -4,8 +4,7 @@
 
 use glam::DVec3;
 
-use super::commands::{SceneEdit, Selection};
-use super::gizmo_overlay::HandleId;
+use crate::gizmo::HandleId;
 use crate::gizmo::snap::{ROTATE_STEP_DEG, SCALE_STEP, TRANSLATE_STEP, snap};
 use crate::gizmo::spot::{
     MAX_ANGLE_DEG, MIN_ANGLE_DEG, aim_from_tip_drag, angle_from_rim_drag, rim_radial,
@@ -16,6 +15,7 @@ use crate::gizmo::transform_drag::{
 use crate::gizmo::view::object_axes;
 use crate::scene::{Light, Object, Scene, Transform, Trs};
 use crate::trace::Ray;
+use crate::ui::commands::{SceneEdit, Selection};
 
 /// What a handle drag started on, as it was then.
 #[derive(Clone, Debug, PartialEq)]
@@ -230,13 +230,13 @@ mod tests {
     use crate::trace::PinholeCamera;
 
     fn scene() -> Scene {
-        super::super::files::default_scene()
+        crate::ui::document::files::default_scene()
     }
 
     fn geometry(scene: &Scene) -> DragGeometry {
         DragGeometry {
             eye: scene.camera.position,
-            cone_length: super::super::gizmo_overlay::cone_length(scene),
+            cone_length: crate::ui::gizmo::projection::cone_length(scene),
             sun: (scene.camera.look_at, 1.0),
         }
     }

@@ -1,0 +1,106 @@
+//! Applying the frame's commands: the one place the scene changes, which also records
+//! undo steps.
+
+use crate::ui::commands::{Command, SceneEdit, repair_selection};
+use crate::ui::document::confirm::DiscardAction;
+use crate::ui::viewport::pixel_inspector::PixelInspection;
+
+use super::EditorApp;
+
+impl EditorApp {
+    /// Applies this frame's commands, then records an undo point unless an edit is still
+    /// in progress (a drag or a text field), so a whole drag is one step.
+    pub(super) fn apply_commands(&mut self, ctx: &egui::Context) {
+        let commands = std::mem::take(&mut self.commands);
+        if !commands.is_empty() {
+            // What the commands changed is drawn in the next frame.
+            ctx.request_repaint();
+        }
+        // Panels compute edits against the scene as it was laid out. Once a command has
+        // reshuffled the lists (a delete, an add, an undo...), a later edit by index in
+        // the same frame could name another item, so it is dropped.
+        let mut reshuffled = false;
+        for command in commands {
+            if reshuffled && matches!(&command, Command::Edit(edit) if edit.is_by_index()) {
+                continue;
+            }
+            let lists = (self.scene.objects.len(), self.scene.lights.len());
+            let may_reshuffle = matches!(
+                command,
+                Command::Undo
+                    | Command::Redo
+                    | Command::New
+                    | Command::Open(_)
+                    | Command::ImportLegacy(_)
+            );
+            self.execute(command, ctx);
+            reshuffled |=
+                may_reshuffle || lists != (self.scene.objects.len(), self.scene.lights.len());
+        }
+        repair_selection(&self.scene, &mut self.selection);
+        if let Some(inspection) = &self.inspection
+            && !inspection.is_current(&self.scene, self.preview_settings.switches)
+        {
+            let pixel = inspection.pixel;
+            self.inspection = Some(PixelInspection::new(
+                &self.scene,
+                self.preview_settings.switches,
+                pixel,
+            ));
+        }
+        let editing = ctx.input(|i| i.pointer.any_down())
+            || ctx.text_edit_focused()
+            || crate::ui::viewport::camera_navigation::zoom_in_progress(ctx);
+        if !editing {
+            self.undoer.add_undo(&self.scene);
+        }
+    }
+
+    pub(super) fn execute(&mut self, command: Command, ctx: &egui::Context) {
+        match command {
+            Command::Select(selection) => self.selection = selection,
+            Command::Edit(edit) => self.edit(edit),
+            Command::Undo => {
+                if let Some(scene) = self.undoer.undo(&self.scene) {
+                    self.scene = scene.clone();
+                }
+            }
+            Command::Redo => {
+                if let Some(scene) = self.undoer.redo(&self.scene) {
+                    self.scene = scene.clone();
+                }
+            }
+            Command::New => self.guard(DiscardAction::New, ctx),
+            Command::OpenDialog => self.guard(DiscardAction::OpenDialog, ctx),
+            Command::Open(path) => self.guard(DiscardAction::Open(path), ctx),
+            Command::ImportLegacyDialog => self.guard(DiscardAction::ImportDialog, ctx),
+            Command::ImportLegacy(path) => self.guard(DiscardAction::Import(path), ctx),
+            Command::Quit => self.guard(DiscardAction::Quit, ctx),
+            Command::Save => match self.path.clone() {
+                Some(path) => self.save_as(&path),
+                None => self.save_as_dialog(),
+            },
+            Command::SaveAsDialog => self.save_as_dialog(),
+            Command::SaveAs(path) => self.save_as(&path),
+            Command::ShowExport => {
+                let default = self.path.as_ref().map(|p| p.with_extension("png"));
+                self.export.show(&self.scene, default);
+            }
+            Command::ShowHelp => self.show_help = !self.show_help,
+            Command::DismissError => self.error = None,
+            Command::FocusName => self.focus_name = true,
+            Command::SetPreviewSettings(settings) => self.preview_settings = settings,
+            Command::InspectPixel(pixel) => {
+                self.inspection = pixel.map(|pixel| {
+                    PixelInspection::new(&self.scene, self.preview_settings.switches, pixel)
+                });
+            }
+        }
+    }
+
+    pub(super) fn edit(&mut self, edit: SceneEdit) {
+        if let Err(error) = edit.apply(&mut self.scene, &mut self.selection) {
+            self.error = Some(error);
+        }
+    }
+}

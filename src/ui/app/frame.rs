@@ -1,0 +1,248 @@
+//! One frame of the editor: input, the panels laid out around the viewport, and the
+//! windows and dialogs over them.
+
+use crate::ui::commands::{Command, Selection};
+use crate::ui::document::confirm::{DiscardAction, discard_modal};
+use crate::ui::document::export::export_window;
+use crate::ui::document::files;
+use crate::ui::panels::inspector::inspector_ui;
+use crate::ui::panels::menu::{MenuState, menu_ui};
+use crate::ui::panels::outliner::outliner_ui;
+use crate::ui::panels::status_bar::{StatusInfo, status_bar_ui};
+use crate::ui::shortcuts::{help_window, shortcut_commands};
+use crate::ui::style::apply_style;
+use crate::ui::viewport::convergence_plot::convergence_plot_ui;
+use crate::ui::viewport::picture::viewport_ui;
+use crate::ui::viewport::pixel_inspector::pixel_inspector_ui;
+use crate::ui::viewport::preview_link::PreviewLink;
+use egui::{Color32, RichText, ViewportCommand};
+use std::path::PathBuf;
+
+use super::EditorApp;
+
+impl EditorApp {
+    /// One frame of the whole editor.
+    pub fn editor_ui(&mut self, ui: &mut egui::Ui) {
+        let ctx = ui.ctx().clone();
+        if !self.styled {
+            // Fonts change from the next pass: lay nothing out until then.
+            apply_style(&ctx);
+            self.styled = true;
+            ctx.request_repaint();
+            return;
+        }
+        if self.preview_enabled && self.preview.is_none() {
+            self.preview = Some(PreviewLink::new(&ctx));
+        }
+        if let Some(preview) = &mut self.preview {
+            preview.poll(&ctx, self.preview_settings.nan_guard);
+        }
+        self.input(&ctx);
+        self.panels_ui(ui);
+        self.dialogs(&ctx);
+        self.apply_commands(&ctx);
+        let dirty = self.is_dirty();
+        let now = std::time::Instant::now();
+        if let Some(wait) = self
+            .autosave
+            .tick(&self.scene, dirty, self.path.as_deref(), now)
+        {
+            ctx.request_repaint_after(wait);
+        }
+        if let Some(preview) = &mut self.preview {
+            preview.sync(&self.scene, &self.preview_settings);
+        }
+        let title = self.title();
+        if title != self.title {
+            ctx.send_viewport_cmd(ViewportCommand::Title(title.clone()));
+            self.title = title;
+        }
+        if let Some(hook) = &mut self.screenshot {
+            let ready = self.preview.as_ref().is_some_and(|p| {
+                p.shows_full_resolution()
+                    && (!self.screenshot_final || p.shown().is_some_and(|s| s.is_final))
+            });
+            if let Some(outcome) = hook.step(&ctx, ready) {
+                if let Err(error) = outcome {
+                    eprintln!("raylab: screenshot failed: {error}");
+                }
+                self.allow_close = true;
+                ctx.send_viewport_cmd(ViewportCommand::Close);
+            }
+        }
+    }
+
+    /// Shortcuts, dropped files and the close button.
+    pub(super) fn input(&mut self, ctx: &egui::Context) {
+        self.commands.extend(shortcut_commands(ctx));
+        let dropped: Vec<PathBuf> = ctx.input(|i| {
+            i.raw
+                .dropped_files
+                .iter()
+                .map(|f| f.path().to_owned())
+                .filter(|p| !p.as_os_str().is_empty())
+                .collect()
+        });
+        if let Some(path) = dropped.into_iter().next() {
+            if files::is_scene_file(&path) {
+                self.commands.push(Command::Open(path));
+            } else {
+                self.error = Some(format!(
+                    "{}: only .ron scene files can be opened",
+                    path.display()
+                ));
+            }
+        }
+        if ctx.input(|i| !i.raw.hovered_files.is_empty()) {
+            drop_hint(ctx);
+        }
+        if ctx.input(|i| i.viewport().close_requested()) && !self.allow_close && self.is_dirty() {
+            ctx.send_viewport_cmd(ViewportCommand::CancelClose);
+            self.pending = Some(DiscardAction::Quit);
+        }
+    }
+
+    pub(super) fn panels_ui(&mut self, ui: &mut egui::Ui) {
+        let mut commands = std::mem::take(&mut self.commands);
+        egui::Panel::top("menu").show(ui, |ui| {
+            let state = MenuState {
+                recent: self.recent.paths(),
+                can_undo: self.undoer.has_undo(&self.scene),
+                can_redo: self.undoer.has_redo(&self.scene),
+                has_selection: matches!(
+                    self.selection,
+                    Selection::Object(_) | Selection::Light(_) | Selection::Material(_)
+                ),
+            };
+            menu_ui(ui, &state, &mut commands);
+        });
+        if let Some(error) = &self.error {
+            egui::Panel::top("error")
+                .frame(
+                    egui::Frame::new()
+                        .fill(Color32::from_rgb(90, 28, 28))
+                        .inner_margin(8),
+                )
+                .show(ui, |ui| {
+                    ui.horizontal(|ui| {
+                        ui.label(RichText::new("▲").color(Color32::from_rgb(255, 200, 120)));
+                        ui.label(RichText::new(error).color(Color32::WHITE));
+                        ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+                            if ui.button("Dismiss").clicked() {
+                                commands.push(Command::DismissError);
+                            }
+                        });
+                    });
+                });
+        }
+        egui::Panel::bottom("status").show(ui, |ui| {
+            let file = self.file_label();
+            let info = StatusInfo {
+                file: &file,
+                dirty: self.is_dirty(),
+                objects: self.scene.objects.len(),
+                lights: self.scene.lights.len(),
+                frame: self.preview.as_ref().and_then(PreviewLink::shown),
+                progress: self.preview.as_ref().and_then(PreviewLink::pass_progress),
+                error: self.preview.as_ref().and_then(PreviewLink::error),
+                message: self.message.as_deref(),
+            };
+            status_bar_ui(ui, &info);
+        });
+        egui::Panel::left("outliner")
+            .resizable(true)
+            .default_size(230.0)
+            .size_range(160.0..=420.0)
+            .show(ui, |ui| {
+                panel_title_ui(ui, "Outliner");
+                outliner_ui(ui, &self.scene, &self.selection, &mut commands);
+            });
+        egui::Panel::right("inspector")
+            .resizable(true)
+            .default_size(330.0)
+            .size_range(240.0..=560.0)
+            .show(ui, |ui| {
+                panel_title_ui(ui, "Inspector");
+                inspector_ui(
+                    ui,
+                    &self.scene,
+                    &self.selection,
+                    &mut self.focus_name,
+                    &mut commands,
+                );
+                // A rename asked for an item without a name field: forget it.
+                self.focus_name = false;
+            });
+        egui::CentralPanel::no_frame().show(ui, |ui| {
+            viewport_ui(
+                ui,
+                &self.scene,
+                self.preview.as_ref(),
+                &self.selection,
+                &self.preview_settings,
+                &mut commands,
+            );
+        });
+        self.commands = commands;
+    }
+
+    pub(super) fn dialogs(&mut self, ctx: &egui::Context) {
+        if let Some(answer) = self.autosave.offer_ui(ctx) {
+            self.restore(answer);
+        }
+        help_window(ctx, &mut self.show_help);
+        export_window(ctx, &mut self.export, &self.scene);
+        if let Some(inspection) = &self.inspection {
+            pixel_inspector_ui(ctx, inspection, &mut self.commands);
+        }
+        if self.preview_settings.show_convergence
+            && let Some(preview) = &self.preview
+        {
+            convergence_plot_ui(
+                ctx,
+                preview.convergence(),
+                &self.preview_settings,
+                &mut self.commands,
+            );
+        }
+        if let Some(action) = self.pending.clone() {
+            let answer = discard_modal(ctx, &action);
+            match answer {
+                Some(true) => {
+                    self.pending = None;
+                    self.perform(action, ctx);
+                }
+                Some(false) => self.pending = None,
+                None => {}
+            }
+        }
+    }
+}
+
+/// While files are dragged over the window: say what dropping does.
+fn drop_hint(ctx: &egui::Context) {
+    let painter = ctx.layer_painter(egui::LayerId::new(
+        egui::Order::Foreground,
+        egui::Id::unique("drop hint"),
+    ));
+    let rect = ctx.content_rect();
+    painter.rect_filled(rect, 0.0, Color32::from_black_alpha(170));
+    painter.text(
+        rect.center(),
+        egui::Align2::CENTER_CENTER,
+        "Drop a .ron scene to open it",
+        egui::FontId::proportional(22.0),
+        Color32::WHITE,
+    );
+}
+
+fn panel_title_ui(ui: &mut egui::Ui, title: &str) {
+    ui.add_space(6.0);
+    ui.label(
+        RichText::new(title.to_uppercase())
+            .small()
+            .strong()
+            .color(Color32::from_gray(150)),
+    );
+    ui.add_space(2.0);
+}

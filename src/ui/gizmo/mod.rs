@@ -1,0 +1,12 @@
+//! The egui adapter of the viewport gizmos: reading drags, turning them into edits,
+//! building and painting the handles, and the mode buttons. The math lives in
+//! [`crate::gizmo`].
+
+pub mod drag;
+pub mod edit;
+pub mod hit;
+pub mod lights;
+pub mod overlay;
+pub mod paint;
+pub mod projection;
+pub mod toolbar;

@@ -1,0 +1,63 @@
+//! The light inspector: the fields of each light kind.
+
+use egui::Ui;
+use glam::DVec3;
+
+use super::fields::{colour_row_ui, number_row_ui, vec3_row_ui};
+use super::{grid_ui, heading_ui};
+use crate::scene::Light;
+use crate::ui::commands::{Command, SceneEdit};
+
+pub(super) fn light_ui(ui: &mut Ui, index: usize, light: &Light, commands: &mut Vec<Command>) {
+    heading_ui(ui, "LIGHT", &format!("{} light", light.kind_name()));
+    let mut edited = light.clone();
+    // Positions are in scene units, so they move faster under the mouse than directions.
+    let (placement_speed, intensity_speed) = match light {
+        Light::Point { .. } | Light::Spot { .. } => (0.02, 0.1),
+        Light::Ambient { .. } | Light::Directional { .. } => (0.01, 0.01),
+    };
+    let any = f64::NEG_INFINITY..=f64::INFINITY;
+    grid_ui(ui, "light", |ui| {
+        let (colour, intensity) = match &mut edited {
+            Light::Ambient { colour, intensity } => (colour, intensity),
+            Light::Point {
+                position,
+                colour,
+                intensity,
+            } => {
+                vec3_row_ui(ui, "position", position, placement_speed, any.clone());
+                (colour, intensity)
+            }
+            Light::Directional {
+                direction,
+                colour,
+                intensity,
+            } => {
+                vec3_row_ui(ui, "direction", direction, 0.01, any.clone());
+                (colour, intensity)
+            }
+            Light::Spot {
+                position,
+                direction,
+                angle_deg,
+                colour,
+                intensity,
+            } => {
+                vec3_row_ui(ui, "position", position, placement_speed, any.clone());
+                vec3_row_ui(ui, "direction", direction, 0.01, any.clone());
+                number_row_ui(ui, "angle", angle_deg, 0.2, 0.1..=90.0);
+                (colour, intensity)
+            }
+        };
+        strength_rows_ui(ui, colour, intensity, intensity_speed);
+    });
+    if edited != *light {
+        commands.push(Command::Edit(SceneEdit::SetLight(index, edited)));
+    }
+}
+
+/// Colour and intensity, which every light kind has.
+fn strength_rows_ui(ui: &mut Ui, colour: &mut DVec3, intensity: &mut f64, speed: f64) {
+    colour_row_ui(ui, "colour", colour);
+    number_row_ui(ui, "intensity", intensity, speed, 0.0..=f64::INFINITY);
+}

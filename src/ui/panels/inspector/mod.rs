@@ -1,0 +1,70 @@
+//! The inspector: every field of the selected item (object, light, material, camera,
+//! render settings). It edits a copy and pushes a command when the copy changed.
+
+mod camera;
+mod fields;
+mod light;
+mod material;
+mod object;
+mod render_settings;
+
+use egui::Ui;
+
+use crate::scene::Scene;
+use crate::ui::commands::{Command, Selection};
+
+/// Shows the inspector for `selection`.
+/// `focus_name` asks to put the keyboard in the name field (it is reset once done).
+pub fn inspector_ui(
+    ui: &mut Ui,
+    scene: &Scene,
+    selection: &Selection,
+    focus_name: &mut bool,
+    commands: &mut Vec<Command>,
+) {
+    egui::ScrollArea::vertical()
+        .auto_shrink([false, false])
+        .show(ui, |ui| match selection {
+            Selection::None => {
+                ui.add_space(8.0);
+                ui.weak("Select an object, light or material in the outliner or the viewport.");
+            }
+            Selection::Camera => camera::camera_ui(ui, &scene.camera, commands),
+            Selection::Render => render_settings::render_ui(ui, &scene.render, commands),
+            Selection::Object(index) => {
+                if let Some(object) = scene.objects.get(*index) {
+                    object::object_ui(ui, scene, *index, object, focus_name, commands);
+                }
+            }
+            Selection::Light(index) => {
+                if let Some(light) = scene.lights.get(*index) {
+                    light::light_ui(ui, *index, light, commands);
+                }
+            }
+            Selection::Material(name) => {
+                if let Some(material) = scene.materials.get(name) {
+                    material::material_ui(ui, name, material, focus_name, commands);
+                }
+            }
+        });
+}
+
+pub(super) fn heading_ui(ui: &mut Ui, kind: &str, title: &str) {
+    ui.add_space(4.0);
+    ui.horizontal(|ui| {
+        ui.label(egui::RichText::new(kind).small().weak());
+        ui.heading(title);
+    });
+    ui.separator();
+}
+
+/// A two-column grid of labelled rows.
+pub(super) fn grid_ui(ui: &mut Ui, id: &str, rows: impl FnOnce(&mut Ui)) {
+    egui::Grid::new(id)
+        .num_columns(2)
+        .spacing([12.0, 6.0])
+        .min_col_width(72.0)
+        .show(ui, rows);
+}
+
+pub use object::trs_from_matrix;
