@@ -1,8 +1,9 @@
 //! The command line: `raylab [SCENE.ron]` starts the editor, `raylab render` renders
-//! headless. `main.rs` only calls [`run`].
+//! headless, `raylab inspect` prints a pixel's rays. `main.rs` only calls [`run`].
 
 mod bench;
 mod import;
+mod inspect;
 mod render;
 
 use std::path::PathBuf;
@@ -12,6 +13,7 @@ use clap::{Parser, Subcommand};
 
 pub use bench::BenchArgs;
 pub use import::ImportArgs;
+pub use inspect::{InspectArgs, TermArgs, inspect_text};
 pub use render::RenderArgs;
 
 /// raylab: a Whitted-style ray tracer and scene editor.
@@ -34,6 +36,8 @@ pub enum Command {
     Import(ImportArgs),
     /// Measure throughput, preview latency and speed against error.
     Bench(BenchArgs),
+    /// Print every ray behind one pixel: the camera ray, shadow rays, mirror bounces.
+    Inspect(InspectArgs),
 }
 
 /// Parses the command line and runs it. Errors are printed to stderr with a non-zero exit.
@@ -44,6 +48,7 @@ pub fn run() -> ExitCode {
         Some(Command::Render(args)) => render::run(&args),
         Some(Command::Import(args)) => import::run(&args),
         Some(Command::Bench(args)) => bench::run(&args),
+        Some(Command::Inspect(args)) => inspect::run(&args),
         None => start_editor(cli.scene),
     };
     match result {

@@ -31,4 +31,6 @@ pub enum HandleId {
     Aim,
     /// The marker of light `i` (a click selects it).
     Marker(usize),
+    /// The scene camera's frustum, drawn from the view camera (a click selects it).
+    CameraMarker,
 }

@@ -3,9 +3,11 @@
 //! viewport turns pointer positions into rays with [`crate::trace::PinholeCamera`] (the
 //! tracer's own camera) and feeds them to these functions.
 
+pub mod frustum;
 pub mod handle;
 pub mod handles;
 pub mod navigate;
+pub mod ray_paths;
 pub mod snap;
 pub mod spot;
 pub mod transform_drag;

@@ -13,6 +13,7 @@ mod frame;
 mod job;
 mod latency;
 mod plan;
+mod probe;
 mod request;
 mod worker;
 
@@ -23,5 +24,6 @@ pub use latency::{PreviewLatency, measure_latency};
 pub use plan::{
     COARSE_MAX_DIVIDER, COARSE_MIN_LONG_SIDE, Pass, coarse_divider, coarse_dividers, plan_passes,
 };
+pub use probe::{Probe, ProbeWork, WorldCache};
 pub use request::{MAX_PREVIEW_LONG_SIDE, PreviewRequest};
 pub use worker::{PreviewWorker, Waker};

@@ -5,8 +5,10 @@ use glam::{DVec2, DVec3};
 
 use super::camera::PinholeCamera;
 use super::ray::Ray;
+use super::record::{LightOutcome, SkippedLight};
 use super::render::RenderOptions;
 use super::shade::{LightRecord, RayCounts, Recorder, Tracer};
+use super::terms::{Term, TermSwitches};
 use super::world::{SurfacePoint, World};
 
 /// What one ray of the chain (the camera ray, then each mirror bounce) met.
@@ -24,6 +26,11 @@ pub struct BounceReport {
     pub ambient: DVec3,
     /// Each light that can reach the point (in front of it or not, inside any spot cone).
     pub lights: Vec<LightRecord>,
+    /// The lights passed over at the point, and why.
+    pub skipped: Vec<SkippedLight>,
+    /// Where each blocked shadow ray met its blocker: `(scene index of the light, the
+    /// blocker's surface)`.
+    pub blocker_hits: Vec<(usize, SurfacePoint)>,
     /// `(km, colour of the reflected ray)` when a mirror ray was cast.
     pub reflection: Option<(DVec3, DVec3)>,
     /// The colour this ray returned.
@@ -39,9 +46,38 @@ impl BounceReport {
             background: DVec3::ZERO,
             ambient: DVec3::ZERO,
             lights: Vec::new(),
+            skipped: Vec::new(),
+            blocker_hits: Vec::new(),
             reflection: None,
             colour: DVec3::ZERO,
         }
+    }
+
+    /// Every non-ambient light of the scene that the point was shaded with, in the
+    /// scene's order, with what it did: `(scene index, outcome, its record if sampled)`.
+    #[must_use]
+    pub fn light_outcomes(&self) -> Vec<(usize, LightOutcome, Option<&LightRecord>)> {
+        let mut all: Vec<_> = self
+            .lights
+            .iter()
+            .map(|l| (l.scene_index, LightOutcome::of(l), Some(l)))
+            .chain(
+                self.skipped
+                    .iter()
+                    .map(|s| (s.scene_index, LightOutcome::Skipped(s.why), None)),
+            )
+            .collect();
+        all.sort_by_key(|(index, _, _)| *index);
+        all
+    }
+
+    /// Where the shadow ray to scene light `scene_index` met its blocker, if it was blocked.
+    #[must_use]
+    pub fn blocker_hit(&self, scene_index: usize) -> Option<&SurfacePoint> {
+        self.blocker_hits
+            .iter()
+            .find(|(light, _)| *light == scene_index)
+            .map(|(_, hit)| hit)
     }
 
     /// The sum of the recorded terms; equals `colour` (checked by the tests).
@@ -72,12 +108,12 @@ pub struct PixelReport {
 
 /// Collects a [`PixelReport`] as the shader runs. The mirror chain is a single path, so
 /// each depth has exactly one ray.
-#[derive(Default)]
-struct ReportRecorder {
+struct ReportRecorder<'w> {
+    world: &'w World,
     bounces: Vec<BounceReport>,
 }
 
-impl ReportRecorder {
+impl ReportRecorder<'_> {
     fn at(&mut self, depth: u32, ray: &Ray) -> &mut BounceReport {
         let index = depth as usize;
         if self.bounces.len() <= index {
@@ -87,7 +123,7 @@ impl ReportRecorder {
     }
 }
 
-impl Recorder for ReportRecorder {
+impl Recorder for ReportRecorder<'_> {
     fn hit(&mut self, depth: u32, ray: &Ray, hit: &SurfacePoint) {
         self.at(depth, ray).hit = Some(*hit);
     }
@@ -98,7 +134,19 @@ impl Recorder for ReportRecorder {
         self.bounces[depth as usize].ambient = colour;
     }
     fn light(&mut self, depth: u32, record: &LightRecord) {
-        self.bounces[depth as usize].lights.push(*record);
+        let bounce = &mut self.bounces[depth as usize];
+        bounce.lights.push(*record);
+        // The renderer only asks whether something is in the way; the record also shows
+        // where the ray meets the blocker.
+        if let Some(shadow) = record.shadow_ray
+            && let Some(blocker) = shadow.blocked_by
+            && let Some(hit) = self.world.intersect_object(blocker, &shadow.ray, shadow.t_max)
+        {
+            bounce.blocker_hits.push((record.scene_index, hit));
+        }
+    }
+    fn skipped_light(&mut self, depth: u32, skipped: &SkippedLight) {
+        self.bounces[depth as usize].skipped.push(*skipped);
     }
     fn reflection(&mut self, depth: u32, km: DVec3, reflected: DVec3) {
         self.bounces[depth as usize].reflection = Some((km, reflected));
@@ -115,7 +163,10 @@ pub fn inspect_pixel(world: &World, options: &RenderOptions, px: u32, py: u32) -
     let camera = PinholeCamera::new(&world.camera, options.width, options.height);
     let tracer = Tracer::new(world, options.switches, super::terms::View::Beauty);
     let ray = camera.ray(DVec2::new(f64::from(px) + 0.5, f64::from(py) + 0.5));
-    let mut recorder = ReportRecorder::default();
+    let mut recorder = ReportRecorder {
+        world,
+        bounces: Vec::new(),
+    };
     let unclamped = tracer.trace_primary(&ray, &mut RayCounts::default(), &mut recorder);
     PixelReport {
         pixel: (px, py),
@@ -123,6 +174,68 @@ pub fn inspect_pixel(world: &World, options: &RenderOptions, px: u32, py: u32) -
         unclamped,
         clamped: unclamped.clamp(DVec3::ZERO, DVec3::ONE),
     }
+}
+
+/// The switches a report was traced with, in words: "all terms on", or
+/// "off: diffuse, shadows · solo specular" (as `--off` and `--solo` name them).
+#[must_use]
+pub fn switches_text(switches: TermSwitches) -> String {
+    let off: Vec<&str> = Term::ALL
+        .into_iter()
+        .filter(|t| !switches.is_on(*t))
+        .map(Term::name)
+        .collect();
+    let mut parts = Vec::new();
+    if !off.is_empty() {
+        parts.push(format!("off: {}", off.join(", ")));
+    }
+    if let Some(solo) = switches.solo {
+        parts.push(format!("solo {solo}"));
+    }
+    if parts.is_empty() {
+        "all terms on".to_owned()
+    } else {
+        parts.join(" · ")
+    }
+}
+
+/// A pixel that is not in the image, as an error.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
+#[error(
+    "pixel ({x}, {y}) is outside the {width} x {height} image (x runs from 0 to {}, y from 0 to {})",
+    width.saturating_sub(1),
+    height.saturating_sub(1)
+)]
+pub struct PixelOutside {
+    /// The pixel's column.
+    pub x: u32,
+    /// The pixel's row.
+    pub y: u32,
+    /// The image width.
+    pub width: u32,
+    /// The image height.
+    pub height: u32,
+}
+
+/// As [`inspect_pixel`], for a pixel that may lie outside the image.
+///
+/// # Errors
+/// When `(px, py)` is not a pixel of the `options.width` x `options.height` image.
+pub fn try_inspect_pixel(
+    world: &World,
+    options: &RenderOptions,
+    px: u32,
+    py: u32,
+) -> Result<PixelReport, PixelOutside> {
+    if px >= options.width || py >= options.height {
+        return Err(PixelOutside {
+            x: px,
+            y: py,
+            width: options.width,
+            height: options.height,
+        });
+    }
+    Ok(inspect_pixel(world, options, px, py))
 }
 
 /// The object under pixel point `(x, y)` (in pixels, fractional) of a `width` x `height`

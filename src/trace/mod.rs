@@ -10,6 +10,8 @@ pub mod inspect;
 pub mod lights;
 pub mod quadratic;
 pub mod ray;
+pub mod ray_tree;
+pub mod record;
 pub mod render;
 pub mod sampling;
 pub mod shade;
@@ -21,8 +23,12 @@ pub mod world;
 pub use adaptive::{AdaptiveOptions, AdaptiveRender, render_adaptive};
 pub use camera::PinholeCamera;
 pub use image::Image;
-pub use inspect::{BounceReport, PixelReport, inspect_pixel, pick};
+pub use inspect::{
+    BounceReport, PixelOutside, PixelReport, inspect_pixel, pick, switches_text, try_inspect_pixel,
+};
 pub use ray::Ray;
+pub use ray_tree::{RayHit, RayKind, TracedRay, traced_rays};
+pub use record::{LightOutcome, LightSkip, ShadowRay, SkippedLight};
 pub use render::{
     RenderOptions, RenderProgress, SampleSums, render, render_samples, render_samples_into,
 };

@@ -14,6 +14,7 @@
 use glam::DVec3;
 
 use super::ray::Ray;
+use super::record::{LightSkip, ShadowRay, SkippedLight, unsampled_reason};
 use super::spawn::{spawn_ray, spawn_ray_to};
 use super::terms::{ActiveTerms, Term, TermSwitches, View};
 use super::world::{SurfacePoint, World};
@@ -57,6 +58,8 @@ pub struct LightRecord {
     pub blocked_by: Option<usize>,
     /// Whether a shadow ray was cast at all.
     pub shadow_ray_cast: bool,
+    /// The shadow ray, when one was cast.
+    pub shadow_ray: Option<ShadowRay>,
     /// The diffuse contribution added.
     pub diffuse: DVec3,
     /// The specular contribution added.
@@ -66,14 +69,19 @@ pub struct LightRecord {
 /// Receives the numbers behind one traced ray. Every method has an empty default, so the
 /// renderer's [`NoRecorder`] costs nothing.
 pub trait Recorder {
+    /// Whether the recorder wants the calls at all: the shader does the extra work of
+    /// accounting for skipped lights only when it does.
+    const ACTIVE: bool = true;
     /// A ray at `depth` (0 = primary) hit `hit`.
     fn hit(&mut self, _depth: u32, _ray: &Ray, _hit: &SurfacePoint) {}
     /// A ray at `depth` hit nothing and returns `background`.
     fn miss(&mut self, _depth: u32, _ray: &Ray, _background: DVec3) {}
     /// The ambient term at `depth`.
     fn ambient(&mut self, _depth: u32, _colour: DVec3) {}
-    /// A light at a point at `depth` (only for lights that can reach the point).
+    /// A light at a point at `depth` that can reach it (in front of the surface or not).
     fn light(&mut self, _depth: u32, _record: &LightRecord) {}
+    /// A light passed over at a point at `depth`, and why.
+    fn skipped_light(&mut self, _depth: u32, _skipped: &SkippedLight) {}
     /// The mirror term at `depth`: `km * reflected` was added.
     fn reflection(&mut self, _depth: u32, _km: DVec3, _reflected: DVec3) {}
     /// The colour returned for the ray at `depth`.
@@ -83,7 +91,9 @@ pub trait Recorder {
 /// A recorder that records nothing.
 pub struct NoRecorder;
 
-impl Recorder for NoRecorder {}
+impl Recorder for NoRecorder {
+    const ACTIVE: bool = false;
+}
 
 /// Traces rays through a world with a fixed set of switches and view.
 #[derive(Clone, Copy, Debug)]
@@ -118,11 +128,11 @@ impl<'w> Tracer<'w> {
     }
 
     /// The colour of a camera ray, unclamped, as the view asks for it.
-    pub fn trace_primary(
+    pub fn trace_primary<R: Recorder>(
         &self,
         ray: &Ray,
         counts: &mut RayCounts,
-        recorder: &mut impl Recorder,
+        recorder: &mut R,
     ) -> DVec3 {
         counts.primary += 1;
         match self.view {
@@ -151,13 +161,13 @@ impl<'w> Tracer<'w> {
     }
 
     /// The lit colour of a ray at `depth` with the given terms.
-    fn radiance(
+    fn radiance<R: Recorder>(
         &self,
         ray: &Ray,
         depth: u32,
         terms: &ActiveTerms,
         counts: &mut RayCounts,
-        recorder: &mut impl Recorder,
+        recorder: &mut R,
     ) -> DVec3 {
         let Some(hit) = self.world.intersect(ray, f64::INFINITY) else {
             let background = if terms.background {
@@ -188,6 +198,13 @@ impl<'w> Tracer<'w> {
             let view_dir = -ray.dir;
             for (index, light) in world.lights.iter().enumerate() {
                 let Some(sample) = light.sample(hit.p) else {
+                    if R::ACTIVE {
+                        let skipped = SkippedLight {
+                            scene_index: world.light_scene_index[index],
+                            why: unsampled_reason(light, hit.p),
+                        };
+                        recorder.skipped_light(depth, &skipped);
+                    }
                     continue;
                 };
                 let n_dot_l = hit.n.dot(sample.to_light);
@@ -197,13 +214,16 @@ impl<'w> Tracer<'w> {
                     n_dot_l,
                     blocked_by: None,
                     shadow_ray_cast: false,
+                    shadow_ray: None,
                     diffuse: DVec3::ZERO,
                     specular: DVec3::ZERO,
                 };
                 if n_dot_l > 0.0 {
                     if terms.shadows {
+                        let shadow_ray = self.shadow_ray(&hit, &sample, counts);
                         record.shadow_ray_cast = true;
-                        record.blocked_by = self.occluder(&hit, &sample, counts);
+                        record.blocked_by = shadow_ray.blocked_by;
+                        record.shadow_ray = Some(shadow_ray);
                     }
                     if record.blocked_by.is_none() {
                         if terms.diffuse {
@@ -224,6 +244,15 @@ impl<'w> Tracer<'w> {
                 }
                 recorder.light(depth, &record);
             }
+        } else if R::ACTIVE {
+            let why = if has_local {
+                LightSkip::TermsOff
+            } else {
+                LightSkip::NoDiffuseOrSpecular
+            };
+            for &scene_index in &world.light_scene_index {
+                recorder.skipped_light(depth, &SkippedLight { scene_index, why });
+            }
         }
 
         // mirror: km * colour(reflected ray)
@@ -241,28 +270,27 @@ impl<'w> Tracer<'w> {
         colour
     }
 
-    /// Casts the shadow ray from `hit` to a light; the blocking object, if any.
-    fn occluder(
+    /// Casts the shadow ray from `hit` to a light: the ray and the blocking object, if any.
+    fn shadow_ray(
         &self,
         hit: &SurfacePoint,
         sample: &super::lights::LightSample,
         counts: &mut RayCounts,
-    ) -> Option<usize> {
+    ) -> ShadowRay {
         counts.shadow += 1;
         // Every shape is convex or flat: a shadow ray leaving a solid on its outer side,
         // or leaving a plane, cannot meet the surface it starts on.
         let leaves_outward = self.world.objects[hit.object].shape == crate::scene::Shape::Plane
             || hit.n_outward.dot(sample.to_light) > 0.0;
         let except = leaves_outward.then_some(hit.object);
-        match sample.light_position {
-            Some(position) => {
-                let (ray, t_max) = spawn_ray_to(hit, position);
-                self.world.occluder_except(&ray, t_max, except)
-            }
-            None => {
-                self.world
-                    .occluder_except(&spawn_ray(hit, sample.to_light), f64::INFINITY, except)
-            }
+        let (ray, t_max) = match sample.light_position {
+            Some(position) => spawn_ray_to(hit, position),
+            None => (spawn_ray(hit, sample.to_light), f64::INFINITY),
+        };
+        ShadowRay {
+            ray,
+            t_max,
+            blocked_by: self.world.occluder_except(&ray, t_max, except),
         }
     }
 
@@ -279,7 +307,8 @@ impl<'w> Tracer<'w> {
                 continue;
             }
             reaching += 1;
-            if !self.primary.shadows || self.occluder(hit, &sample, counts).is_none() {
+            if !self.primary.shadows || self.shadow_ray(hit, &sample, counts).blocked_by.is_none()
+            {
                 visible += 1;
             }
         }

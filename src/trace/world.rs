@@ -209,6 +209,16 @@ impl World {
         closest.map(|(index, hit)| self.surface_point(index, ray, &hit))
     }
 
+    /// Where the ray meets object `index` first with `t` in (0, t_max), if it does: for
+    /// the inspector, to show where a shadow ray met the object that blocked it.
+    #[must_use]
+    pub fn intersect_object(&self, index: usize, ray: &Ray, t_max: f64) -> Option<SurfacePoint> {
+        let object = self.objects.get(index)?;
+        let ray_in_object = ray.transformed(&object.object_from_world);
+        let hit = shapes::intersect(object.shape, &ray_in_object, t_max)?;
+        Some(self.surface_point(index, ray, &hit))
+    }
+
     /// The first object found between the ray's origin and `t_max`, if any.
     #[must_use]
     pub fn occluder(&self, ray: &Ray, t_max: f64) -> Option<usize> {

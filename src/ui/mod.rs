@@ -24,7 +24,11 @@ pub use document::{files, recent};
 pub use panels::inspector::trs_from_matrix;
 pub use panels::outliner::light_label;
 pub use viewport::convergence_plot::CONVERGENCE_EXPLANATION;
-pub use viewport::picture::{VIEWPORT_LABEL, letterbox, pick_object};
+pub use viewport::picture::{VIEWPORT_LABEL, letterbox};
+pub use viewport::ray_paths::{RAY_PATHS_LABEL, RayPathSettings, RaySpan};
+pub use viewport::view_camera::ViewCamera;
+pub use viewport::view_memory::ViewMemory;
+pub use gizmo::toolbar::{CAMERA_VIEW_LABEL, SET_CAMERA_LABEL};
 pub use viewport::pixel_inspector::{
     FINAL_COLOUR_LABEL, InspectedBounce, InspectedHit, InspectedLight, InspectedPixel,
     PixelInspection,
@@ -90,6 +94,7 @@ pub fn run(scene: Option<PathBuf>) -> Result<(), String> {
             };
             let mut app = EditorApp::new(options, recent);
             if !app.is_screenshot_run() {
+                app = app.with_view_memory(ViewMemory::load(cc.storage));
                 app.push(Command::SetPreviewSettings(PreviewSettings::load(
                     cc.storage,
                 )));

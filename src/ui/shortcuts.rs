@@ -6,7 +6,7 @@ use crate::ui::commands::{Command, SceneEdit};
 
 /// A shortcut, what it does, and the command it sends. Order matters: a shortcut with
 /// Shift comes before the same one without, which would also match.
-const SHORTCUTS: [(Modifiers, Key, &str); 11] = [
+const SHORTCUTS: [(Modifiers, Key, &str); 13] = [
     (Modifiers::COMMAND, Key::N, "New scene"),
     (Modifiers::COMMAND, Key::O, "Open…"),
     (
@@ -22,6 +22,12 @@ const SHORTCUTS: [(Modifiers, Key, &str); 11] = [
     (Modifiers::NONE, Key::Delete, "Delete selection"),
     (Modifiers::COMMAND, Key::E, "Export PNG…"),
     (Modifiers::NONE, Key::F1, "Keyboard shortcuts"),
+    (
+        Modifiers::COMMAND.plus(Modifiers::ALT),
+        Key::Num0,
+        "Set scene camera from view",
+    ),
+    (Modifiers::NONE, Key::Num0, "Camera view / view camera"),
 ];
 
 fn command_for(index: usize) -> Command {
@@ -35,7 +41,9 @@ fn command_for(index: usize) -> Command {
         7 => Command::Edit(SceneEdit::DuplicateSelected),
         8 => Command::Edit(SceneEdit::DeleteSelected),
         9 => Command::ShowExport,
-        _ => Command::ShowHelp,
+        10 => Command::ShowHelp,
+        11 => Command::SetSceneCameraFromView,
+        _ => Command::ToggleCameraView,
     }
 }
 
@@ -57,7 +65,7 @@ pub fn shortcut_commands(ctx: &egui::Context) -> Vec<Command> {
     let mut commands = Vec::new();
     ctx.input_mut(|input| {
         for (index, (modifiers, key, _)) in SHORTCUTS.iter().enumerate() {
-            let editing_key = matches!(key, Key::Z | Key::Y | Key::D | Key::Delete);
+            let editing_key = matches!(key, Key::Z | Key::Y | Key::D | Key::Delete | Key::Num0);
             if typing && editing_key {
                 continue;
             }
@@ -95,6 +103,8 @@ pub fn help_window(ctx: &egui::Context, open: &mut bool) {
             ui.label(
                 "Drag: orbit (Alt+drag over a handle) · Shift or middle drag: pan · wheel: zoom.",
             );
+            ui.label("These move the view camera, never the scene's (0 or Numpad 0: camera view).");
+            ui.label("Inspect (or Alt+click) a pixel to draw its rays; Pin keeps them drawn.");
             ui.label("Hold Shift while dragging a handle to snap.");
             ui.label("Drop a .ron file on the window to open it.");
         });

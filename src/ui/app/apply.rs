@@ -3,7 +3,7 @@
 
 use crate::ui::commands::{Command, SceneEdit, repair_selection};
 use crate::ui::document::confirm::DiscardAction;
-use crate::ui::viewport::pixel_inspector::PixelInspection;
+use crate::ui::viewport::view_camera::ViewCamera;
 
 use super::EditorApp;
 
@@ -38,19 +38,7 @@ impl EditorApp {
                 may_reshuffle || lists != (self.scene.objects.len(), self.scene.lights.len());
         }
         repair_selection(&self.scene, &mut self.selection);
-        if let Some(inspection) = &self.inspection
-            && !inspection.is_current(&self.scene, self.preview_settings.switches)
-        {
-            let pixel = inspection.pixel;
-            self.inspection = Some(PixelInspection::new(
-                &self.scene,
-                self.preview_settings.switches,
-                pixel,
-            ));
-        }
-        let editing = ctx.input(|i| i.pointer.any_down())
-            || ctx.text_edit_focused()
-            || crate::ui::viewport::camera_navigation::zoom_in_progress(ctx);
+        let editing = ctx.input(|i| i.pointer.any_down()) || ctx.text_edit_focused();
         if !editing {
             self.undoer.add_undo(&self.scene);
         }
@@ -90,11 +78,19 @@ impl EditorApp {
             Command::DismissError => self.error = None,
             Command::FocusName => self.focus_name = true,
             Command::SetPreviewSettings(settings) => self.preview_settings = settings,
-            Command::InspectPixel(pixel) => {
-                self.inspection = pixel.map(|pixel| {
-                    PixelInspection::new(&self.scene, self.preview_settings.switches, pixel)
-                });
+            Command::InspectPixel(pixel) => self.looking.inspected = pixel,
+            Command::Pick(request) => self.looking.pick(&self.scene, request),
+            Command::SetView(view) => self.looking.view = view,
+            Command::ToggleCameraView => {
+                let view = &mut self.looking.view;
+                view.through_scene_camera = !view.through_scene_camera;
             }
+            Command::SetSceneCameraFromView => {
+                let camera = self.looking.view.as_scene_camera(&self.scene.camera);
+                self.edit(SceneEdit::SetCamera(camera));
+                self.looking.view = ViewCamera::through(&self.scene.camera);
+            }
+            Command::SetRayPaths(settings) => self.looking.ray_paths = settings,
         }
     }
 

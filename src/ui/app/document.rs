@@ -106,11 +106,16 @@ impl EditorApp {
         }
     }
 
-    /// A new document: fresh undo history, nothing unsaved, selection cleared.
+    /// A new document: fresh undo history, nothing unsaved, selection cleared, the view
+    /// its file was left with (or its camera's).
     pub(super) fn replace_scene(&mut self, scene: Scene, path: Option<PathBuf>) {
+        if let Some(old) = &self.path {
+            self.looking.memory.remember(old, &self.looking.view);
+        }
         self.saved = scene.clone();
         self.scene = scene;
         self.path = path;
+        self.looking.reset(&self.scene, self.path.as_deref());
         self.undoer = undoer();
         self.undoer.add_undo(&self.scene);
         self.selection = Selection::None;

@@ -12,8 +12,8 @@ use crate::ui::panels::status_bar::{StatusInfo, status_bar_ui};
 use crate::ui::shortcuts::{help_window, shortcut_commands};
 use crate::ui::style::apply_style;
 use crate::ui::viewport::convergence_plot::convergence_plot_ui;
-use crate::ui::viewport::picture::viewport_ui;
-use crate::ui::viewport::pixel_inspector::pixel_inspector_ui;
+use crate::ui::viewport::picture::{ViewportInput, viewport_ui};
+use crate::ui::viewport::pixel_inspector::{InspectorView, pixel_inspector_ui};
 use crate::ui::viewport::preview_link::PreviewLink;
 use egui::{Color32, RichText, ViewportCommand};
 use std::path::PathBuf;
@@ -37,6 +37,12 @@ impl EditorApp {
         if let Some(preview) = &mut self.preview {
             preview.poll(&ctx, self.preview_settings.nan_guard);
         }
+        self.looking.start(&ctx);
+        match self.looking.poll(&self.scene) {
+            Some(Ok(command)) => self.commands.push(command),
+            Some(Err(message)) => self.message = Some(message),
+            None => {}
+        }
         self.input(&ctx);
         self.panels_ui(ui);
         self.dialogs(&ctx);
@@ -50,7 +56,13 @@ impl EditorApp {
             ctx.request_repaint_after(wait);
         }
         if let Some(preview) = &mut self.preview {
-            preview.sync(&self.scene, &self.preview_settings);
+            preview.sync(self.looking.shown_scene(&self.scene), &self.preview_settings);
+        }
+        self.looking
+            .sync_inspections(&self.scene, self.preview_settings.switches);
+        if self.looking.is_busy() {
+            // Frames keep coming until the probe answers (it also wakes the window).
+            ctx.request_repaint();
         }
         let title = self.title();
         if title != self.title {
@@ -174,14 +186,19 @@ impl EditorApp {
                 self.focus_name = false;
             });
         egui::CentralPanel::no_frame().show(ui, |ui| {
-            viewport_ui(
-                ui,
-                &self.scene,
-                self.preview.as_ref(),
-                &self.selection,
-                &self.preview_settings,
-                &mut commands,
-            );
+            let input = ViewportInput {
+                scene: &self.scene,
+                preview: self.preview.as_ref(),
+                selection: &self.selection,
+                settings: &self.preview_settings,
+                view: &self.looking.view,
+                ray_paths: &self.looking.ray_paths,
+                inspected: self.looking.inspected,
+                inspections: self.looking.inspections(),
+            };
+            let output = viewport_ui(ui, &input, &mut commands);
+            self.looking.free_size = output.free_size;
+            self.looking.anchor = output.anchor;
         });
         self.commands = commands;
     }
@@ -192,8 +209,17 @@ impl EditorApp {
         }
         help_window(ctx, &mut self.show_help);
         export_window(ctx, &mut self.export, &self.scene);
-        if let Some(inspection) = &self.inspection {
-            pixel_inspector_ui(ctx, inspection, &mut self.commands);
+        if let Some(pixel) = self.looking.inspected {
+            let view = InspectorView {
+                pixel,
+                inspection: self.looking.inspection(),
+                current: self
+                    .looking
+                    .inspections_current(&self.scene, self.preview_settings.switches),
+                ray_paths: &self.looking.ray_paths,
+                anchor: self.looking.anchor,
+            };
+            pixel_inspector_ui(ctx, &view, &mut self.commands);
         }
         if self.preview_settings.show_convergence
             && let Some(preview) = &self.preview

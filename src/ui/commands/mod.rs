@@ -174,4 +174,14 @@ pub enum Command {
     SetPreviewSettings(crate::ui::viewport::preview_settings::PreviewSettings),
     /// Inspect a pixel of the scene camera's image, or close the pixel inspector (`None`).
     InspectPixel(Option<(u32, u32)>),
+    /// Cast the ray under a click (off the UI thread) to select or inspect what it meets.
+    Pick(crate::ui::viewport::pick_link::PickRequest),
+    /// Move the view camera (editor state: no edit, no undo step).
+    SetView(crate::ui::viewport::view_camera::ViewCamera),
+    /// Look through the scene camera, or back at the view camera.
+    ToggleCameraView,
+    /// Set the scene camera from the view camera (one undo step), and look through it.
+    SetSceneCameraFromView,
+    /// Change what the ray-path overlay draws, and the pinned pixels.
+    SetRayPaths(crate::ui::viewport::ray_paths::RayPathSettings),
 }

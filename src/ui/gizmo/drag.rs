@@ -15,7 +15,7 @@ use crate::ui::gizmo::edit::{DragGeometry, Grabbed, drag_edit, grab};
 use crate::ui::gizmo::hit::handle_shapes;
 use crate::ui::gizmo::overlay::{Part, gizmo_elements};
 use crate::ui::gizmo::paint::{paint_elements, paint_matrix_hint, paint_readout};
-use crate::ui::gizmo::projection::{ViewMapping, cone_length, sun_anchor};
+use crate::ui::gizmo::projection::ViewMapping;
 use crate::ui::gizmo::toolbar::{ToolbarAction, gizmo_modes_ui};
 use crate::ui::viewport::camera_navigation::{
     CameraDrag, drag_camera, frame_selection, zoom_with_wheel,
@@ -51,17 +51,19 @@ fn to_dvec(p: Pos2) -> DVec2 {
     DVec2::new(f64::from(p.x), f64::from(p.y))
 }
 
-/// Draws the gizmos over the picture and handles their input and camera navigation.
-/// Returns whether a click was taken (a light marker or handle), so the viewport does
-/// not also pick an object under it.
+/// Draws the gizmos over the picture (projected through `view`, the camera the viewport
+/// shows) and handles their input and camera navigation. Returns whether a click was
+/// taken (a light or camera marker, a handle), so the viewport does not also pick an
+/// object under it.
 pub fn gizmo_ui(
     ui: &mut egui::Ui,
     response: &Response,
-    picture: Rect,
+    view: &ViewMapping,
     scene: &Scene,
     selection: &Selection,
     commands: &mut Vec<Command>,
 ) -> bool {
+    let picture = *view.screen_from_image.to();
     let ctx = ui.ctx().clone();
     let id = Id::unique("raylab gizmo");
     let mut state: GizmoState = ctx.data(|d| d.get_temp(id)).unwrap_or_default();
@@ -78,12 +80,11 @@ pub fn gizmo_ui(
             }
         }
         if ctx.input_mut(|i| i.consume_key(Modifiers::NONE, Key::F)) {
-            frame_selection(scene, selection, commands);
+            frame_selection(scene, selection, view, commands);
         }
     }
 
-    let view = ViewMapping::new(scene, picture);
-    let elements = gizmo_elements(scene, selection, state.mode, &view);
+    let elements = gizmo_elements(scene, selection, state.mode, view);
     let shapes = handle_shapes(&elements);
     let hit_shapes: Vec<HandleShape> = shapes.iter().map(|(s, _)| *s).collect();
     let pick = |pos: Pos2| pick_handle(to_dvec(pos), &hit_shapes).map(|k| shapes[k].1);
@@ -94,7 +95,7 @@ pub fn gizmo_ui(
             .input(|i| i.pointer.press_origin())
             .or_else(|| response.interact_pointer_pos());
         if let Some(start) = start {
-            state.drag = start_drag(response, scene, selection, &view, modifiers, start, pick);
+            state.drag = start_drag(response, scene, selection, view, modifiers, start, pick);
         }
     }
     // The selection or the lists changed under the drag (a delete, an undo, another
@@ -108,7 +109,7 @@ pub fn gizmo_ui(
     if let (Some(drag), Some(now)) = (&state.drag, now)
         && (response.dragged() || response.drag_stopped())
     {
-        state.readout = continue_drag(drag, &view, now, modifiers.shift, picture, commands);
+        state.readout = continue_drag(drag, view, now, modifiers.shift, picture, commands);
     }
     let mut took_click = false;
     if response.clicked()
@@ -119,12 +120,16 @@ pub fn gizmo_ui(
                 commands.push(Command::Select(Selection::Light(i)));
                 took_click = true;
             }
+            Some(HandleId::CameraMarker) => {
+                commands.push(Command::Select(Selection::Camera));
+                took_click = true;
+            }
             Some(_) => took_click = true,
             None => {}
         }
     }
     if response.hovered() {
-        zoom_with_wheel(&ctx, scene, commands);
+        zoom_with_wheel(&ctx, &view.shown, commands);
     }
 
     // Paint, with the dragged or hovered handle highlighted.
@@ -159,13 +164,18 @@ pub fn gizmo_ui(
     match (&state.drag, hot) {
         (Some(Drag::Camera { .. }), _) => ctx.set_cursor_icon(CursorIcon::AllScroll),
         (Some(Drag::Handle { .. }), _) => ctx.set_cursor_icon(CursorIcon::Grabbing),
-        (None, Some(HandleId::Marker(_))) => ctx.set_cursor_icon(CursorIcon::PointingHand),
+        (None, Some(HandleId::Marker(_) | HandleId::CameraMarker)) => {
+            ctx.set_cursor_icon(CursorIcon::PointingHand);
+        }
         (None, Some(_)) => ctx.set_cursor_icon(CursorIcon::Grab),
         (None, None) => {}
     }
 
-    match gizmo_modes_ui(ui, picture, &mut state.mode) {
-        Some(ToolbarAction::Frame) => frame_selection(scene, selection, commands),
+    let camera_view = !crate::ui::gizmo::camera::shows_scene_camera(view, &scene.camera);
+    match gizmo_modes_ui(ui, picture, &mut state.mode, camera_view) {
+        Some(ToolbarAction::Frame) => frame_selection(scene, selection, view, commands),
+        Some(ToolbarAction::CameraView) => commands.push(Command::ToggleCameraView),
+        Some(ToolbarAction::SetSceneCamera) => commands.push(Command::SetSceneCameraFromView),
         None => {}
     }
 
@@ -188,7 +198,7 @@ fn start_drag(
     start: Pos2,
     pick: impl Fn(Pos2) -> Option<HandleId>,
 ) -> Option<Drag> {
-    let camera = scene.camera.clone();
+    let camera = view.shown.clone();
     if response.drag_started_by(PointerButton::Middle) {
         return Some(Drag::Camera {
             drag: CameraDrag::Pan(camera),
@@ -200,9 +210,9 @@ fn start_drag(
         && let Some(grabbed) = grab(scene, selection, handle)
     {
         let geometry = DragGeometry {
-            eye: scene.camera.position,
-            cone_length: cone_length(scene),
-            sun: sun_anchor(scene, view),
+            eye: view.eye(),
+            cone_length: view.cone_length(),
+            sun: view.sun_anchor(),
         };
         return Some(Drag::Handle {
             handle,

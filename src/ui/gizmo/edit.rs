@@ -13,7 +13,7 @@ use crate::gizmo::transform_drag::{
     TranslateHandle, euler_ring_axes, rotate_drag, scale_drag, translate_drag,
 };
 use crate::gizmo::view::object_axes;
-use crate::scene::{Light, Object, Scene, Transform, Trs};
+use crate::scene::{Camera, Light, Object, Scene, Transform, Trs};
 use crate::trace::Ray;
 use crate::ui::commands::{SceneEdit, Selection};
 
@@ -24,12 +24,14 @@ pub enum Grabbed {
     Object(usize, Object, Trs),
     /// A light.
     Light(usize, Light),
+    /// The scene camera (its frustum, seen from the view camera).
+    Camera(Camera),
 }
 
 /// Fixed sizes of a handle drag, taken at its start.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DragGeometry {
-    /// The camera's eye.
+    /// The eye of the camera the viewport shows.
     pub eye: DVec3,
     /// The spotlight cone's slant length.
     pub cone_length: f64,
@@ -74,6 +76,22 @@ pub fn drag_edit(
             Some(DragEdit {
                 edit: SceneEdit::SetLight(*index, light),
                 readout,
+            })
+        }
+        Grabbed::Camera(camera) => {
+            let HandleId::Translate(t) = handle else {
+                return None;
+            };
+            // The camera moves as a whole: eye and target together, so it keeps its aim.
+            let position = moved(t, camera.position, start, now, snapped)?;
+            let camera = Camera {
+                position,
+                look_at: camera.look_at + (position - camera.position),
+                ..camera.clone()
+            };
+            Some(DragEdit {
+                readout: format_point(position),
+                edit: SceneEdit::SetCamera(camera),
             })
         }
     }
@@ -127,7 +145,11 @@ fn object_drag(handle: HandleId, trs: &Trs, start: &Ray, now: &Ray, snapped: boo
             }
             trs.scale[i] = value;
         }
-        HandleId::SpotTip | HandleId::SpotRim | HandleId::Aim | HandleId::Marker(_) => {
+        HandleId::SpotTip
+        | HandleId::SpotRim
+        | HandleId::Aim
+        | HandleId::Marker(_)
+        | HandleId::CameraMarker => {
             return None;
         }
     }
@@ -211,7 +233,7 @@ fn format_direction(d: DVec3) -> String {
 /// What the selection is, as a handle drag would take it.
 pub fn grab(scene: &Scene, selection: &Selection, handle: HandleId) -> Option<Grabbed> {
     match (selection, handle) {
-        (_, HandleId::Marker(_)) => None,
+        (_, HandleId::Marker(_) | HandleId::CameraMarker) => None,
         (Selection::Object(i), _) => {
             let object = scene.objects.get(*i)?;
             match &object.transform {
@@ -220,6 +242,7 @@ pub fn grab(scene: &Scene, selection: &Selection, handle: HandleId) -> Option<Gr
             }
         }
         (Selection::Light(i), _) => Some(Grabbed::Light(*i, scene.lights.get(*i)?.clone())),
+        (Selection::Camera, HandleId::Translate(_)) => Some(Grabbed::Camera(scene.camera.clone())),
         _ => None,
     }
 }
@@ -236,7 +259,7 @@ mod tests {
     fn geometry(scene: &Scene) -> DragGeometry {
         DragGeometry {
             eye: scene.camera.position,
-            cone_length: crate::ui::gizmo::projection::cone_length(scene),
+            cone_length: (scene.camera.position - scene.camera.look_at).length() * 0.3,
             sun: (scene.camera.look_at, 1.0),
         }
     }

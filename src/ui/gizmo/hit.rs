@@ -7,7 +7,9 @@ use super::overlay::{Element, Part};
 use crate::gizmo::HandleId;
 use crate::gizmo::handles::HandleShape;
 
-pub(super) fn dvec(p: Pos2) -> DVec2 {
+/// A screen point as a `DVec2`, for the plain hit-test math.
+#[must_use]
+pub fn dvec(p: Pos2) -> DVec2 {
     DVec2::new(f64::from(p.x), f64::from(p.y))
 }
 

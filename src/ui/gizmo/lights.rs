@@ -5,15 +5,14 @@ use egui::{Color32, Pos2};
 use glam::DVec3;
 
 use super::overlay::{CONE_COLOUR, Element, Part, dot, line};
-use super::projection::{ViewMapping, cone_length, sun_anchor, sun_tail};
+use super::projection::{ViewMapping, sun_tail};
 use crate::gizmo::HandleId;
 use crate::gizmo::spot::{rim_handle, rim_points, rim_radial, tip_point};
-use crate::scene::{Light, Scene};
+use crate::scene::Light;
 
 /// The marker of one light; a selected spotlight's cone (its handles come later, on top).
 pub(super) fn light_elements(
     out: &mut Vec<Element>,
-    scene: &Scene,
     view: &ViewMapping,
     index: usize,
     light: &Light,
@@ -34,13 +33,13 @@ pub(super) fn light_elements(
             ..
         } => {
             if selected {
-                cone_wireframe(out, scene, view, position, direction, angle_deg);
+                cone_wireframe(out, view, position, direction, angle_deg);
             } else if let (Some(p), Some(q)) = (
                 view.project(position),
                 view.project(
                     position
                         + direction.normalize_or_zero()
-                            * view.world_per_point(scene, position)
+                            * view.world_per_point(position)
                             * 22.0,
                 ),
             ) {
@@ -51,7 +50,7 @@ pub(super) fn light_elements(
             }
         }
         Light::Directional { direction, .. } => {
-            let (anchor, length) = sun_anchor(scene, view);
+            let (anchor, length) = view.sun_anchor();
             let tail = sun_tail(anchor, length, direction);
             if let (Some(from), Some(to)) = (view.project(tail), view.project(anchor)) {
                 out.push(Element {
@@ -79,13 +78,12 @@ fn light_colour(light: &Light) -> Color32 {
 /// The cone of a selected spotlight: rim circle, silhouette and axis.
 fn cone_wireframe(
     out: &mut Vec<Element>,
-    scene: &Scene,
     view: &ViewMapping,
     position: DVec3,
     direction: DVec3,
     angle_deg: f64,
 ) {
-    let length = cone_length(scene);
+    let length = view.cone_length();
     let rim: Option<Vec<Pos2>> = rim_points(position, direction, angle_deg, length, 64)
         .into_iter()
         .map(|p| view.project(p))
@@ -104,7 +102,7 @@ fn cone_wireframe(
         });
     }
     for side in [1.0, -1.0] {
-        if let Some(edge) = rim_edge(scene, view, position, direction, angle_deg, side) {
+        if let Some(edge) = rim_edge(view, position, direction, angle_deg, side) {
             line(out, apex, edge, CONE_COLOUR, None);
         }
     }
@@ -116,14 +114,13 @@ fn cone_wireframe(
 /// The tip and rim handles of a selected spotlight, drawn over everything else.
 pub(super) fn spot_handles(
     out: &mut Vec<Element>,
-    scene: &Scene,
     view: &ViewMapping,
     position: DVec3,
     direction: DVec3,
     angle_deg: f64,
 ) {
-    let length = cone_length(scene);
-    if let Some(rim) = rim_edge(scene, view, position, direction, angle_deg, 1.0) {
+    let length = view.cone_length();
+    if let Some(rim) = rim_edge(view, position, direction, angle_deg, 1.0) {
         dot(out, rim, 6.5, CONE_COLOUR, Some(HandleId::SpotRim));
     }
     if let Some(tip) = view.project(tip_point(position, direction, length)) {
@@ -134,19 +131,18 @@ pub(super) fn spot_handles(
 /// Where the cone's silhouette edge meets the rim on screen, on the side `side` (1 or -1)
 /// of the rim handle's radial direction.
 fn rim_edge(
-    scene: &Scene,
     view: &ViewMapping,
     position: DVec3,
     direction: DVec3,
     angle_deg: f64,
     side: f64,
 ) -> Option<Pos2> {
-    let radial = rim_radial(direction, position - scene.camera.position) * side;
+    let radial = rim_radial(direction, position - view.eye()) * side;
     view.project(rim_handle(
         position,
         direction,
         radial,
         angle_deg,
-        cone_length(scene),
+        view.cone_length(),
     ))
 }

@@ -1,7 +1,8 @@
 //! The egui adapter of the viewport gizmos: reading drags, turning them into edits,
-//! building and painting the handles, and the mode buttons. The math lives in
-//! [`crate::gizmo`].
+//! building and painting the handles (lights, the scene camera, the selection's), and the
+//! mode buttons. The math lives in [`crate::gizmo`].
 
+pub mod camera;
 pub mod drag;
 pub mod edit;
 pub mod hit;

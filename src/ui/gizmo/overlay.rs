@@ -1,11 +1,12 @@
-//! What the viewport's gizmos are made of: light markers, the translate, rotate and scale
-//! gizmos of the selection, and the spotlight's cone, built as screen-space elements
-//! (each maybe a grabbable handle); `gizmo_paint.rs` paints them. The math is in
-//! [`crate::gizmo`]; this file only projects.
+//! What the viewport's gizmos are made of: light markers, the scene camera's frustum,
+//! the translate, rotate and scale gizmos of the selection, and the spotlight's cone,
+//! built as screen-space elements (each maybe a grabbable handle); `paint.rs` paints
+//! them. The math is in [`crate::gizmo`]; this file only projects.
 
 use egui::{Color32, Pos2, Vec2};
 use glam::DVec3;
 
+use super::camera::{camera_elements, shows_scene_camera};
 use super::lights::{light_elements, spot_handles};
 use super::projection::ViewMapping;
 use crate::gizmo::transform_drag::{TranslateHandle, euler_ring_axes, world_axis};
@@ -70,10 +71,11 @@ pub fn gizmo_elements(
         Selection::Light(i) => Some(*i),
         _ => None,
     };
+    let camera_selected = *selection == Selection::Camera;
+    camera_elements(&mut out, view, &scene.camera, camera_selected);
     for (index, light) in scene.lights.iter().enumerate() {
         light_elements(
             &mut out,
-            scene,
             view,
             index,
             light,
@@ -83,7 +85,7 @@ pub fn gizmo_elements(
     match selection {
         Selection::Object(index) => {
             if let Some(Transform::Trs(trs)) = scene.objects.get(*index).map(|o| &o.transform) {
-                let size = view.world_per_point(scene, trs.translate);
+                let size = view.world_per_point(trs.translate);
                 match mode {
                     GizmoMode::Translate => translate_elements(&mut out, view, trs.translate, size),
                     GizmoMode::Rotate => rotate_elements(&mut out, view, trs, size),
@@ -95,7 +97,7 @@ pub fn gizmo_elements(
             if let Some(Light::Point { position, .. } | Light::Spot { position, .. }) =
                 scene.lights.get(*index)
             {
-                let size = view.world_per_point(scene, *position);
+                let size = view.world_per_point(*position);
                 translate_elements(&mut out, view, *position, size);
             }
             if let Some(Light::Spot {
@@ -105,8 +107,12 @@ pub fn gizmo_elements(
                 ..
             }) = scene.lights.get(*index)
             {
-                spot_handles(&mut out, scene, view, *position, *direction, *angle_deg);
+                spot_handles(&mut out, view, *position, *direction, *angle_deg);
             }
+        }
+        Selection::Camera if shows_scene_camera(view, &scene.camera) => {
+            let eye = scene.camera.position;
+            translate_elements(&mut out, view, eye, view.world_per_point(eye));
         }
         _ => {}
     }
@@ -250,7 +256,7 @@ mod tests {
     fn scene_and_view() -> (Scene, ViewMapping) {
         let scene = crate::ui::document::files::default_scene();
         let picture = Rect::from_min_size(Pos2::new(100.0, 50.0), Vec2::new(400.0, 300.0));
-        let view = ViewMapping::new(&scene, picture);
+        let view = ViewMapping::new(&scene.camera, picture);
         (scene, view)
     }
 

@@ -1,42 +1,48 @@
-//! Between the world, the scene's image pixels and the screen: projecting points onto the
-//! letterboxed picture and turning screen points back into the tracer's primary rays,
-//! plus where the light gizmos anchor in the world.
+//! Between the world, the shown camera's image pixels and the screen: projecting points
+//! onto the picture and turning screen points back into the tracer's primary rays, plus
+//! where the light gizmos anchor in the world. The shown camera is whichever camera the
+//! viewport looks through: the view camera, or the scene camera in camera view.
 
 use egui::emath::RectTransform;
 use egui::{Pos2, Rect, Vec2};
 use glam::{DVec2, DVec3};
 
 use crate::gizmo::view::world_per_pixel;
-use crate::scene::Scene;
+use crate::scene::Camera;
 use crate::trace::{PinholeCamera, Ray};
 
 /// Length of a directional light's arrow, in screen points.
 const SUN_ARROW_PX: f64 = 70.0;
-/// The spotlight cone's slant length, as a fraction of the camera's distance to its
+/// The spotlight cone's slant length, as a fraction of the shown camera's distance to its
 /// target (constant while the light is aimed, so handles do not run from the cursor).
 const CONE_FRACTION: f64 = 0.3;
 
-/// Maps between the world, the scene's image pixels and the screen.
+/// Maps between the world, the shown camera's image pixels and the screen.
+#[derive(Clone, Debug)]
 pub struct ViewMapping {
-    /// The tracer's camera for the scene's output size.
+    /// The camera the viewport shows, with the size of the image it renders.
+    pub shown: Camera,
+    /// The tracer's camera for that image.
     pub camera: PinholeCamera,
-    /// Scene image pixels to screen points (the letterboxed picture).
+    /// Image pixels to screen points (the picture).
     pub screen_from_image: RectTransform,
-    /// Screen points to scene image pixels.
+    /// Screen points to image pixels.
     pub image_from_screen: RectTransform,
-    /// The scene's image height over the picture's height on screen.
+    /// The image height over the picture's height on screen.
     pub image_px_per_point: f64,
 }
 
 impl ViewMapping {
-    /// The mapping for `scene` shown in `picture`.
+    /// The mapping for `shown` (its `width` x `height` is the rendered image) drawn in
+    /// `picture`.
     #[must_use]
-    pub fn new(scene: &Scene, picture: Rect) -> Self {
-        let (width, height) = (scene.camera.width.max(1), scene.camera.height.max(1));
+    pub fn new(shown: &Camera, picture: Rect) -> Self {
+        let (width, height) = (shown.width.max(1), shown.height.max(1));
         let image = Rect::from_min_size(Pos2::ZERO, Vec2::new(width as f32, height as f32));
         let screen_from_image = RectTransform::from_to(image, picture);
         Self {
-            camera: PinholeCamera::new(&scene.camera, width, height),
+            shown: shown.clone(),
+            camera: PinholeCamera::new(shown, width, height),
             image_from_screen: screen_from_image.inverse(),
             screen_from_image,
             image_px_per_point: f64::from(height) / f64::from(picture.height().max(1.0)),
@@ -60,28 +66,55 @@ impl ViewMapping {
         self.camera.ray(DVec2::new(f64::from(p.x), f64::from(p.y)))
     }
 
+    /// The screen point of an image point (pixels, fractional).
+    #[must_use]
+    pub fn screen_of_image(&self, image_point: DVec2) -> Pos2 {
+        self.screen_from_image
+            .transform_pos(Pos2::new(image_point.x as f32, image_point.y as f32))
+    }
+
+    /// The image point (pixels, fractional) under a screen point.
+    #[must_use]
+    pub fn image_of_screen(&self, pos: Pos2) -> DVec2 {
+        let p = self.image_from_screen.transform_pos(pos);
+        DVec2::new(f64::from(p.x), f64::from(p.y))
+    }
+
+    /// The ray through the centre of the image pixel under a screen point (as the
+    /// renderer's one-sample pass casts it), or `None` off the image.
+    #[must_use]
+    pub fn pixel_ray(&self, pos: Pos2) -> Option<Ray> {
+        let p = self.image_of_screen(pos);
+        let (w, h) = (f64::from(self.shown.width), f64::from(self.shown.height));
+        (p.x >= 0.0 && p.y >= 0.0 && p.x < w && p.y < h)
+            .then(|| self.camera.ray(p.floor() + DVec2::splat(0.5)))
+    }
+
+    /// The shown camera's eye.
+    #[must_use]
+    pub fn eye(&self) -> DVec3 {
+        self.shown.position
+    }
+
     /// World units per screen point at `p_world`.
     #[must_use]
-    pub fn world_per_point(&self, scene: &Scene, p_world: DVec3) -> f64 {
-        world_per_pixel(
-            &scene.camera,
-            p_world,
-            f64::from(scene.camera.height.max(1)),
-        ) * self.image_px_per_point
+    pub fn world_per_point(&self, p_world: DVec3) -> f64 {
+        world_per_pixel(&self.shown, p_world, f64::from(self.shown.height.max(1)))
+            * self.image_px_per_point
     }
-}
 
-/// The slant length of a spotlight's drawn cone.
-#[must_use]
-pub fn cone_length(scene: &Scene) -> f64 {
-    (scene.camera.position - scene.camera.look_at).length() * CONE_FRACTION
-}
+    /// The slant length of a spotlight's drawn cone.
+    #[must_use]
+    pub fn cone_length(&self) -> f64 {
+        (self.shown.position - self.shown.look_at).length() * CONE_FRACTION
+    }
 
-/// Where a directional light's arrow points to, and its length in world units.
-#[must_use]
-pub fn sun_anchor(scene: &Scene, view: &ViewMapping) -> (DVec3, f64) {
-    let anchor = scene.camera.look_at;
-    (anchor, view.world_per_point(scene, anchor) * SUN_ARROW_PX)
+    /// Where a directional light's arrow points to, and its length in world units.
+    #[must_use]
+    pub fn sun_anchor(&self) -> (DVec3, f64) {
+        let anchor = self.shown.look_at;
+        (anchor, self.world_per_point(anchor) * SUN_ARROW_PX)
+    }
 }
 
 /// The tail of a directional light's arrow (its aim handle).
@@ -94,16 +127,11 @@ pub fn sun_tail(anchor: DVec3, length: f64, direction: DVec3) -> DVec3 {
 mod tests {
     use super::*;
 
-    fn scene_and_view() -> (Scene, ViewMapping) {
-        let scene = crate::ui::files::default_scene();
-        let picture = Rect::from_min_size(Pos2::new(100.0, 50.0), Vec2::new(400.0, 300.0));
-        let view = ViewMapping::new(&scene, picture);
-        (scene, view)
-    }
-
     #[test]
     fn the_ray_through_a_projected_point_passes_through_it() {
-        let (_, view) = scene_and_view();
+        let scene = crate::ui::files::default_scene();
+        let picture = Rect::from_min_size(Pos2::new(100.0, 50.0), Vec2::new(400.0, 300.0));
+        let view = ViewMapping::new(&scene.camera, picture);
         for p in [DVec3::new(0.3, 1.2, -0.5), DVec3::new(-2.0, 0.1, 1.5)] {
             let pos = view.project(p).unwrap();
             assert!(view.screen_from_image.to().contains(pos), "{pos:?}");

@@ -1,5 +1,6 @@
 //! The gizmo mode buttons over the picture's top-left corner: Move (W), Rotate (E),
-//! Scale (R) and Frame (F).
+//! Scale (R), Frame (F), and the camera buttons: Camera view (0) and Set camera from
+//! view (Ctrl+Alt+0).
 
 use egui::{Color32, CornerRadius, Layout, Rect, RichText, UiBuilder, Vec2};
 
@@ -10,7 +11,16 @@ use crate::gizmo::GizmoMode;
 pub enum ToolbarAction {
     /// Frame the selection.
     Frame,
+    /// Look through the scene camera, or back at the view camera.
+    CameraView,
+    /// Move the scene camera to the view camera.
+    SetSceneCamera,
 }
+
+/// Accessible name of the camera view toggle.
+pub const CAMERA_VIEW_LABEL: &str = "Camera view";
+/// Accessible name of the "set scene camera from view" button.
+pub const SET_CAMERA_LABEL: &str = "Set camera from view";
 
 /// The buttons, their key and the mode they pick.
 const MODES: [(&str, &str, GizmoMode); 3] = [
@@ -20,14 +30,16 @@ const MODES: [(&str, &str, GizmoMode); 3] = [
 ];
 
 /// Shows the toolbar in the picture's corner (below the pass badge); changes `mode`.
+/// `camera_view` is whether the viewport looks through the scene camera.
 pub fn gizmo_modes_ui(
     ui: &mut egui::Ui,
     picture: Rect,
     mode: &mut GizmoMode,
+    camera_view: bool,
 ) -> Option<ToolbarAction> {
     let rect = Rect::from_min_size(
         picture.left_top() + Vec2::new(8.0, 34.0),
-        Vec2::new(300.0, 28.0),
+        Vec2::new(520.0_f32.min(picture.width() - 16.0), 28.0),
     );
     if !picture.contains_rect(rect) {
         return None;
@@ -63,6 +75,25 @@ pub fn gizmo_modes_ui(
                 .clicked()
             {
                 action = Some(ToolbarAction::Frame);
+            }
+            ui.separator();
+            if ui
+                .add(egui::Button::selectable(
+                    camera_view,
+                    RichText::new(CAMERA_VIEW_LABEL).size(12.0),
+                ))
+                .on_hover_text("Look through the scene camera: its framing and resolution (0)")
+                .clicked()
+            {
+                action = Some(ToolbarAction::CameraView);
+            }
+            if !camera_view
+                && ui
+                    .add(egui::Button::new(RichText::new(SET_CAMERA_LABEL).size(12.0)).frame(false))
+                    .on_hover_text("Move the scene camera to this view (Ctrl+Alt+0)")
+                    .clicked()
+            {
+                action = Some(ToolbarAction::SetSceneCamera);
             }
         });
     action

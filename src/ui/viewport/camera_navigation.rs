@@ -1,21 +1,19 @@
 //! Camera navigation in the viewport: orbit (drag on empty space, or Alt+drag), pan
 //! (middle drag or Shift+drag), zoom (wheel) and frame the selection (F). Every gesture
-//! pushes [`SceneEdit::SetCamera`] commands computed from the camera at its start, so a
-//! drag is one undo step (the app records none while a button is down) and a burst of
-//! wheel steps is one too ([`zoom_in_progress`] holds the undo point back).
+//! moves the view camera ([`Command::SetView`]), never the scene's: it is computed from
+//! the shown camera at the gesture's start, so from camera view it starts at the scene
+//! camera's pose and leaves camera view. Looking around is no edit and no undo step.
 
-use egui::{Id, MouseWheelUnit, Pos2, Vec2};
+use egui::{MouseWheelUnit, Pos2, Vec2};
 
 use crate::gizmo::navigate::{frame, orbit, pan, zoom};
 use crate::gizmo::view::bounding_sphere;
 use crate::scene::{Camera, Light, Scene};
-use crate::ui::commands::{Command, SceneEdit, Selection};
-use crate::ui::gizmo::projection::cone_length;
+use crate::ui::commands::{Command, Selection};
+use crate::ui::gizmo::projection::ViewMapping;
+use crate::ui::viewport::view_camera::ViewCamera;
 
-/// Seconds after the last wheel step during which the zoom is one gesture.
-const ZOOM_GESTURE_SECONDS: f64 = 0.35;
-
-/// A camera drag: what it does and the camera when it started.
+/// A camera drag: what it does and the shown camera when it started.
 #[derive(Clone, Debug, PartialEq)]
 pub enum CameraDrag {
     /// Turn about the target.
@@ -37,7 +35,7 @@ impl CameraDrag {
     }
 }
 
-/// Pushes the camera of a drag from `start` to `now`.
+/// Pushes the view of a drag from `start` to `now`.
 pub fn drag_camera(
     drag: &CameraDrag,
     start: Pos2,
@@ -46,7 +44,7 @@ pub fn drag_camera(
     commands: &mut Vec<Command>,
 ) {
     let camera = drag.camera(now - start, height_points);
-    push_camera(camera, commands);
+    push_view(&camera, commands);
 }
 
 /// Wheel steps this frame (one per notch; trackpads give fractions), positive towards
@@ -72,44 +70,30 @@ pub fn wheel_steps(ctx: &egui::Context) -> f64 {
     })
 }
 
-/// Zooms by the wheel steps of this frame, if any, and starts or extends the gesture.
-pub fn zoom_with_wheel(ctx: &egui::Context, scene: &Scene, commands: &mut Vec<Command>) {
+/// Zooms the shown camera by the wheel steps of this frame, if any.
+pub fn zoom_with_wheel(ctx: &egui::Context, shown: &Camera, commands: &mut Vec<Command>) {
     let steps = wheel_steps(ctx);
     if steps == 0.0 || !steps.is_finite() {
         return;
     }
-    push_camera(zoom(&scene.camera, steps), commands);
-    let now = ctx.input(|i| i.time);
-    ctx.data_mut(|d| d.insert_temp(zoom_id(), now));
-}
-
-fn zoom_id() -> Id {
-    Id::unique("raylab zoom gesture")
-}
-
-/// Whether a wheel zoom is still going on (a step came in the last moments): the app
-/// records no undo point until it is over, so a zoom is one step.
-#[must_use]
-pub fn zoom_in_progress(ctx: &egui::Context) -> bool {
-    let Some(last) = ctx.data(|d| d.get_temp::<f64>(zoom_id())) else {
-        return false;
-    };
-    let going_on = ctx.input(|i| i.time) - last < ZOOM_GESTURE_SECONDS;
-    if going_on {
-        // Keep frames coming so the gesture ends (and is recorded) without new input.
-        ctx.request_repaint();
-    } else {
-        ctx.data_mut(|d| d.remove::<f64>(zoom_id()));
-    }
-    going_on
+    push_view(&zoom(shown, steps), commands);
 }
 
 /// The sphere to frame for the selection: an object's bounds, a point light's
-/// surroundings, a spotlight's drawn cone; `None` for what has no place.
+/// surroundings, a spotlight's drawn cone (as `view` draws it), the scene camera's eye;
+/// `None` for what has no place.
 #[must_use]
-pub fn selection_sphere(scene: &Scene, selection: &Selection) -> Option<(glam::DVec3, f64)> {
-    let length = cone_length(scene);
+pub fn selection_sphere(
+    scene: &Scene,
+    selection: &Selection,
+    view: &ViewMapping,
+) -> Option<(glam::DVec3, f64)> {
+    let length = view.cone_length();
     match selection {
+        Selection::Camera => Some((
+            scene.camera.position,
+            (scene.camera.look_at - scene.camera.position).length() * 0.25,
+        )),
         Selection::Object(i) => scene.objects.get(*i).map(bounding_sphere),
         Selection::Light(i) => match scene.lights.get(*i)? {
             Light::Point { position, .. } => Some((*position, length * 0.5)),
@@ -127,19 +111,26 @@ pub fn selection_sphere(scene: &Scene, selection: &Selection) -> Option<(glam::D
     }
 }
 
-/// Pushes the camera that frames the selection, if it has a place.
-pub fn frame_selection(scene: &Scene, selection: &Selection, commands: &mut Vec<Command>) {
-    if let Some((centre, radius)) = selection_sphere(scene, selection)
+/// Pushes the view that frames the selection, if it has a place.
+pub fn frame_selection(
+    scene: &Scene,
+    selection: &Selection,
+    view: &ViewMapping,
+    commands: &mut Vec<Command>,
+) {
+    if let Some((centre, radius)) = selection_sphere(scene, selection, view)
         && centre.is_finite()
         && radius.is_finite()
     {
-        push_camera(frame(&scene.camera, centre, radius), commands);
+        push_view(&frame(&view.shown, centre, radius), commands);
     }
 }
 
-/// Pushes a camera edit, unless a degenerate camera (eye on its target) made it NaN.
-fn push_camera(camera: Camera, commands: &mut Vec<Command>) {
-    if camera.position.is_finite() && camera.look_at.is_finite() {
-        commands.push(Command::Edit(SceneEdit::SetCamera(camera)));
+/// Pushes the free view at `camera`'s pose, unless a degenerate camera (eye on its
+/// target) made it unusable.
+fn push_view(camera: &Camera, commands: &mut Vec<Command>) {
+    let view = ViewCamera::free(camera);
+    if view.is_usable() {
+        commands.push(Command::SetView(view));
     }
 }

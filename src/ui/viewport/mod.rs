@@ -1,10 +1,17 @@
 //! The viewport: the preview picture and its toolbar, the link to the preview worker and
-//! its settings, the pixel inspector, the convergence plot and camera navigation.
+//! its settings, the view camera and camera navigation, picking and the pixel inspector
+//! off the UI thread, the ray-path overlay and the convergence plot.
 
 pub mod camera_navigation;
+mod clicks;
 pub mod convergence_plot;
+mod marks;
+pub mod pick_link;
 pub mod picture;
 pub mod pixel_inspector;
 pub mod preview_link;
 pub mod preview_settings;
+pub mod ray_paths;
 pub mod toolbar;
+pub mod view_camera;
+pub mod view_memory;

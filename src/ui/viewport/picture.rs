@@ -1,17 +1,20 @@
-//! The central viewport: the preview at the scene's aspect ratio, letterboxed; a click
-//! selects the object under the cursor, found with the tracer's own primary ray.
+//! The central viewport: the preview picture, from the view camera at the viewport's own
+//! size or, in camera view, from the scene camera at its aspect ratio (letterboxed),
+//! with the gizmos, the ray-path overlay and the clicks that select or inspect.
 
 use egui::{Align2, Color32, CornerRadius, FontId, Pos2, Rect, Sense, Stroke, Vec2};
-use glam::DVec2;
 
-use crate::preview::Pass;
+use super::clicks::{inspected_anchor, picture_clicks};
+use super::marks::{HEADER_HEIGHT, header_ui, pass_badge, selection_marker};
+use super::pixel_inspector::{PixelAnchor, PixelInspection};
+use super::preview_link::PreviewLink;
+use super::preview_settings::PreviewSettings;
+use super::ray_paths::{RayPathSettings, ray_path_controls_ui, ray_paths_ui, screen_segments};
+use super::toolbar::{TOOLBAR_HEIGHT, toolbar_ui};
+use super::view_camera::{ViewCamera, free_render_size};
 use crate::scene::Scene;
-use crate::trace::{PinholeCamera, World};
 use crate::ui::commands::{Command, Selection};
-use crate::ui::viewport::pixel_inspector::inspected_pixel;
-use crate::ui::viewport::preview_link::PreviewLink;
-use crate::ui::viewport::preview_settings::PreviewSettings;
-use crate::ui::viewport::toolbar::{TOOLBAR_HEIGHT, toolbar_ui};
+use crate::ui::gizmo::projection::ViewMapping;
 
 /// Accessible name of the picture, for tests and screen readers.
 pub const VIEWPORT_LABEL: &str = "Viewport";
@@ -27,33 +30,42 @@ pub fn letterbox(outer: Rect, aspect: f32) -> Rect {
     Rect::from_center_size(outer.center(), size)
 }
 
-/// The object whose surface the primary ray of the pixel under `image_point` hits first.
-/// `image_point` is in the scene's output pixels; the ray goes through that pixel's centre,
-/// as the renderer's one-sample pass does.
-#[must_use]
-pub fn pick_object(scene: &Scene, image_point: DVec2) -> Option<usize> {
-    let (width, height) = (scene.camera.width, scene.camera.height);
-    if !(image_point.x >= 0.0
-        && image_point.y >= 0.0
-        && image_point.x < f64::from(width)
-        && image_point.y < f64::from(height))
-    {
-        return None;
-    }
-    let world = World::new(scene).ok()?;
-    let pixel_centre = image_point.floor() + DVec2::splat(0.5);
-    crate::trace::pick(&world, width, height, pixel_centre)
+/// What the viewport shows.
+pub struct ViewportInput<'a> {
+    /// The scene.
+    pub scene: &'a Scene,
+    /// The preview, when running.
+    pub preview: Option<&'a PreviewLink>,
+    /// The selection.
+    pub selection: &'a Selection,
+    /// The toolbar's settings.
+    pub settings: &'a PreviewSettings,
+    /// The view camera (or camera view).
+    pub view: &'a ViewCamera,
+    /// What the ray-path overlay draws.
+    pub ray_paths: &'a RayPathSettings,
+    /// The inspected pixel.
+    pub inspected: Option<(u32, u32)>,
+    /// The newest inspections of the inspected and pinned pixels.
+    pub inspections: &'a [PixelInspection],
 }
 
-/// Shows the viewport and pushes a selection when the picture is clicked.
+/// What the viewport found out while laying out.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ViewportOutput {
+    /// The size a free view renders at in this viewport.
+    pub free_size: (u32, u32),
+    /// Where the inspected pixel is on screen.
+    pub anchor: Option<PixelAnchor>,
+}
+
+/// Shows the viewport and pushes the commands of its clicks, drags and controls.
 pub fn viewport_ui(
     ui: &mut egui::Ui,
-    scene: &Scene,
-    preview: Option<&PreviewLink>,
-    selection: &Selection,
-    settings: &PreviewSettings,
+    input: &ViewportInput,
     commands: &mut Vec<Command>,
-) {
+) -> ViewportOutput {
+    let scene = input.scene;
     let full = ui.available_rect_before_wrap();
     let header = Rect::from_min_size(full.min, Vec2::new(full.width(), HEADER_HEIGHT));
     let bar = Rect::from_min_size(
@@ -61,20 +73,77 @@ pub fn viewport_ui(
         Vec2::new(full.width(), TOOLBAR_HEIGHT),
     );
     let outer = Rect::from_min_max(Pos2::new(full.min.x, bar.max.y), full.max);
-    header_ui(ui, header, scene);
-    let non_finite = preview
+    let region = outer.shrink(16.0);
+    let free_size = free_render_size(
+        region.width(),
+        region.height(),
+        ui.ctx().pixels_per_point(),
+    );
+    let shown = input.view.shown(&scene.camera, free_size);
+    header_ui(ui, header, scene, &shown, input.view.through_scene_camera);
+    let non_finite = input
+        .preview
         .and_then(PreviewLink::frame)
         .map(|f| f.non_finite_samples);
-    toolbar_ui(ui, bar, settings, non_finite, commands);
+    toolbar_ui(ui, bar, input.settings, non_finite, commands);
     ui.painter()
         .rect_filled(outer, CornerRadius::ZERO, Color32::from_gray(14));
-    let aspect = scene.camera.width as f32 / scene.camera.height.max(1) as f32;
-    let picture = letterbox(outer.shrink(16.0), aspect);
+    let aspect = shown.width as f32 / shown.height.max(1) as f32;
+    let picture = letterbox(region, aspect);
+    let view = ViewMapping::new(&shown, picture);
     let response = ui.allocate_rect(picture, Sense::click_and_drag());
     response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, VIEWPORT_LABEL));
     let painter = ui.painter_at(outer);
-    let texture = preview.and_then(PreviewLink::texture);
-    match texture {
+    picture_ui(&painter, picture, input.preview);
+    if let Some(preview) = input.preview {
+        pass_badge(&painter, picture, preview);
+    }
+    selection_marker(&painter, &view, scene, input.selection);
+    if response.hovered() {
+        ui.ctx().set_cursor_icon(egui::CursorIcon::Crosshair);
+    }
+    let gizmo_took_click = !input.settings.inspect
+        && crate::ui::gizmo::drag::gizmo_ui(
+            ui,
+            &response,
+            &view,
+            scene,
+            input.selection,
+            commands,
+        );
+    let segments = screen_segments(
+        &view,
+        scene,
+        input.inspections,
+        input.ray_paths,
+        input.inspected,
+    );
+    ray_paths_ui(
+        ui,
+        &ui.painter_at(picture),
+        &segments,
+        scene,
+        input.inspections,
+        response.hover_pos(),
+    );
+    if input.inspected.is_some() || !input.ray_paths.pinned.is_empty() {
+        ray_path_controls_ui(ui, picture, input.ray_paths, commands);
+    }
+    picture_clicks(ui, &response, &view, input, gizmo_took_click, commands);
+    ViewportOutput {
+        free_size,
+        anchor: input.inspected.and_then(|pixel| {
+            inspected_anchor(&view, scene, input.inspections, pixel).map(|pos| PixelAnchor {
+                pos,
+                viewport: outer,
+            })
+        }),
+    }
+}
+
+/// The preview texture, or a placeholder while there is none.
+fn picture_ui(painter: &egui::Painter, picture: Rect, preview: Option<&PreviewLink>) {
+    match preview.and_then(PreviewLink::texture) {
         Some(texture) => {
             let uv = Rect::from_min_max(Pos2::ZERO, Pos2::new(1.0, 1.0));
             painter.image(texture.id(), picture, uv, Color32::WHITE);
@@ -101,159 +170,6 @@ pub fn viewport_ui(
         Stroke::new(1.0, Color32::from_gray(50)),
         egui::StrokeKind::Outside,
     );
-    if let Some(preview) = preview {
-        pass_badge(&painter, picture, preview);
-    }
-    selection_marker(&painter, picture, scene, selection);
-    if response.hovered() {
-        ui.ctx().set_cursor_icon(egui::CursorIcon::Crosshair);
-    }
-    // Inspect mode (the toolbar's toggle, or Alt held): a click, or moving with Alt held
-    // and no button down, inspects the pixel under the pointer instead of selecting.
-    // Alt+drag still orbits the camera through the gizmo layer.
-    let alt = ui.input(|i| i.modifiers.alt);
-    let inspecting = settings.inspect || alt;
-    let gizmo_took_click = !settings.inspect
-        && crate::ui::gizmo::drag::gizmo_ui(ui, &response, picture, scene, selection, commands);
-    if inspecting {
-        let moved = alt
-            && response.hovered()
-            && ui.input(|i| i.pointer.delta() != Vec2::ZERO && !i.pointer.any_down());
-        let pos = if (response.clicked() && !gizmo_took_click) || moved {
-            response.interact_pointer_pos().or(response.hover_pos())
-        } else {
-            None
-        };
-        if let Some(pixel) =
-            pos.and_then(|p| inspected_pixel(scene, image_from_screen(picture, scene, p)))
-        {
-            commands.push(Command::InspectPixel(Some(pixel)));
-        }
-    }
-    if let Some(pos) = response
-        .interact_pointer_pos()
-        .filter(|_| response.clicked() && !inspecting && !gizmo_took_click)
-    {
-        let image_point = image_from_screen(picture, scene, pos);
-        let selection = pick_object(scene, image_point).map_or(Selection::None, Selection::Object);
-        commands.push(Command::Select(selection));
-    }
-}
-
-/// Height of the strip above the picture (where the term toolbar will go).
-const HEADER_HEIGHT: f32 = 28.0;
-
-/// The strip above the picture: title, output size, samples and depth.
-fn header_ui(ui: &mut egui::Ui, header: Rect, scene: &Scene) {
-    let painter = ui.painter_at(header);
-    painter.rect_filled(header, CornerRadius::ZERO, Color32::from_gray(24));
-    painter.hline(
-        header.x_range(),
-        header.max.y - 0.5,
-        Stroke::new(1.0, Color32::from_gray(40)),
-    );
-    painter.text(
-        header.left_center() + Vec2::new(10.0, 0.0),
-        Align2::LEFT_CENTER,
-        "VIEWPORT",
-        FontId::proportional(10.0),
-        Color32::from_gray(150),
-    );
-    let info = format!(
-        "{} × {}  ·  {} spp  ·  depth {}",
-        scene.camera.width,
-        scene.camera.height,
-        scene.render.samples_per_pixel,
-        scene.render.max_depth
-    );
-    painter.text(
-        header.right_center() - Vec2::new(10.0, 0.0),
-        Align2::RIGHT_CENTER,
-        info,
-        FontId::proportional(12.0),
-        Color32::from_gray(170),
-    );
-}
-
-/// Scene output pixels of a screen position over the picture.
-fn image_from_screen(picture: Rect, scene: &Scene, pos: Pos2) -> DVec2 {
-    let u = f64::from((pos.x - picture.min.x) / picture.width());
-    let v = f64::from((pos.y - picture.min.y) / picture.height());
-    DVec2::new(
-        u * f64::from(scene.camera.width),
-        v * f64::from(scene.camera.height),
-    )
-}
-
-/// The screen position of scene output pixel coordinates.
-fn screen_from_image(picture: Rect, scene: &Scene, p: DVec2) -> Pos2 {
-    Pos2::new(
-        picture.min.x + (p.x / f64::from(scene.camera.width)) as f32 * picture.width(),
-        picture.min.y + (p.y / f64::from(scene.camera.height)) as f32 * picture.height(),
-    )
-}
-
-/// A small label in the corner: which pass is showing, and the render error if any.
-fn pass_badge(painter: &egui::Painter, picture: Rect, preview: &PreviewLink) {
-    let text = match preview.shown() {
-        Some(shown) => match shown.pass {
-            Pass::Coarse { divider } => format!("preview 1/{divider}"),
-            Pass::Full { target: 1, .. } => "1 sample".to_owned(),
-            Pass::Full { samples, target } => format!("{samples}/{target} samples"),
-        },
-        None => String::new(),
-    };
-    if !text.is_empty() {
-        let pos = picture.left_top() + Vec2::new(8.0, 8.0);
-        let galley = painter.layout_no_wrap(text, FontId::monospace(11.0), Color32::from_gray(220));
-        let back = Rect::from_min_size(pos, galley.size()).expand(4.0);
-        painter.rect_filled(back, CornerRadius::same(3), Color32::from_black_alpha(150));
-        painter.galley(pos, galley, Color32::WHITE);
-    }
-    if let Some(error) = preview.error() {
-        let band = Rect::from_min_max(Pos2::new(picture.min.x, picture.max.y - 28.0), picture.max);
-        painter.rect_filled(
-            band,
-            CornerRadius::ZERO,
-            Color32::from_rgba_unmultiplied(120, 20, 20, 220),
-        );
-        painter.text(
-            band.left_center() + Vec2::new(8.0, 0.0),
-            Align2::LEFT_CENTER,
-            format!("Cannot render: {error}"),
-            FontId::proportional(13.0),
-            Color32::WHITE,
-        );
-    }
-}
-
-/// A ring at the selected object's origin, with its name.
-fn selection_marker(painter: &egui::Painter, picture: Rect, scene: &Scene, selection: &Selection) {
-    let Selection::Object(index) = selection else {
-        return;
-    };
-    let Some(object) = scene.objects.get(*index) else {
-        return;
-    };
-    let camera = PinholeCamera::new(&scene.camera, scene.camera.width, scene.camera.height);
-    let origin = object.transform.world_from_object().translation;
-    let Some(p) = camera.project(origin) else {
-        return;
-    };
-    let pos = screen_from_image(picture, scene, p);
-    if !picture.contains(pos) {
-        return;
-    }
-    let accent = crate::ui::style::ACCENT;
-    painter.circle_stroke(pos, 6.0, Stroke::new(2.0, Color32::from_black_alpha(160)));
-    painter.circle_stroke(pos, 5.0, Stroke::new(1.5, accent));
-    painter.text(
-        pos + Vec2::new(10.0, -10.0),
-        Align2::LEFT_BOTTOM,
-        &object.name,
-        FontId::proportional(12.0),
-        accent,
-    );
 }
 
 #[cfg(test)]
@@ -266,24 +182,5 @@ mod tests {
         let r = letterbox(outer, 2.0);
         assert_eq!(r.size(), Vec2::new(200.0, 100.0));
         assert_eq!(r.center(), outer.center());
-    }
-
-    #[test]
-    fn picking_uses_the_primary_ray_of_the_pixel() {
-        let scene = crate::ui::document::files::default_scene();
-        let camera = PinholeCamera::new(&scene.camera, scene.camera.width, scene.camera.height);
-        for name in ["red ball", "blue box", "gold cone"] {
-            let index = scene.objects.iter().position(|o| o.name == name).unwrap();
-            // A point inside each shape (the cone's origin is its apex, so go up its axis).
-            let inside = glam::DVec3::new(0.0, 0.0, if name == "gold cone" { 0.8 } else { 0.0 });
-            let centre = scene.objects[index]
-                .transform
-                .world_from_object()
-                .transform_point3(inside);
-            let p = camera.project(centre).unwrap();
-            assert_eq!(pick_object(&scene, p), Some(index), "{name}");
-        }
-        assert_eq!(pick_object(&scene, DVec2::new(-1.0, 5.0)), None);
-        assert_eq!(pick_object(&scene, DVec2::new(400.0, 2.0)), None, "sky");
     }
 }

@@ -1,26 +1,30 @@
 //! The pixel inspector: every number behind one pixel, for the ray through its centre,
-//! as the tracer's own shading code recorded it ([`inspect_pixel`]). The numbers are the
-//! tracer's [`PixelReport`] itself; this model only adds the names of the objects,
-//! materials and lights its indices point at, so the window lays out text.
+//! as the tracer's own shading code recorded it ([`try_inspect_pixel`]). The numbers are
+//! the tracer's [`PixelReport`] itself; this model only adds the names of the objects,
+//! materials and lights its indices point at, so the window lays out text. The tracing
+//! runs off the UI thread ([`link`]).
 
+pub mod link;
 mod window;
 
-use crate::scene::Scene;
-use crate::trace::{PixelReport, RenderOptions, TermSwitches, View, World, inspect_pixel};
+use crate::scene::{Light, Scene};
+use crate::trace::{
+    LightRecord, PixelReport, RenderOptions, TermSwitches, View, World, try_inspect_pixel,
+};
 use crate::ui::panels::outliner::light_label;
 
-pub use window::{FINAL_COLOUR_LABEL, pixel_inspector_ui, shadow_text, switches_text};
+pub use window::{
+    FINAL_COLOUR_LABEL, InspectorView, PixelAnchor, pixel_inspector_ui, switches_text,
+};
 
 /// One pixel inspected in one scene with one set of switches.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct PixelInspection {
     /// The pixel, in the scene camera's pixel grid.
     pub pixel: (u32, u32),
     /// The switches it was traced with.
     pub switches: TermSwitches,
-    /// The scene it was traced in (to notice edits).
-    pub scene: Scene,
-    /// The tracer's record with names resolved, or why the scene cannot be traced.
+    /// The tracer's record with names resolved, or why the pixel cannot be traced.
     pub result: Result<InspectedPixel, String>,
 }
 
@@ -38,7 +42,8 @@ pub struct InspectedPixel {
 pub struct InspectedBounce {
     /// What it hit, or `None` for a miss.
     pub hit: Option<InspectedHit>,
-    /// Names for each of the bounce's lights, same order.
+    /// Every light of the scene, in its order, with what it did at the hit (empty for a
+    /// miss).
     pub lights: Vec<InspectedLight>,
 }
 
@@ -51,48 +56,39 @@ pub struct InspectedHit {
     pub material: String,
 }
 
-/// The names of one light's part.
+/// One light's part at a hit, named.
 #[derive(Clone, Debug, PartialEq)]
 pub struct InspectedLight {
+    /// Index of the light in the scene's list.
+    pub scene_index: usize,
     /// "Point light 2": the kind and the outliner's number.
     pub label: String,
-    /// The blocking object's name, if the shadow ray was blocked.
-    pub blocked_by: Option<String>,
+    /// What it did, in words: "lit", "behind the surface", "shadowed by red ball"...
+    pub outcome: String,
+    /// Whether it added light.
+    pub adds_light: bool,
+    /// The shader's numbers, for a light it sampled.
+    pub record: Option<LightRecord>,
 }
 
 impl PixelInspection {
-    /// Traces pixel `pixel` of `scene` at its own resolution with `switches`.
+    /// Traces pixel `pixel` of `scene` (compiled as `world`) at its own resolution with
+    /// `switches`. Runs off the UI thread, in [`link::InspectionLink`]'s jobs.
     #[must_use]
-    pub fn new(scene: &Scene, switches: TermSwitches, pixel: (u32, u32)) -> Self {
-        let result = World::new(scene)
-            .map_err(|e| e.to_string())
-            .and_then(|world| {
-                let (width, height) = (scene.camera.width, scene.camera.height);
-                if pixel.0 >= width || pixel.1 >= height {
-                    return Err(format!(
-                        "pixel {pixel:?} is outside the {width} x {height} image"
-                    ));
-                }
-                let options = RenderOptions {
-                    switches,
-                    view: View::Beauty,
-                    ..RenderOptions::from_scene(scene)
-                };
-                let report = inspect_pixel(&world, &options, pixel.0, pixel.1);
-                Ok(resolve(&world, scene, report))
-            });
+    pub fn traced(world: &World, scene: &Scene, switches: TermSwitches, pixel: (u32, u32)) -> Self {
+        let options = RenderOptions {
+            switches,
+            view: View::Beauty,
+            ..RenderOptions::from_scene(scene)
+        };
+        let result = try_inspect_pixel(world, &options, pixel.0, pixel.1)
+            .map(|report| resolve(world, scene, report))
+            .map_err(|e| e.to_string());
         Self {
             pixel,
             switches,
-            scene: scene.clone(),
             result,
         }
-    }
-
-    /// Whether this inspection still describes `scene` with `switches`.
-    #[must_use]
-    pub fn is_current(&self, scene: &Scene, switches: TermSwitches) -> bool {
-        self.switches == switches && self.scene == *scene
     }
 }
 
@@ -114,31 +110,60 @@ pub fn inspected_pixel(scene: &Scene, image_point: glam::DVec2) -> Option<(u32, 
 
 /// Names for the indices of a report.
 fn resolve(world: &World, scene: &Scene, report: PixelReport) -> InspectedPixel {
-    let object_name = |i: usize| world.objects.get(i).map_or("?", |o| o.name.as_str());
+    let object_name = |i: usize| {
+        world
+            .objects
+            .get(i)
+            .map_or_else(|| format!("object {i}"), |o| o.name.clone())
+    };
     let bounces = report
         .bounces
         .iter()
-        .map(|b| InspectedBounce {
-            hit: b.hit.map(|hit| InspectedHit {
-                object: object_name(hit.object).to_owned(),
-                material: world
-                    .objects
-                    .get(hit.object)
-                    .and_then(|o| world.material_names.get(o.material))
-                    .cloned()
-                    .unwrap_or_default(),
-            }),
-            lights: b
+        .map(|b| {
+            let Some(hit) = b.hit else {
+                return InspectedBounce {
+                    hit: None,
+                    lights: Vec::new(),
+                };
+            };
+            let outcomes = b.light_outcomes();
+            let lights = scene
                 .lights
                 .iter()
-                .map(|l| InspectedLight {
-                    label: scene.lights.get(l.scene_index).map_or_else(
-                        || format!("light {}", l.scene_index + 1),
-                        |light| light_label(light, l.scene_index),
-                    ),
-                    blocked_by: l.blocked_by.map(|i| object_name(i).to_owned()),
+                .enumerate()
+                .filter_map(|(index, light)| {
+                    let label = light_label(light, index);
+                    if matches!(light, Light::Ambient { .. }) {
+                        return Some(InspectedLight {
+                            scene_index: index,
+                            label,
+                            outcome: "in the ambient term (ka × its colour)".to_owned(),
+                            adds_light: b.ambient != glam::DVec3::ZERO,
+                            record: None,
+                        });
+                    }
+                    let (_, outcome, record) = outcomes.iter().find(|(i, ..)| *i == index)?;
+                    Some(InspectedLight {
+                        scene_index: index,
+                        label,
+                        outcome: outcome.text(&object_name),
+                        adds_light: outcome.adds_light(),
+                        record: record.copied(),
+                    })
                 })
-                .collect(),
+                .collect();
+            InspectedBounce {
+                hit: Some(InspectedHit {
+                    object: object_name(hit.object),
+                    material: world
+                        .objects
+                        .get(hit.object)
+                        .and_then(|o| world.material_names.get(o.material))
+                        .cloned()
+                        .unwrap_or_default(),
+                }),
+                lights,
+            }
         })
         .collect();
     InspectedPixel { report, bounces }
@@ -149,41 +174,52 @@ mod tests {
     use super::*;
 
     #[test]
-    fn names_resolve_every_index_of_the_report() {
+    fn every_light_of_the_scene_is_listed_with_what_it_did() {
         let scene = crate::ui::files::default_scene();
+        let world = World::new(&scene).unwrap();
         let mut mirrors = 0;
-        let mut blocked = 0;
+        let mut shadowed = 0;
+        let mut behind = 0;
         for y in (0..scene.camera.height).step_by(37) {
             for x in (0..scene.camera.width).step_by(41) {
-                let inspection = PixelInspection::new(&scene, TermSwitches::ALL_ON, (x, y));
+                let inspection = PixelInspection::traced(&world, &scene, TermSwitches::ALL_ON, (x, y));
                 let pixel = inspection.result.unwrap();
                 assert_eq!(pixel.bounces.len(), pixel.report.bounces.len());
                 for (bounce, names) in pixel.report.bounces.iter().zip(&pixel.bounces) {
                     assert_eq!(bounce.hit.is_some(), names.hit.is_some());
-                    if let Some(hit) = &names.hit {
-                        assert!(scene.objects.iter().any(|o| o.name == hit.object));
-                        assert!(scene.materials.contains_key(&hit.material));
-                    }
-                    assert_eq!(bounce.lights.len(), names.lights.len());
-                    for (light, light_names) in bounce.lights.iter().zip(&names.lights) {
-                        assert!(light_names.label.contains("light"), "{}", light_names.label);
-                        assert_eq!(light.blocked_by.is_some(), light_names.blocked_by.is_some());
-                        blocked += usize::from(light.blocked_by.is_some());
+                    let Some(hit) = &names.hit else {
+                        continue;
+                    };
+                    assert!(scene.objects.iter().any(|o| o.name == hit.object));
+                    assert!(scene.materials.contains_key(&hit.material));
+                    let listed: Vec<usize> = names.lights.iter().map(|l| l.scene_index).collect();
+                    assert_eq!(listed, (0..scene.lights.len()).collect::<Vec<_>>());
+                    for light in &names.lights {
+                        if let Some(record) = &light.record {
+                            if let Some(blocker) = record.blocked_by {
+                                let name = &scene.objects[blocker].name;
+                                assert_eq!(light.outcome, format!("shadowed by {name}"));
+                                shadowed += 1;
+                            }
+                            if record.n_dot_l <= 0.0 {
+                                assert_eq!(light.outcome, "behind the surface");
+                                behind += 1;
+                            }
+                            assert_eq!(light.adds_light, light.outcome == "lit");
+                        }
                     }
                 }
                 mirrors += usize::from(pixel.bounces.len() > 1);
             }
         }
-        assert!(mirrors > 0 && blocked > 0, "{mirrors} {blocked}");
+        assert!(mirrors > 0 && shadowed > 0 && behind > 0, "{mirrors} {shadowed} {behind}");
     }
 
     #[test]
-    fn a_pixel_outside_the_image_or_a_broken_scene_is_an_error_not_a_panic() {
-        let mut scene = crate::ui::files::default_scene();
-        let outside = PixelInspection::new(&scene, TermSwitches::ALL_ON, (10_000, 0));
-        assert!(outside.result.unwrap_err().contains("outside"));
-        scene.objects[0].material = "missing".to_owned();
-        let broken = PixelInspection::new(&scene, TermSwitches::ALL_ON, (1, 1));
-        assert!(broken.result.is_err());
+    fn a_pixel_outside_the_image_is_an_error_not_a_panic() {
+        let scene = crate::ui::files::default_scene();
+        let world = World::new(&scene).unwrap();
+        let outside = PixelInspection::traced(&world, &scene, TermSwitches::ALL_ON, (10_000, 0));
+        assert!(outside.result.unwrap_err().contains("outside the 800 x 600 image"));
     }
 }

@@ -1,101 +1,165 @@
-//! The pixel inspector's window: the report laid out as text, bounce by bounce.
+//! The pixel inspector's window: the report laid out as text, bounce by bounce, with
+//! every light of the scene and what it did. It opens beside the inspected pixel (not
+//! over it), at its top for each new pixel, and the wheel scrolls it anywhere over it.
 
-use egui::{Color32, RichText};
+use egui::{Color32, Id, Pos2, Rect, RichText, Vec2};
 use glam::DVec3;
 
 use super::{InspectedBounce, InspectedLight, InspectedPixel, PixelInspection};
-use crate::trace::{BounceReport, LightRecord, Term, TermSwitches};
+use crate::trace::BounceReport;
 use crate::ui::commands::Command;
+use crate::ui::viewport::ray_paths::RayPathSettings;
+
+pub use crate::trace::switches_text;
 
 /// Accessible name of the inspector window's final colour line.
 pub const FINAL_COLOUR_LABEL: &str = "final colour";
+/// The window's width, in points.
+const WIDTH: f32 = 400.0;
+/// Space between the inspected pixel and the window.
+const GAP: f32 = 28.0;
+
+/// Where the inspected pixel is on screen, and the viewport the window stays beside it in.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PixelAnchor {
+    /// The pixel's screen position.
+    pub pos: Pos2,
+    /// The viewport's rectangle.
+    pub viewport: Rect,
+}
+
+impl PixelAnchor {
+    /// The window's top-left corner: right of the pixel when it fits, else left of it.
+    fn window_pos(&self) -> Pos2 {
+        let right = self.pos.x + GAP;
+        let x = if right + WIDTH <= self.viewport.max.x {
+            right
+        } else {
+            (self.pos.x - GAP - WIDTH).max(self.viewport.min.x)
+        };
+        let y = (self.pos.y - 80.0).clamp(self.viewport.min.y, self.viewport.max.y - 120.0);
+        Pos2::new(x, y.max(self.viewport.min.y))
+    }
+}
+
+/// What the window shows.
+pub struct InspectorView<'a> {
+    /// The inspected pixel.
+    pub pixel: (u32, u32),
+    /// Its newest inspection (`None` until the first one is traced).
+    pub inspection: Option<&'a PixelInspection>,
+    /// Whether that inspection describes the scene and switches as they are now.
+    pub current: bool,
+    /// The ray-path settings, for the pin button.
+    pub ray_paths: &'a RayPathSettings,
+    /// Where the pixel is on screen, if it is.
+    pub anchor: Option<PixelAnchor>,
+}
 
 /// Shows the inspector window; closing it pushes [`Command::InspectPixel`]`(None)`.
-pub fn pixel_inspector_ui(
-    ctx: &egui::Context,
-    inspection: &PixelInspection,
-    commands: &mut Vec<Command>,
-) {
+pub fn pixel_inspector_ui(ctx: &egui::Context, view: &InspectorView, commands: &mut Vec<Command>) {
+    let id = Id::unique("raylab pixel inspector");
+    let placed_for = ctx.data(|d| d.get_temp::<(u32, u32)>(id.with("placed")));
+    let mut window = egui::Window::new("Pixel inspector")
+        .id(id)
+        .default_width(WIDTH)
+        .default_height(460.0)
+        .resizable(true);
+    // A new pixel: the window moves beside it (and stays where the user puts it after).
+    if placed_for != Some(view.pixel)
+        && let Some(anchor) = view.anchor
+    {
+        window = window.current_pos(anchor.window_pos());
+        ctx.data_mut(|d| d.insert_temp(id.with("placed"), view.pixel));
+    }
+    let window_rect = ctx.memory(|m| m.area_rect(id));
     let mut open = true;
-    // Over the right of the picture, below the toolbar, clear of the side panels.
-    let corner = ctx.content_rect().right_top() + egui::vec2(-800.0, 110.0);
-    egui::Window::new("Pixel inspector")
-        .open(&mut open)
-        .default_pos(corner.max(egui::pos2(0.0, 0.0)))
-        .default_width(420.0)
-        .resizable(true)
-        .show(ctx, |ui| {
-            let (x, y) = inspection.pixel;
-            ui.label(RichText::new(format!("Pixel ({x}, {y})")).strong());
-            ui.weak(format!(
-                "centre ray, beauty lighting · {}",
-                switches_text(inspection.switches)
-            ));
-            ui.separator();
-            match &inspection.result {
-                Ok(pixel) => pixel_ui(ui, pixel),
-                Err(error) => {
-                    ui.colored_label(Color32::from_rgb(255, 120, 110), error);
-                }
-            }
-        });
+    window.open(&mut open).show(ctx, |ui| {
+        // A scroll position of its own per pixel: each new pixel opens at the top.
+        egui::ScrollArea::vertical()
+            .id_salt(("inspector scroll", view.pixel))
+            .auto_shrink([false, true])
+            .show(ui, |ui| {
+                scroll_from_anywhere(ui, window_rect);
+                contents_ui(ui, view, commands);
+            });
+    });
     if !open {
         commands.push(Command::InspectPixel(None));
     }
 }
 
-/// "all terms on", or "off: diffuse, shadows · solo specular".
-#[must_use]
-pub fn switches_text(switches: TermSwitches) -> String {
-    let off: Vec<&str> = Term::ALL
-        .into_iter()
-        .filter(|t| !switches.is_on(*t))
-        .map(Term::name)
-        .collect();
-    let mut parts = Vec::new();
-    if !off.is_empty() {
-        parts.push(format!("off: {}", off.join(", ")));
+/// The wheel over the window but outside the scroll area (its title bar) scrolls too.
+fn scroll_from_anywhere(ui: &mut egui::Ui, window_rect: Option<Rect>) {
+    let over_window = window_rect.is_some_and(|r| ui.rect_contains_pointer(r));
+    let over_area = ui.rect_contains_pointer(ui.clip_rect());
+    let delta = ui.input(|i| i.smooth_scroll_delta);
+    if over_window && !over_area && delta != Vec2::ZERO {
+        ui.scroll_with_delta(delta);
     }
-    if let Some(solo) = switches.solo {
-        parts.push(format!("solo {solo}"));
-    }
-    if parts.is_empty() {
-        "all terms on".to_owned()
-    } else {
-        parts.join(" · ")
+}
+
+fn contents_ui(ui: &mut egui::Ui, view: &InspectorView, commands: &mut Vec<Command>) {
+    let (x, y) = view.pixel;
+    ui.horizontal(|ui| {
+        ui.label(RichText::new(format!("Pixel ({x}, {y})")).strong());
+        let pinned = view.ray_paths.pinned.contains(&view.pixel);
+        let text = if pinned { "Unpin" } else { "Pin" };
+        if ui
+            .button(text)
+            .on_hover_text("Keep this pixel's rays drawn in the viewport")
+            .clicked()
+        {
+            let mut settings = view.ray_paths.clone();
+            settings.toggle_pin(view.pixel);
+            commands.push(Command::SetRayPaths(settings));
+        }
+        if !view.current {
+            ui.weak("updating…");
+        }
+    });
+    let Some(inspection) = view.inspection else {
+        ui.weak("Tracing…");
+        return;
+    };
+    ui.weak(format!(
+        "centre ray, beauty lighting · {}",
+        switches_text(inspection.switches)
+    ));
+    ui.separator();
+    match &inspection.result {
+        Ok(pixel) => pixel_ui(ui, pixel),
+        Err(error) => {
+            ui.colored_label(Color32::from_rgb(255, 120, 110), error);
+        }
     }
 }
 
 fn pixel_ui(ui: &mut egui::Ui, pixel: &InspectedPixel) {
     let report = &pixel.report;
-    egui::ScrollArea::vertical()
-        .max_height(380.0)
-        .show(ui, |ui| {
-            for (bounce, names) in report.bounces.iter().zip(&pixel.bounces) {
-                let title = match bounce.depth {
-                    0 => "Camera ray".to_owned(),
-                    d => format!("Reflection, depth {d}"),
-                };
-                egui::CollapsingHeader::new(RichText::new(title).strong())
-                    .id_salt(("bounce", bounce.depth))
-                    .default_open(true)
-                    .show(ui, |ui| bounce_ui(ui, bounce, names));
-            }
-        });
-    ui.separator();
     egui::Grid::new("final colour")
         .num_columns(2)
         .show(ui, |ui| {
-            ui.label("before clamping");
-            ui.monospace(colour_text(report.unclamped));
-            ui.end_row();
             ui.label(FINAL_COLOUR_LABEL);
             ui.horizontal(|ui| {
                 swatch_ui(ui, report.clamped);
                 ui.monospace(colour_text(report.clamped));
             });
             ui.end_row();
+            ui.label("before clamping");
+            ui.monospace(colour_text(report.unclamped));
+            ui.end_row();
         });
+    for (bounce, names) in report.bounces.iter().zip(&pixel.bounces) {
+        let title = match bounce.depth {
+            0 => "Camera ray".to_owned(),
+            d => format!("Reflection, depth {d}"),
+        };
+        egui::CollapsingHeader::new(RichText::new(title).strong())
+            .id_salt(("bounce", bounce.depth))
+            .default_open(true)
+            .show(ui, |ui| bounce_ui(ui, bounce, names));
+    }
 }
 
 fn bounce_ui(ui: &mut egui::Ui, bounce: &BounceReport, names: &InspectedBounce) {
@@ -106,9 +170,7 @@ fn bounce_ui(ui: &mut egui::Ui, bounce: &BounceReport, names: &InspectedBounce) 
                 ui.label("hit");
                 ui.label("nothing (background)");
                 ui.end_row();
-                ui.label("colour");
-                ui.monospace(colour_text(bounce.colour));
-                ui.end_row();
+                number_row_ui(ui, "colour", colour_text(bounce.colour));
             });
         return;
     };
@@ -126,11 +188,11 @@ fn bounce_ui(ui: &mut egui::Ui, bounce: &BounceReport, names: &InspectedBounce) 
             number_row_ui(ui, "normal", vector_text(hit.n));
             number_row_ui(ui, "ambient", colour_text(bounce.ambient));
         });
-    for (light, light_names) in bounce.lights.iter().zip(&names.lights) {
-        light_ui(ui, light, light_names, bounce.depth);
+    for light in &names.lights {
+        light_ui(ui, light, bounce.depth);
     }
-    if bounce.lights.is_empty() {
-        ui.weak("no light reaches this point");
+    if names.lights.is_empty() {
+        ui.weak("the scene has no lights");
     }
     egui::Grid::new(("result", bounce.depth))
         .num_columns(2)
@@ -146,35 +208,40 @@ fn bounce_ui(ui: &mut egui::Ui, bounce: &BounceReport, names: &InspectedBounce) 
                 None => ui.weak("no mirror ray"),
             };
             ui.end_row();
-            ui.label("colour");
-            ui.monospace(colour_text(bounce.colour));
-            ui.end_row();
+            number_row_ui(ui, "colour", colour_text(bounce.colour));
         });
 }
 
-fn light_ui(ui: &mut egui::Ui, light: &LightRecord, names: &InspectedLight, depth: u32) {
-    ui.label(RichText::new(&names.label).underline());
-    egui::Grid::new(("light", depth, &names.label))
+/// One light: its name, what it did (green when it added light), and the numbers.
+fn light_ui(ui: &mut egui::Ui, light: &InspectedLight, depth: u32) {
+    ui.horizontal(|ui| {
+        ui.label(RichText::new(&light.label).underline());
+        let colour = if light.adds_light {
+            Color32::from_rgb(140, 220, 140)
+        } else {
+            Color32::from_gray(160)
+        };
+        ui.label(RichText::new(&light.outcome).color(colour));
+    });
+    let Some(record) = &light.record else {
+        return;
+    };
+    egui::Grid::new(("light", depth, light.scene_index))
         .num_columns(2)
         .show(ui, |ui| {
-            number_row_ui(ui, "strength", colour_text(light.strength));
-            number_row_ui(ui, "n·l", format!("{:.4}", light.n_dot_l));
+            number_row_ui(ui, "strength", colour_text(record.strength));
+            number_row_ui(ui, "n·l", format!("{:.4}", record.n_dot_l));
             ui.label("shadow ray");
-            ui.label(shadow_text(light, names));
+            ui.label(match (record.shadow_ray, record.blocked_by) {
+                (Some(_), Some(_)) => "blocked",
+                (Some(_), None) => "cast, reaches the light",
+                (None, _) if record.n_dot_l <= 0.0 => "not cast (light behind the surface)",
+                (None, _) => "not cast (shadows off)",
+            });
             ui.end_row();
-            number_row_ui(ui, "diffuse", colour_text(light.diffuse));
-            number_row_ui(ui, "specular", colour_text(light.specular));
+            number_row_ui(ui, "diffuse", colour_text(record.diffuse));
+            number_row_ui(ui, "specular", colour_text(record.specular));
         });
-}
-
-/// "blocked by red ball", "cast, reaches the light", "not cast".
-#[must_use]
-pub fn shadow_text(light: &LightRecord, names: &InspectedLight) -> String {
-    match (&names.blocked_by, light.shadow_ray_cast) {
-        (Some(blocker), _) => format!("blocked by {blocker}"),
-        (None, true) => "cast, reaches the light".to_owned(),
-        (None, false) => "not cast".to_owned(),
-    }
 }
 
 /// One grid row: a label and a number in monospace.
@@ -205,6 +272,7 @@ fn vector_text(v: DVec3) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::trace::{Term, TermSwitches};
 
     #[test]
     fn switches_read_as_on_the_command_line() {
@@ -216,5 +284,26 @@ mod tests {
             switches_text(switches.with_solo(Some(Term::Specular))),
             "off: diffuse, shadows · solo specular"
         );
+    }
+
+    #[test]
+    fn the_window_sits_beside_the_pixel_on_the_side_with_room() {
+        let viewport = Rect::from_min_size(Pos2::new(200.0, 80.0), Vec2::new(800.0, 600.0));
+        let left = PixelAnchor {
+            pos: Pos2::new(300.0, 300.0),
+            viewport,
+        };
+        let p = left.window_pos();
+        assert!(p.x > 300.0, "right of a pixel on the left");
+        let right = PixelAnchor {
+            pos: Pos2::new(900.0, 300.0),
+            viewport,
+        };
+        let q = right.window_pos();
+        assert!(q.x + WIDTH < 900.0, "left of a pixel on the right");
+        for (anchor, pos) in [(left, p), (right, q)] {
+            let window = Rect::from_min_size(pos, Vec2::new(WIDTH, 300.0));
+            assert!(!window.contains(anchor.pos), "not over the pixel");
+        }
     }
 }

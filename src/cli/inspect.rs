@@ -1,0 +1,304 @@
+//! `raylab inspect SCENE --pixel X,Y [--json]`: every ray behind one pixel's centre
+//! sample, from the tracer's own recorder (the record the editor's pixel inspector and
+//! ray-path overlay show), as a readable tree or as JSON with fixed fields.
+
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+use clap::Args;
+use glam::DVec3;
+use serde::Serialize;
+
+use crate::scene::{Scene, load_scene};
+use crate::trace::{
+    PixelReport, RayKind, RenderOptions, Term, TermSwitches, TracedRay, View, World,
+    switches_text, traced_rays, try_inspect_pixel,
+};
+
+/// Arguments of `raylab inspect`.
+#[derive(Debug, Args)]
+pub struct InspectArgs {
+    /// The scene file (RON).
+    pub scene: PathBuf,
+    /// The pixel, as X,Y in the scene camera's image (0,0 is the top-left pixel).
+    #[arg(long, value_parser = parse_pixel, value_name = "X,Y")]
+    pub pixel: (u32, u32),
+    /// Print JSON instead of a tree.
+    #[arg(long)]
+    pub json: bool,
+    /// The term switches the pixel is traced with.
+    #[command(flatten)]
+    pub terms: TermArgs,
+}
+
+/// The term switches, as `raylab render` takes them.
+#[derive(Debug, Default, Args)]
+pub struct TermArgs {
+    /// Terms to switch off, comma-separated: ambient,diffuse,specular,shadows,reflection.
+    #[arg(long, value_delimiter = ',')]
+    pub off: Vec<Term>,
+    /// Show one term alone.
+    #[arg(long)]
+    pub solo: Option<Term>,
+}
+
+impl TermArgs {
+    /// The switches these arguments ask for.
+    #[must_use]
+    pub fn switches(&self) -> TermSwitches {
+        let mut switches = TermSwitches::ALL_ON;
+        for term in &self.off {
+            switches.set(*term, false);
+        }
+        switches.with_solo(self.solo)
+    }
+}
+
+/// "12,40" to (12, 40).
+fn parse_pixel(text: &str) -> Result<(u32, u32), String> {
+    let wanted = || format!("`{text}` is not a pixel: write X,Y with whole numbers, e.g. 120,45");
+    let (x, y) = text.split_once(',').ok_or_else(wanted)?;
+    let x = x.trim().parse().map_err(|_| wanted())?;
+    let y = y.trim().parse().map_err(|_| wanted())?;
+    Ok((x, y))
+}
+
+/// Runs `raylab inspect`, printing to stdout.
+///
+/// # Errors
+/// A message naming what went wrong: the file, the scene, or a pixel outside the image.
+pub fn run(args: &InspectArgs) -> Result<(), String> {
+    let scene = load_scene(&args.scene).map_err(|e| format!("{}: {e}", args.scene.display()))?;
+    print!("{}", inspect_text(&scene, args)?);
+    Ok(())
+}
+
+/// What `raylab inspect` prints for `scene`.
+///
+/// # Errors
+/// The scene's validation message, or a pixel outside the image.
+pub fn inspect_text(scene: &Scene, args: &InspectArgs) -> Result<String, String> {
+    let world = World::new(scene).map_err(|e| e.to_string())?;
+    let options = RenderOptions {
+        switches: args.terms.switches(),
+        view: View::Beauty,
+        ..RenderOptions::from_scene(scene)
+    };
+    let (x, y) = args.pixel;
+    let report = try_inspect_pixel(&world, &options, x, y).map_err(|e| e.to_string())?;
+    if args.json {
+        let json = serde_json::to_string_pretty(&JsonReport::new(&world, &report))
+            .map_err(|e| format!("cannot write JSON: {e}"))?;
+        Ok(json + "\n")
+    } else {
+        Ok(tree_text(&world, scene, &options, &report))
+    }
+}
+
+/// The JSON form: the fixed fields, plus the unclamped colour and the lights.
+#[derive(Serialize)]
+struct JsonReport {
+    pixel: [u32; 2],
+    colour: [f64; 3],
+    unclamped: [f64; 3],
+    rays: Vec<JsonRay>,
+    lights: Vec<JsonLight>,
+}
+
+#[derive(Serialize)]
+struct JsonRay {
+    kind: &'static str,
+    depth: u32,
+    origin: [f64; 3],
+    direction: [f64; 3],
+    t: Option<f64>,
+    t_max: Option<f64>,
+    hit: Option<JsonHit>,
+    light: Option<usize>,
+    blocked_by: Option<String>,
+}
+
+#[derive(Serialize)]
+struct JsonHit {
+    object: String,
+    point: [f64; 3],
+    normal: [f64; 3],
+}
+
+/// What one light did at one hit point.
+#[derive(Serialize)]
+struct JsonLight {
+    depth: u32,
+    light: usize,
+    outcome: String,
+    n_dot_l: Option<f64>,
+    diffuse: [f64; 3],
+    specular: [f64; 3],
+}
+
+impl JsonReport {
+    fn new(world: &World, report: &PixelReport) -> Self {
+        let name = |i: usize| object_name(world, i);
+        let rays = traced_rays(report)
+            .iter()
+            .map(|ray| JsonRay {
+                kind: ray.kind.name(),
+                depth: ray.depth,
+                origin: ray.origin.to_array(),
+                direction: ray.direction.to_array(),
+                t: ray.t,
+                t_max: ray.t_max,
+                hit: ray.hit.map(|hit| JsonHit {
+                    object: name(hit.object),
+                    point: hit.point.to_array(),
+                    normal: hit.normal.to_array(),
+                }),
+                light: ray.light,
+                blocked_by: ray.blocked_by.map(name),
+            })
+            .collect();
+        let lights = report
+            .bounces
+            .iter()
+            .flat_map(|bounce| {
+                bounce
+                    .light_outcomes()
+                    .into_iter()
+                    .map(move |(light, outcome, record)| JsonLight {
+                        depth: bounce.depth,
+                        light,
+                        outcome: outcome.text(&name),
+                        n_dot_l: record.map(|r| r.n_dot_l),
+                        diffuse: record.map_or([0.0; 3], |r| r.diffuse.to_array()),
+                        specular: record.map_or([0.0; 3], |r| r.specular.to_array()),
+                    })
+            })
+            .collect();
+        Self {
+            pixel: [report.pixel.0, report.pixel.1],
+            colour: report.clamped.to_array(),
+            unclamped: report.unclamped.to_array(),
+            rays,
+            lights,
+        }
+    }
+}
+
+fn object_name(world: &World, index: usize) -> String {
+    world
+        .objects
+        .get(index)
+        .map_or_else(|| format!("object {index}"), |o| o.name.clone())
+}
+
+/// The readable tree: the camera ray, then for each hit its terms, its lights with their
+/// shadow rays, and its mirror bounce, indented by depth.
+fn tree_text(world: &World, scene: &Scene, options: &RenderOptions, report: &PixelReport) -> String {
+    let name = |i: usize| object_name(world, i);
+    let light_name = |i: usize| {
+        scene.lights.get(i).map_or_else(
+            || format!("light {}", i + 1),
+            |l| format!("{} light {}", l.kind_name(), i + 1),
+        )
+    };
+    let (x, y) = report.pixel;
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "pixel ({x}, {y}) of {} x {}, centre ray, {}",
+        options.width,
+        options.height,
+        switches_text(options.switches)
+    );
+    let _ = writeln!(
+        out,
+        "colour {}   before clamping {}",
+        v(report.clamped),
+        v(report.unclamped)
+    );
+    let rays = traced_rays(report);
+    for bounce in &report.bounces {
+        let pad = "  ".repeat(bounce.depth as usize);
+        let own = rays
+            .iter()
+            .find(|r| r.depth == bounce.depth && r.kind != RayKind::Shadow);
+        if let Some(ray) = own {
+            let _ = writeln!(out, "{pad}{} ray {}", ray.kind.name(), ray_text(ray));
+        }
+        let Some(hit) = &bounce.hit else {
+            let _ = writeln!(out, "{pad}  misses: background {}", v(bounce.background));
+            continue;
+        };
+        let _ = writeln!(
+            out,
+            "{pad}  hits {} at t {:.6}: point {}, normal {}",
+            name(hit.object),
+            own.and_then(|r| r.t).unwrap_or(hit.t),
+            v(hit.p),
+            v(hit.n)
+        );
+        let _ = writeln!(out, "{pad}  ambient {}", v(bounce.ambient));
+        for (light, outcome, record) in bounce.light_outcomes() {
+            let mut line = format!("{pad}  {}: {}", light_name(light), outcome.text(&name));
+            if let Some(record) = record {
+                let _ = write!(
+                    line,
+                    ", n·l {:.4}, diffuse {}, specular {}",
+                    record.n_dot_l,
+                    v(record.diffuse),
+                    v(record.specular)
+                );
+            }
+            let _ = writeln!(out, "{line}");
+            let shadow = rays.iter().find(|r| {
+                r.kind == RayKind::Shadow && r.depth == bounce.depth && r.light == Some(light)
+            });
+            if let Some(ray) = shadow {
+                let _ = writeln!(out, "{pad}    shadow ray {}", shadow_end(ray, &name));
+            }
+        }
+        if let Some((km, reflected)) = bounce.reflection {
+            let _ = writeln!(
+                out,
+                "{pad}  mirror: km {} × reflected {} = {}",
+                v(km),
+                v(reflected),
+                v(km * reflected)
+            );
+        }
+        let _ = writeln!(out, "{pad}  colour {}", v(bounce.colour));
+    }
+    out
+}
+
+fn ray_text(ray: &TracedRay) -> String {
+    format!("from {} along {}", v(ray.origin), v(ray.direction))
+}
+
+fn shadow_end(ray: &TracedRay, name: &dyn Fn(usize) -> String) -> String {
+    let start = ray_text(ray);
+    match (ray.blocked_by, ray.t, ray.t_max) {
+        (Some(blocker), Some(t), _) => format!("{start}: blocked by {} at t {t:.6}", name(blocker)),
+        (Some(blocker), None, _) => format!("{start}: blocked by {}", name(blocker)),
+        (None, _, Some(t_max)) => format!("{start}: reaches the light at t {t_max:.6}"),
+        (None, _, None) => format!("{start}: nothing in the way"),
+    }
+}
+
+fn v(c: DVec3) -> String {
+    format!("({:.4}, {:.4}, {:.4})", c.x, c.y, c.z)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_pixel_is_two_whole_numbers() {
+        assert_eq!(parse_pixel("12,40"), Ok((12, 40)));
+        assert_eq!(parse_pixel(" 3 , 4 "), Ok((3, 4)));
+        for bad in ["12", "a,b", "-1,2", "1,2,3"] {
+            assert!(parse_pixel(bad).unwrap_err().contains("X,Y"), "{bad}");
+        }
+    }
+}
