@@ -54,13 +54,15 @@ fn to_dvec(p: Pos2) -> DVec2 {
 /// Draws the gizmos over the picture (projected through `view`, the camera the viewport
 /// shows) and handles their input and camera navigation. Returns whether a click was
 /// taken (a light or camera marker, a handle), so the viewport does not also pick an
-/// object under it.
+/// object under it. With `navigate_only` (inspect mode) no handle can be grabbed or
+/// clicked, but the view can still be orbited, panned and zoomed.
 pub fn gizmo_ui(
     ui: &mut egui::Ui,
     response: &Response,
     view: &ViewMapping,
     scene: &Scene,
     selection: &Selection,
+    navigate_only: bool,
     commands: &mut Vec<Command>,
 ) -> bool {
     let picture = *view.screen_from_image.to();
@@ -87,7 +89,12 @@ pub fn gizmo_ui(
     let elements = gizmo_elements(scene, selection, state.mode, view);
     let shapes = handle_shapes(&elements);
     let hit_shapes: Vec<HandleShape> = shapes.iter().map(|(s, _)| *s).collect();
-    let pick = |pos: Pos2| pick_handle(to_dvec(pos), &hit_shapes).map(|k| shapes[k].1);
+    let pick = |pos: Pos2| {
+        if navigate_only {
+            return None;
+        }
+        pick_handle(to_dvec(pos), &hit_shapes).map(|k| shapes[k].1)
+    };
 
     let modifiers = ctx.input(|i| i.modifiers);
     if response.drag_started() {

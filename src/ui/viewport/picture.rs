@@ -102,15 +102,15 @@ pub fn viewport_ui(
     if response.hovered() {
         ui.ctx().set_cursor_icon(egui::CursorIcon::Crosshair);
     }
-    let gizmo_took_click = !input.settings.inspect
-        && crate::ui::gizmo::drag::gizmo_ui(
-            ui,
-            &response,
-            &view,
-            scene,
-            input.selection,
-            commands,
-        );
+    let gizmo_took_click = crate::ui::gizmo::drag::gizmo_ui(
+        ui,
+        &response,
+        &view,
+        scene,
+        input.selection,
+        input.settings.inspect,
+        commands,
+    );
     let segments = screen_segments(
         &view,
         scene,
