@@ -136,6 +136,7 @@ pub fn viewport_ui(
             inspected_anchor(&view, scene, input.inspections, pixel).map(|pos| PixelAnchor {
                 pos,
                 viewport: outer,
+                screen: ui.ctx().content_rect(),
             })
         }),
     }

@@ -14,7 +14,8 @@ use crate::trace::{
 use crate::ui::panels::outliner::light_label;
 
 pub use window::{
-    FINAL_COLOUR_LABEL, InspectorView, PixelAnchor, pixel_inspector_ui, switches_text,
+    FINAL_COLOUR_LABEL, InspectorView, PixelAnchor, inspector_window_id, pixel_inspector_ui,
+    switches_text,
 };
 
 /// One pixel inspected in one scene with one set of switches.

@@ -14,31 +14,42 @@ pub use crate::trace::switches_text;
 
 /// Accessible name of the inspector window's final colour line.
 pub const FINAL_COLOUR_LABEL: &str = "final colour";
-/// The window's width, in points.
+/// The window's width and height, in points.
 const WIDTH: f32 = 400.0;
+const HEIGHT: f32 = 460.0;
 /// Space between the inspected pixel and the window.
 const GAP: f32 = 28.0;
 
-/// Where the inspected pixel is on screen, and the viewport the window stays beside it in.
+/// Where the inspected pixel is on screen, and the screen the window stays on.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PixelAnchor {
     /// The pixel's screen position.
     pub pos: Pos2,
-    /// The viewport's rectangle.
+    /// The viewport's rectangle (the window prefers to stay over it).
     pub viewport: Rect,
+    /// The whole window's content (the inspector may cover side panels rather than
+    /// the pixel).
+    pub screen: Rect,
 }
 
 impl PixelAnchor {
-    /// The window's top-left corner: right of the pixel when it fits, else left of it.
+    /// The window's top-left corner: right of the pixel when it fits in the viewport,
+    /// else left of it when that fits, else on the side with more room, never over the
+    /// pixel while the screen has room beside it.
     fn window_pos(&self) -> Pos2 {
         let right = self.pos.x + GAP;
+        let left = self.pos.x - GAP - WIDTH;
         let x = if right + WIDTH <= self.viewport.max.x {
             right
+        } else if left >= self.viewport.min.x {
+            left
+        } else if self.screen.max.x - self.pos.x >= self.pos.x - self.screen.min.x {
+            right.min(self.screen.max.x - WIDTH)
         } else {
-            (self.pos.x - GAP - WIDTH).max(self.viewport.min.x)
+            left.max(self.screen.min.x)
         };
-        let y = (self.pos.y - 80.0).clamp(self.viewport.min.y, self.viewport.max.y - 120.0);
-        Pos2::new(x, y.max(self.viewport.min.y))
+        let y = (self.pos.y - 80.0).min(self.screen.max.y - HEIGHT);
+        Pos2::new(x, y.max(self.screen.min.y))
     }
 }
 
@@ -56,14 +67,19 @@ pub struct InspectorView<'a> {
     pub anchor: Option<PixelAnchor>,
 }
 
+/// The inspector window's id (its area's, in egui's memory).
+#[must_use]
+pub fn inspector_window_id() -> Id {
+    Id::unique("raylab pixel inspector")
+}
+
 /// Shows the inspector window; closing it pushes [`Command::InspectPixel`]`(None)`.
 pub fn pixel_inspector_ui(ctx: &egui::Context, view: &InspectorView, commands: &mut Vec<Command>) {
-    let id = Id::unique("raylab pixel inspector");
+    let id = inspector_window_id();
     let placed_for = ctx.data(|d| d.get_temp::<(u32, u32)>(id.with("placed")));
     let mut window = egui::Window::new("Pixel inspector")
         .id(id)
-        .default_width(WIDTH)
-        .default_height(460.0)
+        .default_size([WIDTH, HEIGHT])
         .resizable(true);
     // A new pixel: the window moves beside it (and stays where the user puts it after).
     if placed_for != Some(view.pixel)
@@ -78,7 +94,7 @@ pub fn pixel_inspector_ui(ctx: &egui::Context, view: &InspectorView, commands: &
         // A scroll position of its own per pixel: each new pixel opens at the top.
         egui::ScrollArea::vertical()
             .id_salt(("inspector scroll", view.pixel))
-            .auto_shrink([false, true])
+            .auto_shrink([true, false])
             .show(ui, |ui| {
                 scroll_from_anywhere(ui, window_rect);
                 contents_ui(ui, view, commands);
@@ -289,21 +305,24 @@ mod tests {
     #[test]
     fn the_window_sits_beside_the_pixel_on_the_side_with_room() {
         let viewport = Rect::from_min_size(Pos2::new(200.0, 80.0), Vec2::new(800.0, 600.0));
-        let left = PixelAnchor {
-            pos: Pos2::new(300.0, 300.0),
+        let screen = Rect::from_min_size(Pos2::ZERO, Vec2::new(1280.0, 800.0));
+        let at = |x: f32| PixelAnchor {
+            pos: Pos2::new(x, 300.0),
             viewport,
+            screen,
         };
-        let p = left.window_pos();
-        assert!(p.x > 300.0, "right of a pixel on the left");
-        let right = PixelAnchor {
-            pos: Pos2::new(900.0, 300.0),
-            viewport,
+        assert!(at(300.0).window_pos().x > 300.0, "right of a pixel on the left");
+        assert!(at(900.0).window_pos().x + WIDTH < 900.0, "left of a pixel on the right");
+        // In the middle of a viewport too narrow for either side: over a side panel.
+        let narrow = Rect::from_min_size(Pos2::new(230.0, 80.0), Vec2::new(700.0, 600.0));
+        let middle = PixelAnchor {
+            viewport: narrow,
+            ..at(600.0)
         };
-        let q = right.window_pos();
-        assert!(q.x + WIDTH < 900.0, "left of a pixel on the right");
-        for (anchor, pos) in [(left, p), (right, q)] {
-            let window = Rect::from_min_size(pos, Vec2::new(WIDTH, 300.0));
-            assert!(!window.contains(anchor.pos), "not over the pixel");
+        for anchor in [at(300.0), at(900.0), middle] {
+            let window = Rect::from_min_size(anchor.window_pos(), Vec2::new(WIDTH, HEIGHT));
+            assert!(!window.contains(anchor.pos), "not over the pixel: {window:?}");
+            assert!(screen.contains_rect(window), "on screen: {window:?}");
         }
     }
 }

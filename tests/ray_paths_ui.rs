@@ -1,0 +1,128 @@
+//! The ray-path overlay in the editor, through egui_kittest: an inspected pixel's rays
+//! are drawn from the record, a pin keeps a pixel's rays, row mode traces a row,
+//! hovering a segment shows its numbers, and each ray kind can be switched off.
+
+mod view_harness;
+
+use egui::{Modifiers, Vec2};
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use raylab::gizmo::ray_paths::SegmentKind;
+use raylab::trace::RayKind;
+use raylab::ui::EditorApp;
+use raylab::ui::viewport::ray_paths::{MAX_SPAN_PIXELS, RaySpan, ScreenSegment};
+use view_harness::{
+    click, harness, object_on_screen, orbit, press, scene_pixel, segments, toggle,
+};
+
+/// Inspects the pixel over scene object `index` (in camera view); returns the pixel.
+fn inspect_object(harness: &mut Harness<'_, EditorApp>, index: usize) -> (u32, u32) {
+    let origin = harness.state().scene().objects[index]
+        .transform
+        .world_from_object()
+        .translation;
+    let pixel = scene_pixel(harness, origin);
+    let pos = object_on_screen(harness, index);
+    click(harness, pos, Modifiers::ALT);
+    assert_eq!(harness.state().inspected_pixel(), Some(pixel));
+    pixel
+}
+
+fn drawn_pixels(segments: &[ScreenSegment]) -> Vec<(u32, u32)> {
+    let mut pixels: Vec<_> = segments.iter().map(|s| s.pixel).collect();
+    pixels.dedup();
+    pixels
+}
+
+#[test]
+fn a_pin_keeps_a_pixels_rays_and_row_mode_traces_the_row() {
+    let mut harness = harness("pins", false);
+    let ball = inspect_object(&mut harness, 1);
+    assert_eq!(drawn_pixels(&segments(&harness)), vec![ball]);
+    press(&mut harness, "Pin");
+    assert_eq!(harness.state().ray_paths().pinned, vec![ball]);
+    harness.get_by_label("Unpin");
+
+    let boxed = inspect_object(&mut harness, 3);
+    let drawn = drawn_pixels(&segments(&harness));
+    assert!(drawn.contains(&ball) && drawn.contains(&boxed), "{drawn:?}");
+    assert!(
+        segments(&harness)
+            .iter()
+            .all(|s| s.inspected == (s.pixel == boxed)),
+        "the pinned pixel is drawn fainter"
+    );
+
+    press(&mut harness, "rays of the row");
+    assert_eq!(harness.state().ray_paths().span, RaySpan::Row);
+    let traced: Vec<(u32, u32)> = harness.state().inspections().iter().map(|i| i.pixel).collect();
+    let row = traced.iter().filter(|p| p.1 == boxed.1).count();
+    assert!(row > MAX_SPAN_PIXELS as usize / 2 && row <= MAX_SPAN_PIXELS as usize + 1, "{row}");
+    assert!(traced.contains(&ball), "pins stay");
+
+    press(&mut harness, "Clear pins");
+    assert!(harness.state().ray_paths().pinned.is_empty());
+    assert!(!harness.state().scene().objects.is_empty() && !harness.state().is_dirty());
+}
+
+/// The midpoint of the longest drawn segment of `kind` of the inspected pixel.
+fn midpoint_of(harness: &Harness<'_, EditorApp>, kind: SegmentKind) -> egui::Pos2 {
+    let all = segments(harness);
+    let segment = all
+        .iter()
+        .filter(|s| s.inspected && s.segment.kind == kind)
+        .max_by(|a, b| a.from.distance(a.to).total_cmp(&b.from.distance(b.to)))
+        .unwrap_or_else(|| panic!("no {kind:?} drawn"));
+    segment.from + (segment.to - segment.from) * 0.5
+}
+
+fn hover(harness: &mut Harness<'_, EditorApp>, pos: egui::Pos2) {
+    harness.event(egui::Event::PointerMoved(pos));
+    harness.run_ok();
+}
+
+#[test]
+fn hovering_a_segment_shows_its_numbers_and_each_kind_can_be_hidden() {
+    let mut harness = harness("hover", false);
+    let ball = inspect_object(&mut harness, 1);
+    // Look at the rays from the side: the camera ray is a line, not a point.
+    orbit(&mut harness, Vec2::new(140.0, 30.0));
+    assert!(!harness.state().view_camera().through_scene_camera);
+
+    let primary = midpoint_of(&harness, SegmentKind::Ray(RayKind::Primary));
+    hover(&mut harness, primary);
+    let (x, y) = ball;
+    harness.get_by_label(&format!("primary ray · pixel ({x}, {y}) · depth 0"));
+    harness.get_by_label_contains("hits red ball at t");
+    let camera = harness.state().scene().camera.position;
+    let origin = format!("origin ({:.4}, {:.4}, {:.4})", camera.x, camera.y, camera.z);
+    harness.get_by_label(&origin);
+
+    let shadow = midpoint_of(&harness, SegmentKind::Ray(RayKind::Shadow));
+    hover(&mut harness, shadow);
+    harness.get_by_label_contains("shadow ray · pixel");
+    harness.get_by_label_contains("towards");
+
+    toggle(&mut harness, "shadow rays");
+    assert!(!harness.state().ray_paths().shadow);
+    assert!(
+        segments(&harness)
+            .iter()
+            .all(|s| !matches!(s.segment.kind, SegmentKind::Ray(RayKind::Shadow) | SegmentKind::Unreached(_))),
+        "no shadow rays drawn"
+    );
+    hover(&mut harness, shadow);
+    assert!(harness.query_by_label_contains("shadow ray · pixel").is_none());
+
+    toggle(&mut harness, "primary rays");
+    toggle(&mut harness, "normals");
+    assert!(
+        segments(&harness)
+            .iter()
+            .all(|s| s.segment.kind == SegmentKind::Ray(RayKind::Reflection)),
+        "only the mirror rays are left"
+    );
+    toggle(&mut harness, "shadow rays");
+    assert!(harness.state().ray_paths().shadow);
+    assert_eq!(harness.state().scene().camera.position, camera, "looking is not editing");
+}
