@@ -253,16 +253,56 @@ fn default_intensity() -> f64 {
     1.0
 }
 
+/// The four kinds of light, without their values: for menus, messages and importers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LightKind {
+    /// [`Light::Ambient`].
+    Ambient,
+    /// [`Light::Point`].
+    Point,
+    /// [`Light::Directional`].
+    Directional,
+    /// [`Light::Spot`].
+    Spot,
+}
+
+impl LightKind {
+    /// Every kind, in menu order.
+    pub const ALL: [LightKind; 4] = [
+        LightKind::Ambient,
+        LightKind::Point,
+        LightKind::Directional,
+        LightKind::Spot,
+    ];
+
+    /// The kind's name, as in files: the variant name of [`Light`].
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            LightKind::Ambient => "Ambient",
+            LightKind::Point => "Point",
+            LightKind::Directional => "Directional",
+            LightKind::Spot => "Spot",
+        }
+    }
+}
+
 impl Light {
+    /// Which kind of light this is.
+    #[must_use]
+    pub fn kind(&self) -> LightKind {
+        match self {
+            Light::Ambient { .. } => LightKind::Ambient,
+            Light::Point { .. } => LightKind::Point,
+            Light::Directional { .. } => LightKind::Directional,
+            Light::Spot { .. } => LightKind::Spot,
+        }
+    }
+
     /// The kind's name, as in files and menus.
     #[must_use]
     pub fn kind_name(&self) -> &'static str {
-        match self {
-            Light::Ambient { .. } => "Ambient",
-            Light::Point { .. } => "Point",
-            Light::Directional { .. } => "Directional",
-            Light::Spot { .. } => "Spot",
-        }
+        self.kind().name()
     }
 
     /// The light's colour, before `intensity`.

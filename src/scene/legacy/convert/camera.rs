@@ -15,11 +15,65 @@
 //! That is exact when M is a rotation, a translation and a uniform scale; a non-uniform
 //! scale, a shear or a mirror of the camera bends the legacy rays in ways a pinhole
 //! camera cannot, which [`camera_distortion`] detects so the import can warn.
+//!
+//! Only the last Camera block counts; without one, the legacy unit camera is used.
 
-use glam::DAffine3;
-use glam::DVec3;
+use glam::{DAffine3, DVec3};
 
-use crate::scene::Camera;
+use super::super::syntax::{At, Item, TransformStep};
+use super::Converter;
+use super::transform::compose;
+use crate::scene::{Camera, Scene};
+
+/// Focal length of the unit camera used when a file has no Camera block.
+pub const DEFAULT_FOCAL_LENGTH: f64 = 1.0;
+
+impl Converter<'_> {
+    /// A Camera block; a later one replaces it, with a warning.
+    pub(super) fn camera_block(
+        &mut self,
+        focal_length: f64,
+        transforms: &[Item<TransformStep>],
+        at: &At,
+    ) {
+        if let Some((_, _, previous)) = &self.camera {
+            let line = previous.line;
+            self.warn(
+                at.line,
+                format!("this Camera replaces the one at line {line}"),
+            );
+        }
+        let world_from_camera = compose(transforms.iter().map(|t| &t.value));
+        self.camera = Some((focal_length, world_from_camera, at.clone()));
+    }
+
+    /// The scene camera, with a warning for what a pinhole camera cannot reproduce.
+    pub(super) fn camera(&mut self) -> Camera {
+        let (width, height) = self.render_size;
+        let Some((focal_length, world_from_camera, at)) = self.camera.clone() else {
+            self.warnings.push(
+                "no Camera block: the legacy unit camera is used (at the origin, looking \
+                 along +Z, focal length 1)"
+                    .to_owned(),
+            );
+            return scene_camera(DEFAULT_FOCAL_LENGTH, &DAffine3::IDENTITY, width, height);
+        };
+        if camera_distortion(&world_from_camera) {
+            self.warn(
+                at.line,
+                "the camera's transform scales unevenly, shears or mirrors; the import keeps \
+                 its position, view direction and up, so the picture may differ",
+            );
+        }
+        let camera = scene_camera(focal_length, &world_from_camera, width, height);
+        let fragment = Scene {
+            camera: camera.clone(),
+            ..Scene::empty()
+        };
+        self.check(&fragment, &at, "this camera cannot be imported");
+        camera
+    }
+}
 
 /// The scene camera for a legacy camera of focal length `focal_length`, placed by
 /// `world_from_camera`, rendering `width` x `height` pixels.
