@@ -1,6 +1,6 @@
 //! raylab's picture split into channels, pixel by pixel: every camera sample traced once
-//! through the tracer with the [`SampleRecorder`] listening, plus, for the objects that
-//! might be missing in the other picture, the same sample traced without them.
+//! through the tracer with the [`SampleRecorder`] listening (which also traces each ray
+//! again without the object it hit, for the objects that might be missing).
 //!
 //! Stored pixel-major (compressed rows): pixel `p`'s channels are
 //! `entries[offsets[p]..offsets[p + 1]]`, sorted by channel.
@@ -10,13 +10,12 @@ use std::sync::atomic::Ordering;
 use glam::{DVec2, DVec3};
 use rayon::prelude::*;
 
-use super::bugs::Part;
-use super::channels::{ChannelSpace, Kind};
+use super::channels::ChannelSpace;
 use super::recorder::{Context, SampleRecorder, Tally};
 use crate::scene::Scene;
 use crate::trace::sampling::Strata;
 use crate::trace::{
-    Image, NoRecorder, PinholeCamera, RayCounts, RenderProgress, TermSwitches, Tracer, View,
+    Image, PinholeCamera, RayCounts, RenderProgress, TermSwitches, Tracer, View,
     World,
 };
 
@@ -112,12 +111,12 @@ pub fn render_components(
     spp: u32,
     progress: &RenderProgress,
 ) -> Option<Components> {
-    let ctx = Context::new(world, scene.lights.len());
-    let space = ctx.space;
     let without: Vec<Option<World>> = (0..world.objects.len())
         .into_par_iter()
         .map(|i| (i < MAX_MISSING_OBJECTS).then(|| world_without(scene, i)).flatten())
         .collect();
+    let ctx = Context::new(world, scene.lights.len(), without);
+    let space = ctx.space;
     let camera = PinholeCamera::new(&world.camera, width, height);
     let spp = spp.max(1);
     progress.tiles_total.store(height as usize, Ordering::Relaxed);
@@ -128,7 +127,7 @@ pub fn render_components(
             if progress.is_cancelled() {
                 return None;
             }
-            let row = render_row(&ctx, &without, &camera, width, y, spp);
+            let row = render_row(&ctx, &camera, width, y, spp);
             progress.tiles_done.fetch_add(1, Ordering::Relaxed);
             Some(row)
         })
@@ -171,7 +170,6 @@ pub fn render_components(
 
 fn render_row(
     ctx: &Context,
-    without: &[Option<World>],
     camera: &PinholeCamera,
     width: u32,
     y: u32,
@@ -206,17 +204,6 @@ fn render_row(
             sum += colour;
             let hit = recorder.primary_hit();
             labels.push(hit.map_or(MISS, |h| h.object as u32));
-            if let Some(hit) = hit
-                && let Some(Some(other_world)) = without.get(hit.object)
-            {
-                let part = Part::at(&ctx.world.objects[hit.object], &hit, ray.dir);
-                let tracer = Tracer::new(other_world, TermSwitches::ALL_ON, View::Beauty);
-                let seen = tracer.trace_primary(&ray, &mut RayCounts::default(), &mut NoRecorder);
-                if seen.is_finite() {
-                    let channel = ctx.space.id(Kind::Missing(part), Some(hit.object));
-                    recorder.tally.add(channel, seen - colour);
-                }
-            }
             pixel.absorb(&recorder.tally);
         }
         row.beauty.push((sum * scale).to_array());

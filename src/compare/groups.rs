@@ -151,31 +151,35 @@ impl Groups {
             )
     }
 
-    /// Each group's inner product with the current residual.
+    /// Each group's inner product with the current residual, and the residual's squared
+    /// norm.
     #[must_use]
-    pub fn correlations(&self, components: &Components, target: &Target, state: &FitState) -> Vec<f64> {
-        let by_channel = channel_correlations(components, target, state);
-        self.list
+    pub fn correlations(&self, components: &Components, target: &Target, state: &FitState) -> (Vec<f64>, f64) {
+        let (by_channel, energy) = channel_correlations(components, target, state);
+        let by_group = self
+            .list
             .iter()
             .map(|g| g.members.iter().map(|&c| by_channel[c as usize]).sum())
-            .collect()
+            .collect();
+        (by_group, energy)
     }
 }
 
-/// Each channel's inner product with the residual.
-fn channel_correlations(components: &Components, target: &Target, state: &FitState) -> Vec<f64> {
+/// Each channel's inner product with the residual, and the residual's squared norm.
+fn channel_correlations(components: &Components, target: &Target, state: &FitState) -> (Vec<f64>, f64) {
     let channels = components.space.count();
     let pixels = components.labels.len();
     let chunk = 8192;
-    (0..pixels.div_ceil(chunk))
+    let mut sums: Vec<f64> = (0..pixels.div_ceil(chunk))
         .into_par_iter()
         .map(|c| {
-            let mut sums = vec![0.0; channels];
+            let mut sums = vec![0.0; channels + 1];
             for p in c * chunk..((c + 1) * chunk).min(pixels) {
                 let r = state.residual(target, p);
                 if r == [0.0; 3] {
                     continue;
                 }
+                sums[channels] += r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
                 for entry in components.pixel(p) {
                     let v = entry.value;
                     sums[entry.channel as usize] += r[0] * f64::from(v[0])
@@ -186,10 +190,12 @@ fn channel_correlations(components: &Components, target: &Target, state: &FitSta
             sums
         })
         .reduce(
-            || vec![0.0; channels],
+            || vec![0.0; channels + 1],
             |mut a, b| {
                 a.iter_mut().zip(b).for_each(|(x, y)| *x += y);
                 a
             },
-        )
+        );
+    let energy = sums.pop().unwrap_or(0.0);
+    (sums, energy)
 }

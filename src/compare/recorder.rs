@@ -9,12 +9,15 @@
 
 use glam::DVec3;
 
-use super::bugs::{ClampBug, LocalLight, NormalBug, SpecularBug, local_terms};
+use super::bugs::{ClampBug, LocalLight, NormalBug, Part, SpecularBug, local_terms};
 use super::channels::{ChannelSpace, Kind};
 use crate::scene::{Material, Shape};
 use crate::trace::lights::LightSample;
 use crate::trace::spawn::{spawn_ray, spawn_ray_to};
-use crate::trace::{LightRecord, Ray, Recorder, SurfacePoint, World};
+use crate::trace::{
+    LightRecord, NoRecorder, Ray, RayCounts, Recorder, SurfacePoint, TermSwitches, Tracer, View,
+    World,
+};
 
 /// Per-channel colour sums of one sample or one pixel: a short list, channels unique.
 #[derive(Clone, Debug, Default)]
@@ -51,12 +54,16 @@ pub struct Context<'w> {
     pub space: ChannelSpace,
     /// For each scene light index, its index among the world's non-ambient lights.
     pub world_light: Vec<Option<usize>>,
+    /// For each object, the world without it (for the first few objects), to see what
+    /// a ray would meet if the object were missing.
+    pub without: Vec<Option<World>>,
 }
 
 impl<'w> Context<'w> {
-    /// The context of `world` with `scene_lights` lights in the scene's list.
+    /// The context of `world` with `scene_lights` lights in the scene's list, and
+    /// `without[o]` the world without object `o` (or `None` not to try it missing).
     #[must_use]
-    pub fn new(world: &'w World, scene_lights: usize) -> Self {
+    pub fn new(world: &'w World, scene_lights: usize, without: Vec<Option<World>>) -> Self {
         let mut world_light = vec![None; scene_lights];
         for (index, &scene_index) in world.light_scene_index.iter().enumerate() {
             world_light[scene_index] = Some(index);
@@ -68,6 +75,7 @@ impl<'w> Context<'w> {
                 objects: world.objects.len(),
             },
             world_light,
+            without,
         }
     }
 
@@ -81,6 +89,7 @@ impl<'w> Context<'w> {
 struct Bounce {
     object: Option<usize>,
     hit: Option<SurfacePoint>,
+    ray: Ray,
     ray_dir: DVec3,
     /// Product of the mirror colours of the bounces before this one.
     throughput: DVec3,
@@ -141,6 +150,7 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
         self.chain.push(Bounce {
             object: hit.map(|h| h.object),
             hit,
+            ray: *ray,
             ray_dir: ray.dir,
             throughput,
             mirror: None,
@@ -218,6 +228,24 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
     }
 }
 
+impl SampleRecorder<'_, '_> {
+    /// What the ray of `bounce` would return if the object it hit were missing (traced
+    /// again in the world without it), as a change of the pixel.
+    fn missing(&mut self, bounce: &Bounce, colour: DVec3) {
+        let Some(hit) = bounce.hit else { return };
+        let Some(Some(world)) = self.ctx.without.get(hit.object) else {
+            return;
+        };
+        let tracer = Tracer::new(world, TermSwitches::ALL_ON, View::Beauty);
+        let seen = tracer.trace_primary(&bounce.ray, &mut RayCounts::default(), &mut NoRecorder);
+        if seen.is_finite() {
+            let part = Part::at(&self.ctx.world.objects[hit.object], &hit, bounce.ray_dir);
+            let channel = self.channel(Kind::Missing(part), hit.object);
+            self.tally.add(channel, bounce.throughput * (seen - colour));
+        }
+    }
+}
+
 impl Recorder for SampleRecorder<'_, '_> {
     fn hit(&mut self, depth: u32, ray: &Ray, hit: &SurfacePoint) {
         self.push(depth, ray, Some(*hit));
@@ -283,14 +311,19 @@ impl Recorder for SampleRecorder<'_, '_> {
                 .map(|(km, _)| (km, self.chain[d + 1].clamped[i]));
             self.chain[d].clamped[i] = bug.combine(local, mirror);
         }
-        if d == 0 {
-            if let Some(object) = bounce.object {
-                for (i, bug) in ClampBug::ALL.into_iter().enumerate() {
-                    // Unclamped: the model adds the change before its own final clamp.
-                    let change = self.chain[0].clamped[i] - colour;
-                    self.tally.add(self.channel(Kind::Clamp(bug), object), change);
+        if d == 0
+            && let Some(object) = bounce.object
+        {
+            let clamp = |c: DVec3| c.clamp(DVec3::ZERO, DVec3::ONE);
+            for (i, bug) in ClampBug::ALL.into_iter().enumerate() {
+                // Only where the written pixel changes; unclamped, as the model adds the
+                // change before its own final clamp.
+                let bugged = self.chain[0].clamped[i];
+                if clamp(bugged) != clamp(colour) {
+                    self.tally.add(self.channel(Kind::Clamp(bug), object), bugged - colour);
                 }
             }
         }
+        self.missing(&bounce, colour);
     }
 }

@@ -5,8 +5,8 @@
 //! clipping and rounding count). Bugs and missing parts must fit with a weight near 1
 //! (the bug is there or not); term factors may take any value >= 0.
 //!
-//! The next-best group that would tell a *different* story (another term, bug, light or
-//! object) measures how sure the verdict is.
+//! The best group that would tell a *different* story (another term, bug, light or
+//! object) about the same pixels measures how sure the verdict is.
 
 use rayon::prelude::*;
 
@@ -34,8 +34,9 @@ pub struct Step {
     pub coefficient: f64,
     /// How much the interval error fell.
     pub gain: f64,
-    /// The best linear gain of a group with a different verdict, over this one's.
-    pub rival_ratio: f64,
+    /// How much better this step explains the difference than its best competitor, 0
+    /// to 1 (see [`margin`]).
+    pub margin: f64,
     /// Pixels the change moved by at least half an 8-bit level.
     pub pixels: Vec<u32>,
     /// Squared size of the change on each object.
@@ -91,7 +92,13 @@ fn fit(group: &Group, correlation: f64, norm: f64, scale: &[f64]) -> Option<(f64
     };
     let c = free.clamp(lo, hi);
     let gain = 2.0 * c * correlation - c * c * norm;
-    (c != 0.0 && gain > 0.0).then_some((c, gain))
+    // A bug is there or not: it is ranked by what it explains at weight 1.
+    let rank_gain = if !is_term(group.family) && group.family != Family::Shadow && highest == 0.0 {
+        2.0 * correlation - norm
+    } else {
+        gain
+    };
+    (c != 0.0 && rank_gain > 0.0).then_some((c, rank_gain))
 }
 
 /// A channel's scale in raylab's own picture: 1 for its terms, 0 for the changes.
@@ -163,6 +170,48 @@ fn change_of(components: &Components, group: &Group, c: f64) -> Change {
     all
 }
 
+/// The groups' fitted coefficients and ranking gains on the current residual, best first.
+fn rank(groups: &Groups, correlations: &[f64], norms: &[f64], scale: &[f64]) -> Vec<(usize, f64, f64)> {
+    let mut ranked: Vec<(usize, f64, f64)> = groups
+        .list
+        .iter()
+        .enumerate()
+        .filter_map(|(i, g)| fit(g, correlations[i], norms[i], scale).map(|(c, gain)| (i, c, gain)))
+        .collect();
+    ranked.sort_by(|a, b| b.2.total_cmp(&a.2));
+    ranked
+}
+
+/// How sure a step is against its best competitor: the groups telling another story
+/// whose gain the step took (it fell by half or more once the step was applied; a group
+/// that keeps its gain explains something else). With `g` the step's gain, `g_r` the
+/// competitor's and `e` the residual energy before the step, `(g - g_r) / (e - g_r)`:
+/// how much better the step explains what the competitor leaves.
+fn margin(
+    groups: &Groups,
+    chosen: usize,
+    before: &[(usize, f64, f64)],
+    after: &[(usize, f64, f64)],
+    energy: f64,
+) -> f64 {
+    let gain = before.iter().find(|r| r.0 == chosen).map_or(0.0, |r| r.2);
+    let rival = before
+        .iter()
+        .filter(|r| r.0 != chosen && !compatible(&groups.list[chosen], &groups.list[r.0]))
+        .filter(|r| {
+            let kept = after.iter().find(|a| a.0 == r.0).map_or(0.0, |a| a.2);
+            kept < 0.5 * r.2
+        })
+        .map(|r| r.2)
+        .fold(0.0, f64::max);
+    let left = energy - rival;
+    if left <= 0.0 {
+        0.0
+    } else {
+        ((gain - rival) / left).clamp(0.0, 1.0)
+    }
+}
+
 /// Runs the search on `state` (changed in place), keeping steps that lower the error by
 /// at least `floor`.
 #[must_use]
@@ -173,17 +222,11 @@ pub fn search(components: &Components, groups: &Groups, target: &Target, state: 
         .map(|c| initial_scale(components.space.decode(c).0))
         .collect();
     let mut steps = Vec::new();
+    let (mut correlations, mut energy) = groups.correlations(components, target, state);
     while steps.len() < MAX_STEPS && state.total > floor {
-        let correlations = groups.correlations(components, target, state);
-        let mut ranked: Vec<(usize, f64, f64)> = groups
-            .list
-            .iter()
-            .enumerate()
-            .filter_map(|(i, g)| fit(g, correlations[i], norms[i], &scale).map(|(c, gain)| (i, c, gain)))
-            .collect();
-        ranked.sort_by(|a, b| b.2.total_cmp(&a.2));
+        let ranked = rank(groups, &correlations, &norms, &scale);
         let mut accepted = None;
-        for &(index, c, linear_gain) in ranked.iter().take(TRIES_PER_ROUND) {
+        for &(index, c, _) in ranked.iter().take(TRIES_PER_ROUND) {
             let group = &groups.list[index];
             let change = change_of(components, group, c);
             let before = state.total;
@@ -192,30 +235,28 @@ pub fn search(components: &Components, groups: &Groups, target: &Target, state: 
             }
             let gain = before - state.total;
             if gain >= floor {
-                let rival = ranked
-                    .iter()
-                    .filter(|r| !compatible(group, &groups.list[r.0]))
-                    .map(|r| r.2)
-                    .fold(0.0, f64::max);
-                accepted = Some((index, c, gain, rival / linear_gain, change));
+                accepted = Some((index, c, gain, change));
                 break;
             }
             for &(p, d) in &change.pixels {
                 state.add(target, p, d.map(|x| -x));
             }
         }
-        let Some((index, c, gain, rival_ratio, change)) = accepted else {
+        let Some((index, c, gain, change)) = accepted else {
             break;
         };
         for &m in &groups.list[index].members {
             scale[m as usize] += c;
         }
+        let energy_before = energy;
+        (correlations, energy) = groups.correlations(components, target, state);
+        let after = rank(groups, &correlations, &norms, &scale);
         let half_level = 0.5 / 255.0;
         steps.push(Step {
             group: index,
             coefficient: c,
             gain,
-            rival_ratio: rival_ratio.min(1.0),
+            margin: margin(groups, index, &ranked, &after, energy_before),
             pixels: change
                 .pixels
                 .iter()

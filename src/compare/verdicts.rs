@@ -3,12 +3,13 @@
 //! for lights), steps that say the same merged, and each given its confidence:
 //!
 //! ```text
-//! confidence = (1 - rival) * (1 - |1 - weight|)   for bugs and missing parts
-//! confidence = (1 - rival)                        for term factors
+//! confidence = margin * (1 - |1 - weight|)   for bugs and missing parts
+//! confidence = margin                        for term factors
 //! ```
 //!
-//! where `rival` is the best linear gain of a group telling another story over the
-//! chosen group's (0: nothing else comes close; 1: a rival explains as much).
+//! where `margin` is how much better the step explains the difference than its best
+//! competitor ([`super::search::Step::margin`]: 1 when nothing else explains those
+//! pixels, 0 when a competitor explains them as well).
 
 use super::channels::Family;
 use super::components::Components;
@@ -18,8 +19,8 @@ use super::search::Step;
 use crate::scene::Scene;
 use crate::trace::World;
 
-/// The share of a change on one object (or light) above which it is named.
-const NAMED: f64 = 0.98;
+/// The share of a change on one object above which the object is named.
+const NAMED: f64 = 0.995;
 
 /// The single index holding at least [`NAMED`] of the energy, if one does.
 fn concentrated(energy: &[f64]) -> Option<usize> {
@@ -75,22 +76,15 @@ pub fn explain_steps(
             [acc[0] + s[0], acc[1] + s[1]]
         });
         let (term, cause) = term_and_cause(group.family, split, group.part);
-        let world_light = group.light.or(if matches!(
-            group.family,
-            Family::Diffuse | Family::Specular | Family::Shadow
-        ) {
-            concentrated(&step.energy_by_light)
-        } else {
-            None
-        });
-        let light = world_light.map(|l| world.light_scene_index[l]);
+        // Lights are named only by the group: every light is every light, even where
+        // one of them dominates.
+        let light = group.light.map(|l| world.light_scene_index[l]);
         let object = group.object.or_else(|| concentrated(&step.energy_by_object));
         let is_bug = !matches!(cause, Cause::Factor);
-        let rival = 1.0 - step.rival_ratio;
         let confidence = if is_bug {
-            rival * (1.0 - (1.0 - step.coefficient).abs()).max(0.0)
+            step.margin * (1.0 - (1.0 - step.coefficient).abs()).max(0.0)
         } else {
-            rival
+            step.margin
         };
         let found = out.iter_mut().find(|(e, _)| {
             e.term == term && e.cause == cause && e.light == light && e.object == object
