@@ -188,5 +188,8 @@ fn print_tables(report: &BenchReport) {
         "intersection kernel, {} rays x 8 spheres: f32 {:.1} ns/ray, f64 {:.1} ns/ray, f64/f32 = {:.2}",
         p.rays, p.f32_ns_per_ray, p.f64_ns_per_ray, p.f64_over_f32
     );
-    println!("diff of a 500x500 scene (5 objects, 3 lights): {:.1} ms", report.diff_500_ms);
+    println!(
+        "diff of a 500x500 scene (5 objects, 3 lights): {:.1} ms",
+        report.diff_500_ms
+    );
 }

@@ -34,7 +34,10 @@ pub struct DiffArgs {
 /// # Errors
 /// The loader's message, naming the file.
 pub fn load_any_scene(path: &Path) -> Result<Scene, String> {
-    if path.extension().is_some_and(|x| x.eq_ignore_ascii_case("txt")) {
+    if path
+        .extension()
+        .is_some_and(|x| x.eq_ignore_ascii_case("txt"))
+    {
         let import = import_legacy_file(path).map_err(|e| e.to_string())?;
         for warning in &import.warnings {
             eprintln!("warning: {}: {warning}", path.display());

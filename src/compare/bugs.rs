@@ -129,16 +129,19 @@ impl SpecularBug {
                 "the specular term used the wrong reflected vector, l - 2(n.l)n instead of 2(n.l)n - l"
             }
             SpecularBug::HalfVector => "the specular term used Blinn's half vector instead of r.v",
-            SpecularBug::NoMaxBeforePower => {
-                "the specular term took the power before max(0, r.v)"
-            }
+            SpecularBug::NoMaxBeforePower => "the specular term took the power before max(0, r.v)",
         }
     }
 
     /// The specular term under the bug for a visible light with n.l > 0.
     #[must_use]
     pub fn specular(self, material: &Material, light: &LocalLight) -> DVec3 {
-        let LocalLight { n, to_light, view, strength } = *light;
+        let LocalLight {
+            n,
+            to_light,
+            view,
+            strength,
+        } = *light;
         let s = material.shininess;
         let lobe = match self {
             SpecularBug::NegatedReflection => {
@@ -195,7 +198,9 @@ impl ClampBug {
             ClampBug::LocalBeforeReflection => {
                 "colour was clamped per ray before the reflection was added"
             }
-            ClampBug::EveryRay => "each reflected ray's colour was clamped before the mirror scaled it",
+            ClampBug::EveryRay => {
+                "each reflected ray's colour was clamped before the mirror scaled it"
+            }
         }
     }
 
@@ -244,8 +249,8 @@ impl Part {
     /// The part of `object` that `hit` (made by a ray along `ray_dir`) lies on.
     #[must_use]
     pub fn at(object: &WorldObject, hit: &SurfacePoint, ray_dir: DVec3) -> Part {
-        let n_object = (object.world_from_object.matrix3.transpose() * hit.n_outward)
-            .normalize_or_zero();
+        let n_object =
+            (object.world_from_object.matrix3.transpose() * hit.n_outward).normalize_or_zero();
         match object.shape {
             Shape::Sphere | Shape::Cube => Part::Whole,
             Shape::Plane if hit.n_outward.dot(ray_dir) < 0.0 => Part::Front,

@@ -15,8 +15,7 @@ use super::recorder::{Context, SampleRecorder, Tally};
 use crate::scene::Scene;
 use crate::trace::sampling::Strata;
 use crate::trace::{
-    Image, PinholeCamera, RayCounts, RenderProgress, TermSwitches, Tracer, View,
-    World,
+    Image, PinholeCamera, RayCounts, RenderProgress, TermSwitches, Tracer, View, World,
 };
 
 /// Objects beyond this many are not tried as missing (each needs a world of its own).
@@ -113,13 +112,19 @@ pub fn render_components(
 ) -> Option<Components> {
     let without: Vec<Option<World>> = (0..world.objects.len())
         .into_par_iter()
-        .map(|i| (i < MAX_MISSING_OBJECTS).then(|| world_without(scene, i)).flatten())
+        .map(|i| {
+            (i < MAX_MISSING_OBJECTS)
+                .then(|| world_without(scene, i))
+                .flatten()
+        })
         .collect();
     let ctx = Context::new(world, scene.lights.len(), without);
     let space = ctx.space;
     let camera = PinholeCamera::new(&world.camera, width, height);
     let spp = spp.max(1);
-    progress.tiles_total.store(height as usize, Ordering::Relaxed);
+    progress
+        .tiles_total
+        .store(height as usize, Ordering::Relaxed);
     progress.tiles_done.store(0, Ordering::Relaxed);
     let rows: Vec<Option<Row>> = (0..height)
         .into_par_iter()
@@ -168,13 +173,7 @@ pub fn render_components(
     Some(components)
 }
 
-fn render_row(
-    ctx: &Context,
-    camera: &PinholeCamera,
-    width: u32,
-    y: u32,
-    spp: u32,
-) -> Row {
+fn render_row(ctx: &Context, camera: &PinholeCamera, width: u32, y: u32, spp: u32) -> Row {
     let tracer = Tracer::new(ctx.world, TermSwitches::ALL_ON, View::Beauty);
     let strata = Strata::for_count(spp);
     let scale = 1.0 / f64::from(spp);
@@ -212,10 +211,11 @@ fn render_row(
         row.mixed.push(labels.iter().any(|&l| l != first));
         pixel.entries.sort_unstable_by_key(|(c, _)| *c);
         row.counts.push(pixel.entries.len() as u32);
-        row.entries.extend(pixel.entries.iter().map(|&(channel, v)| Entry {
-            channel,
-            value: (v * scale).as_vec3().to_array(),
-        }));
+        row.entries
+            .extend(pixel.entries.iter().map(|&(channel, v)| Entry {
+                channel,
+                value: (v * scale).as_vec3().to_array(),
+            }));
     }
     row.split = recorder.split;
     row

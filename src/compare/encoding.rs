@@ -131,8 +131,14 @@ mod tests {
         for c in [0.0, 0.1, 0.2001, 0.5, 0.73, 0.999, 1.0, 1.7] {
             let round = (c.clamp(0.0, 1.0) * 255.0_f64).round() as u8;
             let truncate = (c.clamp(0.0, 1.0) * 255.0_f64).floor() as u8;
-            assert_eq!(distance_outside(c, Encoding::LinearRound.interval(round)), 0.0);
-            assert_eq!(distance_outside(c, Encoding::LinearTruncate.interval(truncate)), 0.0);
+            assert_eq!(
+                distance_outside(c, Encoding::LinearRound.interval(round)),
+                0.0
+            );
+            assert_eq!(
+                distance_outside(c, Encoding::LinearTruncate.interval(truncate)),
+                0.0
+            );
         }
         assert!(distance_outside(0.5, Encoding::LinearRound.interval(120)) > 0.0);
     }
@@ -143,9 +149,15 @@ mod tests {
             .map(|i| [i as f64 / 300.0, (i as f64 * 0.37).fract(), 0.25])
             .collect();
         let encode = |f: fn(f64) -> f64| -> Vec<[u8; 3]> {
-            model.iter().map(|m| m.map(|c| f(c * 255.0) as u8)).collect()
+            model
+                .iter()
+                .map(|m| m.map(|c| f(c * 255.0) as u8))
+                .collect()
         };
         assert_eq!(detect(&model, &encode(f64::round)), Encoding::LinearRound);
-        assert_eq!(detect(&model, &encode(f64::floor)), Encoding::LinearTruncate);
+        assert_eq!(
+            detect(&model, &encode(f64::floor)),
+            Encoding::LinearTruncate
+        );
     }
 }

@@ -63,7 +63,13 @@ impl Groups {
         let lights: Vec<usize> = (0..space.lights).collect();
         for object in choices(objects) {
             add(Family::Ambient, None, object, None, vec![Kind::Ambient]);
-            add(Family::Reflection, None, object, None, vec![Kind::Reflection]);
+            add(
+                Family::Reflection,
+                None,
+                object,
+                None,
+                vec![Kind::Reflection],
+            );
             for light in choices(space.lights) {
                 let chosen: Vec<usize> = light.map_or(lights.clone(), |l| vec![l]);
                 for (family, kind) in [
@@ -71,23 +77,53 @@ impl Groups {
                     (Family::Specular, Kind::Specular),
                     (Family::Shadow, Kind::Shadow),
                 ] {
-                    add(family, light, object, None, chosen.iter().map(|&l| kind(l)).collect());
+                    add(
+                        family,
+                        light,
+                        object,
+                        None,
+                        chosen.iter().map(|&l| kind(l)).collect(),
+                    );
                 }
             }
             for bug in NormalBug::ALL {
-                add(Family::Normal(bug), None, object, None, vec![Kind::Normal(bug)]);
+                add(
+                    Family::Normal(bug),
+                    None,
+                    object,
+                    None,
+                    vec![Kind::Normal(bug)],
+                );
             }
             for bug in SpecularBug::ALL {
-                add(Family::Highlight(bug), None, object, None, vec![Kind::Highlight(bug)]);
+                add(
+                    Family::Highlight(bug),
+                    None,
+                    object,
+                    None,
+                    vec![Kind::Highlight(bug)],
+                );
             }
             for bug in ClampBug::ALL {
-                add(Family::Clamp(bug), None, object, None, vec![Kind::Clamp(bug)]);
+                add(
+                    Family::Clamp(bug),
+                    None,
+                    object,
+                    None,
+                    vec![Kind::Clamp(bug)],
+                );
             }
         }
         for (object, &shape) in shapes.iter().enumerate().take(MAX_MISSING_OBJECTS) {
             let parts = Part::of_shape(shape);
             for &part in parts {
-                add(Family::Missing, None, Some(object), Some(part), vec![Kind::Missing(part)]);
+                add(
+                    Family::Missing,
+                    None,
+                    Some(object),
+                    Some(part),
+                    vec![Kind::Missing(part)],
+                );
             }
             if parts.len() > 1 {
                 let kinds = parts.iter().map(|&p| Kind::Missing(p)).collect();
@@ -151,51 +187,49 @@ impl Groups {
             )
     }
 
-    /// Each group's inner product with the current residual, and the residual's squared
-    /// norm.
+    /// Each group's inner product with the current residual.
     #[must_use]
-    pub fn correlations(&self, components: &Components, target: &Target, state: &FitState) -> (Vec<f64>, f64) {
-        let (by_channel, energy) = channel_correlations(components, target, state);
-        let by_group = self
-            .list
+    pub fn correlations(
+        &self,
+        components: &Components,
+        target: &Target,
+        state: &FitState,
+    ) -> Vec<f64> {
+        let by_channel = channel_correlations(components, target, state);
+        self.list
             .iter()
             .map(|g| g.members.iter().map(|&c| by_channel[c as usize]).sum())
-            .collect();
-        (by_group, energy)
+            .collect()
     }
 }
 
-/// Each channel's inner product with the residual, and the residual's squared norm.
-fn channel_correlations(components: &Components, target: &Target, state: &FitState) -> (Vec<f64>, f64) {
+/// Each channel's inner product with the residual.
+fn channel_correlations(components: &Components, target: &Target, state: &FitState) -> Vec<f64> {
     let channels = components.space.count();
     let pixels = components.labels.len();
     let chunk = 8192;
-    let mut sums: Vec<f64> = (0..pixels.div_ceil(chunk))
+    (0..pixels.div_ceil(chunk))
         .into_par_iter()
         .map(|c| {
-            let mut sums = vec![0.0; channels + 1];
+            let mut sums = vec![0.0; channels];
             for p in c * chunk..((c + 1) * chunk).min(pixels) {
                 let r = state.residual(target, p);
                 if r == [0.0; 3] {
                     continue;
                 }
-                sums[channels] += r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
                 for entry in components.pixel(p) {
                     let v = entry.value;
-                    sums[entry.channel as usize] += r[0] * f64::from(v[0])
-                        + r[1] * f64::from(v[1])
-                        + r[2] * f64::from(v[2]);
+                    sums[entry.channel as usize] +=
+                        r[0] * f64::from(v[0]) + r[1] * f64::from(v[1]) + r[2] * f64::from(v[2]);
                 }
             }
             sums
         })
         .reduce(
-            || vec![0.0; channels + 1],
+            || vec![0.0; channels],
             |mut a, b| {
                 a.iter_mut().zip(b).for_each(|(x, y)| *x += y);
                 a
             },
-        );
-    let energy = sums.pop().unwrap_or(0.0);
-    (sums, energy)
+        )
 }

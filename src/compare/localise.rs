@@ -106,7 +106,12 @@ struct Pile {
 
 /// The localised verdicts for what `state` leaves unexplained, as shares of `total`.
 #[must_use]
-pub fn localise(components: &Components, state: &FitState, scene: &Scene, total: f64) -> Vec<Explanation> {
+pub fn localise(
+    components: &Components,
+    state: &FitState,
+    scene: &Scene,
+    total: f64,
+) -> Vec<Explanation> {
     let off = (OFF_LEVELS / 255.0).powi(2);
     let near = near_outline(components);
     let objects = scene.objects.len();
@@ -129,32 +134,41 @@ pub fn localise(components: &Components, state: &FitState, scene: &Scene, total:
         pile.pixels.push(p as u32);
     }
     let mut out = Vec::new();
-    let mut emit = |pile: Pile, object: Option<usize>, term: ExplainedTerm, cause: Cause, confidence| {
-        if pile.error / total < MIN_SHARE {
-            return;
-        }
-        let mut e = Explanation {
-            term,
-            light: None,
-            object,
-            object_name: object.map(|o| scene.objects[o].name.clone()),
-            factor: 1.0,
-            share: pile.error / total,
-            pixels: pile.pixels,
-            cause,
-            confidence,
-            summary: String::new(),
+    let mut emit =
+        |pile: Pile, object: Option<usize>, term: ExplainedTerm, cause: Cause, confidence| {
+            if pile.error / total < MIN_SHARE {
+                return;
+            }
+            let mut e = Explanation {
+                term,
+                light: None,
+                object,
+                object_name: object.map(|o| scene.objects[o].name.clone()),
+                factor: 1.0,
+                share: pile.error / total,
+                pixels: pile.pixels,
+                cause,
+                confidence,
+                summary: String::new(),
+            };
+            e.summary = summary(&e, scene);
+            out.push(e);
         };
-        e.summary = summary(&e, scene);
-        out.push(e);
-    };
     for (index, pile) in outline.into_iter().enumerate() {
         let object = (index < objects).then_some(index);
-        emit(pile, object, ExplainedTerm::Geometry, Cause::Silhouette, SILHOUETTE_CONFIDENCE);
+        emit(
+            pile,
+            object,
+            ExplainedTerm::Geometry,
+            Cause::Silhouette,
+            SILHOUETTE_CONFIDENCE,
+        );
     }
     for (index, pile) in inside.into_iter().enumerate() {
         let terms = pile.terms;
-        let best = (0..4).max_by(|&a, &b| terms[a].total_cmp(&terms[b])).unwrap_or(1);
+        let best = (0..4)
+            .max_by(|&a, &b| terms[a].total_cmp(&terms[b]))
+            .unwrap_or(1);
         let term = [
             ExplainedTerm::Ambient,
             ExplainedTerm::Diffuse,

@@ -100,7 +100,9 @@ pub fn compare(
         let target = Target::new(other, encoding);
         let decoded = FitState::new(components.beauty.clone(), &target);
         if state.total - decoded.total >= floor {
-            explanations.push(encoding_explanation(&state, &decoded, encoding, scene, total));
+            explanations.push(encoding_explanation(
+                &state, &decoded, encoding, scene, total,
+            ));
         }
         state = decoded;
         target

@@ -49,7 +49,9 @@ impl OtherImage {
             .with_guessed_format()
             .map_err(|e| not_an_image(e.to_string()))?;
         if reader.format().is_none() {
-            return Err(not_an_image("the content is neither PNG nor PPM".to_owned()));
+            return Err(not_an_image(
+                "the content is neither PNG nor PPM".to_owned(),
+            ));
         }
         let decoded = reader.decode().map_err(|e| not_an_image(e.to_string()))?;
         let rgb = match decoded {
@@ -94,6 +96,9 @@ mod tests {
         assert_eq!((image.width, image.height), (2, 1));
         assert_eq!(image.rgb, vec![[1, 2, 3], [255, 0, 128]]);
         let error = OtherImage::from_bytes(b"hello", Path::new("a.png")).unwrap_err();
-        assert!(error.to_string().contains("a.png is not a readable"), "{error}");
+        assert!(
+            error.to_string().contains("a.png is not a readable"),
+            "{error}"
+        );
     }
 }

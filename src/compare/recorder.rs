@@ -182,7 +182,13 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
     }
 
     /// The terms under each normal and specular bug, as changes from raylab's.
-    fn bugs(&mut self, bounce: &Bounce, hit: &SurfacePoint, record: &LightRecord, sample: &LightSample) {
+    fn bugs(
+        &mut self,
+        bounce: &Bounce,
+        hit: &SurfacePoint,
+        record: &LightRecord,
+        sample: &LightSample,
+    ) {
         let object = hit.object;
         let material = self.ctx.material(object);
         let world_object = &self.ctx.world.objects[object];
@@ -274,8 +280,14 @@ impl Recorder for SampleRecorder<'_, '_> {
         };
         let object = hit.object;
         let t = bounce.throughput;
-        self.tally.add(self.channel(Kind::Diffuse(index), object), t * record.diffuse);
-        self.tally.add(self.channel(Kind::Specular(index), object), t * record.specular);
+        self.tally.add(
+            self.channel(Kind::Diffuse(index), object),
+            t * record.diffuse,
+        );
+        self.tally.add(
+            self.channel(Kind::Specular(index), object),
+            t * record.specular,
+        );
         let Some(sample) = self.ctx.world.lights[index].sample(hit.p) else {
             return;
         };
@@ -287,7 +299,10 @@ impl Recorder for SampleRecorder<'_, '_> {
                 strength: record.strength,
             };
             let (diffuse, specular) = local_terms(self.ctx.material(object), &light);
-            self.tally.add(self.channel(Kind::Shadow(index), object), t * (diffuse + specular));
+            self.tally.add(
+                self.channel(Kind::Shadow(index), object),
+                t * (diffuse + specular),
+            );
         }
         self.bugs(&bounce, &hit, record, &sample);
     }
@@ -297,7 +312,8 @@ impl Recorder for SampleRecorder<'_, '_> {
         bounce.mirror = Some((km, reflected));
         let (t, object) = (bounce.throughput, bounce.object);
         if let Some(object) = object {
-            self.tally.add(self.channel(Kind::Reflection, object), t * km * reflected);
+            self.tally
+                .add(self.channel(Kind::Reflection, object), t * km * reflected);
         }
     }
 
@@ -320,7 +336,8 @@ impl Recorder for SampleRecorder<'_, '_> {
                 // change before its own final clamp.
                 let bugged = self.chain[0].clamped[i];
                 if clamp(bugged) != clamp(colour) {
-                    self.tally.add(self.channel(Kind::Clamp(bug), object), bugged - colour);
+                    self.tally
+                        .add(self.channel(Kind::Clamp(bug), object), bugged - colour);
                 }
             }
         }

@@ -168,7 +168,7 @@ impl Comparison {
                 i + 1,
                 100.0 * e.share,
                 e.term.name(),
-                e.factor,
+                e.factor + 0.0,
                 e.pixels.len(),
                 e.cause.name(),
                 e.sureness(),

@@ -52,7 +52,10 @@ fn mask_panel(comparison: &Comparison, index: usize, e: &Explanation) -> Panel {
             std::array::from_fn(|c| (0.65 * MASK_COLOUR[c] + 0.35 * f64::from(base[c])) as u8);
     }
     let light = e.light.map_or(String::new(), |l| format!(", light {l}"));
-    let object = e.object_name.as_ref().map_or(String::new(), |o| format!(", '{o}'"));
+    let object = e
+        .object_name
+        .as_ref()
+        .map_or(String::new(), |o| format!(", '{o}'"));
     Panel {
         pixels,
         title: format!("{}. {}{light}{object}", index + 1, e.term.name()),
@@ -62,19 +65,30 @@ fn mask_panel(comparison: &Comparison, index: usize, e: &Explanation) -> Panel {
                 100.0 * e.share,
                 e.factor
             ),
-            format!("{}, sure: {} ({:.2})", e.cause.name(), e.sureness(), e.confidence),
+            format!(
+                "{}, sure: {} ({:.2})",
+                e.cause.name(),
+                e.sureness(),
+                e.confidence
+            ),
         ],
     }
 }
 
 fn panels(comparison: &Comparison) -> Vec<Panel> {
-    let most = comparison.difference.iter().copied().max().unwrap_or(0).max(1);
+    let most = comparison
+        .difference
+        .iter()
+        .copied()
+        .max()
+        .unwrap_or(0)
+        .max(1);
     let mut panels = vec![
         Panel {
             pixels: comparison.raylab_rgb.clone(),
             title: "raylab".to_owned(),
             lines: vec![format!(
-                "{}x{}, {} samples per pixel",
+                "{}x{}, samples per pixel: {}",
                 comparison.width, comparison.height, comparison.samples_per_pixel
             )],
         },
@@ -168,7 +182,10 @@ pub fn report_png(comparison: &Comparison) -> Result<Vec<u8>, String> {
     let image = image::RgbImage::from_raw(size.0, size.1, buffer).ok_or("report buffer size")?;
     let mut bytes = Vec::new();
     image
-        .write_to(&mut std::io::Cursor::new(&mut bytes), image::ImageFormat::Png)
+        .write_to(
+            &mut std::io::Cursor::new(&mut bytes),
+            image::ImageFormat::Png,
+        )
         .map_err(|e| format!("report image: {e}"))?;
     Ok(bytes)
 }

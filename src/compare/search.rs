@@ -70,7 +70,9 @@ fn scale_range(group: &Group, scale: &[f64]) -> (f64, f64) {
         .members
         .iter()
         .map(|&c| scale[c as usize])
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), s| (lo.min(s), hi.max(s)))
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), s| {
+            (lo.min(s), hi.max(s))
+        })
 }
 
 /// The fitted coefficient of a group and its linear gain, or `None` if it may not move.
@@ -164,14 +166,25 @@ fn change_of(components: &Components, group: &Group, c: f64) -> Change {
     };
     for part in parts {
         all.pixels.extend(part.pixels);
-        all.energy_by_object.iter_mut().zip(part.energy_by_object).for_each(|(a, b)| *a += b);
-        all.energy_by_light.iter_mut().zip(part.energy_by_light).for_each(|(a, b)| *a += b);
+        all.energy_by_object
+            .iter_mut()
+            .zip(part.energy_by_object)
+            .for_each(|(a, b)| *a += b);
+        all.energy_by_light
+            .iter_mut()
+            .zip(part.energy_by_light)
+            .for_each(|(a, b)| *a += b);
     }
     all
 }
 
 /// The groups' fitted coefficients and ranking gains on the current residual, best first.
-fn rank(groups: &Groups, correlations: &[f64], norms: &[f64], scale: &[f64]) -> Vec<(usize, f64, f64)> {
+fn rank(
+    groups: &Groups,
+    correlations: &[f64],
+    norms: &[f64],
+    scale: &[f64],
+) -> Vec<(usize, f64, f64)> {
     let mut ranked: Vec<(usize, f64, f64)> = groups
         .list
         .iter()
@@ -182,17 +195,18 @@ fn rank(groups: &Groups, correlations: &[f64], norms: &[f64], scale: &[f64]) -> 
     ranked
 }
 
-/// How sure a step is against its best competitor: the groups telling another story
-/// whose gain the step took (it fell by half or more once the step was applied; a group
-/// that keeps its gain explains something else). With `g` the step's gain, `g_r` the
-/// competitor's and `e` the residual energy before the step, `(g - g_r) / (e - g_r)`:
-/// how much better the step explains what the competitor leaves.
+/// How sure a step is against its best competitor: among the groups telling another
+/// story, those whose gain the step took (it fell by half or more once the step was
+/// applied; a group that keeps its gain explains something else), the best. With `g`
+/// the step's gain, `g_r` the competitor's and `left` the error the step leaves on the
+/// pixels it changed, `(g - g_r) / (g - g_r + left)`: what the step explains beyond the
+/// competitor, against what it leaves unexplained where it acts.
 fn margin(
     groups: &Groups,
     chosen: usize,
     before: &[(usize, f64, f64)],
     after: &[(usize, f64, f64)],
-    energy: f64,
+    left: f64,
 ) -> f64 {
     let gain = before.iter().find(|r| r.0 == chosen).map_or(0.0, |r| r.2);
     let rival = before
@@ -204,25 +218,31 @@ fn margin(
         })
         .map(|r| r.2)
         .fold(0.0, f64::max);
-    let left = energy - rival;
-    if left <= 0.0 {
+    let beyond = (gain - rival).max(0.0);
+    if beyond + left <= 0.0 {
         0.0
     } else {
-        ((gain - rival) / left).clamp(0.0, 1.0)
+        beyond / (beyond + left)
     }
 }
 
 /// Runs the search on `state` (changed in place), keeping steps that lower the error by
 /// at least `floor`.
 #[must_use]
-pub fn search(components: &Components, groups: &Groups, target: &Target, state: &mut FitState, floor: f64) -> Vec<Step> {
+pub fn search(
+    components: &Components,
+    groups: &Groups,
+    target: &Target,
+    state: &mut FitState,
+    floor: f64,
+) -> Vec<Step> {
     let norms = groups.norms(components, target);
     // Each channel's scale so far: 1 for raylab's terms, 0 for the bugs and shadows.
     let mut scale: Vec<f64> = (0..components.space.count() as u32)
         .map(|c| initial_scale(components.space.decode(c).0))
         .collect();
     let mut steps = Vec::new();
-    let (mut correlations, mut energy) = groups.correlations(components, target, state);
+    let mut correlations = groups.correlations(components, target, state);
     while steps.len() < MAX_STEPS && state.total > floor {
         let ranked = rank(groups, &correlations, &norms, &scale);
         let mut accepted = None;
@@ -248,15 +268,15 @@ pub fn search(components: &Components, groups: &Groups, target: &Target, state: 
         for &m in &groups.list[index].members {
             scale[m as usize] += c;
         }
-        let energy_before = energy;
-        (correlations, energy) = groups.correlations(components, target, state);
+        correlations = groups.correlations(components, target, state);
         let after = rank(groups, &correlations, &norms, &scale);
+        let left: f64 = change.pixels.iter().map(|&(p, _)| state.error[p]).sum();
         let half_level = 0.5 / 255.0;
         steps.push(Step {
             group: index,
             coefficient: c,
             gain,
-            margin: margin(groups, index, &ranked, &after, energy_before),
+            margin: margin(groups, index, &ranked, &after, left),
             pixels: change
                 .pixels
                 .iter()

@@ -35,7 +35,11 @@ fn concentrated(energy: &[f64]) -> Option<usize> {
 
 /// The term and cause a family stands for; `split` tells a normal bug's diffuse from
 /// its specular share.
-fn term_and_cause(family: Family, split: [f64; 2], part: Option<super::bugs::Part>) -> (ExplainedTerm, Cause) {
+fn term_and_cause(
+    family: Family,
+    split: [f64; 2],
+    part: Option<super::bugs::Part>,
+) -> (ExplainedTerm, Cause) {
     match family {
         Family::Ambient => (ExplainedTerm::Ambient, Cause::Factor),
         Family::Reflection => (ExplainedTerm::Reflection, Cause::Factor),
@@ -79,7 +83,9 @@ pub fn explain_steps(
         // Lights are named only by the group: every light is every light, even where
         // one of them dominates.
         let light = group.light.map(|l| world.light_scene_index[l]);
-        let object = group.object.or_else(|| concentrated(&step.energy_by_object));
+        let object = group
+            .object
+            .or_else(|| concentrated(&step.energy_by_object));
         let is_bug = !matches!(cause, Cause::Factor);
         let confidence = if is_bug {
             step.margin * (1.0 - (1.0 - step.coefficient).abs()).max(0.0)
@@ -119,11 +125,13 @@ pub fn explain_steps(
     out.into_iter()
         .map(|(mut e, coefficient)| {
             // Terms scale from 1; shadows and bugs add a picture whose weight is 1 - factor.
-            e.factor = if e.cause == Cause::Factor && e.term != ExplainedTerm::Shadows {
+            let factor = if e.cause == Cause::Factor && e.term != ExplainedTerm::Shadows {
                 1.0 + coefficient
             } else {
                 1.0 - coefficient
             };
+            // Rounding noise around 0 reads as "-0.00" otherwise.
+            e.factor = if factor.abs() < 1e-6 { 0.0 } else { factor };
             e.summary = summary(&e, scene);
             e
         })

@@ -60,7 +60,8 @@ impl Shader<'_> {
         if !(self.bugs.cone_normal_without_z && object.shape == Shape::Cone) {
             return hit.n;
         }
-        let mut n_object = (object.world_from_object.matrix3.transpose() * hit.n_outward).normalize();
+        let mut n_object =
+            (object.world_from_object.matrix3.transpose() * hit.n_outward).normalize();
         if n_object.z > 0.9 {
             return hit.n; // the cap is right
         }
@@ -107,7 +108,9 @@ impl Shader<'_> {
             {
                 continue;
             }
-            let Some(sample) = light.sample(hit.p) else { continue };
+            let Some(sample) = light.sample(hit.p) else {
+                continue;
+            };
             let n_dot_l = n.dot(sample.to_light);
             if n_dot_l <= 0.0 || !self.visible(&hit, sample.to_light, sample.light_position) {
                 continue;
@@ -122,7 +125,11 @@ impl Shader<'_> {
             let mut specular = DVec3::ZERO;
             if r_dot_v > 0.0 && !self.bugs.specular_off {
                 let s = material.shininess;
-                let lobe = if s.fract() == 0.0 && s <= 1024.0 { r_dot_v.powi(s as i32) } else { r_dot_v.powf(s) };
+                let lobe = if s.fract() == 0.0 && s <= 1024.0 {
+                    r_dot_v.powi(s as i32)
+                } else {
+                    r_dot_v.powf(s)
+                };
                 specular = material.specular * sample.radiance * lobe;
             }
             colour += diffuse + specular;
@@ -141,7 +148,11 @@ impl Shader<'_> {
 
 /// The scene rendered with `bugs` at its own size and `spp`, written as 8-bit RGB.
 pub fn render(scene: &Scene, spp: u32, bugs: &Bugs) -> OtherImage {
-    let shader = Shader { scene, world: World::new(scene).unwrap(), bugs };
+    let shader = Shader {
+        scene,
+        world: World::new(scene).unwrap(),
+        bugs,
+    };
     let (w, h) = (scene.camera.width, scene.camera.height);
     let camera = PinholeCamera::new(&scene.camera, w, h);
     let strata = Strata::for_count(spp);
