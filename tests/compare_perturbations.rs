@@ -7,11 +7,16 @@
 mod shader;
 
 use raylab::compare::{Cause, CompareOptions, Comparison, ExplainedTerm, compare};
+use raylab::scene::{Light, Scene};
 use raylab::trace::{RenderOptions, RenderProgress, World, render};
 use shader::{Bugs, lab_scene, render as render_with};
 
 fn diff(bugs: &Bugs) -> Comparison {
-    let scene = lab_scene();
+    diff_of(&lab_scene(), bugs)
+}
+
+fn diff_of(scene: &Scene, bugs: &Bugs) -> Comparison {
+    let scene = scene.clone();
     let other = render_with(&scene, 1, bugs);
     let options = CompareOptions {
         samples_per_pixel: Some(1),
