@@ -128,9 +128,9 @@ mod tests {
 
     #[test]
     fn intervals_hold_what_each_encoding_writes() {
-        for c in [0.0, 0.1, 0.2001, 0.5, 0.73, 0.999, 1.0, 1.7] {
-            let round = (c.clamp(0.0, 1.0) * 255.0_f64).round() as u8;
-            let truncate = (c.clamp(0.0, 1.0) * 255.0_f64).floor() as u8;
+        for c in [0.0_f64, 0.1, 0.2001, 0.5, 0.73, 0.999, 1.0, 1.7] {
+            let round = (c.clamp(0.0, 1.0) * 255.0).round() as u8;
+            let truncate = (c.clamp(0.0, 1.0) * 255.0).floor() as u8;
             assert_eq!(
                 distance_outside(c, Encoding::LinearRound.interval(round)),
                 0.0

@@ -289,3 +289,47 @@ pub fn search(
     }
     steps
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::compare::bugs::NormalBug;
+
+    fn group(family: Family) -> Group {
+        Group {
+            family,
+            light: None,
+            object: Some(0),
+            part: None,
+            members: vec![0],
+        }
+    }
+
+    #[test]
+    fn factors_stay_non_negative_and_bugs_must_fit_near_weight_one() {
+        // A term asked to go to -1 (factor 0 - 1) stops at factor 0.
+        let (c, _) = fit(&group(Family::Diffuse), -3.0, 1.0, &[1.0]).unwrap();
+        assert_eq!(c, -1.0);
+        // A bug whose picture fits at weight 0.2 is not that bug; at 0.9 it is, and it
+        // is ranked by what it explains at weight 1: 2 * 0.9 - 1.
+        let bug = group(Family::Normal(NormalBug::DropZ));
+        assert!(fit(&bug, 0.2, 1.0, &[0.0]).is_none());
+        let (c, rank) = fit(&bug, 0.9, 1.0, &[0.0]).unwrap();
+        assert!((c - 0.9).abs() < 1e-12 && (rank - 0.8).abs() < 1e-12);
+        // Shadows take away between none and all of a light.
+        let (c, _) = fit(&group(Family::Shadow), 5.0, 1.0, &[0.0]).unwrap();
+        assert_eq!(c, 1.0);
+    }
+
+    #[test]
+    fn groups_that_name_different_lights_or_terms_compete() {
+        let mut a = group(Family::Diffuse);
+        let mut b = group(Family::Diffuse);
+        assert!(compatible(&a, &b));
+        (a.light, b.light) = (Some(0), Some(1));
+        assert!(!compatible(&a, &b));
+        b.light = None;
+        assert!(compatible(&a, &b));
+        assert!(!compatible(&a, &group(Family::Specular)));
+    }
+}
