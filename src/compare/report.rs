@@ -146,7 +146,7 @@ impl Comparison {
     #[must_use]
     pub fn text_lines(&self) -> Vec<String> {
         let mut lines = vec![format!(
-            "PSNR {:.2} dB over {}x{} pixels ({} raylab samples per pixel; other image read as {})",
+            "PSNR {:.2} dB over {}x{} pixels (raylab at {} samples per pixel; other image read as {})",
             self.psnr_db,
             self.width,
             self.height,
