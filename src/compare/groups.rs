@@ -165,8 +165,8 @@ impl Groups {
                             if *sum == [0.0; 3] {
                                 touched.push(g);
                             }
-                            for k in 0..3 {
-                                sum[k] += f64::from(entry.value[k]);
+                            for (s, v) in sum.iter_mut().zip(entry.value) {
+                                *s += f64::from(v);
                             }
                         }
                     }
