@@ -11,67 +11,36 @@ use raylab::scene::legacy::{LegacyImportFileError, import_legacy, import_legacy_
 use raylab::scene::validate;
 
 #[test]
-fn unknown_block() {
-    let errors = errors_of_file("err_unknown_block.txt");
-    assert_one_error(&errors, 5, "Objekt", "unknown block type");
-}
-
-#[test]
-fn unknown_keyword() {
-    let errors = errors_of_file("err_unknown_keyword.txt");
-    assert_one_error(&errors, 3, "Shininess", "unknown keyword");
-}
-
-#[test]
-fn bad_number() {
-    let errors = errors_of_file("err_bad_number.txt");
-    assert_one_error(&errors, 2, "1,0", "not a number");
-}
-
-#[test]
-fn wrong_count_of_numbers() {
-    let errors = errors_of_file("err_wrong_count.txt");
-    assert_one_error(&errors, 2, "Translate", "found 2");
-}
-
-#[test]
-fn missing_end_at_the_end_of_the_file() {
-    let errors = errors_of_file("err_missing_end.txt");
-    assert_one_error(&errors, 5, "Object", "no `End`");
-}
-
-#[test]
-fn missing_end_before_the_next_block() {
-    let errors = errors_of_file("err_missing_end_inside.txt");
-    assert_one_error(
-        &errors,
-        4,
-        "Object",
-        "`End` of the Object block at line 1 missing",
-    );
-}
-
-#[test]
-fn tokens_after_the_last_end() {
-    let errors = errors_of_file("err_after_last_end.txt");
-    assert_one_error(&errors, 4, "Scale", "unexpected end of file");
-}
-
-#[test]
-fn material_used_before_it_is_defined() {
-    let errors = errors_of_file("err_material_before_definition.txt");
-    assert_one_error(
-        &errors,
-        2,
-        "gold",
-        "before it is defined (its definition is at line 5)",
-    );
-}
-
-#[test]
-fn zero_scale() {
-    let errors = errors_of_file("err_zero_scale.txt");
-    assert_one_error(&errors, 2, "0", "singular");
+fn each_error_file_reports_its_one_error_at_its_line_and_token() {
+    let cases: &[(&str, usize, &str, &str)] = &[
+        ("err_unknown_block.txt", 5, "Objekt", "unknown block type"),
+        ("err_unknown_keyword.txt", 3, "Shininess", "unknown keyword"),
+        ("err_bad_number.txt", 2, "1,0", "not a number"),
+        ("err_wrong_count.txt", 2, "Translate", "found 2"),
+        ("err_missing_end.txt", 5, "Object", "no `End`"),
+        (
+            "err_missing_end_inside.txt",
+            4,
+            "Object",
+            "`End` of the Object block at line 1 missing",
+        ),
+        (
+            "err_after_last_end.txt",
+            4,
+            "Scale",
+            "unexpected end of file",
+        ),
+        (
+            "err_material_before_definition.txt",
+            2,
+            "gold",
+            "before it is defined (its definition is at line 5)",
+        ),
+        ("err_zero_scale.txt", 2, "0", "singular"),
+    ];
+    for &(file, line, token, fragment) in cases {
+        assert_one_error(&errors_of_file(file), line, token, fragment);
+    }
 }
 
 #[test]

@@ -158,8 +158,9 @@ fn directions_to_try(camera: &Camera) -> Vec<DVec3> {
 
 #[cfg(test)]
 mod tests {
+    use super::clearance::test_objects::{floor, placed, plane};
     use super::*;
-    use crate::scene::{Object, Shape, Transform, Trs};
+    use crate::scene::{Object, Shape};
     use crate::trace::PinholeCamera;
     use glam::DVec2;
 
@@ -222,33 +223,6 @@ mod tests {
             objects,
             ..Scene::empty()
         }
-    }
-
-    fn placed(shape: Shape, translate: DVec3, rotate_deg: DVec3, scale: DVec3) -> Object {
-        Object {
-            name: shape.name().to_owned(),
-            shape,
-            transform: Transform::Trs(Trs {
-                translate,
-                rotate_deg,
-                scale,
-            }),
-            material: "m".to_owned(),
-        }
-    }
-
-    /// A square plane of half-size `half_size` at `centre`, turned by `rotate_deg`.
-    fn plane(centre: DVec3, rotate_deg: DVec3, half_size: f64) -> Object {
-        placed(
-            Shape::Plane,
-            centre,
-            rotate_deg,
-            DVec3::new(half_size, half_size, 1.0),
-        )
-    }
-
-    fn floor() -> Object {
-        plane(DVec3::ZERO, DVec3::new(-90.0, 0.0, 0.0), 10.0)
     }
 
     fn looking(position: DVec3, look_at: DVec3) -> Camera {

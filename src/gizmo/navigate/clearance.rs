@@ -123,12 +123,15 @@ pub fn contains(shape: Shape, p: DVec3) -> bool {
     }
 }
 
+/// Objects for the framing tests.
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::scene::{Transform, Trs};
+pub(super) mod test_objects {
+    use glam::DVec3;
 
-    fn object(shape: Shape, translate: DVec3, rotate_deg: DVec3, scale: DVec3) -> Object {
+    use crate::scene::{Object, Shape, Transform, Trs};
+
+    /// An object of `shape` placed by a translate / rotate / scale.
+    pub fn placed(shape: Shape, translate: DVec3, rotate_deg: DVec3, scale: DVec3) -> Object {
         Object {
             name: shape.name().to_owned(),
             shape,
@@ -141,15 +144,26 @@ mod tests {
         }
     }
 
-    /// A floor at y = 0, 20 units wide, facing +y.
-    fn floor() -> Object {
-        object(
+    /// A square plane of half-size `half_size` at `centre`, turned by `rotate_deg`.
+    pub fn plane(centre: DVec3, rotate_deg: DVec3, half_size: f64) -> Object {
+        placed(
             Shape::Plane,
-            DVec3::ZERO,
-            DVec3::new(-90.0, 0.0, 0.0),
-            DVec3::new(10.0, 10.0, 1.0),
+            centre,
+            rotate_deg,
+            DVec3::new(half_size, half_size, 1.0),
         )
     }
+
+    /// A floor at y = 0, 20 units wide, facing +y.
+    pub fn floor() -> Object {
+        plane(DVec3::ZERO, DVec3::new(-90.0, 0.0, 0.0), 10.0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::test_objects::{floor, placed};
+    use super::*;
 
     #[test]
     fn solids_contain_their_inside_only() {
@@ -170,7 +184,7 @@ mod tests {
 
     #[test]
     fn an_eye_under_the_floor_or_inside_a_solid_is_not_clear() {
-        let ball = object(
+        let ball = placed(
             Shape::Sphere,
             DVec3::new(3.0, 1.0, 0.0),
             DVec3::ZERO,
