@@ -81,7 +81,7 @@ impl Default for Camera {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RenderSettings {
-    /// Maximum number of mirror bounces.
+    /// Maximum number of mirror bounces, at most [`crate::scene::MAX_DEPTH`].
     #[serde(default = "default_max_depth")]
     pub max_depth: u32,
     /// Colour of rays that hit nothing.
@@ -123,7 +123,7 @@ pub struct Material {
     /// Phong specular reflectance (ks).
     #[serde(default)]
     pub specular: DVec3,
-    /// Phong exponent (s).
+    /// Phong exponent (s), any value >= 0; 0 makes the lobe 1 wherever r.v > 0.
     #[serde(default = "default_shininess")]
     pub shininess: f64,
     /// Mirror reflectance (km).
@@ -239,7 +239,8 @@ pub enum Light {
         position: DVec3,
         /// Axis of the cone: the way the light travels.
         direction: DVec3,
-        /// Half-angle of the cone in degrees, in (0, 90].
+        /// Half-angle of the cone in degrees, in (0, 180]: 90 lights a half-space, 180
+        /// every direction.
         angle_deg: f64,
         /// Light colour (linear RGB, may exceed 1).
         colour: DVec3,

@@ -86,8 +86,8 @@ pub enum SceneSetting {
     Background(DVec3),
     /// `ambientLight R G B` (older files).
     AmbientLight(DVec3),
-    /// `rayDepth N`.
-    RayDepth(u32),
+    /// `rayDepth N`: a whole number >= 0 as written, which may exceed what raylab renders.
+    RayDepth(f64),
     /// `filename NAME`: the legacy output image; not used by the import.
     Filename(String),
 }

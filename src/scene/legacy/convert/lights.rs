@@ -1,12 +1,18 @@
 //! Light blocks: each kind takes what it needs (`Colour` always, `Location` for point and
-//! spot lights, `Direction` for directional and spot lights, `Angle` for spot lights);
-//! keywords a kind does not use are ignored with a warning. Older files' `ambientLight`
-//! becomes the first light.
+//! spot lights, `Direction` for directional and spot lights); keywords a kind does not
+//! use are ignored with a warning. A spot light without `Angle` lights nothing in the
+//! legacy renderer, so it is imported as one that lights nothing (intensity 0), with a
+//! warning. Older files' `ambientLight` becomes the first light.
 
 use super::super::error::LegacyError;
 use super::super::syntax::{At, Item, LightSetting};
 use super::Converter;
 use crate::scene::{Light, LightKind, Scene};
+
+/// The half-angle given to a spot light that had no `Angle`. It is imported with
+/// intensity 0, so the angle changes nothing until someone raises the intensity; then it
+/// gives a cone that can be seen.
+pub const UNLIT_SPOT_ANGLE_DEG: f64 = 45.0;
 
 impl Converter<'_> {
     /// A light; the `broken` keywords are missing because they were wrong, and their
@@ -75,7 +81,24 @@ impl Converter<'_> {
             LightKind::Spot => {
                 let position = self.need(location, "Location", broken, at);
                 let direction = self.need(direction, "Direction", broken, at);
-                let angle_deg = self.need(angle, "Angle", broken, at);
+                let angle_broken = broken.iter().any(|b| b == "Angle");
+                let (angle_deg, intensity) = match angle {
+                    Some(angle_deg) => (Some(angle_deg), 1.0),
+                    None if angle_broken => (None, 1.0),
+                    None => {
+                        self.warn(
+                            at.line,
+                            format!(
+                                "a {} without `Angle`: the legacy renderer reads an \
+                                 uninitialised angle and lights nothing with it, so it is \
+                                 imported with intensity 0 (it lights nothing) and angle_deg \
+                                 {UNLIT_SPOT_ANGLE_DEG}; set both to use it",
+                                at.token
+                            ),
+                        );
+                        (Some(UNLIT_SPOT_ANGLE_DEG), 0.0)
+                    }
+                };
                 match (colour, position, direction, angle_deg) {
                     (Some(colour), Some(position), Some(direction), Some(angle_deg)) => {
                         Some(Light::Spot {
@@ -83,7 +106,7 @@ impl Converter<'_> {
                             direction,
                             angle_deg,
                             colour,
-                            intensity: 1.0,
+                            intensity,
                         })
                     }
                     _ => None,
@@ -105,14 +128,10 @@ impl Converter<'_> {
         at: &At,
     ) -> Option<T> {
         if value.is_none() && !broken.iter().any(|b| b == keyword) {
-            let what = match keyword {
-                "Angle" => "an `Angle` (its half-angle in degrees)".to_owned(),
-                _ => format!("a `{keyword}`"),
-            };
             self.errors.push(LegacyError::new(
                 at.line,
                 &at.token,
-                format!("a {} needs {what}", at.token),
+                format!("a {} needs a `{keyword}`", at.token),
             ));
         }
         value

@@ -59,6 +59,21 @@ pub(super) struct PendingObject {
     at: At,
 }
 
+impl PendingObject {
+    /// The centre of the object's bounds in world space: the unit shape's centre
+    /// (the origin, but (0, 0, 0.5) for the cone, whose apex is at the origin) placed by
+    /// its transform.
+    pub(super) fn centre(&self) -> DVec3 {
+        let unit_centre = match self.shape {
+            Shape::Cone => DVec3::new(0.0, 0.0, 0.5),
+            Shape::Sphere | Shape::Plane | Shape::Cube | Shape::Cylinder => DVec3::ZERO,
+        };
+        self.transform
+            .world_from_object()
+            .transform_point3(unit_centre)
+    }
+}
+
 impl Converter<'_> {
     pub(super) fn material_block(&mut self, name: &str, edits: &[Item<SurfaceEdit>], at: &At) {
         let mut material = default_material();

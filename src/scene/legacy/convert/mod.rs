@@ -18,7 +18,7 @@ use glam::{DAffine3, DVec3};
 
 use super::error::LegacyError;
 use super::syntax::{At, Block, Item, ParsedBlock, SceneSetting};
-use crate::scene::{FORMAT_VERSION, Light, RenderSettings, Scene, validate};
+use crate::scene::{FORMAT_VERSION, Light, MAX_DEPTH, RenderSettings, Scene, validate};
 use materials::{Definition, PendingObject};
 
 /// Legacy default image size.
@@ -123,11 +123,31 @@ impl<'e> Converter<'e> {
                 }
                 SceneSetting::Background(colour) => self.background = *colour,
                 SceneSetting::AmbientLight(colour) => self.ambient_light = Some(*colour),
-                SceneSetting::RayDepth(depth) => self.ray_depth = *depth,
+                SceneSetting::RayDepth(depth) => {
+                    self.ray_depth = self.capped_depth(*depth, &setting.at)
+                }
                 // The legacy output file name; raylab names images when it renders.
                 SceneSetting::Filename(_) => {}
             }
         }
+    }
+
+    /// A `rayDepth` as raylab renders it: beyond [`MAX_DEPTH`] it is capped, with a
+    /// warning (only a ray that bounces that often renders differently).
+    fn capped_depth(&mut self, depth: f64, at: &At) -> u32 {
+        if depth <= f64::from(MAX_DEPTH) {
+            // Whole (the parser checked) and in range, so the conversion is exact.
+            return depth as u32;
+        }
+        self.warn(
+            at.line,
+            format!(
+                "rayDepth {depth}: raylab follows at most {MAX_DEPTH} mirror bounces, so \
+                 it imports {MAX_DEPTH}; only a ray that bounces more often than that \
+                 renders differently"
+            ),
+        );
+        MAX_DEPTH
     }
 
     fn finish(mut self) -> Converted {

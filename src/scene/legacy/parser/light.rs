@@ -7,7 +7,7 @@ use super::super::syntax::{Block, LightSetting, ParsedBlock};
 use super::entries::{Entry, Word, decode};
 use super::values::{colour, numbers, vector};
 use super::{at, error, header, no_numbers};
-use crate::scene::LightKind;
+use crate::scene::{LightKind, MAX_SPOT_ANGLE_DEG};
 
 /// The keywords of a Light block.
 const LIGHT_WORDS: &[Word] = &[Word::Colour, Word::Location, Word::Direction, Word::Angle];
@@ -63,10 +63,13 @@ fn light_setting(entry: &Entry<'_, '_>, errors: &mut Vec<LegacyError>) -> Option
         }
         _ => {
             let v = numbers(entry, errors)?;
-            if !(v[0] > 0.0 && v[0] <= 90.0) {
+            if !(v[0] > 0.0 && v[0] <= MAX_SPOT_ANGLE_DEG) {
                 errors.push(error(
                     &entry.args[0],
-                    "a spot light's half-angle must be more than 0 and at most 90 degrees",
+                    format!(
+                        "a spot light's half-angle must be more than 0 and at most \
+                         {MAX_SPOT_ANGLE_DEG} degrees"
+                    ),
                 ));
                 return None;
             }

@@ -51,8 +51,12 @@ pub(super) fn surface_edit(
         _ => {
             let v = numbers(entry, errors)?;
             let mut ok = non_negative(entry, &v[..3], errors);
-            if v[3] <= 0.0 {
-                errors.push(error(&entry.args[3], "the Phong exponent must be positive"));
+            // 0 is allowed: the lobe is then 1 wherever r.v > 0.
+            if v[3] < 0.0 {
+                errors.push(error(
+                    &entry.args[3],
+                    "the Phong exponent cannot be negative",
+                ));
                 ok = false;
             }
             ok.then_some(SurfaceEdit::Specular {

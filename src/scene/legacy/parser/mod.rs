@@ -8,7 +8,7 @@
 //! mistake gives one error. Numbers are whole tokens: `1,0` is a bad number, not `1`.
 //!
 //! Values the scene format cannot hold (negative colours, zero scales, a spot angle over
-//! 90 degrees...) are errors here too, at the token that holds them.
+//! 180 degrees...) are errors here too, at the token that holds them.
 //!
 //! This file splits the stream into blocks and reads block headers; `entries` splits a
 //! block body into keyword entries, `values` checks their arguments, and one file per

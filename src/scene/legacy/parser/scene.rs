@@ -4,8 +4,9 @@
 use super::super::error::LegacyError;
 use super::super::syntax::SceneSetting;
 use super::entries::{Entry, Word};
+use super::error;
 use super::values::{colour, name, numbers, whole};
-use crate::scene::validate::{MAX_DEPTH, MAX_IMAGE_SIDE};
+use crate::scene::MAX_IMAGE_SIDE;
 
 /// The keywords of a Scene block.
 pub(super) const SCENE_WORDS: &[Word] = &[
@@ -44,8 +45,15 @@ pub(super) fn setting(
         Word::AmbientLight => colour(entry, errors).map(SceneSetting::AmbientLight),
         Word::RayDepth => {
             let v = numbers(entry, errors)?;
-            whole(&entry.args[0], v[0], 0..=MAX_DEPTH, "the ray depth", errors)
-                .map(SceneSetting::RayDepth)
+            // Any whole number the format allows; the converter caps what raylab renders.
+            if !(v[0].fract() == 0.0 && v[0] >= 0.0) {
+                errors.push(error(
+                    &entry.args[0],
+                    "the ray depth must be a whole number, 0 or more",
+                ));
+                return None;
+            }
+            Some(SceneSetting::RayDepth(v[0]))
         }
         _ => name(entry, errors).map(SceneSetting::Filename),
     }
