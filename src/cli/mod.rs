@@ -1,7 +1,9 @@
 //! The command line: `raylab [SCENE.ron]` starts the editor, `raylab render` renders
-//! headless, `raylab inspect` prints a pixel's rays. `main.rs` only calls [`run`].
+//! headless, `raylab inspect` prints a pixel's rays, `raylab diff` compares with another
+//! renderer. `main.rs` only calls [`run`].
 
 mod bench;
+mod diff;
 mod import;
 mod inspect;
 mod render;
@@ -12,6 +14,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 pub use bench::BenchArgs;
+pub use diff::DiffArgs;
 pub use import::ImportArgs;
 pub use inspect::{InspectArgs, TermArgs, inspect_text};
 pub use render::RenderArgs;
@@ -38,6 +41,8 @@ pub enum Command {
     Bench(BenchArgs),
     /// Print every ray behind one pixel: the camera ray, shadow rays, mirror bounces.
     Inspect(InspectArgs),
+    /// Compare with another renderer's image: which light, object and term differ.
+    Diff(DiffArgs),
 }
 
 /// Parses the command line and runs it. Errors are printed to stderr with a non-zero exit.
@@ -49,6 +54,7 @@ pub fn run() -> ExitCode {
         Some(Command::Import(args)) => import::run(&args),
         Some(Command::Bench(args)) => bench::run(&args),
         Some(Command::Inspect(args)) => inspect::run(&args),
+        Some(Command::Diff(args)) => diff::run(&args),
         None => start_editor(cli.scene),
     };
     match result {
