@@ -12,7 +12,7 @@ use raylab::trace::RayKind;
 use raylab::ui::EditorApp;
 use raylab::ui::viewport::ray_paths::{MAX_SPAN_PIXELS, RaySpan, ScreenSegment};
 use view_harness::{
-    click, harness, object_on_screen, orbit, press, scene_pixel, segments, toggle,
+    click, harness, move_inspector_away, object_on_screen, orbit, press, scene_pixel, segments, toggle,
 };
 
 /// Inspects the pixel over scene object `index` (in camera view); returns the pixel.
@@ -25,6 +25,8 @@ fn inspect_object(harness: &mut Harness<'_, EditorApp>, index: usize) -> (u32, u
     let pos = object_on_screen(harness, index);
     click(harness, pos, Modifiers::ALT);
     assert_eq!(harness.state().inspected_pixel(), Some(pixel));
+    // As a person would: the inspector window out of the way of the picture.
+    move_inspector_away(harness);
     pixel
 }
 

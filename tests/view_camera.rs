@@ -122,7 +122,8 @@ fn the_scene_camera_is_drawn_from_the_view_selectable_and_movable() {
     harness.run_ok();
     let eye = before.camera.position;
     assert!(picture(&harness).contains(screen(&harness, eye)), "the eye is in view");
-    click(&mut harness, screen(&harness, eye), Modifiers::NONE);
+    let at = screen(&harness, eye);
+    click(&mut harness, at, Modifiers::NONE);
     assert_eq!(harness.state().selection(), &Selection::Camera);
 
     // The move gizmo at the eye: drag the x arrow by one world unit.

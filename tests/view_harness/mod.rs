@@ -183,3 +183,10 @@ pub fn toggle(harness: &mut Harness<'_, EditorApp>, label: &str) {
     harness.run_ok();
     wait_for_probes(harness);
 }
+
+/// Drags the pixel inspector window by its title to the screen's bottom-left corner,
+/// off the picture.
+pub fn move_inspector_away(harness: &mut Harness<'_, EditorApp>) {
+    let title = harness.get_by_label("Pixel inspector").rect().center();
+    drag(harness, title, Pos2::new(60.0, 790.0), Modifiers::NONE);
+}

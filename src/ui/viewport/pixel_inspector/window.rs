@@ -80,6 +80,8 @@ pub fn pixel_inspector_ui(ctx: &egui::Context, view: &InspectorView, commands: &
     let mut window = egui::Window::new("Pixel inspector")
         .id(id)
         .default_size([WIDTH, HEIGHT])
+        // Wide content lines must not widen it over the pixel it sits beside.
+        .max_width(WIDTH * 1.5)
         .resizable(true);
     // A new pixel: the window moves beside it (and stays where the user puts it after).
     if placed_for != Some(view.pixel)
