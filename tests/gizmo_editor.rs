@@ -262,7 +262,10 @@ fn orbiting_on_empty_space_moves_the_view_and_a_click_still_picks() {
         Modifiers::NONE,
     );
     let orbited = view_pose(&harness);
-    assert!(!harness.state().view_camera().through_scene_camera, "left camera view");
+    assert!(
+        !harness.state().view_camera().through_scene_camera,
+        "left camera view"
+    );
     assert_ne!(orbited.position, before.camera.position, "the drag orbited");
     let distance = |c: &raylab::scene::Camera| (c.position - c.look_at).length();
     assert!((distance(&orbited) - distance(&before.camera)).abs() < 1e-9);
@@ -270,7 +273,11 @@ fn orbiting_on_empty_space_moves_the_view_and_a_click_still_picks() {
     assert_eq!(harness.state().scene(), &before, "the scene camera stays");
     assert!(!harness.state().is_dirty());
     undo(&mut harness);
-    assert_eq!(view_pose(&harness), orbited, "looking around is no undo step");
+    assert_eq!(
+        view_pose(&harness),
+        orbited,
+        "looking around is no undo step"
+    );
 
     // A click without a drag still picks the object under the cursor, seen from the view.
     let pos = screen(&harness, trs(&before, 3).translate);
@@ -351,7 +358,11 @@ fn f_frames_the_selection() {
     let direction = |c: &raylab::scene::Camera| (c.position - c.look_at).normalize();
     assert!((direction(&camera) - direction(&before.camera)).length() < 1e-9);
     assert!((camera.position - camera.look_at).length() < radius * 5.0);
-    assert_eq!(harness.state().scene(), &before, "framing moves the view only");
+    assert_eq!(
+        harness.state().scene(),
+        &before,
+        "framing moves the view only"
+    );
 }
 
 #[test]
@@ -417,7 +428,11 @@ fn a_middle_drag_pans_even_over_a_handle() {
         modifiers: Modifiers::NONE,
     });
     harness.run();
-    assert_eq!(harness.state().scene(), &before, "the object and the camera stay");
+    assert_eq!(
+        harness.state().scene(),
+        &before,
+        "the object and the camera stay"
+    );
     let after = view_pose(&harness);
     let shift = after.look_at - before.camera.look_at;
     assert!(shift.length() > 0.0, "panned");

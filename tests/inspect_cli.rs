@@ -30,8 +30,18 @@ fn raylab(args: &[&str]) -> Output {
 }
 
 fn inspect_json(path: &PathBuf, pixel: &str) -> Value {
-    let out = raylab(&["inspect", path.to_str().unwrap(), "--pixel", pixel, "--json"]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let out = raylab(&[
+        "inspect",
+        path.to_str().unwrap(),
+        "--pixel",
+        pixel,
+        "--json",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     serde_json::from_slice(&out.stdout).expect("valid JSON")
 }
 
@@ -62,11 +72,17 @@ fn the_mirror_bounce_and_the_blocked_shadow_ray_hit_the_known_objects() {
         .collect();
     // The centre ray hits the mirror; its shadow ray to the point light; the bounce hits
     // the target, whose side facing the mirror has the light behind it: no shadow ray.
-    assert_eq!(kinds, vec![("primary", 0), ("shadow", 0), ("reflection", 1)]);
+    assert_eq!(
+        kinds,
+        vec![("primary", 0), ("shadow", 0), ("reflection", 1)]
+    );
 
     let primary = &rays[0];
     assert!(close(&primary["origin"], scene.camera.position));
-    assert!(close(&primary["direction"], -DVec3::Z), "the exact view direction");
+    assert!(
+        close(&primary["direction"], -DVec3::Z),
+        "the exact view direction"
+    );
     assert!((primary["t"].as_f64().unwrap() - 5.0).abs() < 1e-9);
     assert_eq!(primary["hit"]["object"], "mirror");
     assert!(close(&primary["hit"]["point"], DVec3::ZERO));
@@ -75,12 +91,18 @@ fn the_mirror_bounce_and_the_blocked_shadow_ray_hit_the_known_objects() {
     assert_eq!(primary["blocked_by"], Value::Null);
 
     let shadow = &rays[1];
-    assert_eq!(shadow["light"], 1, "the point light's index in the scene's list");
+    assert_eq!(
+        shadow["light"], 1,
+        "the point light's index in the scene's list"
+    );
     assert_eq!(shadow["blocked_by"], "target");
     assert_eq!(shadow["hit"]["object"], "target");
     assert!(close(&shadow["hit"]["point"], DVec3::new(0.0, 0.0, 7.0)));
     assert!((shadow["t"].as_f64().unwrap() - 7.0).abs() < 1e-9);
-    assert!((shadow["t_max"].as_f64().unwrap() - 20.0).abs() < 1e-6, "it looked to the light");
+    assert!(
+        (shadow["t_max"].as_f64().unwrap() - 20.0).abs() < 1e-6,
+        "it looked to the light"
+    );
     assert!(close(&shadow["direction"], DVec3::Z));
 
     let bounce = &rays[2];
@@ -114,11 +136,18 @@ fn the_mirror_bounce_and_the_blocked_shadow_ray_hit_the_known_objects() {
 
     // One record: the colour is the rendered pixel's.
     let world = World::new(&scene).unwrap();
-    let (image, _) = render(&world, &RenderOptions::from_scene(&scene), &RenderProgress::default())
-        .unwrap();
+    let (image, _) = render(
+        &world,
+        &RenderOptions::from_scene(&scene),
+        &RenderProgress::default(),
+    )
+    .unwrap();
     let unclamped = vec3(&json["unclamped"]);
     assert_eq!(unclamped.as_vec3(), image.get(16, 16));
-    assert_eq!(vec3(&json["colour"]), unclamped.clamp(DVec3::ZERO, DVec3::ONE));
+    assert_eq!(
+        vec3(&json["colour"]),
+        unclamped.clamp(DVec3::ZERO, DVec3::ONE)
+    );
 }
 
 #[test]
@@ -130,7 +159,10 @@ fn a_miss_is_one_primary_ray_that_meets_nothing() {
     assert_eq!(rays[0]["kind"], "primary");
     assert_eq!(rays[0]["t"], Value::Null);
     assert_eq!(rays[0]["hit"], Value::Null);
-    assert!(close(&json["colour"], DVec3::new(0.1, 0.2, 0.3)), "the background");
+    assert!(
+        close(&json["colour"], DVec3::new(0.1, 0.2, 0.3)),
+        "the background"
+    );
     assert!(json["lights"].as_array().unwrap().is_empty());
 }
 
@@ -157,7 +189,10 @@ fn the_tree_tells_the_same_story_and_a_pixel_outside_is_a_clear_error() {
     let out = raylab(&["inspect", path.to_str().unwrap(), "--pixel", "33,0"]);
     assert!(!out.status.success());
     let error = String::from_utf8_lossy(&out.stderr);
-    assert!(error.contains("pixel (33, 0) is outside the 33 x 33 image"), "{error}");
+    assert!(
+        error.contains("pixel (33, 0) is outside the 33 x 33 image"),
+        "{error}"
+    );
     let out = raylab(&["inspect", path.to_str().unwrap(), "--pixel", "3"]);
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("X,Y"));

@@ -46,7 +46,10 @@ fn the_window_sits_beside_the_pixel_scrolls_from_its_title_and_opens_at_the_top(
     click(&mut harness, ball, Modifiers::ALT);
     harness.run_ok();
     let window = window_rect(&harness);
-    assert!(!window.expand(4.0).contains(ball), "{window:?} covers the pixel at {ball:?}");
+    assert!(
+        !window.expand(4.0).contains(ball),
+        "{window:?} covers the pixel at {ball:?}"
+    );
     let top = final_colour_offset(&harness);
 
     // The wheel over the title bar scrolls the contents.
@@ -59,7 +62,10 @@ fn the_window_sits_beside_the_pixel_scrolls_from_its_title_and_opens_at_the_top(
     let cube = object_on_screen(&harness, 3);
     click(&mut harness, cube, Modifiers::ALT);
     harness.run_ok();
-    assert!((final_colour_offset(&harness) - top).abs() < 1.0, "back at the top");
+    assert!(
+        (final_colour_offset(&harness) - top).abs() < 1.0,
+        "back at the top"
+    );
     assert!(!window_rect(&harness).expand(4.0).contains(cube));
     assert!(picture(&harness).contains(cube));
 }
@@ -96,7 +102,12 @@ fn every_light_is_listed_with_why_it_adds_nothing() {
     wait_for_probes(&mut harness);
     assert_eq!(harness.state().inspected_pixel(), Some(wanted));
     // Each light is named in the window as well as in the outliner.
-    for label in ["Ambient light 1", "Point light 2", "Directional light 3", "Spot light 4"] {
+    for label in [
+        "Ambient light 1",
+        "Point light 2",
+        "Directional light 3",
+        "Spot light 4",
+    ] {
         assert!(harness.get_all_by_label(label).count() >= 2, "{label}");
     }
     for outcome in ["shadowed by blue box", "outside the spot cone"] {

@@ -48,9 +48,17 @@ fn segments_end_where_the_recorded_rays_stopped() {
     assert_eq!((primary.end, primary.object), (SegmentEnd::Hit, Some(0)));
 
     let shadow = find(SegmentKind::Ray(RayKind::Shadow), 0);
-    assert!(near(shadow.to, DVec3::new(0.0, 0.0, 7.0)), "{:?}", shadow.to);
+    assert!(
+        near(shadow.to, DVec3::new(0.0, 0.0, 7.0)),
+        "{:?}",
+        shadow.to
+    );
     assert_eq!(shadow.end, SegmentEnd::Blocked);
-    assert_eq!((shadow.object, shadow.light), (Some(1), Some(1)), "the target blocks light 1");
+    assert_eq!(
+        (shadow.object, shadow.light),
+        (Some(1), Some(1)),
+        "the target blocks light 1"
+    );
 
     let bounce = find(SegmentKind::Ray(RayKind::Reflection), 1);
     assert!(near(bounce.to, DVec3::new(0.0, 0.0, 7.0)));
@@ -61,13 +69,25 @@ fn segments_end_where_the_recorded_rays_stopped() {
 
     // The spotlight, outside its cone, gets a stub towards it from each hit; the point
     // light is behind the target's lit-side-away surface.
-    let cone = find(SegmentKind::Unreached(LightOutcome::Skipped(LightSkip::OutsideSpotCone)), 0);
+    let cone = find(
+        SegmentKind::Unreached(LightOutcome::Skipped(LightSkip::OutsideSpotCone)),
+        0,
+    );
     assert_eq!(cone.light, Some(2));
-    assert!(near(cone.to, DVec3::Z), "a stub of twice the normal towards (0, 0, 3)");
+    assert!(
+        near(cone.to, DVec3::Z),
+        "a stub of twice the normal towards (0, 0, 3)"
+    );
     let behind = find(SegmentKind::Unreached(LightOutcome::BehindSurface), 1);
     assert_eq!(behind.light, Some(1));
-    assert!(near(behind.from, DVec3::new(0.0, 0.0, 7.0)) && near(behind.to, DVec3::new(0.0, 0.0, 8.0)));
-    assert_eq!(segments.len(), 8, "3 rays, 2 normals, 3 stubs: {segments:?}");
+    assert!(
+        near(behind.from, DVec3::new(0.0, 0.0, 7.0)) && near(behind.to, DVec3::new(0.0, 0.0, 8.0))
+    );
+    assert_eq!(
+        segments.len(),
+        8,
+        "3 rays, 2 normals, 3 stubs: {segments:?}"
+    );
 
     // A miss runs off along its direction.
     let miss = path_segments(&report(&scene, (0, 0)), &scene.lights, LENGTHS);
@@ -104,13 +124,20 @@ fn drawn_segments_round_trip_through_the_view_camera() {
     let all = inspections(&scene, &[(16, 16), (0, 0)]);
     let settings = RayPathSettings::default();
     let drawn = screen_segments(&view, &scene, &all, &settings, Some((16, 16)));
-    assert!(drawn.iter().any(|s| s.pixel == (0, 0) && !s.inspected), "the second pixel too");
+    assert!(
+        drawn.iter().any(|s| s.pixel == (0, 0) && !s.inspected),
+        "the second pixel too"
+    );
     for s in &drawn {
         for (world, screen) in [(s.segment.from, s.from), (s.segment.to, s.to)] {
             let ray = view.ray(screen);
             let offset = world - ray.origin;
             let miss = (offset - ray.dir * offset.dot(ray.dir)).length();
-            assert!(miss < 1e-4 * offset.length(), "{:?}: {miss}", s.segment.kind);
+            assert!(
+                miss < 1e-4 * offset.length(),
+                "{:?}: {miss}",
+                s.segment.kind
+            );
         }
     }
     let kinds = |d: &[raylab::ui::viewport::ray_paths::ScreenSegment]| {
@@ -124,15 +151,19 @@ fn drawn_segments_round_trip_through_the_view_camera() {
         ..RayPathSettings::default()
     };
     let fewer = screen_segments(&view, &scene, &all, &no_shadows, Some((16, 16)));
-    assert!(kinds(&fewer).iter().all(|k| matches!(
-        k,
-        SegmentKind::Ray(RayKind::Primary | RayKind::Reflection)
-    )));
+    assert!(
+        kinds(&fewer)
+            .iter()
+            .all(|k| matches!(k, SegmentKind::Ray(RayKind::Primary | RayKind::Reflection)))
+    );
     assert_eq!(
         fewer.len(),
         drawn
             .iter()
-            .filter(|s| matches!(s.segment.kind, SegmentKind::Ray(RayKind::Primary | RayKind::Reflection)))
+            .filter(|s| matches!(
+                s.segment.kind,
+                SegmentKind::Ray(RayKind::Primary | RayKind::Reflection)
+            ))
             .count()
     );
 }

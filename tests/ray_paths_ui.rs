@@ -12,7 +12,8 @@ use raylab::trace::RayKind;
 use raylab::ui::EditorApp;
 use raylab::ui::viewport::ray_paths::{MAX_SPAN_PIXELS, RaySpan, ScreenSegment};
 use view_harness::{
-    click, harness, move_inspector_away, object_on_screen, orbit, press, scene_pixel, segments, toggle,
+    click, harness, move_inspector_away, object_on_screen, orbit, press, scene_pixel, segments,
+    toggle,
 };
 
 /// Inspects the pixel over scene object `index` (in camera view); returns the pixel.
@@ -57,9 +58,17 @@ fn a_pin_keeps_a_pixels_rays_and_row_mode_traces_the_row() {
 
     press(&mut harness, "rays of the row");
     assert_eq!(harness.state().ray_paths().span, RaySpan::Row);
-    let traced: Vec<(u32, u32)> = harness.state().inspections().iter().map(|i| i.pixel).collect();
+    let traced: Vec<(u32, u32)> = harness
+        .state()
+        .inspections()
+        .iter()
+        .map(|i| i.pixel)
+        .collect();
     let row = traced.iter().filter(|p| p.1 == boxed.1).count();
-    assert!(row > MAX_SPAN_PIXELS as usize / 2 && row <= MAX_SPAN_PIXELS as usize + 1, "{row}");
+    assert!(
+        row > MAX_SPAN_PIXELS as usize / 2 && row <= MAX_SPAN_PIXELS as usize + 1,
+        "{row}"
+    );
     assert!(traced.contains(&ball), "pins stay");
 
     press(&mut harness, "Clear pins");
@@ -67,15 +76,16 @@ fn a_pin_keeps_a_pixels_rays_and_row_mode_traces_the_row() {
     assert!(!harness.state().scene().objects.is_empty() && !harness.state().is_dirty());
 }
 
-/// The midpoint of the longest drawn segment of `kind` of the inspected pixel.
-fn midpoint_of(harness: &Harness<'_, EditorApp>, kind: SegmentKind) -> egui::Pos2 {
+/// A point `along` the longest drawn segment of `kind` of the inspected pixel (0 at its
+/// start, 1 at its end), so a long ray's point on the picture can be chosen.
+fn point_on(harness: &Harness<'_, EditorApp>, kind: SegmentKind, along: f32) -> egui::Pos2 {
     let all = segments(harness);
     let segment = all
         .iter()
         .filter(|s| s.inspected && s.segment.kind == kind)
         .max_by(|a, b| a.from.distance(a.to).total_cmp(&b.from.distance(b.to)))
         .unwrap_or_else(|| panic!("no {kind:?} drawn"));
-    segment.from + (segment.to - segment.from) * 0.5
+    segment.from + (segment.to - segment.from) * along
 }
 
 fn hover(harness: &mut Harness<'_, EditorApp>, pos: egui::Pos2) {
@@ -91,7 +101,8 @@ fn hovering_a_segment_shows_its_numbers_and_each_kind_can_be_hidden() {
     orbit(&mut harness, Vec2::new(140.0, 30.0));
     assert!(!harness.state().view_camera().through_scene_camera);
 
-    let primary = midpoint_of(&harness, SegmentKind::Ray(RayKind::Primary));
+    // Near its hit: the camera ray starts at the scene camera, maybe off the picture.
+    let primary = point_on(&harness, SegmentKind::Ray(RayKind::Primary), 0.85);
     hover(&mut harness, primary);
     let (x, y) = ball;
     harness.get_by_label(&format!("primary ray · pixel ({x}, {y}) · depth 0"));
@@ -100,7 +111,7 @@ fn hovering_a_segment_shows_its_numbers_and_each_kind_can_be_hidden() {
     let origin = format!("origin ({:.4}, {:.4}, {:.4})", camera.x, camera.y, camera.z);
     harness.get_by_label(&origin);
 
-    let shadow = midpoint_of(&harness, SegmentKind::Ray(RayKind::Shadow));
+    let shadow = point_on(&harness, SegmentKind::Ray(RayKind::Shadow), 0.3);
     hover(&mut harness, shadow);
     harness.get_by_label_contains("shadow ray · pixel");
     harness.get_by_label_contains("towards");
@@ -108,13 +119,18 @@ fn hovering_a_segment_shows_its_numbers_and_each_kind_can_be_hidden() {
     toggle(&mut harness, "shadow rays");
     assert!(!harness.state().ray_paths().shadow);
     assert!(
-        segments(&harness)
-            .iter()
-            .all(|s| !matches!(s.segment.kind, SegmentKind::Ray(RayKind::Shadow) | SegmentKind::Unreached(_))),
+        segments(&harness).iter().all(|s| !matches!(
+            s.segment.kind,
+            SegmentKind::Ray(RayKind::Shadow) | SegmentKind::Unreached(_)
+        )),
         "no shadow rays drawn"
     );
     hover(&mut harness, shadow);
-    assert!(harness.query_by_label_contains("shadow ray · pixel").is_none());
+    assert!(
+        harness
+            .query_by_label_contains("shadow ray · pixel")
+            .is_none()
+    );
 
     toggle(&mut harness, "primary rays");
     toggle(&mut harness, "normals");
@@ -126,5 +142,9 @@ fn hovering_a_segment_shows_its_numbers_and_each_kind_can_be_hidden() {
     );
     toggle(&mut harness, "shadow rays");
     assert!(harness.state().ray_paths().shadow);
-    assert_eq!(harness.state().scene().camera.position, camera, "looking is not editing");
+    assert_eq!(
+        harness.state().scene().camera.position,
+        camera,
+        "looking is not editing"
+    );
 }

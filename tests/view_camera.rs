@@ -35,13 +35,20 @@ fn wait_for_final(harness: &mut Harness<'_, EditorApp>) {
 fn orbiting_leaves_the_scene_unmodified_and_renders_the_view_at_the_viewport_size() {
     let mut harness = harness("orbit", true);
     let before = harness.state().scene().clone();
-    assert!(harness.state().view_camera().through_scene_camera, "files open in camera view");
+    assert!(
+        harness.state().view_camera().through_scene_camera,
+        "files open in camera view"
+    );
     orbit(&mut harness, Vec2::new(120.0, 20.0));
     let app = harness.state();
     assert!(!app.view_camera().through_scene_camera);
     assert_ne!(app.view_camera().position, before.camera.position);
     assert_eq!(app.scene(), &before, "the scene camera did not move");
-    assert!(!app.is_dirty() && !app.title().contains('*'), "{}", app.title());
+    assert!(
+        !app.is_dirty() && !app.title().contains('*'),
+        "{}",
+        app.title()
+    );
 
     // The preview renders the view camera at the viewport's size, not the scene's.
     let options = app.preview().unwrap().submitted_options().unwrap();
@@ -54,11 +61,17 @@ fn orbiting_leaves_the_scene_unmodified_and_renders_the_view_at_the_viewport_siz
         options.height.abs_diff(expected.1),
     );
     assert!(dw <= 1 && dh <= 1, "{options:?} for a picture of {area:?}");
-    assert_ne!((options.width, options.height), (before.camera.width, before.camera.height));
+    assert_ne!(
+        (options.width, options.height),
+        (before.camera.width, before.camera.height)
+    );
 
     undo(&mut harness);
     assert_eq!(harness.state().scene(), &before, "nothing to undo");
-    assert!(!harness.state().view_camera().through_scene_camera, "the view stays");
+    assert!(
+        !harness.state().view_camera().through_scene_camera,
+        "the view stays"
+    );
 }
 
 #[test]
@@ -72,11 +85,24 @@ fn camera_view_shows_the_scene_camera_and_its_final_frame_equals_render() {
     assert_eq!(harness.state().shown_camera(), scene.camera);
     wait_for_final(&mut harness);
     let frame = harness.state().preview().unwrap().frame().unwrap();
-    assert_eq!(frame.pass, Pass::Full { samples: 4, target: 4 });
+    assert_eq!(
+        frame.pass,
+        Pass::Full {
+            samples: 4,
+            target: 4
+        }
+    );
     let world = World::new(&scene).unwrap();
-    let (image, _) = render(&world, &RenderOptions::from_scene(&scene), &RenderProgress::default())
-        .unwrap();
-    assert!(frame.image.pixels == image.pixels, "the preview differs from raylab render");
+    let (image, _) = render(
+        &world,
+        &RenderOptions::from_scene(&scene),
+        &RenderProgress::default(),
+    )
+    .unwrap();
+    assert!(
+        frame.image.pixels == image.pixels,
+        "the preview differs from raylab render"
+    );
 
     // The button goes back to the view camera where it was.
     harness.get_by_label(CAMERA_VIEW_LABEL).click();
@@ -93,12 +119,25 @@ fn setting_the_scene_camera_from_the_view_is_one_undo_step() {
     harness.key_press_modifiers(Modifiers::COMMAND | Modifiers::ALT, Key::Num0);
     harness.run_ok();
     let camera = harness.state().scene().camera.clone();
-    assert_eq!((camera.position, camera.look_at), (view.position, view.look_at));
-    assert_eq!((camera.width, camera.height), (before.camera.width, before.camera.height));
+    assert_eq!(
+        (camera.position, camera.look_at),
+        (view.position, view.look_at)
+    );
+    assert_eq!(
+        (camera.width, camera.height),
+        (before.camera.width, before.camera.height)
+    );
     assert!(harness.state().is_dirty());
-    assert!(harness.state().view_camera().through_scene_camera, "looking through it now");
+    assert!(
+        harness.state().view_camera().through_scene_camera,
+        "looking through it now"
+    );
     undo(&mut harness);
-    assert_eq!(harness.state().scene(), &before, "one undo restores the camera");
+    assert_eq!(
+        harness.state().scene(),
+        &before,
+        "one undo restores the camera"
+    );
 }
 
 #[test]
@@ -106,9 +145,9 @@ fn the_scene_camera_is_drawn_from_the_view_selectable_and_movable() {
     let mut harness = harness("frustum", false);
     let before = harness.state().scene().clone();
     // Step back and to the side so the scene camera is in view.
-    orbit(&mut harness, Vec2::new(150.0, 40.0));
+    orbit(&mut harness, Vec2::new(210.0, 20.0));
     let centre = picture(&harness).center();
-    for _ in 0..8 {
+    for _ in 0..10 {
         harness.event(egui::Event::MouseWheel {
             unit: egui::MouseWheelUnit::Line,
             delta: Vec2::new(0.0, -1.0),
@@ -121,7 +160,10 @@ fn the_scene_camera_is_drawn_from_the_view_selectable_and_movable() {
     }
     harness.run_ok();
     let eye = before.camera.position;
-    assert!(picture(&harness).contains(screen(&harness, eye)), "the eye is in view");
+    assert!(
+        picture(&harness).contains(screen(&harness, eye)),
+        "the eye is in view"
+    );
     let at = screen(&harness, eye);
     click(&mut harness, at, Modifiers::NONE);
     assert_eq!(harness.state().selection(), &Selection::Camera);
@@ -132,7 +174,11 @@ fn the_scene_camera_is_drawn_from_the_view_selectable_and_movable() {
     let (from, to) = (screen(&harness, grab), screen(&harness, grab + DVec3::X));
     drag(&mut harness, from, to, Modifiers::NONE);
     let moved = harness.state().scene().camera.clone();
-    assert!((moved.position - (eye + DVec3::X)).length() < 5e-3, "{}", moved.position);
+    assert!(
+        (moved.position - (eye + DVec3::X)).length() < 5e-3,
+        "{}",
+        moved.position
+    );
     assert!(
         ((moved.look_at - before.camera.look_at) - (moved.position - eye)).length() < 1e-9,
         "the camera keeps its aim"
@@ -150,9 +196,16 @@ fn the_view_is_remembered_per_file() {
     let memory = harness.state().view_memory();
     assert_eq!(memory.get(&path), Some(&view));
     let reopened = harness_on(path, false, memory.clone());
-    assert_eq!(reopened.state().view_camera(), &view, "the same file, the same view");
+    assert_eq!(
+        reopened.state().view_camera(),
+        &view,
+        "the same file, the same view"
+    );
     let other = harness_on(scene_file("memory-other"), false, memory);
-    assert!(other.state().view_camera().through_scene_camera, "another file: camera view");
+    assert!(
+        other.state().view_camera().through_scene_camera,
+        "another file: camera view"
+    );
     // Nothing of the view is in the scene file.
     assert_eq!(reopened.state().scene(), other.state().scene());
 }

@@ -11,8 +11,8 @@ use serde::Serialize;
 
 use crate::scene::{Scene, load_scene};
 use crate::trace::{
-    PixelReport, RayKind, RenderOptions, Term, TermSwitches, TracedRay, View, World,
-    switches_text, traced_rays, try_inspect_pixel,
+    PixelReport, RayKind, RenderOptions, Term, TermSwitches, TracedRay, View, World, switches_text,
+    traced_rays, try_inspect_pixel,
 };
 
 /// Arguments of `raylab inspect`.
@@ -193,7 +193,12 @@ fn object_name(world: &World, index: usize) -> String {
 
 /// The readable tree: the camera ray, then for each hit its terms, its lights with their
 /// shadow rays, and its mirror bounce, indented by depth.
-fn tree_text(world: &World, scene: &Scene, options: &RenderOptions, report: &PixelReport) -> String {
+fn tree_text(
+    world: &World,
+    scene: &Scene,
+    options: &RenderOptions,
+    report: &PixelReport,
+) -> String {
     let name = |i: usize| object_name(world, i);
     let light_name = |i: usize| {
         scene.lights.get(i).map_or_else(

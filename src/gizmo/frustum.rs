@@ -72,6 +72,9 @@ mod tests {
         let width = (f.corners[1] - f.corners[0]).length();
         let height = (f.corners[3] - f.corners[0]).length();
         assert!((width / height - 1.6).abs() < 1e-12);
-        assert!((f.up_tip - camera.position).dot(camera.up) > (f.corners[0] - camera.position).dot(camera.up));
+        assert!(
+            (f.up_tip - camera.position).dot(camera.up)
+                > (f.corners[0] - camera.position).dot(camera.up)
+        );
     }
 }

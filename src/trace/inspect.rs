@@ -140,7 +140,9 @@ impl Recorder for ReportRecorder<'_> {
         // where the ray meets the blocker.
         if let Some(shadow) = record.shadow_ray
             && let Some(blocker) = shadow.blocked_by
-            && let Some(hit) = self.world.intersect_object(blocker, &shadow.ray, shadow.t_max)
+            && let Some(hit) = self
+                .world
+                .intersect_object(blocker, &shadow.ray, shadow.t_max)
         {
             bounce.blocker_hits.push((record.scene_index, hit));
         }

@@ -374,8 +374,7 @@ impl<'w> Tracer<'w> {
                 continue;
             }
             reaching += 1;
-            if !self.primary.shadows || self.shadow_ray(hit, &sample, counts).blocked_by.is_none()
-            {
+            if !self.primary.shadows || self.shadow_ray(hit, &sample, counts).blocked_by.is_none() {
                 visible += 1;
             }
         }

@@ -227,7 +227,11 @@ impl EditorApp {
     #[must_use]
     pub fn with_view_memory(mut self, memory: ViewMemory) -> Self {
         self.looking.memory = memory;
-        if let Some(view) = self.path.as_deref().and_then(|p| self.looking.memory.get(p)) {
+        if let Some(view) = self
+            .path
+            .as_deref()
+            .and_then(|p| self.looking.memory.get(p))
+        {
             self.looking.view = view.clone();
         }
         self

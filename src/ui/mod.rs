@@ -21,21 +21,21 @@ pub use commands::{Command, LightKind, SceneEdit, Selection};
 pub use document::confirm::DiscardAction;
 pub use document::export::ExportState;
 pub use document::{files, recent};
+pub use gizmo::toolbar::{CAMERA_VIEW_LABEL, SET_CAMERA_LABEL};
 pub use panels::inspector::trs_from_matrix;
 pub use panels::outliner::light_label;
 pub use viewport::convergence_plot::CONVERGENCE_EXPLANATION;
 pub use viewport::picture::{VIEWPORT_LABEL, letterbox};
-pub use viewport::ray_paths::{RAY_PATHS_LABEL, RayPathSettings, RaySpan};
-pub use viewport::view_camera::ViewCamera;
-pub use viewport::view_memory::ViewMemory;
-pub use gizmo::toolbar::{CAMERA_VIEW_LABEL, SET_CAMERA_LABEL};
 pub use viewport::pixel_inspector::{
     FINAL_COLOUR_LABEL, InspectedBounce, InspectedHit, InspectedLight, InspectedPixel,
     PixelInspection,
 };
 pub use viewport::preview_link::{PreviewLink, ShownFrame, frame_rgba};
 pub use viewport::preview_settings::PreviewSettings;
+pub use viewport::ray_paths::{RAY_PATHS_LABEL, RayPathSettings, RaySpan};
 pub use viewport::toolbar::{NAN_COLOUR, non_finite_text, view_label};
+pub use viewport::view_camera::ViewCamera;
+pub use viewport::view_memory::ViewMemory;
 
 /// The window and taskbar icon (`assets/icon.png`, rendered by raylab itself).
 pub const ICON_PNG: &[u8] = include_bytes!("../../assets/icon.png");

@@ -33,7 +33,12 @@ pub fn mirror_scene() -> Scene {
     let mut mirror = object(Shape::Plane, DVec3::ZERO, DVec3::ZERO, DVec3::ONE);
     mirror.name = "mirror".to_owned();
     mirror.material = "mirror".to_owned();
-    let mut target = object(Shape::Sphere, DVec3::new(0.0, 0.0, 8.0), DVec3::ZERO, DVec3::ONE);
+    let mut target = object(
+        Shape::Sphere,
+        DVec3::new(0.0, 0.0, 8.0),
+        DVec3::ZERO,
+        DVec3::ONE,
+    );
     target.name = "target".to_owned();
     target.material = "matte".to_owned();
     scene.objects = vec![mirror, target];
@@ -54,4 +59,3 @@ pub fn mirror_scene() -> Scene {
     scene.render.background = DVec3::new(0.1, 0.2, 0.3);
     scene
 }
-

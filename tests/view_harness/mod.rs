@@ -59,7 +59,11 @@ pub fn harness(name: &str, preview: bool) -> Harness<'static, EditorApp> {
 }
 
 /// Steps until `done` holds, sleeping between steps (bounded).
-pub fn step_until(harness: &mut Harness<'_, EditorApp>, what: &str, done: impl Fn(&EditorApp) -> bool) {
+pub fn step_until(
+    harness: &mut Harness<'_, EditorApp>,
+    what: &str,
+    done: impl Fn(&EditorApp) -> bool,
+) {
     let deadline = Instant::now() + Duration::from_secs(120);
     while !done(harness.state()) {
         assert!(Instant::now() < deadline, "timed out waiting for {what}");
@@ -86,7 +90,9 @@ pub fn view(harness: &Harness<'_, EditorApp>) -> ViewMapping {
 
 /// Where a world point is on screen, through the camera the viewport shows.
 pub fn screen(harness: &Harness<'_, EditorApp>, p_world: DVec3) -> Pos2 {
-    view(harness).project(p_world).expect("in front of the camera")
+    view(harness)
+        .project(p_world)
+        .expect("in front of the camera")
 }
 
 /// Where scene object `index`'s origin is on screen.
@@ -187,6 +193,7 @@ pub fn toggle(harness: &mut Harness<'_, EditorApp>, label: &str) {
 /// Drags the pixel inspector window by its title to the screen's bottom-left corner,
 /// off the picture.
 pub fn move_inspector_away(harness: &mut Harness<'_, EditorApp>) {
-    let title = harness.get_by_label("Pixel inspector").rect().center();
+    // The window's node spans the whole window: its title bar is along the top.
+    let title = harness.get_by_label("Pixel inspector").rect().center_top() + Vec2::new(0.0, 12.0);
     drag(harness, title, Pos2::new(60.0, 790.0), Modifiers::NONE);
 }

@@ -56,7 +56,10 @@ impl EditorApp {
             ctx.request_repaint_after(wait);
         }
         if let Some(preview) = &mut self.preview {
-            preview.sync(self.looking.shown_scene(&self.scene), &self.preview_settings);
+            preview.sync(
+                self.looking.shown_scene(&self.scene),
+                &self.preview_settings,
+            );
         }
         self.looking
             .sync_inspections(&self.scene, self.preview_settings.switches);

@@ -123,9 +123,9 @@ impl Looking {
     /// Asks for the inspected and pinned pixels of `scene` with `switches` if they are
     /// not what was last asked.
     pub fn sync_inspections(&mut self, scene: &Scene, switches: TermSwitches) {
-        let pixels =
-            self.ray_paths
-                .pixels(self.inspected, scene.camera.width, scene.camera.height);
+        let pixels = self
+            .ray_paths
+            .pixels(self.inspected, scene.camera.width, scene.camera.height);
         if let Some(probes) = &mut self.probes {
             probes.inspections.sync(scene, switches, pixels);
         }

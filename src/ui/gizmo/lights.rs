@@ -38,9 +38,7 @@ pub(super) fn light_elements(
                 view.project(position),
                 view.project(
                     position
-                        + direction.normalize_or_zero()
-                            * view.world_per_point(position)
-                            * 22.0,
+                        + direction.normalize_or_zero() * view.world_per_point(position) * 22.0,
                 ),
             ) {
                 line(out, p, q, colour.gamma_multiply(0.8), None);

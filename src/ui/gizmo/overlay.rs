@@ -74,13 +74,7 @@ pub fn gizmo_elements(
     let camera_selected = *selection == Selection::Camera;
     camera_elements(&mut out, view, &scene.camera, camera_selected);
     for (index, light) in scene.lights.iter().enumerate() {
-        light_elements(
-            &mut out,
-            view,
-            index,
-            light,
-            selected_light == Some(index),
-        );
+        light_elements(&mut out, view, index, light, selected_light == Some(index));
     }
     match selection {
         Selection::Object(index) => {

@@ -14,7 +14,13 @@ pub const HEADER_HEIGHT: f32 = 28.0;
 
 /// The strip above the toolbar: which camera the picture is from, its size, samples and
 /// depth.
-pub fn header_ui(ui: &mut egui::Ui, header: Rect, scene: &Scene, shown: &Camera, camera_view: bool) {
+pub fn header_ui(
+    ui: &mut egui::Ui,
+    header: Rect,
+    scene: &Scene,
+    shown: &Camera,
+    camera_view: bool,
+) {
     let painter = ui.painter_at(header);
     painter.rect_filled(header, CornerRadius::ZERO, Color32::from_gray(24));
     painter.hline(

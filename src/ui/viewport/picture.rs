@@ -74,11 +74,7 @@ pub fn viewport_ui(
     );
     let outer = Rect::from_min_max(Pos2::new(full.min.x, bar.max.y), full.max);
     let region = outer.shrink(16.0);
-    let free_size = free_render_size(
-        region.width(),
-        region.height(),
-        ui.ctx().pixels_per_point(),
-    );
+    let free_size = free_render_size(region.width(), region.height(), ui.ctx().pixels_per_point());
     let shown = input.view.shown(&scene.camera, free_size);
     header_ui(ui, header, scene, &shown, input.view.through_scene_camera);
     let non_finite = input

@@ -97,7 +97,11 @@ impl ViewCamera {
 /// The scene as the viewport renders it: the scene itself in camera view, else a copy
 /// whose camera is the view camera at `free_size`.
 #[must_use]
-pub fn shown_scene<'s>(scene: &'s Scene, view: &ViewCamera, free_size: (u32, u32)) -> Cow<'s, Scene> {
+pub fn shown_scene<'s>(
+    scene: &'s Scene,
+    view: &ViewCamera,
+    free_size: (u32, u32),
+) -> Cow<'s, Scene> {
     if view.through_scene_camera {
         Cow::Borrowed(scene)
     } else {
@@ -111,7 +115,11 @@ pub fn shown_scene<'s>(scene: &'s Scene, view: &ViewCamera, free_size: (u32, u32
 /// screen of `pixels_per_point`: the screen's pixels, the long side at most
 /// [`MAX_VIEW_LONG_SIDE`], each side at least 1.
 #[must_use]
-pub fn free_render_size(width_points: f32, height_points: f32, pixels_per_point: f32) -> (u32, u32) {
+pub fn free_render_size(
+    width_points: f32,
+    height_points: f32,
+    pixels_per_point: f32,
+) -> (u32, u32) {
     let (w, h) = (
         f64::from(width_points * pixels_per_point).max(1.0),
         f64::from(height_points * pixels_per_point).max(1.0),
@@ -130,7 +138,10 @@ mod tests {
         let scene = crate::ui::document::files::default_scene();
         let mut view = ViewCamera::through(&scene.camera);
         assert_eq!(view.shown(&scene.camera, (300, 200)), scene.camera);
-        assert!(matches!(shown_scene(&scene, &view, (300, 200)), Cow::Borrowed(_)));
+        assert!(matches!(
+            shown_scene(&scene, &view, (300, 200)),
+            Cow::Borrowed(_)
+        ));
         view.through_scene_camera = false;
         view.position += DVec3::X;
         let shown = shown_scene(&scene, &view, (300, 200));
@@ -138,7 +149,10 @@ mod tests {
         assert_eq!(shown.camera.position, scene.camera.position + DVec3::X);
         assert_eq!(shown.objects, scene.objects, "only the camera differs");
         let set = view.as_scene_camera(&scene.camera);
-        assert_eq!((set.width, set.height), (scene.camera.width, scene.camera.height));
+        assert_eq!(
+            (set.width, set.height),
+            (scene.camera.width, scene.camera.height)
+        );
         assert_eq!(set.position, view.position);
     }
 

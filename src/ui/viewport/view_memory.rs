@@ -90,6 +90,10 @@ mod tests {
         }
         assert_eq!(memory.views.len(), MAX_FILES);
         assert_eq!(memory.get(Path::new("a.ron")), None, "the oldest went");
-        assert!(memory.get(Path::new(&format!("f{}.ron", MAX_FILES + 4))).is_some());
+        assert!(
+            memory
+                .get(Path::new(&format!("f{}.ron", MAX_FILES + 4)))
+                .is_some()
+        );
     }
 }

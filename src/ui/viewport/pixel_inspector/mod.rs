@@ -183,7 +183,8 @@ mod tests {
         let mut behind = 0;
         for y in (0..scene.camera.height).step_by(37) {
             for x in (0..scene.camera.width).step_by(41) {
-                let inspection = PixelInspection::traced(&world, &scene, TermSwitches::ALL_ON, (x, y));
+                let inspection =
+                    PixelInspection::traced(&world, &scene, TermSwitches::ALL_ON, (x, y));
                 let pixel = inspection.result.unwrap();
                 assert_eq!(pixel.bounces.len(), pixel.report.bounces.len());
                 for (bounce, names) in pixel.report.bounces.iter().zip(&pixel.bounces) {
@@ -213,7 +214,10 @@ mod tests {
                 mirrors += usize::from(pixel.bounces.len() > 1);
             }
         }
-        assert!(mirrors > 0 && shadowed > 0 && behind > 0, "{mirrors} {shadowed} {behind}");
+        assert!(
+            mirrors > 0 && shadowed > 0 && behind > 0,
+            "{mirrors} {shadowed} {behind}"
+        );
     }
 
     #[test]
@@ -221,6 +225,11 @@ mod tests {
         let scene = crate::ui::files::default_scene();
         let world = World::new(&scene).unwrap();
         let outside = PixelInspection::traced(&world, &scene, TermSwitches::ALL_ON, (10_000, 0));
-        assert!(outside.result.unwrap_err().contains("outside the 800 x 600 image"));
+        assert!(
+            outside
+                .result
+                .unwrap_err()
+                .contains("outside the 800 x 600 image")
+        );
     }
 }

@@ -313,8 +313,14 @@ mod tests {
             viewport,
             screen,
         };
-        assert!(at(300.0).window_pos().x > 300.0, "right of a pixel on the left");
-        assert!(at(900.0).window_pos().x + WIDTH < 900.0, "left of a pixel on the right");
+        assert!(
+            at(300.0).window_pos().x > 300.0,
+            "right of a pixel on the left"
+        );
+        assert!(
+            at(900.0).window_pos().x + WIDTH < 900.0,
+            "left of a pixel on the right"
+        );
         // In the middle of a viewport too narrow for either side: over a side panel.
         let narrow = Rect::from_min_size(Pos2::new(230.0, 80.0), Vec2::new(700.0, 600.0));
         let middle = PixelAnchor {
@@ -323,7 +329,10 @@ mod tests {
         };
         for anchor in [at(300.0), at(900.0), middle] {
             let window = Rect::from_min_size(anchor.window_pos(), Vec2::new(WIDTH, HEIGHT));
-            assert!(!window.contains(anchor.pos), "not over the pixel: {window:?}");
+            assert!(
+                !window.contains(anchor.pos),
+                "not over the pixel: {window:?}"
+            );
             assert!(screen.contains_rect(window), "on screen: {window:?}");
         }
     }

@@ -60,7 +60,12 @@ impl RayPathSettings {
     /// (at most [`MAX_SPAN_PIXELS`]), then the pinned ones; each once, all inside the
     /// `width` x `height` image.
     #[must_use]
-    pub fn pixels(&self, inspected: Option<(u32, u32)>, width: u32, height: u32) -> Vec<(u32, u32)> {
+    pub fn pixels(
+        &self,
+        inspected: Option<(u32, u32)>,
+        width: u32,
+        height: u32,
+    ) -> Vec<(u32, u32)> {
         let mut out: Vec<(u32, u32)> = Vec::new();
         let mut add = |p: (u32, u32)| {
             if p.0 < width && p.1 < height && !out.contains(&p) {
@@ -116,14 +121,21 @@ mod tests {
         let row: Vec<_> = pixels.iter().filter(|p| p.1 == 7).collect();
         assert_eq!(row.len(), MAX_SPAN_PIXELS as usize + 1);
         assert!(row.iter().all(|p| p.0 < 800));
-        assert_eq!(pixels.last(), Some(&(5, 5)), "pinned, and the one outside dropped");
+        assert_eq!(
+            pixels.last(),
+            Some(&(5, 5)),
+            "pinned, and the one outside dropped"
+        );
         settings.toggle_pin((5, 5));
         assert_eq!(settings.pinned, vec![(999, 0)]);
         let column = RayPathSettings {
             span: RaySpan::Column,
             ..RayPathSettings::default()
         };
-        assert_eq!(column.pixels(Some((1, 1)), 4, 3), vec![(1, 1), (1, 0), (1, 2)]);
+        assert_eq!(
+            column.pixels(Some((1, 1)), 4, 3),
+            vec![(1, 1), (1, 0), (1, 2)]
+        );
         assert!(column.pixels(None, 4, 3).is_empty());
     }
 }

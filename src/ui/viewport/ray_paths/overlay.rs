@@ -178,11 +178,22 @@ fn paint_segment(painter: &egui::Painter, s: &ScreenSegment, hot: bool, scene: &
             if s.inspected
                 && let Some(blocker) = s.segment.object.and_then(|i| scene.objects.get(i))
             {
-                chip(painter, s.to + Vec2::new(8.0, 4.0), &blocker.name, colour, &small);
+                chip(
+                    painter,
+                    s.to + Vec2::new(8.0, 4.0),
+                    &blocker.name,
+                    colour,
+                    &small,
+                );
             }
         }
         (SegmentKind::Ray(_), SegmentEnd::Hit) => {
-            painter.circle(s.to, 3.5, colour, Stroke::new(1.5, Color32::from_black_alpha(170)));
+            painter.circle(
+                s.to,
+                3.5,
+                colour,
+                Stroke::new(1.5, Color32::from_black_alpha(170)),
+            );
         }
         (SegmentKind::Unreached(outcome), _) if s.inspected => {
             chip(painter, s.to, short_reason(outcome), colour, &small);
@@ -218,16 +229,19 @@ pub fn short_reason(outcome: LightOutcome) -> &'static str {
         LightOutcome::Skipped(LightSkip::AtTheLight) => "at the light",
         LightOutcome::Skipped(LightSkip::NoDiffuseOrSpecular) => "no kd, ks",
         LightOutcome::Skipped(LightSkip::TermsOff) => "terms off",
-        LightOutcome::Lit | LightOutcome::AddsNothing | LightOutcome::Shadowed(_) => {
-            "shadows off"
-        }
+        LightOutcome::Lit | LightOutcome::AddsNothing | LightOutcome::Shadowed(_) => "shadows off",
     }
 }
 
 /// The numbers of a hovered segment, as the pixel inspector shows them.
 fn hover_lines(s: &ScreenSegment, scene: &Scene, inspections: &[PixelInspection]) -> Vec<String> {
     let object = |i: usize| scene.objects.get(i).map_or("?", |o| o.name.as_str());
-    let light = |i: usize| scene.lights.get(i).map_or_else(String::new, |l| light_label(l, i));
+    let light = |i: usize| {
+        scene
+            .lights
+            .get(i)
+            .map_or_else(String::new, |l| light_label(l, i))
+    };
     let (x, y) = s.pixel;
     let head = format!("pixel ({x}, {y}) · depth {}", s.segment.depth);
     let report = inspections
@@ -238,8 +252,7 @@ fn hover_lines(s: &ScreenSegment, scene: &Scene, inspections: &[PixelInspection]
     let mut lines = Vec::new();
     match s.segment.kind {
         SegmentKind::Ray(kind) => {
-            let Some(ray) = report.and_then(|r| traced_rays(r).get(s.segment.ray?).copied())
-            else {
+            let Some(ray) = report.and_then(|r| traced_rays(r).get(s.segment.ray?).copied()) else {
                 return vec![head];
             };
             lines.push(format!("{} ray · {head}", kind.name()));
@@ -250,7 +263,11 @@ fn hover_lines(s: &ScreenSegment, scene: &Scene, inspections: &[PixelInspection]
             lines.push(format!("direction {}", v(ray.direction)));
             match (ray.t, ray.hit) {
                 (Some(t), Some(hit)) => {
-                    let verb = if kind == RayKind::Shadow { "blocked by" } else { "hits" };
+                    let verb = if kind == RayKind::Shadow {
+                        "blocked by"
+                    } else {
+                        "hits"
+                    };
                     lines.push(format!("{verb} {} at t {t:.6}", object(hit.object)));
                     lines.push(format!("point {}", v(hit.point)));
                     lines.push(format!("normal {}", v(hit.normal)));
@@ -264,12 +281,18 @@ fn hover_lines(s: &ScreenSegment, scene: &Scene, inspections: &[PixelInspection]
         SegmentKind::Unreached(outcome) => {
             let name = s.segment.light.map(light).unwrap_or_default();
             lines.push(format!("{name} · {head}"));
-            lines.push(format!("no shadow ray: {}", outcome.text(&|i| object(i).to_owned())));
+            lines.push(format!(
+                "no shadow ray: {}",
+                outcome.text(&|i| object(i).to_owned())
+            ));
         }
         SegmentKind::Normal => {
             lines.push(format!("normal · {head}"));
             lines.push(format!("at {}", v(s.segment.from)));
-            lines.push(format!("n {}", v((s.segment.to - s.segment.from).normalize_or_zero())));
+            lines.push(format!(
+                "n {}",
+                v((s.segment.to - s.segment.from).normalize_or_zero())
+            ));
         }
     }
     lines
