@@ -3,6 +3,7 @@
 
 mod bench;
 mod import;
+mod isolation;
 mod render;
 
 use std::path::PathBuf;
@@ -12,6 +13,7 @@ use clap::{Parser, Subcommand};
 
 pub use bench::BenchArgs;
 pub use import::ImportArgs;
+pub use isolation::IsolationArgs;
 pub use render::RenderArgs;
 
 /// raylab: a Whitted-style ray tracer and scene editor.

@@ -1,29 +1,39 @@
 //! The outliner: camera, render settings, objects, materials and lights as a list to
-//! select from, with add, duplicate, delete and rename.
+//! select from, with add, duplicate, delete and rename; a hide toggle on each object and
+//! mute and solo toggles on each light (editor state, not scene edits).
 
 use egui::{RichText, Ui};
 
 use crate::scene::{Light, Scene, Shape};
+use crate::trace::Isolation;
 use crate::ui::commands::{Command, LightKind, SceneEdit, Selection};
+use crate::ui::viewport::isolation::IsolationToggle;
+
+/// Width of one isolation toggle at the end of a row.
+const TOGGLE_WIDTH: f32 = 22.0;
 
 /// Shows the outliner.
-pub fn outliner_ui(ui: &mut Ui, scene: &Scene, selection: &Selection, commands: &mut Vec<Command>) {
+pub fn outliner_ui(
+    ui: &mut Ui,
+    scene: &Scene,
+    selection: &Selection,
+    isolation: &Isolation,
+    commands: &mut Vec<Command>,
+) {
     egui::ScrollArea::vertical()
         .auto_shrink([false, false])
         .show(ui, |ui| {
             section_ui(ui, "Scene", None, |ui| {
                 item_ui(
                     ui,
-                    "Camera",
-                    "◉",
+                    &Row::plain("Camera", "◉"),
                     selection == &Selection::Camera,
                     Selection::Camera,
                     commands,
                 );
                 item_ui(
                     ui,
-                    "Render settings",
-                    "≡",
+                    &Row::plain("Render settings", "≡"),
                     selection == &Selection::Render,
                     Selection::Render,
                     commands,
@@ -32,15 +42,27 @@ pub fn outliner_ui(ui: &mut Ui, scene: &Scene, selection: &Selection, commands: 
             section_ui(ui, "Objects", Some(scene.objects.len()), |ui| {
                 for (index, object) in scene.objects.iter().enumerate() {
                     let selected = selection == &Selection::Object(index);
-                    let response = item_ui(
-                        ui,
-                        &object.name,
-                        shape_icon(object.shape),
-                        selected,
-                        Selection::Object(index),
-                        commands,
-                    );
-                    item_menu(&response, Selection::Object(index), commands);
+                    let shown = isolation.is_object_shown(index);
+                    ui.horizontal(|ui| {
+                        let row = Row {
+                            name: &object.name,
+                            icon: shape_icon(object.shape),
+                            greyed: !shown,
+                            toggles: 1,
+                        };
+                        let response =
+                            item_ui(ui, &row, selected, Selection::Object(index), commands);
+                        item_menu(&response, Selection::Object(index), commands);
+                        let hide = toggle_ui(ui, !shown, "👁", &format!("hide {}", object.name))
+                            .on_hover_text(if shown {
+                                "Hide: leave it out of the render (no shadow, no reflection)"
+                            } else {
+                                "Hidden: click to show it again"
+                            });
+                        if hide.clicked() {
+                            commands.push(Command::Isolate(IsolationToggle::Hide(index)));
+                        }
+                    });
                 }
                 ui.menu_button("+ Add object", |ui| {
                     for shape in Shape::ALL {
@@ -54,8 +76,8 @@ pub fn outliner_ui(ui: &mut Ui, scene: &Scene, selection: &Selection, commands: 
                 for name in scene.materials.keys() {
                     let selection_here = Selection::Material(name.clone());
                     let selected = selection == &selection_here;
-                    let response =
-                        item_ui(ui, name, "◆", selected, selection_here.clone(), commands);
+                    let row = Row::plain(name, "◆");
+                    let response = item_ui(ui, &row, selected, selection_here.clone(), commands);
                     item_menu(&response, selection_here, commands);
                 }
                 if ui.button("+ Add material").clicked() {
@@ -66,15 +88,18 @@ pub fn outliner_ui(ui: &mut Ui, scene: &Scene, selection: &Selection, commands: 
                 for (index, light) in scene.lights.iter().enumerate() {
                     let selected = selection == &Selection::Light(index);
                     let label = light_label(light, index);
-                    let response = item_ui(
-                        ui,
-                        &label,
-                        light_icon(light),
-                        selected,
-                        Selection::Light(index),
-                        commands,
-                    );
-                    item_menu(&response, Selection::Light(index), commands);
+                    ui.horizontal(|ui| {
+                        let row = Row {
+                            name: &label,
+                            icon: light_icon(light),
+                            greyed: !isolation.is_light_lit(index),
+                            toggles: 2,
+                        };
+                        let response =
+                            item_ui(ui, &row, selected, Selection::Light(index), commands);
+                        item_menu(&response, Selection::Light(index), commands);
+                        light_toggles_ui(ui, index, &label, isolation, commands);
+                    });
                 }
                 ui.menu_button("+ Add light", |ui| {
                     for kind in LightKind::ALL {
@@ -123,26 +148,88 @@ fn section_ui(ui: &mut Ui, title: &str, count: Option<usize>, body: impl FnOnce(
         .show(ui, body);
 }
 
-/// A selectable row; its accessible name is the item's name alone.
+/// The look of a row: its name, icon, whether it is greyed (hidden, muted, not solo) and
+/// how many isolation toggles follow it.
+struct Row<'a> {
+    name: &'a str,
+    icon: &'a str,
+    greyed: bool,
+    toggles: usize,
+}
+
+impl<'a> Row<'a> {
+    /// A row without toggles.
+    fn plain(name: &'a str, icon: &'a str) -> Self {
+        Self {
+            name,
+            icon,
+            greyed: false,
+            toggles: 0,
+        }
+    }
+}
+
+/// A selectable row, leaving room for its toggles; its accessible name is the item's
+/// name alone.
 fn item_ui(
     ui: &mut Ui,
-    name: &str,
-    icon: &str,
+    row: &Row,
     selected: bool,
     target: Selection,
     commands: &mut Vec<Command>,
 ) -> egui::Response {
-    let text = format!("{icon}  {name}");
+    let text = format!("{}  {}", row.icon, row.name);
+    let text = if row.greyed {
+        RichText::new(text).weak().italics()
+    } else {
+        RichText::new(text)
+    };
+    let spacing = ui.spacing().item_spacing.x;
+    let reserved = row.toggles as f32 * (TOGGLE_WIDTH + spacing);
+    let width = (ui.available_width() - reserved).max(40.0);
     let response = ui
-        .add(
-            egui::Button::selectable(selected, text)
-                .min_size(egui::vec2(ui.available_width(), 0.0)),
-        )
-        .accessible_name(name);
+        .add(egui::Button::selectable(selected, text).min_size(egui::vec2(width, 0.0)))
+        .accessible_name(row.name);
     if response.clicked() && !selected {
         commands.push(Command::Select(target));
     }
     response
+}
+
+/// A small on/off toggle at the end of a row, named for screen readers and tests.
+fn toggle_ui(ui: &mut Ui, on: bool, text: &str, name: &str) -> egui::Response {
+    ui.add(egui::Button::selectable(on, text).min_size(egui::vec2(TOGGLE_WIDTH, 0.0)))
+        .accessible_name(name)
+}
+
+/// A light's mute and solo toggles; Ctrl- or Shift-click on solo adds to the solo lights.
+fn light_toggles_ui(
+    ui: &mut Ui,
+    index: usize,
+    label: &str,
+    isolation: &Isolation,
+    commands: &mut Vec<Command>,
+) {
+    let muted = isolation.muted_lights.contains(&index);
+    if toggle_ui(ui, muted, "M", &format!("mute {label}"))
+        .on_hover_text("Mute: render without this light")
+        .clicked()
+    {
+        commands.push(Command::Isolate(IsolationToggle::Mute(index)));
+    }
+    let solo = isolation.solo_lights.contains(&index);
+    let clicked = toggle_ui(ui, solo, "S", &format!("solo {label}"))
+        .on_hover_text(
+            "Solo: render as if this were the only light (Ctrl- or Shift-click: several)",
+        )
+        .clicked();
+    if clicked {
+        let add = ui.input(|i| i.modifiers.command || i.modifiers.shift);
+        commands.push(Command::Isolate(IsolationToggle::Solo {
+            light: index,
+            add,
+        }));
+    }
 }
 
 /// Right-click menu of an item: rename (objects, materials), duplicate, delete.

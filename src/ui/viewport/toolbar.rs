@@ -6,6 +6,7 @@ use egui::{Align, Color32, CornerRadius, Layout, Rect, RichText, Stroke, UiBuild
 
 use crate::trace::{Term, View};
 use crate::ui::commands::Command;
+use crate::ui::viewport::isolation::IsolationToggle;
 use crate::ui::viewport::preview_settings::PreviewSettings;
 
 /// Height of the toolbar strip: two rows (terms; view and tools).
@@ -15,12 +16,14 @@ pub const TOOLBAR_HEIGHT: f32 = 50.0;
 pub const NAN_COLOUR: Color32 = Color32::from_rgb(255, 0, 255);
 
 /// Shows the toolbar in `rect`; pushes [`Command::SetPreviewSettings`] on a change.
-/// `non_finite` is the guard count of the frame on screen, if there is one.
+/// `non_finite` is the guard count of the frame on screen, if there is one; `isolated`
+/// says what is muted, solo or hidden, if anything is.
 pub fn toolbar_ui(
     ui: &mut egui::Ui,
     rect: Rect,
     settings: &PreviewSettings,
     non_finite: Option<u64>,
+    isolated: Option<&str>,
     commands: &mut Vec<Command>,
 ) {
     let painter = ui.painter_at(rect);
@@ -53,11 +56,28 @@ pub fn toolbar_ui(
                         );
                     ui.toggle_value(&mut edited.show_convergence, "Convergence")
                         .on_hover_text("Plot how much each preview pass still changes the picture");
+                    if let Some(note) = isolated {
+                        ui.separator();
+                        isolation_marker_ui(ui, note, commands);
+                    }
                 });
             });
     });
     if edited != *settings {
         commands.push(Command::SetPreviewSettings(edited));
+    }
+}
+
+/// Not the full picture: what is isolated, and a button back to everything.
+fn isolation_marker_ui(ui: &mut egui::Ui, note: &str, commands: &mut Vec<Command>) {
+    ui.label(RichText::new(format!("◐ {note}")).color(crate::ui::style::ACCENT))
+        .on_hover_text("Lights muted or solo and objects hidden: not the full picture");
+    if ui
+        .small_button("show all")
+        .on_hover_text("Unmute, unsolo and unhide everything")
+        .clicked()
+    {
+        commands.push(Command::Isolate(IsolationToggle::ShowAll));
     }
 }
 
