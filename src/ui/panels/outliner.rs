@@ -2,15 +2,18 @@
 //! select from, with add, duplicate, delete and rename; a hide toggle on each object and
 //! mute and solo toggles on each light (editor state, not scene edits).
 
-use egui::{RichText, Ui};
+use egui::{Align, Layout, RichText, Ui};
 
 use crate::scene::{Light, Scene, Shape};
 use crate::trace::Isolation;
 use crate::ui::commands::{Command, LightKind, SceneEdit, Selection};
 use crate::ui::viewport::isolation::IsolationToggle;
 
-/// Width of one isolation toggle at the end of a row.
+/// Least width of one isolation toggle at the end of a row.
 const TOGGLE_WIDTH: f32 = 22.0;
+
+/// The hide toggle's text.
+const HIDE_ICON: &str = "H";
 
 /// Shows the outliner.
 pub fn outliner_ui(
@@ -43,26 +46,36 @@ pub fn outliner_ui(
                 for (index, object) in scene.objects.iter().enumerate() {
                     let selected = selection == &Selection::Object(index);
                     let shown = isolation.is_object_shown(index);
-                    ui.horizontal(|ui| {
-                        let row = Row {
-                            name: &object.name,
-                            icon: shape_icon(object.shape),
-                            greyed: !shown,
-                            toggles: 1,
-                        };
-                        let response =
-                            item_ui(ui, &row, selected, Selection::Object(index), commands);
-                        item_menu(&response, Selection::Object(index), commands);
-                        let hide = toggle_ui(ui, !shown, "👁", &format!("hide {}", object.name))
+                    let row = Row {
+                        name: &object.name,
+                        icon: shape_icon(object.shape),
+                        greyed: !shown,
+                    };
+                    row_ui(
+                        ui,
+                        commands,
+                        |ui, commands| {
+                            let hide = toggle_ui(
+                                ui,
+                                !shown,
+                                HIDE_ICON,
+                                &format!("hide {}", object.name),
+                            )
                             .on_hover_text(if shown {
                                 "Hide: leave it out of the render (no shadow, no reflection)"
                             } else {
                                 "Hidden: click to show it again"
                             });
-                        if hide.clicked() {
-                            commands.push(Command::Isolate(IsolationToggle::Hide(index)));
-                        }
-                    });
+                            if hide.clicked() {
+                                commands.push(Command::Isolate(IsolationToggle::Hide(index)));
+                            }
+                        },
+                        |ui, commands| {
+                            let response =
+                                item_ui(ui, &row, selected, Selection::Object(index), commands);
+                            item_menu(&response, Selection::Object(index), commands);
+                        },
+                    );
                 }
                 ui.menu_button("+ Add object", |ui| {
                     for shape in Shape::ALL {
@@ -88,18 +101,21 @@ pub fn outliner_ui(
                 for (index, light) in scene.lights.iter().enumerate() {
                     let selected = selection == &Selection::Light(index);
                     let label = light_label(light, index);
-                    ui.horizontal(|ui| {
-                        let row = Row {
-                            name: &label,
-                            icon: light_icon(light),
-                            greyed: !isolation.is_light_lit(index),
-                            toggles: 2,
-                        };
-                        let response =
-                            item_ui(ui, &row, selected, Selection::Light(index), commands);
-                        item_menu(&response, Selection::Light(index), commands);
-                        light_toggles_ui(ui, index, &label, isolation, commands);
-                    });
+                    let row = Row {
+                        name: &label,
+                        icon: light_icon(light),
+                        greyed: !isolation.is_light_lit(index),
+                    };
+                    row_ui(
+                        ui,
+                        commands,
+                        |ui, commands| light_toggles_ui(ui, index, &label, isolation, commands),
+                        |ui, commands| {
+                            let response =
+                                item_ui(ui, &row, selected, Selection::Light(index), commands);
+                            item_menu(&response, Selection::Light(index), commands);
+                        },
+                    );
                 }
                 ui.menu_button("+ Add light", |ui| {
                     for kind in LightKind::ALL {
@@ -148,29 +164,43 @@ fn section_ui(ui: &mut Ui, title: &str, count: Option<usize>, body: impl FnOnce(
         .show(ui, body);
 }
 
-/// The look of a row: its name, icon, whether it is greyed (hidden, muted, not solo) and
-/// how many isolation toggles follow it.
+/// The look of a row: its name, icon and whether it is greyed (hidden, muted, not solo).
 struct Row<'a> {
     name: &'a str,
     icon: &'a str,
     greyed: bool,
-    toggles: usize,
 }
 
 impl<'a> Row<'a> {
-    /// A row without toggles.
+    /// A row that is never greyed.
     fn plain(name: &'a str, icon: &'a str) -> Self {
         Self {
             name,
             icon,
             greyed: false,
-            toggles: 0,
         }
     }
 }
 
-/// A selectable row, leaving room for its toggles; its accessible name is the item's
-/// name alone.
+/// One line of the outliner: `toggles` at its right end (laid out first, right to left,
+/// so they always fit the panel) and `item` filling the width left of them.
+fn row_ui(
+    ui: &mut Ui,
+    commands: &mut Vec<Command>,
+    toggles: impl FnOnce(&mut Ui, &mut Vec<Command>),
+    item: impl FnOnce(&mut Ui, &mut Vec<Command>),
+) {
+    let size = egui::vec2(ui.available_width(), ui.spacing().interact_size.y);
+    ui.allocate_ui_with_layout(size, Layout::right_to_left(Align::Center), |ui| {
+        toggles(ui, commands);
+        ui.with_layout(Layout::left_to_right(Align::Center), |ui| {
+            item(ui, commands)
+        });
+    });
+}
+
+/// A selectable row as wide as the space left; its accessible name is the item's name
+/// alone.
 fn item_ui(
     ui: &mut Ui,
     row: &Row,
@@ -184,9 +214,7 @@ fn item_ui(
     } else {
         RichText::new(text)
     };
-    let spacing = ui.spacing().item_spacing.x;
-    let reserved = row.toggles as f32 * (TOGGLE_WIDTH + spacing);
-    let width = (ui.available_width() - reserved).max(40.0);
+    let width = ui.available_width().max(40.0);
     let response = ui
         .add(egui::Button::selectable(selected, text).min_size(egui::vec2(width, 0.0)))
         .accessible_name(row.name);
@@ -202,7 +230,8 @@ fn toggle_ui(ui: &mut Ui, on: bool, text: &str, name: &str) -> egui::Response {
         .accessible_name(name)
 }
 
-/// A light's mute and solo toggles; Ctrl- or Shift-click on solo adds to the solo lights.
+/// A light's mute and solo toggles, for a right-to-left layout; Ctrl- or Shift-click on
+/// solo adds to the solo lights.
 fn light_toggles_ui(
     ui: &mut Ui,
     index: usize,
@@ -210,13 +239,7 @@ fn light_toggles_ui(
     isolation: &Isolation,
     commands: &mut Vec<Command>,
 ) {
-    let muted = isolation.muted_lights.contains(&index);
-    if toggle_ui(ui, muted, "M", &format!("mute {label}"))
-        .on_hover_text("Mute: render without this light")
-        .clicked()
-    {
-        commands.push(Command::Isolate(IsolationToggle::Mute(index)));
-    }
+    // Laid out right to left: solo is the rightmost, mute left of it.
     let solo = isolation.solo_lights.contains(&index);
     let clicked = toggle_ui(ui, solo, "S", &format!("solo {label}"))
         .on_hover_text(
@@ -229,6 +252,13 @@ fn light_toggles_ui(
             light: index,
             add,
         }));
+    }
+    let muted = isolation.muted_lights.contains(&index);
+    if toggle_ui(ui, muted, "M", &format!("mute {label}"))
+        .on_hover_text("Mute: render without this light")
+        .clicked()
+    {
+        commands.push(Command::Isolate(IsolationToggle::Mute(index)));
     }
 }
 

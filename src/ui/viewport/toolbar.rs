@@ -44,7 +44,14 @@ pub fn toolbar_ui(
             .id_salt("toolbar")
             .show(ui, |ui| {
                 ui.spacing_mut().item_spacing = egui::vec2(4.0, 2.0);
-                ui.horizontal(|ui| terms_ui(ui, &mut edited));
+                // The isolation marker ends the shorter first row, so it stays in view.
+                ui.horizontal(|ui| {
+                    terms_ui(ui, &mut edited);
+                    if let Some(note) = isolated {
+                        ui.separator();
+                        isolation_marker_ui(ui, note, commands);
+                    }
+                });
                 ui.horizontal(|ui| {
                     view_ui(ui, &mut edited);
                     ui.separator();
@@ -56,10 +63,6 @@ pub fn toolbar_ui(
                         );
                     ui.toggle_value(&mut edited.show_convergence, "Convergence")
                         .on_hover_text("Plot how much each preview pass still changes the picture");
-                    if let Some(note) = isolated {
-                        ui.separator();
-                        isolation_marker_ui(ui, note, commands);
-                    }
                 });
             });
     });
@@ -68,10 +71,9 @@ pub fn toolbar_ui(
     }
 }
 
-/// Not the full picture: what is isolated, and a button back to everything.
+/// Not the full picture: a button back to everything, then what is isolated (the button
+/// first, so a long note never pushes it out of view).
 fn isolation_marker_ui(ui: &mut egui::Ui, note: &str, commands: &mut Vec<Command>) {
-    ui.label(RichText::new(format!("◐ {note}")).color(crate::ui::style::ACCENT))
-        .on_hover_text("Lights muted or solo and objects hidden: not the full picture");
     if ui
         .small_button("show all")
         .on_hover_text("Unmute, unsolo and unhide everything")
@@ -79,6 +81,8 @@ fn isolation_marker_ui(ui: &mut egui::Ui, note: &str, commands: &mut Vec<Command
     {
         commands.push(Command::Isolate(IsolationToggle::ShowAll));
     }
+    ui.label(RichText::new(format!("◐ {note}")).color(crate::ui::style::ACCENT))
+        .on_hover_text("Lights muted or solo and objects hidden: not the full picture");
 }
 
 /// The NaN guard toggle and, when on, the count of the frame on screen.
