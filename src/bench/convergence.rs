@@ -187,3 +187,70 @@ pub fn curve_checks(curve: &[CurvePoint]) -> CurveChecks {
         ],
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn at(strategy: &str, spp: f64, rmse: f64, estimate: Option<f64>) -> CurvePoint {
+        CurvePoint {
+            estimated_rmse: estimate,
+            ..point(strategy, spp, 1.0, rmse)
+        }
+    }
+
+    #[test]
+    fn checks_pair_passes_with_uniform_at_equal_spp_and_estimates_from_4_samples_on() {
+        let curve = [
+            at("progressive", 0.25, 0.5, None), // coarse: no uniform partner
+            at("progressive", 2.0, 0.1, Some(1.0)), // below 4 spp: not an estimate checked
+            at("progressive", 4.0, 0.06, Some(0.09)),
+            at("progressive", 8.0, 0.04, Some(0.03)),
+            at("uniform", 2.0, 0.1, None),
+            at("uniform", 4.0, 0.05, None),
+            at("uniform", 8.0, 0.04, None),
+            at("adaptive", 4.0, 0.001, None),
+        ];
+        let checks = curve_checks(&curve);
+        assert!((checks.progressive_over_uniform - 1.2).abs() < 1e-12);
+        assert!((checks.estimate_over_true[0] - 0.75).abs() < 1e-12);
+        assert!((checks.estimate_over_true[1] - 1.5).abs() < 1e-12);
+        let nothing = curve_checks(&curve[..1]);
+        assert!(nothing.progressive_over_uniform.is_nan());
+        assert!(nothing.estimate_over_true.iter().all(|r| r.is_nan()));
+    }
+
+    #[test]
+    fn the_preview_passes_match_uniform_sampling_and_the_estimate_tracks_the_true_error() {
+        let scene = crate::scene::examples::default_scene();
+        let plan = ConvergencePlan {
+            width: 80,
+            height: 60,
+            reference_spp: 256,
+            uniform_spp: vec![1, 2, 4, 8, 16],
+            adaptive_spp: vec![],
+        };
+        let curve = convergence_curves(&scene, &plan).unwrap();
+        let passes: Vec<f64> = curve
+            .iter()
+            .filter(|p| p.strategy == "progressive" && p.spp > 1.0)
+            .map(|p| p.spp)
+            .collect();
+        assert_eq!(
+            passes,
+            [4.0, 8.0, 16.0],
+            "the anti-aliasing passes are on the curve"
+        );
+        let checks = curve_checks(&curve);
+        assert!(
+            checks.progressive_over_uniform <= 1.15,
+            "{:?}",
+            checks.progressive_over_uniform
+        );
+        let [low, high] = checks.estimate_over_true;
+        assert!(
+            (0.5..=2.0).contains(&low) && (0.5..=2.0).contains(&high),
+            "{low} {high}"
+        );
+    }
+}

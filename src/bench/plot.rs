@@ -54,7 +54,7 @@ pub fn plot_curve(curve: &[CurvePoint], path: &Path, title: &str) -> Result<(), 
     chart
         .configure_mesh()
         .x_desc("render time (ms)")
-        .y_desc("RMSE against the reference")
+        .y_desc("RMSE vs reference (dashed: estimate)")
         .label_style(("sans-serif", 15))
         .draw()
         .map_err(|e| error(&e))?;
