@@ -31,9 +31,15 @@ Scene(
 )
 "#;
 
-fn raylab(args: &[&str]) -> std::process::Output {
+/// `raylab render SCENE -o OUT`.
+fn render(scene: &std::path::Path, out: &std::path::Path) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_raylab"))
-        .args(args)
+        .args([
+            "render",
+            scene.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+        ])
         .output()
         .unwrap()
 }
@@ -63,12 +69,7 @@ fn a_non_finite_sample_is_caught_listed_and_fails_the_command_line() {
     let path = temp_path("surface_light.ron");
     std::fs::write(&path, LIGHT_ON_THE_SURFACE).unwrap();
     let out = temp_path("surface_light.png");
-    let result = raylab(&[
-        "render",
-        path.to_str().unwrap(),
-        "-o",
-        out.to_str().unwrap(),
-    ]);
+    let result = render(&path, &out);
     let stderr = String::from_utf8_lossy(&result.stderr);
     assert!(!result.status.success(), "{stderr}");
     assert!(
@@ -80,12 +81,7 @@ fn a_non_finite_sample_is_caught_listed_and_fails_the_command_line() {
     // The same scene with the light a little higher renders cleanly and exits 0.
     let fine = LIGHT_ON_THE_SURFACE.replace("1.0000001", "1.5");
     std::fs::write(&path, fine).unwrap();
-    let result = raylab(&[
-        "render",
-        path.to_str().unwrap(),
-        "-o",
-        out.to_str().unwrap(),
-    ]);
+    let result = render(&path, &out);
     assert!(
         result.status.success(),
         "{}",
@@ -108,12 +104,7 @@ fn a_light_whose_colour_times_intensity_overflows_is_refused_by_name() {
     let path = temp_path("overflowing_light.ron");
     std::fs::write(&path, &text).unwrap();
     let out = temp_path("overflowing_light.png");
-    let result = raylab(&[
-        "render",
-        path.to_str().unwrap(),
-        "-o",
-        out.to_str().unwrap(),
-    ]);
+    let result = render(&path, &out);
     let stderr = String::from_utf8_lossy(&result.stderr);
     assert!(!result.status.success());
     assert!(stderr.contains("lights[1] (Point)"), "{stderr}");
