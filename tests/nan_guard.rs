@@ -4,10 +4,12 @@
 //! strength overflows is refused by name; on every example scene, for every view and a
 //! few term switches, the list stays empty.
 
+mod common;
+
 use std::path::Path;
-use std::process::Command;
 use std::time::Duration;
 
+use common::cli::{out_dir, raylab};
 use raylab::preview::{PreviewRequest, PreviewWorker};
 use raylab::scene::{load_scene, parse_scene};
 use raylab::trace::{
@@ -32,22 +34,17 @@ Scene(
 "#;
 
 /// `raylab render SCENE -o OUT`.
-fn render(scene: &std::path::Path, out: &std::path::Path) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_raylab"))
-        .args([
-            "render",
-            scene.to_str().unwrap(),
-            "-o",
-            out.to_str().unwrap(),
-        ])
-        .output()
-        .unwrap()
+fn render(scene: &Path, out: &Path) -> std::process::Output {
+    raylab(&[
+        "render",
+        scene.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ])
 }
 
 fn temp_path(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("raylab-nan-guard-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
+    out_dir("nan-guard").join(name)
 }
 
 #[test]
