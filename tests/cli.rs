@@ -3,7 +3,7 @@
 
 mod common;
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use common::cli::{out_dir, raylab};
 
@@ -90,6 +90,7 @@ fn switches_and_views_match_the_library() {
             samples_per_pixel: 2,
             switches,
             view,
+            isolation: Default::default(),
         };
         let (expected, _) = render(&world, &options, &RenderProgress::default()).unwrap();
         let written = image::open(&out).unwrap().to_rgba8().into_raw();

@@ -7,7 +7,7 @@ mod common;
 #[path = "compare/shader.rs"]
 mod shader;
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use common::cli::{out_dir, raylab};
 use shader::{Bugs, lab_scene, render as render_with};

@@ -4,7 +4,8 @@ use std::path::Path;
 
 use raylab::scene::load_scene;
 use raylab::trace::{
-    Image, RenderOptions, RenderProgress, Term, TermSwitches, View, World, inspect_pixel, render,
+    Image, Isolation, RenderOptions, RenderProgress, Term, TermSwitches, View, World,
+    inspect_pixel, render,
 };
 
 fn default_world(switches: TermSwitches) -> (World, RenderOptions) {
@@ -16,6 +17,7 @@ fn default_world(switches: TermSwitches) -> (World, RenderOptions) {
         samples_per_pixel: 1,
         switches,
         view: View::Beauty,
+        isolation: Isolation::NONE,
     };
     (World::new(&scene).unwrap(), options)
 }

@@ -83,13 +83,13 @@ pub fn convergence_curves(
     let reference = reference_image(&world, &base, plan.reference_spp);
     let target = RenderOptions {
         samples_per_pixel: plan.uniform_spp.iter().copied().max().unwrap_or(1),
-        ..base
+        ..base.clone()
     };
     let mut curve = progressive_curve(&world, &target, &reference);
     for &spp in &plan.uniform_spp {
         let (image, seconds) = timed(&RenderOptions {
             samples_per_pixel: spp,
-            ..base
+            ..base.clone()
         });
         curve.push(point(
             "uniform",
@@ -123,7 +123,7 @@ pub fn convergence_curves(
 fn reference_image(world: &World, base: &RenderOptions, spp: u32) -> Image {
     let options = RenderOptions {
         samples_per_pixel: 2 * spp,
-        ..*base
+        ..base.clone()
     };
     render_samples(world, &options, spp..2 * spp, &RenderProgress::default())
         .expect("not cancelled")

@@ -95,7 +95,7 @@ fn render_pass(
                 width,
                 height,
                 samples_per_pixel: 1,
-                ..*target
+                ..target.clone()
             };
             let sums = render_samples(world, &options, 0..1, progress)?;
             Some(Rendered::new(&sums, sums.average(1), sums.rays, None))
@@ -106,7 +106,7 @@ fn render_pass(
         } => {
             let options = RenderOptions {
                 samples_per_pixel: count,
-                ..*target
+                ..target.clone()
             };
             let mut rays = RayCounts::default();
             if accumulated.is_none() {
@@ -156,6 +156,7 @@ mod tests {
             samples_per_pixel: 16,
             switches: TermSwitches::ALL_ON,
             view: View::Beauty,
+            isolation: crate::trace::Isolation::NONE,
         };
         let mut frames = Vec::new();
         render_plan(
@@ -173,7 +174,7 @@ mod tests {
             // The 4-sample pass of a 16-sample target is the 4-sample image itself.
             let options = RenderOptions {
                 samples_per_pixel: samples,
-                ..target
+                ..target.clone()
             };
             let (direct, _) = render(&world, &options, &RenderProgress::default()).unwrap();
             assert_eq!(frame.image.pixels, direct.pixels, "{:?}", frame.pass);

@@ -172,14 +172,16 @@ fn run(shared: &Shared, waker: &Waker) {
         };
         // A panic in the tracer must not end the worker: report it and wait for the next
         // request (an edit may well avoid whatever caused it).
-        let outcome = run_caught("the renderer", || match World::new(&request.scene) {
-            Ok(world) => render_plan(
-                &world,
-                &request.options,
-                &mut || start_pass(shared),
-                &mut |frame| publish(Ok(frame)),
-            ),
-            Err(error) => publish(Err(error.to_string())),
+        let outcome = run_caught("the renderer", || {
+            match World::isolated(&request.scene, &request.options.isolation) {
+                Ok(world) => render_plan(
+                    &world,
+                    &request.options,
+                    &mut || start_pass(shared),
+                    &mut |frame| publish(Ok(frame)),
+                ),
+                Err(error) => publish(Err(error.to_string())),
+            }
         });
         lock(&shared.mailbox).running = None;
         if let Err(message) = outcome {

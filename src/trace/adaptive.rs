@@ -55,6 +55,7 @@ pub fn render_adaptive(
     adaptive: &AdaptiveOptions,
     progress: &RenderProgress,
 ) -> Option<AdaptiveRender> {
+    super::isolation::assert_compiled_for(world, &options.isolation);
     let (width, height) = (options.width, options.height);
     let camera = PinholeCamera::new(&world.camera, width, height);
     let tracer = Tracer::new(world, options.switches, options.view);
@@ -201,6 +202,7 @@ mod tests {
             samples_per_pixel: 1,
             switches: TermSwitches::ALL_ON,
             view: View::Beauty,
+            isolation: crate::trace::Isolation::NONE,
         };
         (World::new(&scene).unwrap(), options)
     }
@@ -255,7 +257,7 @@ mod tests {
         // The reference uses samples 256..512, disjoint from the adaptive ones.
         let reference_options = RenderOptions {
             samples_per_pixel: 512,
-            ..options
+            ..options.clone()
         };
         let reference = render_samples(&world, &reference_options, 256..512, &progress)
             .unwrap()
@@ -263,7 +265,7 @@ mod tests {
         let uniform = |spp| {
             let options = RenderOptions {
                 samples_per_pixel: spp,
-                ..options
+                ..options.clone()
             };
             render(&world, &options, &progress).unwrap().0
         };

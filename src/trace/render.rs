@@ -8,15 +8,16 @@ use glam::{DVec2, DVec3, Vec3};
 
 use super::camera::PinholeCamera;
 use super::image::Image;
+use super::isolation::assert_compiled_for;
 use super::sampling::sample_in_pixel;
 use super::shade::{NoRecorder, RayCounts, Tracer};
-use super::terms::{TermSwitches, View};
+use super::terms::{Isolation, TermSwitches, View};
 use super::tiles::render_tiles;
 use super::world::World;
 use crate::scene::Scene;
 
 /// What to render.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct RenderOptions {
     /// Image width in pixels.
     pub width: u32,
@@ -28,6 +29,9 @@ pub struct RenderOptions {
     pub switches: TermSwitches,
     /// Beauty or a debug view.
     pub view: View,
+    /// Lights muted or solo, objects hidden: the world must be compiled with them
+    /// ([`World::isolated`]).
+    pub isolation: Isolation,
 }
 
 impl RenderOptions {
@@ -40,6 +44,7 @@ impl RenderOptions {
             samples_per_pixel: scene.render.samples_per_pixel,
             switches: TermSwitches::ALL_ON,
             view: View::Beauty,
+            isolation: Isolation::NONE,
         }
     }
 }
@@ -149,7 +154,8 @@ pub fn render_samples(
 /// stops every tile within one batch (one sample for each of its pixels).
 ///
 /// # Panics
-/// When `sums` is not `options.width` x `options.height`.
+/// When `sums` is not `options.width` x `options.height`, or `world` was compiled for
+/// other isolation switches than `options.isolation`.
 pub fn render_samples_into(
     world: &World,
     options: &RenderOptions,
@@ -163,6 +169,7 @@ pub fn render_samples_into(
         (width, height),
         "sums of another size"
     );
+    assert_compiled_for(world, &options.isolation);
     let camera = PinholeCamera::new(&world.camera, width, height);
     let tracer = Tracer::new(world, options.switches, options.view);
     let count = options.samples_per_pixel;

@@ -11,6 +11,7 @@ use crate::ui::commands::Selection;
 use crate::ui::document::autosave::RestoreAnswer;
 use crate::ui::document::confirm::DiscardAction;
 use crate::ui::document::files;
+use crate::ui::viewport::isolation::keep_in_range;
 
 impl EditorApp {
     /// Does `action` now, or asks first when it would drop unsaved changes.
@@ -86,6 +87,8 @@ impl EditorApp {
         match files::save_scene_to(&self.scene, path) {
             Ok(()) => {
                 self.saved = self.scene.clone();
+                // The switches stay with the scene, now under its new name.
+                self.isolation_memory = self.isolation_memory();
                 self.path = Some(path.to_owned());
                 self.recent.push(path);
                 self.message = Some(format!("Saved {}", path.display()));
@@ -106,8 +109,14 @@ impl EditorApp {
         }
     }
 
-    /// A new document: fresh undo history, nothing unsaved, selection cleared.
+    /// A new document: fresh undo history, nothing unsaved, selection cleared, the
+    /// isolation switches remembered for the file left and recalled for the file opened.
     pub(super) fn replace_scene(&mut self, scene: Scene, path: Option<PathBuf>) {
+        self.isolation_memory = self.isolation_memory();
+        self.isolation = path.as_deref().map_or(crate::trace::Isolation::NONE, |p| {
+            self.isolation_memory.recall(p)
+        });
+        keep_in_range(&mut self.isolation, &scene);
         self.saved = scene.clone();
         self.scene = scene;
         self.path = path;

@@ -71,6 +71,7 @@ impl ExportState {
         }
         let options = self
             .settings
+            .clone()
             .unwrap_or_else(|| RenderOptions::from_scene(scene));
         let world = World::new(scene).map_err(|e| format!("cannot render this scene: {e}"))?;
         let ctx = ctx.clone();
@@ -169,6 +170,7 @@ pub fn export_window(ctx: &egui::Context, state: &mut ExportState, scene: &Scene
 fn export_ui(ui: &mut Ui, state: &mut ExportState, scene: &Scene) {
     let mut settings = state
         .settings
+        .clone()
         .unwrap_or_else(|| RenderOptions::from_scene(scene));
     let running = state.is_running();
     ui.add_enabled_ui(!running, |ui| {

@@ -6,6 +6,7 @@ use egui::{Align, Color32, CornerRadius, Layout, Rect, RichText, Stroke, UiBuild
 
 use crate::trace::{Term, View};
 use crate::ui::commands::Command;
+use crate::ui::viewport::isolation::IsolationToggle;
 use crate::ui::viewport::preview_settings::PreviewSettings;
 
 /// Height of the toolbar strip: two rows (terms; view and tools).
@@ -15,12 +16,14 @@ pub const TOOLBAR_HEIGHT: f32 = 50.0;
 pub const NAN_COLOUR: Color32 = Color32::from_rgb(255, 0, 255);
 
 /// Shows the toolbar in `rect`; pushes [`Command::SetPreviewSettings`] on a change.
-/// `non_finite` is the guard count of the frame on screen, if there is one.
+/// `non_finite` is the guard count of the frame on screen, if there is one; `isolated`
+/// says what is muted, solo or hidden, if anything is.
 pub fn toolbar_ui(
     ui: &mut egui::Ui,
     rect: Rect,
     settings: &PreviewSettings,
     non_finite: Option<u64>,
+    isolated: Option<&str>,
     commands: &mut Vec<Command>,
 ) {
     let painter = ui.painter_at(rect);
@@ -41,7 +44,14 @@ pub fn toolbar_ui(
             .id_salt("toolbar")
             .show(ui, |ui| {
                 ui.spacing_mut().item_spacing = egui::vec2(4.0, 2.0);
-                ui.horizontal(|ui| terms_ui(ui, &mut edited));
+                // The isolation marker ends the shorter first row, so it stays in view.
+                ui.horizontal(|ui| {
+                    terms_ui(ui, &mut edited);
+                    if let Some(note) = isolated {
+                        ui.separator();
+                        isolation_marker_ui(ui, note, commands);
+                    }
+                });
                 ui.horizontal(|ui| {
                     view_ui(ui, &mut edited);
                     ui.separator();
@@ -59,6 +69,20 @@ pub fn toolbar_ui(
     if edited != *settings {
         commands.push(Command::SetPreviewSettings(edited));
     }
+}
+
+/// Not the full picture: a button back to everything, then what is isolated (the button
+/// first, so a long note never pushes it out of view).
+fn isolation_marker_ui(ui: &mut egui::Ui, note: &str, commands: &mut Vec<Command>) {
+    if ui
+        .small_button("show all")
+        .on_hover_text("Unmute, unsolo and unhide everything")
+        .clicked()
+    {
+        commands.push(Command::Isolate(IsolationToggle::ShowAll));
+    }
+    ui.label(RichText::new(format!("◐ {note}")).color(crate::ui::style::ACCENT))
+        .on_hover_text("Lights muted or solo and objects hidden: not the full picture");
 }
 
 /// The NaN guard toggle and, when on, the count of the frame on screen.
