@@ -17,6 +17,7 @@ pub mod shade;
 pub mod shapes;
 pub mod spawn;
 pub mod terms;
+pub mod tiles;
 pub mod world;
 
 pub use adaptive::{AdaptiveOptions, AdaptiveRender, render_adaptive};
@@ -30,4 +31,5 @@ pub use render::{
 };
 pub use shade::{LightRecord, NoRecorder, RayCounts, Recorder, Tracer};
 pub use terms::{Isolation, Term, TermSwitches, View};
+pub use tiles::TILE_SIZE;
 pub use world::{Acceleration, BVH_MIN_OBJECTS, SurfacePoint, World};
