@@ -110,4 +110,8 @@ pub enum Command {
     SetPreviewSettings(crate::ui::viewport::preview_settings::PreviewSettings),
     /// Inspect a pixel of the scene camera's image, or close the pixel inspector (`None`).
     InspectPixel(Option<(u32, u32)>),
+    /// Show the Compare with Image window.
+    ShowCompare,
+    /// Compare the scene with another renderer's picture in this file (in the background).
+    CompareWith(PathBuf),
 }

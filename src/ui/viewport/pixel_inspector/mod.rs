@@ -3,12 +3,14 @@
 //! tracer's [`PixelReport`] itself; this model only adds the names of the objects,
 //! materials and lights its indices point at, so the window lays out text.
 
+mod compared;
 mod window;
 
 use crate::scene::Scene;
 use crate::trace::{PixelReport, RenderOptions, TermSwitches, View, World, inspect_pixel};
 use crate::ui::panels::outliner::light_label;
 
+pub use compared::{OTHER_VALUE_LABEL, RAYLAB_VALUE_LABEL, compared_rows};
 pub use window::{FINAL_COLOUR_LABEL, pixel_inspector_ui, shadow_text, switches_text};
 
 /// One pixel inspected in one scene with one set of switches.
