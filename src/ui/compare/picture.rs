@@ -198,7 +198,7 @@ fn shown_side(ui: &egui::Ui, session: &CompareSession) -> Side {
     ui.ctx()
         .request_repaint_after(std::time::Duration::from_millis(100));
     let half_seconds = (ui.input(|i| i.time) / AUTO_FLIP_SECONDS) as u64;
-    if half_seconds % 2 == 0 {
+    if half_seconds.is_multiple_of(2) {
         session.flip_side
     } else {
         session.flip_side.flipped()
