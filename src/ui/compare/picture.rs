@@ -226,7 +226,8 @@ fn interact(
         && let Some(pos) = pointer
     {
         let (scroll, pinch) = ui.input(|i| (i.smooth_scroll_delta.y, i.zoom_delta()));
-        let factor = pinch * (scroll / 200.0).exp();
+        // One wheel notch (about 50 points) zooms by about 1.13.
+        let factor = pinch * (scroll / 400.0).exp();
         if factor != 1.0 {
             session.view.zoom_about(frame, pos, factor);
         }

@@ -75,11 +75,13 @@ fn window_ui(ui: &mut egui::Ui, session: &mut CompareSession, commands: &mut Vec
     ui.add_space(6.0);
     if let Some(progress) = session.progress() {
         ui.horizontal(|ui| {
-            ui.add(
-                egui::ProgressBar::new(progress as f32)
-                    .show_percentage()
-                    .desired_width(300.0),
-            );
+            // Progress counts the rows traced; the fit that follows is quick but not free.
+            let bar = egui::ProgressBar::new(progress as f32).desired_width(300.0);
+            ui.add(if progress < 1.0 {
+                bar.show_percentage()
+            } else {
+                bar.text("fitting…")
+            });
             if ui.button("Cancel").clicked() {
                 session.cancel();
             }
