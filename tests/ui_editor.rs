@@ -5,10 +5,10 @@
 
 mod editor_harness;
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::time::{Duration, Instant};
 
-use editor_harness::{click_at, editor_harness, temp_dir};
+use editor_harness::{click_at, drop_file, editor_harness, temp_dir};
 use egui::{Event, Key, Modifiers, PointerButton, Pos2, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -476,27 +476,6 @@ fn clicking_the_viewport_picks_the_object_under_the_cursor() {
     assert_eq!(harness.state().selection(), &Selection::None, "the sky");
 }
 
-/// A file dropped on the window, as the native integration hands it over.
-#[derive(Debug)]
-struct DroppedPath(PathBuf);
-
-impl egui::DroppedFile for DroppedPath {
-    fn path(&self) -> &Path {
-        &self.0
-    }
-    fn bytes(&self) -> Result<Vec<u8>, String> {
-        std::fs::read(&self.0).map_err(|e| e.to_string())
-    }
-}
-
-fn drop_file(harness: &mut Harness<'_, EditorApp>, path: &Path) {
-    harness
-        .input_mut()
-        .dropped_files
-        .push(std::sync::Arc::new(DroppedPath(path.to_owned())));
-    harness.run();
-}
-
 #[test]
 fn dropping_a_ron_file_opens_it_and_other_files_are_refused() {
     let dir = temp_dir("drop");
@@ -506,7 +485,8 @@ fn dropping_a_ron_file_opens_it_and_other_files_are_refused() {
     save_scene_to(&scene, &path).unwrap();
     let mut harness = harness();
 
-    drop_file(&mut harness, &dir.join("picture.png"));
+    // (A .png or .ppm is compared with: tests/ui_compare.rs.)
+    drop_file(&mut harness, &dir.join("notes.txt"));
     assert!(harness.state().error().unwrap().contains(".ron"));
     assert_eq!(harness.state().scene(), &default_scene());
 

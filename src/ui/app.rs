@@ -8,6 +8,7 @@ use egui::util::undoer::{Settings as UndoSettings, Undoer};
 use crate::scene::Scene;
 use crate::trace::Isolation;
 use crate::ui::commands::{Command, Selection};
+use crate::ui::compare::CompareSession;
 use crate::ui::document::autosave::Autosave;
 use crate::ui::document::confirm::DiscardAction;
 use crate::ui::document::export::ExportState;
@@ -61,6 +62,8 @@ pub struct EditorApp {
     /// The pixel under the inspector, kept current with the scene and switches.
     inspection: Option<PixelInspection>,
     export: ExportState,
+    /// File > Compare with Image: the running or shown comparison.
+    compare: CompareSession,
     recent: RecentFiles,
     pending: Option<DiscardAction>,
     error: Option<String>,
@@ -95,6 +98,7 @@ impl EditorApp {
             isolation_memory: IsolationMemory::default(),
             inspection: None,
             export: ExportState::default(),
+            compare: CompareSession::default(),
             recent,
             pending: None,
             error: None,
@@ -211,6 +215,12 @@ impl EditorApp {
     #[must_use]
     pub fn inspection(&self) -> Option<&PixelInspection> {
         self.inspection.as_ref()
+    }
+
+    /// The comparison with another renderer's picture.
+    #[must_use]
+    pub fn compare(&self) -> &CompareSession {
+        &self.compare
     }
 
     /// Recent files.

@@ -4,6 +4,7 @@
 
 mod app;
 pub mod commands;
+pub mod compare;
 pub mod document;
 pub mod gizmo;
 pub mod panels;

@@ -104,6 +104,8 @@ impl EditorApp {
             Command::DismissError => self.error = None,
             Command::FocusName => self.focus_name = true,
             Command::SetPreviewSettings(settings) => self.preview_settings = settings,
+            Command::ShowCompare => self.compare.show_window(),
+            Command::CompareWith(path) => self.compare.start(&self.scene, &path, ctx),
             Command::InspectPixel(pixel) => {
                 self.inspection = pixel.map(|pixel| {
                     PixelInspection::new(

@@ -2,6 +2,7 @@
 //! windows and dialogs over them.
 
 use crate::ui::commands::{Command, Selection};
+use crate::ui::compare::{compare_view_ui, compare_window, is_compare_image};
 use crate::ui::document::confirm::{DiscardAction, discard_modal};
 use crate::ui::document::export::export_window;
 use crate::ui::document::files;
@@ -86,9 +87,11 @@ impl EditorApp {
         if let Some(path) = dropped.into_iter().next() {
             if files::is_scene_file(&path) {
                 self.commands.push(Command::Open(path));
+            } else if is_compare_image(&path) {
+                self.commands.push(Command::CompareWith(path));
             } else {
                 self.error = Some(format!(
-                    "{}: only .ron scene files can be opened",
+                    "{}: drop a .ron scene to open it, or a .png or .ppm picture to compare with",
                     path.display()
                 ));
             }
@@ -180,6 +183,10 @@ impl EditorApp {
                 self.focus_name = false;
             });
         egui::CentralPanel::no_frame().show(ui, |ui| {
+            if self.compare.is_showing() {
+                compare_view_ui(ui, &mut self.compare, &self.scene, &mut commands);
+                return;
+            }
             viewport_ui(
                 ui,
                 &self.scene,
@@ -199,8 +206,10 @@ impl EditorApp {
         }
         help_window(ctx, &mut self.show_help);
         export_window(ctx, &mut self.export, &self.scene);
+        compare_window(ctx, &mut self.compare, &mut self.commands);
         if let Some(inspection) = &self.inspection {
-            pixel_inspector_ui(ctx, inspection, &mut self.commands);
+            let compared = self.compare.pixel_values(inspection.pixel);
+            pixel_inspector_ui(ctx, inspection, compared.as_ref(), &mut self.commands);
         }
         if self.preview_settings.show_convergence
             && let Some(preview) = &self.preview
@@ -237,7 +246,7 @@ fn drop_hint(ctx: &egui::Context) {
     painter.text(
         rect.center(),
         egui::Align2::CENTER_CENTER,
-        "Drop a .ron scene to open it",
+        "Drop a .ron scene to open it, or a PNG to compare with",
         egui::FontId::proportional(22.0),
         Color32::WHITE,
     );

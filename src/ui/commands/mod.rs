@@ -112,4 +112,8 @@ pub enum Command {
     InspectPixel(Option<(u32, u32)>),
     /// Mute, solo or hide (editor state, not undoable, not a scene edit).
     Isolate(crate::ui::viewport::isolation::IsolationToggle),
+    /// Show the Compare with Image window.
+    ShowCompare,
+    /// Compare the scene with another renderer's picture in this file (in the background).
+    CompareWith(PathBuf),
 }

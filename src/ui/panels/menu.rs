@@ -105,6 +105,14 @@ fn file_menu_ui(ui: &mut Ui, state: &MenuState<'_>, commands: &mut Vec<Command>)
         Command::ShowExport,
         commands,
     );
+    entry_ui(
+        ui,
+        "Compare with Image…",
+        "",
+        true,
+        Command::ShowCompare,
+        commands,
+    );
     ui.separator();
     entry_ui(ui, "Quit", "", true, Command::Quit, commands);
 }

@@ -5,6 +5,7 @@
 //! isolation switches leave out (shown as such, not as missing), so the window lays out
 //! text.
 
+mod compared;
 mod window;
 
 use crate::scene::Scene;
@@ -13,6 +14,7 @@ use crate::trace::{
 };
 use crate::ui::panels::outliner::light_label;
 
+pub use compared::{OTHER_VALUE_LABEL, RAYLAB_VALUE_LABEL, compared_rows};
 pub use window::{
     FINAL_COLOUR_LABEL, isolation_lines, pixel_inspector_ui, shadow_text, switches_text,
 };

@@ -10,10 +10,12 @@ use crate::ui::commands::Command;
 /// Accessible name of the inspector window's final colour line.
 pub const FINAL_COLOUR_LABEL: &str = "final colour";
 
-/// Shows the inspector window; closing it pushes [`Command::InspectPixel`]`(None)`.
+/// Shows the inspector window (with both pictures' values at the pixel when a
+/// comparison is shown); closing it pushes [`Command::InspectPixel`]`(None)`.
 pub fn pixel_inspector_ui(
     ctx: &egui::Context,
     inspection: &PixelInspection,
+    compared: Option<&crate::compare::PixelValues>,
     commands: &mut Vec<Command>,
 ) {
     let mut open = true;
@@ -32,6 +34,10 @@ pub fn pixel_inspector_ui(
                 switches_text(inspection.switches)
             ));
             ui.separator();
+            if let Some(values) = compared {
+                super::compared::compared_ui(ui, values);
+                ui.separator();
+            }
             match &inspection.result {
                 Ok(pixel) => pixel_ui(ui, pixel),
                 Err(error) => {
