@@ -3,6 +3,7 @@
 
 mod camera;
 mod fields;
+mod limits;
 mod light;
 mod material;
 mod object;
