@@ -3,6 +3,7 @@
 
 pub mod camera_navigation;
 pub mod convergence_plot;
+pub mod full_picture_marker;
 pub mod picture;
 pub mod pixel_inspector;
 pub mod preview_link;
