@@ -20,10 +20,13 @@ pub use app::{EditorApp, EditorOptions};
 pub use commands::{Command, LightKind, SceneEdit, Selection};
 pub use document::confirm::DiscardAction;
 pub use document::export::ExportState;
+pub use document::file_dialog::{DialogPurpose, FileDialogs};
+pub use document::native_dialogs::NativeDialogs;
 pub use document::{files, recent};
 pub use panels::inspector::trs_from_matrix;
 pub use panels::outliner::light_label;
 pub use viewport::convergence_plot::CONVERGENCE_EXPLANATION;
+pub use viewport::full_picture_marker::NOT_FULL_PICTURE;
 pub use viewport::picture::{VIEWPORT_LABEL, letterbox, pick_object};
 pub use viewport::pixel_inspector::{
     FINAL_COLOUR_LABEL, InspectedBounce, InspectedHit, InspectedLight, InspectedPixel,
@@ -65,6 +68,8 @@ pub fn run(scene: Option<PathBuf>) -> Result<(), String> {
             eframe::storage_dir("raylab")
                 .map(|dir| crate::recovery::RecoveryStore::new(dir.join("recovery")))
         },
+        native_dialogs: NativeDialogs::Detect,
+        dialog_folder: None,
     };
     let viewport = egui::ViewportBuilder::default()
         .with_title("raylab")
@@ -93,6 +98,9 @@ pub fn run(scene: Option<PathBuf>) -> Result<(), String> {
                 app.push(Command::SetPreviewSettings(PreviewSettings::load(
                     cc.storage,
                 )));
+                app.push(Command::SetPreferInAppFileDialog(
+                    FileDialogs::stored_preference(cc.storage),
+                ));
             }
             if let Some(label) = std::env::var_os(SCREENSHOT_SELECT_ENV)
                 && let Some(selection) = selection_by_label(app.scene(), &label.to_string_lossy())
