@@ -7,6 +7,7 @@
 
 pub mod bench;
 pub mod cli;
+pub mod compare;
 pub mod gizmo;
 pub mod preview;
 pub mod recovery;

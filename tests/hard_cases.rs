@@ -80,6 +80,43 @@ fn ray_through_a_cones_apex_hits_the_apex_with_a_finite_normal() {
 }
 
 #[test]
+fn a_cone_seen_along_its_axis_has_no_bright_apex_pixel() {
+    // Apex at the origin pointing at the eye on +z, lit from the eye: the centre pixel's
+    // ray meets the apex exactly. Around the apex every normal is 45 degrees off the
+    // axis; the apex must not be shaded with the axis (n.l = 1 against about 0.7).
+    let mut scene = bare_scene(Material {
+        diffuse: DVec3::ONE,
+        ..Material::default()
+    });
+    scene.lights = vec![point_light(scene.camera.position, 12.5)];
+    let rotate = DVec3::new(180.0, 0.0, 0.0);
+    scene.objects = vec![object(Shape::Cone, DVec3::ZERO, rotate, DVec3::ONE)];
+    let world = World::new(&scene).unwrap();
+    let options = RenderOptions::from_scene(&scene);
+    let (image, _) = render(&world, &options, &RenderProgress::default()).unwrap();
+    let luminance = |x: u32, y: u32| image.get(x, y).dot(glam::Vec3::ONE);
+    let (w, h) = (options.width, options.height);
+    let centre = glam::DVec2::new(f64::from(w) / 2.0, f64::from(h) / 2.0);
+    let ray = raylab::trace::PinholeCamera::new(&scene.camera, w, h).ray(centre);
+    let apex = world.intersect(&ray, f64::INFINITY).unwrap();
+    assert_eq!(apex.p, DVec3::ZERO, "the centre ray meets the apex");
+    let (cx, cy) = (w / 2, h / 2);
+    let brightest_neighbour = (cy - 1..=cy + 1)
+        .flat_map(|y| (cx - 1..=cx + 1).map(move |x| (x, y)))
+        .filter(|&p| p != (cx, cy))
+        .map(|(x, y)| luminance(x, y))
+        .fold(0.0f32, f32::max);
+    assert!(brightest_neighbour > 0.1, "the neighbours are lit");
+    // The neighbours lie a little farther and turn a little away from the light, so the
+    // apex is a few percent brighter (1.07); with the axis as its normal it was 1.5.
+    let apex_pixel = luminance(cx, cy);
+    assert!(
+        apex_pixel <= brightest_neighbour * 1.15,
+        "apex {apex_pixel} against at most {brightest_neighbour} around it"
+    );
+}
+
+#[test]
 fn ray_parallel_to_a_cones_side_hits_once_at_the_exact_point() {
     // Unit cone (apex at origin, opening along +z), moved: a ray parallel to the generator
     // x = z meets the opposite generator x = -z at t = 0.25 (see the shape's unit test).

@@ -63,8 +63,25 @@ fn diffuse_and_specular_for_an_oblique_point_light() {
 }
 
 #[test]
+fn a_zero_exponent_makes_the_lobe_one_where_r_dot_v_is_positive() {
+    // The oblique light above (L = 2, r.v = 0.8) with s = 0: ks * L * 0.8^0 = 0.3 * 2.
+    let mut scene = unit_sphere_scene(Material {
+        specular: DVec3::splat(0.3),
+        shininess: 0.0,
+        ..Material::default()
+    });
+    scene
+        .lights
+        .push(point_light(DVec3::new(0.0, 3.0, 5.0), 50.0));
+    assert_colour(
+        trace(&scene, ray_to_pole(), TermSwitches::ALL_ON),
+        DVec3::splat(0.6),
+    );
+}
+
+#[test]
 fn the_side_facing_away_from_the_light_stays_black_for_every_exponent() {
-    for shininess in [0.5, 1.0, 2.0] {
+    for shininess in [0.0, 0.5, 1.0, 2.0] {
         let material = Material {
             diffuse: DVec3::splat(0.8),
             specular: DVec3::splat(0.8),
@@ -97,7 +114,7 @@ fn the_side_facing_away_from_the_light_stays_black_for_every_exponent() {
 fn negative_r_dot_v_adds_no_specular_even_with_a_fractional_exponent() {
     // A floor seen at 45 degrees from (0, -4, 4)-ish; light low on the viewer's side:
     // n = +z, v = (0, -1, 1)/sqrt2, l = (0, -0.8, 0.6): n.l = 0.6 > 0 but r.v < 0.
-    for shininess in [0.5, 1.0, 2.0] {
+    for shininess in [0.0, 0.5, 1.0, 2.0] {
         let material = Material {
             specular: DVec3::ONE,
             shininess,
@@ -180,6 +197,33 @@ fn spot_light_lights_inside_its_cone_only() {
     assert_colour(
         trace(&scene, ray_down_at(0.0), TermSwitches::ALL_ON),
         DVec3::splat(20.0 / 16.0),
+    );
+}
+
+#[test]
+fn a_180_degree_spot_lights_every_direction_even_straight_behind_it() {
+    // Pointing up, 4 units above the floor: the floor point below is straight behind.
+    let spot = |angle_deg: f64| Light::Spot {
+        position: DVec3::new(0.0, 4.0, 0.0),
+        direction: DVec3::Y,
+        angle_deg,
+        colour: DVec3::ONE,
+        intensity: 16.0,
+    };
+    let mut scene = floor_scene();
+    scene.lights.push(spot(180.0));
+    for x in [0.0f64, 1e-9, 3.0] {
+        let expected = 16.0 / (16.0 + x * x) * (4.0 / (16.0 + x * x).sqrt());
+        assert_colour(
+            trace(&scene, ray_down_at(x), TermSwitches::ALL_ON),
+            DVec3::splat(expected),
+        );
+    }
+    // Just under 180 degrees, straight behind is outside the cone.
+    scene.lights[0] = spot(179.9);
+    assert_eq!(
+        trace(&scene, ray_down_at(0.0), TermSwitches::ALL_ON),
+        DVec3::ZERO
     );
 }
 
@@ -288,4 +332,50 @@ fn two_facing_mirrors_bounce_exactly_max_depth_times() {
         trace(&scene, ray, TermSwitches::ALL_ON),
         DVec3::splat(1.875),
     );
+}
+
+/// Two perfect mirrors (km = 1, ka = 0.001) facing each other across the origin, lit by
+/// an ambient light of 1: a ray along their axis adds 0.001 per ray until `max_depth`.
+fn perfect_mirrors(max_depth: u32) -> raylab::scene::Scene {
+    let mut scene = bare_scene(Material {
+        ambient: DVec3::splat(0.001),
+        mirror: DVec3::ONE,
+        ..Material::default()
+    });
+    scene.lights.push(Light::Ambient {
+        colour: DVec3::ONE,
+        intensity: 1.0,
+    });
+    for z in [-1.0, 1.0] {
+        scene.objects.push(object(
+            Shape::Plane,
+            DVec3::new(0.0, 0.0, z),
+            DVec3::ZERO,
+            DVec3::splat(10.0),
+        ));
+    }
+    scene.render.max_depth = max_depth;
+    scene
+}
+
+#[test]
+fn any_depth_up_to_the_limit_runs_in_a_small_stack() {
+    // The mirror chain is a loop: 1000 bounces, and the largest depth a scene may ask
+    // for, fit in a thread stack of 256 KiB, which a recursion of that depth overflows.
+    for depth in [1000, raylab::scene::MAX_DEPTH] {
+        let colour = std::thread::Builder::new()
+            .stack_size(256 * 1024)
+            .spawn(move || {
+                let ray = Ray::new(DVec3::ZERO, -DVec3::Z);
+                trace(&perfect_mirrors(depth), ray, TermSwitches::ALL_ON)
+            })
+            .expect("spawn")
+            .join()
+            .expect("no stack overflow");
+        let expected = 0.001 * f64::from(depth + 1);
+        assert!(
+            (colour - DVec3::splat(expected)).abs().max_element() < 1e-9,
+            "depth {depth}: {colour}"
+        );
+    }
 }

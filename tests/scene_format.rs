@@ -4,7 +4,8 @@
 use std::path::Path;
 
 use raylab::scene::{
-    Light, Scene, SceneError, Shape, Transform, load_scene, parse_scene, save_scene, scene_to_ron,
+    Light, MAX_DEPTH, Scene, SceneError, Shape, Transform, load_scene, parse_scene, save_scene,
+    scene_to_ron,
 };
 
 const EXAMPLE: &str = r#"
@@ -270,18 +271,48 @@ fn zero_light_direction_is_rejected() {
 }
 
 #[test]
-fn spot_angle_must_be_in_zero_to_ninety() {
-    for bad in ["0.0", "-5.0", "90.5", "180.0"] {
+fn spot_angle_may_be_anything_in_zero_to_180() {
+    for bad in ["0.0", "-5.0", "180.5", "1000.0"] {
         let message = error_of(&example_with(
             "angle_deg: 20.0",
             &format!("angle_deg: {bad}"),
         ));
         assert!(
-            message.contains("angle_deg") && message.contains("(0, 90]"),
+            message.contains("angle_deg") && message.contains("(0, 180]"),
             "{message}"
         );
     }
-    assert!(parse_scene(&example_with("angle_deg: 20.0", "angle_deg: 90.0")).is_ok());
+    for good in ["0.001", "90.0", "120.0", "180.0"] {
+        let text = example_with("angle_deg: 20.0", &format!("angle_deg: {good}"));
+        let scene = parse_scene(&text).unwrap_or_else(|e| panic!("{good}: {e}"));
+        let angle: f64 = good.parse().unwrap();
+        assert!(matches!(scene.lights[3], Light::Spot { angle_deg, .. } if angle_deg == angle));
+    }
+}
+
+#[test]
+fn shininess_may_be_zero_but_not_negative() {
+    let scene = parse_scene(&example_with("shininess: 32.0", "shininess: 0.0")).unwrap();
+    assert_eq!(scene.materials["red plastic"].shininess, 0.0);
+    let message = error_of(&example_with("shininess: 32.0", "shininess: -0.5"));
+    assert!(
+        message.contains("red plastic") && message.contains("cannot be negative"),
+        "{message}"
+    );
+}
+
+#[test]
+fn max_depth_goes_up_to_the_public_limit() {
+    let limit = format!("max_depth: {MAX_DEPTH}");
+    let scene = parse_scene(&example_with("max_depth: 5", &limit)).unwrap();
+    assert_eq!(scene.render.max_depth, MAX_DEPTH);
+    const { assert!(MAX_DEPTH >= 1000, "the contract asks for at least 1000") };
+    let over = format!("max_depth: {}", MAX_DEPTH + 1);
+    let message = error_of(&example_with("max_depth: 5", &over));
+    assert!(
+        message.contains("render.max_depth") && message.contains(&MAX_DEPTH.to_string()),
+        "{message}"
+    );
 }
 
 #[test]

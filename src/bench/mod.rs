@@ -3,6 +3,7 @@
 
 pub mod convergence;
 pub mod crossover;
+pub mod diff;
 pub mod plot;
 pub mod precision;
 pub mod throughput;
@@ -37,4 +38,6 @@ pub struct BenchReport {
     pub precision: PrecisionCost,
     /// Flat list against BVH for growing object counts.
     pub bvh_crossover: Vec<CrossoverPoint>,
+    /// `raylab diff` of a 500x500 scene with 5 objects and 3 lights, best time.
+    pub diff_500_ms: f64,
 }

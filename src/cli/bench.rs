@@ -135,6 +135,8 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
     let bvh_crossover = bvh_crossover(counts, 320, 240, runs)?;
     eprintln!("precision: f32 and f64 kernels");
     let precision = precision_cost(if args.quick { 200_000 } else { 1_000_000 }, runs);
+    eprintln!("diff: a 500x500 scene, 5 objects, 3 lights");
+    let (diff_500_ms, _) = crate::bench::diff::diff_time(runs)?;
     Ok(BenchReport {
         quick: args.quick,
         threads: rayon::current_num_threads(),
@@ -146,6 +148,7 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
         curve,
         precision,
         bvh_crossover,
+        diff_500_ms,
     })
 }
 
@@ -207,5 +210,9 @@ fn print_tables(report: &BenchReport) {
     println!(
         "intersection kernel, {} rays x 8 spheres: f32 {:.1} ns/ray, f64 {:.1} ns/ray, f64/f32 = {:.2}",
         p.rays, p.f32_ns_per_ray, p.f64_ns_per_ray, p.f64_over_f32
+    );
+    println!(
+        "diff of a 500x500 scene (5 objects, 3 lights): {:.1} ms",
+        report.diff_500_ms
     );
 }

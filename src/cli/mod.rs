@@ -1,7 +1,8 @@
 //! The command line: `raylab [SCENE.ron]` starts the editor, `raylab render` renders
-//! headless. `main.rs` only calls [`run`].
+//! headless, `raylab diff` compares with another renderer. `main.rs` only calls [`run`].
 
 mod bench;
+mod diff;
 mod import;
 mod render;
 
@@ -11,6 +12,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 pub use bench::BenchArgs;
+pub use diff::DiffArgs;
 pub use import::ImportArgs;
 pub use render::RenderArgs;
 
@@ -34,6 +36,8 @@ pub enum Command {
     Import(ImportArgs),
     /// Measure throughput, preview latency and speed against error.
     Bench(BenchArgs),
+    /// Compare with another renderer's image: which light, object and term differ.
+    Diff(DiffArgs),
 }
 
 /// Parses the command line and runs it. Errors are printed to stderr with a non-zero exit.
@@ -44,6 +48,7 @@ pub fn run() -> ExitCode {
         Some(Command::Render(args)) => render::run(&args),
         Some(Command::Import(args)) => import::run(&args),
         Some(Command::Bench(args)) => bench::run(&args),
+        Some(Command::Diff(args)) => diff::run(&args),
         None => start_editor(cli.scene),
     };
     match result {

@@ -16,7 +16,9 @@ pub use error::SceneError;
 pub use file::{
     load_scene, parse_scene, save_scene, scene_to_ron, write_atomically, write_atomically_with,
 };
-pub use model::{Camera, FORMAT_VERSION, Light, Material, Object, RenderSettings, Scene, Shape};
+pub use model::{
+    Camera, FORMAT_VERSION, Light, LightKind, Material, Object, RenderSettings, Scene, Shape,
+};
 pub use text_file::{MAX_SCENE_FILE_BYTES, TextFileError, read_text_file};
 pub use transform::{MatrixRows, Transform, Trs, affine_from_rows, rows_from_affine};
-pub use validate::{MAX_IMAGE_SIDE, validate};
+pub use validate::{MAX_DEPTH, MAX_IMAGE_SIDE, MAX_SPOT_ANGLE_DEG, validate};

@@ -81,7 +81,7 @@ impl Default for Camera {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RenderSettings {
-    /// Maximum number of mirror bounces.
+    /// Maximum number of mirror bounces, at most [`crate::scene::MAX_DEPTH`].
     #[serde(default = "default_max_depth")]
     pub max_depth: u32,
     /// Colour of rays that hit nothing.
@@ -123,7 +123,7 @@ pub struct Material {
     /// Phong specular reflectance (ks).
     #[serde(default)]
     pub specular: DVec3,
-    /// Phong exponent (s).
+    /// Phong exponent (s), any value >= 0; 0 makes the lobe 1 wherever r.v > 0.
     #[serde(default = "default_shininess")]
     pub shininess: f64,
     /// Mirror reflectance (km).
@@ -239,7 +239,8 @@ pub enum Light {
         position: DVec3,
         /// Axis of the cone: the way the light travels.
         direction: DVec3,
-        /// Half-angle of the cone in degrees, in (0, 90].
+        /// Half-angle of the cone in degrees, in (0, 180]: 90 lights a half-space, 180
+        /// every direction.
         angle_deg: f64,
         /// Light colour (linear RGB, may exceed 1).
         colour: DVec3,
@@ -253,16 +254,56 @@ fn default_intensity() -> f64 {
     1.0
 }
 
+/// The four kinds of light, without their values: for menus, messages and importers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LightKind {
+    /// [`Light::Ambient`].
+    Ambient,
+    /// [`Light::Point`].
+    Point,
+    /// [`Light::Directional`].
+    Directional,
+    /// [`Light::Spot`].
+    Spot,
+}
+
+impl LightKind {
+    /// Every kind, in menu order.
+    pub const ALL: [LightKind; 4] = [
+        LightKind::Ambient,
+        LightKind::Point,
+        LightKind::Directional,
+        LightKind::Spot,
+    ];
+
+    /// The kind's name, as in files: the variant name of [`Light`].
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            LightKind::Ambient => "Ambient",
+            LightKind::Point => "Point",
+            LightKind::Directional => "Directional",
+            LightKind::Spot => "Spot",
+        }
+    }
+}
+
 impl Light {
+    /// Which kind of light this is.
+    #[must_use]
+    pub fn kind(&self) -> LightKind {
+        match self {
+            Light::Ambient { .. } => LightKind::Ambient,
+            Light::Point { .. } => LightKind::Point,
+            Light::Directional { .. } => LightKind::Directional,
+            Light::Spot { .. } => LightKind::Spot,
+        }
+    }
+
     /// The kind's name, as in files and menus.
     #[must_use]
     pub fn kind_name(&self) -> &'static str {
-        match self {
-            Light::Ambient { .. } => "Ambient",
-            Light::Point { .. } => "Point",
-            Light::Directional { .. } => "Directional",
-            Light::Spot { .. } => "Spot",
-        }
+        self.kind().name()
     }
 
     /// The light's colour, before `intensity`.

@@ -69,20 +69,24 @@ impl Trs {
     }
 }
 
-/// Sine and cosine of an angle in degrees, exact at multiples of 90 degrees so that a
-/// floor turned by -90 has a normal of exactly +y.
+/// Sine and cosine of an angle in degrees, exact at multiples of 90 degrees, so that a
+/// floor turned by -90 has a normal of exactly +y and `Rotate X 180` turns +Y into exactly
+/// -Y. The angle is first reduced with `%`, which is exact, so a large angle keeps its
+/// precision and a tiny negative one stays tiny (reducing to [0, 360) instead would round
+/// -1e-15 up to 360).
 #[must_use]
 pub fn sin_cos_deg(degrees: f64) -> (f64, f64) {
-    let turned = degrees.rem_euclid(360.0);
-    if turned % 90.0 == 0.0 {
-        match (turned / 90.0) as u32 {
+    let reduced = degrees % 360.0;
+    if reduced % 90.0 == 0.0 {
+        // A whole number from -3 to 3, so the conversion is exact.
+        match ((reduced / 90.0) as i32).rem_euclid(4) {
             0 => (0.0, 1.0),
             1 => (1.0, 0.0),
             2 => (0.0, -1.0),
             _ => (-1.0, 0.0),
         }
     } else {
-        turned.to_radians().sin_cos()
+        reduced.to_radians().sin_cos()
     }
 }
 
@@ -339,9 +343,9 @@ mod tests {
 
     #[test]
     fn quarter_turns_are_exact_and_agree_with_glam() {
-        for degrees in [-270.0, -90.0, 0.0, 90.0, 180.0, 450.0] {
+        for degrees in [-270.0, -90.0, 0.0, 90.0, 180.0, 450.0, -720.0, 9e20] {
             let (s, c) = sin_cos_deg(degrees);
-            let r = f64::to_radians(degrees);
+            let r = f64::to_radians(degrees % 360.0);
             assert!((s - r.sin()).abs() < 1e-15 && (c - r.cos()).abs() < 1e-15);
             assert!(s.fract() == 0.0 && c.fract() == 0.0);
         }
@@ -365,6 +369,17 @@ mod tests {
             floor.world_from_object().transform_vector3(DVec3::Z),
             DVec3::Y
         );
+    }
+
+    #[test]
+    fn tiny_and_large_angles_keep_their_precision() {
+        // A tiny negative angle is nearly no turn (not 270 degrees).
+        let (s, c) = sin_cos_deg(-1e-15);
+        assert!(s < 0.0 && s > -1e-16 && c == 1.0, "({s}, {c})");
+        // 3600.5 degrees is exactly 0.5 degrees after reduction.
+        assert_eq!(sin_cos_deg(3600.5), sin_cos_deg(0.5));
+        assert_eq!(sin_cos_deg(-30.0), (-30f64).to_radians().sin_cos());
+        assert!(sin_cos_deg(f64::NAN).0.is_nan() && sin_cos_deg(f64::INFINITY).1.is_nan());
     }
 
     #[test]

@@ -11,8 +11,14 @@ use super::transform::Transform;
 pub const MAX_IMAGE_SIDE: u32 = 16384;
 /// The largest accepted number of samples per pixel.
 pub const MAX_SAMPLES_PER_PIXEL: u32 = 65536;
-/// The largest accepted mirror depth.
-pub const MAX_DEPTH: u32 = 64;
+/// The largest accepted mirror depth (`render.max_depth`). The tracer follows a mirror
+/// chain in a loop, so depth costs no stack; the limit only bounds the time one pixel can
+/// take between two facing mirrors. It is ten times the 1000 the contract asks a renderer
+/// to handle; legacy files asking for more are imported at this depth, with a warning.
+pub const MAX_DEPTH: u32 = 10_000;
+/// The widest spot light: a half-angle of 180 degrees lights every direction. Half-angles
+/// are in (0, `MAX_SPOT_ANGLE_DEG`].
+pub const MAX_SPOT_ANGLE_DEG: f64 = 180.0;
 
 /// Checks every rule of the contract that parsing alone does not enforce.
 ///
@@ -155,9 +161,10 @@ fn check_material(material: &Material) -> Result<(), SceneError> {
     non_negative_colour("specular", material.specular)?;
     non_negative_colour("mirror", material.mirror)?;
     finite("shininess", material.shininess)?;
-    if material.shininess <= 0.0 {
+    // 0 is allowed: max(0, r.v)^0 is 1 where r.v > 0 and 0 elsewhere.
+    if material.shininess < 0.0 {
         return invalid(format!(
-            "shininess is {}; the Phong exponent must be positive",
+            "shininess is {}; the Phong exponent cannot be negative",
             material.shininess
         ));
     }
@@ -214,9 +221,10 @@ fn check_light(light: &Light) -> Result<(), SceneError> {
             finite_vec("position", position)?;
             check_direction(direction)?;
             finite("angle_deg", angle_deg)?;
-            if !(angle_deg > 0.0 && angle_deg <= 90.0) {
+            if !(angle_deg > 0.0 && angle_deg <= MAX_SPOT_ANGLE_DEG) {
                 return invalid(format!(
-                    "angle_deg is {angle_deg}; a spot light's half-angle must be in (0, 90] degrees"
+                    "angle_deg is {angle_deg}; a spot light's half-angle must be in \
+                     (0, {MAX_SPOT_ANGLE_DEG}] degrees"
                 ));
             }
             Ok(())

@@ -4,6 +4,7 @@
 use glam::DVec3;
 
 use crate::scene::Light;
+use crate::scene::transform::sin_cos_deg;
 
 /// A non-ambient light, ready to sample.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -28,7 +29,8 @@ pub enum WorldLight {
         position: DVec3,
         /// Unit axis: the way the light travels.
         axis: DVec3,
-        /// Cosine of the half-angle.
+        /// Cosine of the half-angle: exactly 0 at 90 degrees and -1 at 180 (every
+        /// direction).
         cos_angle: f64,
         /// colour * intensity.
         strength: DVec3,
@@ -69,7 +71,7 @@ impl WorldLight {
             } => WorldLight::Spot {
                 position,
                 axis: direction.normalize(),
-                cos_angle: angle_deg.to_radians().cos(),
+                cos_angle: sin_cos_deg(angle_deg).1,
                 strength,
             },
             Light::Ambient { .. } => panic!("ambient lights are not sampled"),
@@ -77,9 +79,13 @@ impl WorldLight {
     }
 
     /// The light's contribution at `p`, or `None` where it cannot light `p` at all
-    /// (outside a spot cone, or exactly at the light).
+    /// (outside a spot cone, exactly at the light, or a light of zero strength, such as
+    /// an imported legacy spot light without an angle): no shadow ray is cast for it.
     #[must_use]
     pub fn sample(&self, p: DVec3) -> Option<LightSample> {
+        if self.strength() == DVec3::ZERO {
+            return None;
+        }
         match *self {
             WorldLight::Point { position, strength } => at_distance(p, position, strength),
             WorldLight::Directional { to_light, strength } => Some(LightSample {
@@ -95,8 +101,21 @@ impl WorldLight {
             } => {
                 let sample = at_distance(p, position, strength)?;
                 // The angle between the axis and (p - position) is at most the half-angle.
-                ((-sample.to_light).dot(axis) >= cos_angle).then_some(sample)
+                // The cosine of that angle is clamped, as rounding can take it just past
+                // -1 straight behind the light, which a 180-degree spot still lights.
+                let cos_to_p = (-sample.to_light).dot(axis).max(-1.0);
+                (cos_to_p >= cos_angle).then_some(sample)
             }
+        }
+    }
+
+    /// colour * intensity.
+    #[must_use]
+    pub fn strength(&self) -> DVec3 {
+        match *self {
+            WorldLight::Point { strength, .. }
+            | WorldLight::Directional { strength, .. }
+            | WorldLight::Spot { strength, .. } => strength,
         }
     }
 }
@@ -145,6 +164,58 @@ mod tests {
             light.sample(DVec3::new(0.0, 2.0, 0.0)).is_none(),
             "behind the spot"
         );
+    }
+
+    fn spot(angle_deg: f64) -> WorldLight {
+        WorldLight::new(&Light::Spot {
+            position: DVec3::ZERO,
+            direction: DVec3::new(0.0, 2.0, 0.0),
+            angle_deg,
+            colour: DVec3::ONE,
+            intensity: 1.0,
+        })
+    }
+
+    #[test]
+    fn wide_spot_lights_beyond_ninety_degrees_up_to_everything_at_180() {
+        // 120 degrees from +y: below the light, points within 60 degrees of -y are dark.
+        let (s, c) = (60f64.to_radians().sin(), 60f64.to_radians().cos());
+        let wide = spot(120.0);
+        assert!(wide.sample(DVec3::new(1.0, 0.0, 0.0)).is_some(), "sideways");
+        assert!(wide.sample(DVec3::new(s * 1.01, -c, 0.0)).is_some());
+        assert!(wide.sample(DVec3::new(s * 0.99, -c, 0.0)).is_none());
+        assert!(wide.sample(DVec3::new(0.0, -1.0, 0.0)).is_none(), "behind");
+        // 90 degrees: exactly sideways is on the edge and lit.
+        assert!(spot(90.0).sample(DVec3::new(3.0, 0.0, 0.0)).is_some());
+        assert!(spot(90.0).sample(DVec3::new(3.0, -1e-9, 0.0)).is_none());
+        // 180 degrees: every direction, also straight behind and at awkward roundings.
+        let all = spot(180.0);
+        for p in [
+            DVec3::new(0.0, -1.0, 0.0),
+            DVec3::new(1e-300, -7.0, 0.0),
+            DVec3::new(0.1, -0.3, 1e-17),
+            DVec3::new(-5.0, 1.0, 2.0),
+        ] {
+            assert!(all.sample(p).is_some(), "{p}");
+        }
+    }
+
+    #[test]
+    fn a_light_of_zero_strength_reaches_nothing() {
+        let dark = WorldLight::new(&Light::Spot {
+            position: DVec3::ZERO,
+            direction: DVec3::NEG_Y,
+            angle_deg: 45.0,
+            colour: DVec3::ONE,
+            intensity: 0.0,
+        });
+        assert_eq!(dark.sample(DVec3::NEG_Y), None);
+        let black = WorldLight::new(&Light::Point {
+            position: DVec3::ZERO,
+            colour: DVec3::ZERO,
+            intensity: 3.0,
+        });
+        assert_eq!(black.sample(DVec3::X), None);
     }
 
     #[test]

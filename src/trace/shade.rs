@@ -6,12 +6,15 @@
 //!        + km * colour(reflected ray)          while depth < max_depth
 //! ```
 //!
+//! The mirror chain is followed in a loop, so the stack stays the same size at any depth.
+//!
 //! Work is only done where a term can contribute: no shadow ray for a light behind the
 //! surface, outside its spot cone, or for a material with no diffuse and no specular; no
 //! mirror ray where km is zero. An optional [`Recorder`] sees every number the shader
 //! uses, so the pixel inspector reports this very code path.
 
 use glam::DVec3;
+use smallvec::SmallVec;
 
 use super::depth_view::DepthRange;
 use super::ray::Ray;
@@ -86,6 +89,28 @@ pub struct NoRecorder;
 
 impl Recorder for NoRecorder {}
 
+/// What one ray of the mirror chain contributes: its own colour (ambient, diffuse and
+/// specular at a hit, the background at a miss) and the weight of the colour its mirror
+/// ray brings back (`km`; unused when no mirror ray was cast).
+#[derive(Clone, Copy, Debug)]
+struct Bounce {
+    local: DVec3,
+    km: DVec3,
+}
+
+impl Bounce {
+    /// A ray that casts no mirror ray.
+    fn local(colour: DVec3) -> Self {
+        Self {
+            local: colour,
+            km: DVec3::ZERO,
+        }
+    }
+}
+
+/// Mirror chains up to this long stay on the stack; longer ones spill to the heap.
+const INLINE_BOUNCES: usize = 8;
+
 /// Traces rays through a world with a fixed set of switches and view.
 #[derive(Clone, Copy, Debug)]
 pub struct Tracer<'w> {
@@ -132,7 +157,7 @@ impl<'w> Tracer<'w> {
     ) -> DVec3 {
         counts.primary += 1;
         match self.view {
-            View::Beauty => self.radiance(ray, 0, &self.primary, counts, recorder),
+            View::Beauty => self.radiance(ray, counts, recorder),
             View::Normal => self
                 .world
                 .intersect(ray, f64::INFINITY)
@@ -156,15 +181,59 @@ impl<'w> Tracer<'w> {
         }
     }
 
-    /// The lit colour of a ray at `depth` with the given terms.
-    fn radiance(
+    /// The lit colour of a camera ray and its chain of mirror bounces.
+    ///
+    /// A loop, not a recursion, so any `max_depth` runs in constant stack: the chain is
+    /// walked forward, keeping each ray's local colour and mirror weight, then folded back
+    /// from the deepest ray as `colour(d) = local(d) + km(d) * colour(d + 1)`. That is the
+    /// same arithmetic, and the same recorder calls in the same order, as the recursive
+    /// form (a ray's `reflection` and `result` after everything deeper).
+    fn radiance(&self, ray: &Ray, counts: &mut RayCounts, recorder: &mut impl Recorder) -> DVec3 {
+        let (camera_bounce, mirror_ray) = self.shade(ray, 0, &self.primary, counts, recorder);
+        // Most camera rays meet no mirror: no chain to keep.
+        let Some(mut ray) = mirror_ray else {
+            recorder.result(0, camera_bounce.local);
+            return camera_bounce.local;
+        };
+        let mut chain: SmallVec<[Bounce; INLINE_BOUNCES]> = SmallVec::new();
+        chain.push(camera_bounce);
+        loop {
+            let depth = chain.len() as u32;
+            let (bounce, mirror_ray) = self.shade(&ray, depth, &self.secondary, counts, recorder);
+            chain.push(bounce);
+            match mirror_ray {
+                Some(next) => ray = next,
+                None => break,
+            }
+        }
+        // Fold back: the deepest ray returns its own colour, each one before it adds km
+        // times the colour of the one after.
+        let mut depth = chain.len() - 1;
+        let mut colour = chain[depth].local;
+        recorder.result(depth as u32, colour);
+        while depth > 0 {
+            depth -= 1;
+            let bounce = &chain[depth];
+            recorder.reflection(depth as u32, bounce.km, colour);
+            colour = bounce.local + bounce.km * colour;
+            recorder.result(depth as u32, colour);
+        }
+        colour
+    }
+
+    /// One ray of the mirror chain at `depth`: what it adds itself, and the mirror ray to
+    /// follow, if one is cast. Inlined into both calls in [`Self::radiance`], so the pair
+    /// it returns is not passed through memory (callgrind: about 2% more instructions per
+    /// camera ray when it is not).
+    #[inline(always)]
+    fn shade(
         &self,
         ray: &Ray,
         depth: u32,
         terms: &ActiveTerms,
         counts: &mut RayCounts,
         recorder: &mut impl Recorder,
-    ) -> DVec3 {
+    ) -> (Bounce, Option<Ray>) {
         let Some(hit) = self.world.intersect(ray, f64::INFINITY) else {
             let background = if terms.background {
                 self.world.background
@@ -172,8 +241,7 @@ impl<'w> Tracer<'w> {
                 DVec3::ZERO
             };
             recorder.miss(depth, ray, background);
-            recorder.result(depth, background);
-            return background;
+            return (Bounce::local(background), None);
         };
         recorder.hit(depth, ray, &hit);
         let world = self.world;
@@ -232,19 +300,18 @@ impl<'w> Tracer<'w> {
             }
         }
 
-        // mirror: km * colour(reflected ray)
+        // mirror: km * colour(reflected ray), added when the chain folds back
         if terms.reflection && depth < world.max_depth && material.mirror != DVec3::ZERO {
             let d = ray.dir;
             let reflected_dir = d - 2.0 * d.dot(hit.n) * hit.n;
-            let reflected_ray = spawn_ray(&hit, reflected_dir);
             counts.reflection += 1;
-            let reflected =
-                self.radiance(&reflected_ray, depth + 1, &self.secondary, counts, recorder);
-            recorder.reflection(depth, material.mirror, reflected);
-            colour += material.mirror * reflected;
+            let bounce = Bounce {
+                local: colour,
+                km: material.mirror,
+            };
+            return (bounce, Some(spawn_ray(&hit, reflected_dir)));
         }
-        recorder.result(depth, colour);
-        colour
+        (Bounce::local(colour), None)
     }
 
     /// Casts the shadow ray from `hit` to a light; the blocking object, if any.

@@ -1,5 +1,8 @@
-//! Helpers shared by the integration tests: small scenes built in code, and single rays.
+//! Helpers shared by the integration tests: small scenes built in code, and single rays;
+//! `legacy` for the legacy importer's tests.
 #![allow(dead_code)]
+
+pub mod legacy;
 
 use std::collections::BTreeMap;
 

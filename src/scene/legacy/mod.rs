@@ -10,13 +10,11 @@
 //! Imports set `samples_per_pixel: 1`, as the legacy renderer has no anti-aliasing, so
 //! an imported scene renders the legacy picture (the editor can raise it).
 
-mod camera;
 mod convert;
 mod error;
 mod lexer;
 mod parser;
 mod syntax;
-mod transform;
 
 use std::path::Path;
 

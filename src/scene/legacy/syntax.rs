@@ -3,7 +3,7 @@
 
 use glam::DVec3;
 
-use crate::scene::Shape;
+use crate::scene::{LightKind, Shape};
 
 /// Where an item came from: the 1-based line and the token that names it.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -86,23 +86,10 @@ pub enum SceneSetting {
     Background(DVec3),
     /// `ambientLight R G B` (older files).
     AmbientLight(DVec3),
-    /// `rayDepth N`.
-    RayDepth(u32),
+    /// `rayDepth N`: a whole number >= 0 as written, which may exceed what raylab renders.
+    RayDepth(f64),
     /// `filename NAME`: the legacy output image; not used by the import.
     Filename(String),
-}
-
-/// The four light kinds.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum LightKind {
-    /// `AmbientLight`.
-    Ambient,
-    /// `PointLight`.
-    Point,
-    /// `DirectionalLight`.
-    Directional,
-    /// `SpotLight`.
-    Spot,
 }
 
 /// One keyword of a Light block.

@@ -1,7 +1,7 @@
 //! The unit cone: x^2 + y^2 = z^2 for 0 <= z <= 1, apex at the origin, closed by a disc
 //! cap of radius 1 at z = 1.
 
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 
 use super::{ShapeHit, disc_cap, gamma, in_range, nearer};
 use crate::trace::bounds::Aabb;
@@ -37,11 +37,28 @@ fn side_roots(ray: &Ray) -> Option<[f64; 2]> {
     solve_quadratic(a, h, c, disc)
 }
 
-/// The outward normal at a point of the side: the gradient of x^2 + y^2 - z^2. At the
-/// apex the gradient vanishes; there the axis (-z, out of the tip) is used.
-fn side_normal(p: DVec3) -> DVec3 {
+/// The outward normal at a point of the side: the gradient of x^2 + y^2 - z^2.
+///
+/// At the apex the gradient vanishes and every generator meets. There the normal is the
+/// side's normal along the generator that rays next to this one hit, `(c, -1)` with `c`
+/// the unit direction in the xy plane: against the ray's own xy direction for a ray
+/// from outside (the generator facing it), along it for a ray from inside the cone
+/// (the wall it runs into), and +x for a ray along the axis. So the apex is shaded like
+/// the points around it, never with a normal (such as the axis) that no neighbour has.
+fn side_normal(p: DVec3, ray: &Ray) -> DVec3 {
     let n = DVec3::new(p.x, p.y, -p.z);
-    if n == DVec3::ZERO { -DVec3::Z } else { n }
+    if n != DVec3::ZERO {
+        return n;
+    }
+    let (o, d) = (ray.origin, ray.dir);
+    let across = DVec2::new(d.x, d.y);
+    let from_inside = o.z > 0.0 && o.x * o.x + o.y * o.y < o.z * o.z;
+    let c = match across.try_normalize() {
+        Some(c) if from_inside => c,
+        Some(c) => -c,
+        None => DVec2::X,
+    };
+    DVec3::new(c.x, c.y, -1.0)
 }
 
 /// The nearest side hit on the upper nappe, 0 <= z <= 1.
@@ -64,7 +81,7 @@ fn side_hit(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
     Some(ShapeHit {
         t,
         p,
-        n: side_normal(p),
+        n: side_normal(p, ray),
         p_error: gamma(6) * p.abs() + DVec3::splat(gamma(6) * s),
     })
 }
@@ -110,7 +127,29 @@ mod tests {
         let hit = intersect(&up, f64::INFINITY).unwrap();
         assert_eq!(hit.t, 2.0);
         assert_eq!(hit.p, DVec3::ZERO);
-        assert_eq!(hit.n, -DVec3::Z);
+        // The side's normal along the +x generator, as at the points next to the apex.
+        assert_eq!(hit.n, DVec3::new(1.0, 0.0, -1.0));
+    }
+
+    #[test]
+    fn the_apex_normal_is_the_side_normal_of_a_neighbouring_generator() {
+        // From outside, slanting towards +x: the generator on the -x side faces the ray.
+        let outside = Ray::new(DVec3::new(-2.0, 0.0, -1.0), DVec3::new(2.0, 0.0, 1.0));
+        let hit = intersect(&outside, f64::INFINITY).unwrap();
+        assert_eq!(hit.p, DVec3::ZERO);
+        assert_eq!(hit.n, DVec3::new(-1.0, 0.0, -1.0));
+        let nearby = Ray::new(DVec3::new(-2.0, 0.0, -1.0 + 1e-6), outside.dir);
+        let near_n = intersect(&nearby, f64::INFINITY).unwrap().n.normalize();
+        assert!((near_n - hit.n.normalize()).length() < 1e-5, "{near_n}");
+        // From inside, down towards -y: the wall on the -y side.
+        let inside = Ray::new(DVec3::new(0.0, 0.5, 1.0), DVec3::new(0.0, -0.5, -1.0));
+        let hit = intersect(&inside, f64::INFINITY).unwrap();
+        assert_eq!(hit.p, DVec3::ZERO);
+        assert_eq!(hit.n, DVec3::new(0.0, -1.0, -1.0));
+        assert!(
+            hit.n.dot(inside.dir) > 0.0,
+            "the outward normal, seen from inside"
+        );
     }
 
     #[test]

@@ -7,8 +7,6 @@ mod scene_edit;
 
 use std::path::PathBuf;
 
-use glam::DVec3;
-
 use crate::scene::{Camera, Light, Material, Object, RenderSettings, Shape};
 
 /// What the inspector shows.
@@ -29,70 +27,8 @@ pub enum Selection {
     Light(usize),
 }
 
+pub use crate::scene::LightKind;
 pub use scene_edit::{repair_selection, unique_name};
-
-/// The four light kinds, for the "add light" menu.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum LightKind {
-    /// Ambient light.
-    Ambient,
-    /// Point light.
-    Point,
-    /// Directional light.
-    Directional,
-    /// Spot light.
-    Spot,
-}
-
-impl LightKind {
-    /// Every kind, in menu order.
-    pub const ALL: [LightKind; 4] = [
-        LightKind::Ambient,
-        LightKind::Point,
-        LightKind::Directional,
-        LightKind::Spot,
-    ];
-
-    /// The kind's name, as in files.
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        match self {
-            LightKind::Ambient => "Ambient",
-            LightKind::Point => "Point",
-            LightKind::Directional => "Directional",
-            LightKind::Spot => "Spot",
-        }
-    }
-
-    /// A light of this kind with sensible values for the default scene's scale.
-    #[must_use]
-    pub fn new_light(self) -> Light {
-        let colour = DVec3::ONE;
-        match self {
-            LightKind::Ambient => Light::Ambient {
-                colour: DVec3::splat(0.1),
-                intensity: 1.0,
-            },
-            LightKind::Point => Light::Point {
-                position: DVec3::new(2.0, 5.0, 3.0),
-                colour,
-                intensity: 20.0,
-            },
-            LightKind::Directional => Light::Directional {
-                direction: DVec3::new(-1.0, -2.0, -1.0),
-                colour,
-                intensity: 0.8,
-            },
-            LightKind::Spot => Light::Spot {
-                position: DVec3::new(0.0, 5.0, 0.0),
-                direction: DVec3::new(0.0, -1.0, 0.0),
-                angle_deg: 25.0,
-                colour,
-                intensity: 20.0,
-            },
-        }
-    }
-}
 
 /// A change to the scene (and the selection that follows it).
 #[derive(Clone, Debug, PartialEq)]

@@ -4,7 +4,7 @@
 use glam::DVec3;
 
 use super::{SceneEdit, Selection, placement};
-use crate::scene::{Light, Material, Object, Scene};
+use crate::scene::{Light, LightKind, Material, Object, Scene};
 
 impl SceneEdit {
     /// Applies the edit; the selection follows added, duplicated and deleted items.
@@ -27,7 +27,7 @@ impl SceneEdit {
                 *selection = Selection::Object(scene.objects.len() - 1);
             }
             SceneEdit::AddLight(kind) => {
-                scene.lights.push(kind.new_light());
+                scene.lights.push(new_light(kind));
                 *selection = Selection::Light(scene.lights.len() - 1);
             }
             SceneEdit::AddMaterial => {
@@ -82,6 +82,34 @@ pub fn unique_name<'a>(base: &str, taken: impl Iterator<Item = &'a String>) -> S
         .map(|n| format!("{base} {n}"))
         .find(|name| free(name))
         .unwrap_or_else(|| base.to_owned())
+}
+
+/// A light of `kind` with sensible values for the default scene's scale.
+fn new_light(kind: LightKind) -> Light {
+    let colour = DVec3::ONE;
+    match kind {
+        LightKind::Ambient => Light::Ambient {
+            colour: DVec3::splat(0.1),
+            intensity: 1.0,
+        },
+        LightKind::Point => Light::Point {
+            position: DVec3::new(2.0, 5.0, 3.0),
+            colour,
+            intensity: 20.0,
+        },
+        LightKind::Directional => Light::Directional {
+            direction: DVec3::new(-1.0, -2.0, -1.0),
+            colour,
+            intensity: 0.8,
+        },
+        LightKind::Spot => Light::Spot {
+            position: DVec3::new(0.0, 5.0, 0.0),
+            direction: DVec3::new(0.0, -1.0, 0.0),
+            angle_deg: 25.0,
+            colour,
+            intensity: 20.0,
+        },
+    }
 }
 
 fn grey_material() -> Material {

@@ -10,7 +10,8 @@
 
 use glam::{DAffine3, DMat3, DVec3};
 
-use super::syntax::{Axis, TransformStep};
+use super::super::syntax::{Axis, TransformStep};
+use crate::scene::transform::sin_cos_deg;
 use crate::scene::{MatrixRows, Transform, Trs, rows_from_affine};
 
 /// Relative agreement a recomposed translate / rotate / scale must reach.
@@ -39,23 +40,6 @@ fn rotation(axis: Axis, angle_deg: f64) -> DMat3 {
         Axis::X => DMat3::from_cols(DVec3::X, DVec3::new(0.0, c, s), DVec3::new(0.0, -s, c)),
         Axis::Y => DMat3::from_cols(DVec3::new(c, 0.0, -s), DVec3::Y, DVec3::new(s, 0.0, c)),
         Axis::Z => DMat3::from_cols(DVec3::new(c, s, 0.0), DVec3::new(-s, c, 0.0), DVec3::Z),
-    }
-}
-
-/// Sine and cosine of an angle in degrees, exact for multiples of 90 degrees (so
-/// `Rotate X 180` turns +Y into exactly -Y, with no 1e-16 left over).
-fn sin_cos_deg(angle_deg: f64) -> (f64, f64) {
-    let quarter_turns = angle_deg / 90.0;
-    if quarter_turns.fract() == 0.0 && quarter_turns.abs() < 1e15 {
-        // Whole and small, so the conversion is exact.
-        match (quarter_turns as i64).rem_euclid(4) {
-            0 => (0.0, 1.0),
-            1 => (1.0, 0.0),
-            2 => (0.0, -1.0),
-            _ => (-1.0, 0.0),
-        }
-    } else {
-        angle_deg.to_radians().sin_cos()
     }
 }
 

@@ -1,0 +1,75 @@
+//! `raylab diff`: compare a scene's raylab picture with another renderer's image of it,
+//! and say which light, object and term explain the difference (docs/COMPARE.md).
+
+use std::path::{Path, PathBuf};
+
+use clap::Args;
+
+use crate::compare::{CompareOptions, OtherImage, compare, write_report_png};
+use crate::scene::legacy::import_legacy_file;
+use crate::scene::{Scene, load_scene};
+use crate::trace::RenderProgress;
+
+/// Arguments of `raylab diff`.
+#[derive(Debug, Args)]
+pub struct DiffArgs {
+    /// The scene: RON, or a legacy COSC342 `.txt` scene (imported on the fly).
+    pub scene: PathBuf,
+    /// The other renderer's image of the scene: an 8-bit PNG or PPM at the scene's size.
+    pub other: PathBuf,
+    /// Print one JSON object instead of readable lines.
+    #[arg(long)]
+    pub json: bool,
+    /// Also write a report image: both pictures, the difference, the top explanations.
+    #[arg(short, long)]
+    pub output: Option<PathBuf>,
+    /// Samples per pixel of raylab's picture (default: the scene's; 1 for a renderer
+    /// without anti-aliasing).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=4096))]
+    pub spp: Option<u32>,
+}
+
+/// Loads a RON scene, or imports a legacy `.txt` scene (warnings to stderr).
+///
+/// # Errors
+/// The loader's message, naming the file.
+pub fn load_any_scene(path: &Path) -> Result<Scene, String> {
+    if path
+        .extension()
+        .is_some_and(|x| x.eq_ignore_ascii_case("txt"))
+    {
+        let import = import_legacy_file(path).map_err(|e| e.to_string())?;
+        for warning in &import.warnings {
+            eprintln!("warning: {}: {warning}", path.display());
+        }
+        Ok(import.scene)
+    } else {
+        load_scene(path).map_err(|e| format!("{}: {e}", path.display()))
+    }
+}
+
+/// Runs `raylab diff`.
+///
+/// # Errors
+/// A message naming what went wrong: the scene, the image (unreadable, not an image, not
+/// 8-bit, another size), or the report's write.
+pub fn run(args: &DiffArgs) -> Result<(), String> {
+    let scene = load_any_scene(&args.scene)?;
+    let other = OtherImage::load(&args.other).map_err(|e| e.to_string())?;
+    let options = CompareOptions {
+        samples_per_pixel: args.spp,
+    };
+    let comparison = compare(&scene, &other, &options, &RenderProgress::default())
+        .map_err(|e| format!("{}: {e}", args.other.display()))?;
+    if let Some(path) = &args.output {
+        write_report_png(&comparison, path)?;
+    }
+    if args.json {
+        println!("{}", comparison.to_json());
+    } else {
+        for line in comparison.text_lines() {
+            println!("{line}");
+        }
+    }
+    Ok(())
+}

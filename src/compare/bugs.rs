@@ -1,0 +1,320 @@
+//! The catalogue of known renderer bugs, each a different way of computing raylab's own
+//! numbers: a normal computed wrongly, a specular lobe with the wrong reflected vector,
+//! colour clamped at the wrong time, a part of a shape that is never hit. The fit tries
+//! each as a whole picture of the difference; a bug that is there explains it with a
+//! weight near 1.
+
+use glam::DVec3;
+
+use crate::scene::{Material, Shape};
+use crate::trace::SurfacePoint;
+use crate::trace::world::WorldObject;
+
+/// A wrong shading normal.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum NormalBug {
+    /// The outward normal is used as is, not turned to face the ray (dark back faces).
+    NotFlipped,
+    /// The object-space normal lacks its x component.
+    DropX,
+    /// The object-space normal lacks its y component.
+    DropY,
+    /// The object-space normal lacks its z component (e.g. a cone's side).
+    DropZ,
+    /// The normal is taken to world space by the object-to-world matrix instead of its
+    /// inverse transpose (wrong under non-uniform scale).
+    ObjectMatrix,
+}
+
+impl NormalBug {
+    /// Every normal bug.
+    pub const ALL: [NormalBug; 5] = [
+        NormalBug::NotFlipped,
+        NormalBug::DropX,
+        NormalBug::DropY,
+        NormalBug::DropZ,
+        NormalBug::ObjectMatrix,
+    ];
+
+    /// A short name for reports.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            NormalBug::NotFlipped => "normal-not-flipped",
+            NormalBug::DropX => "normal-without-x",
+            NormalBug::DropY => "normal-without-y",
+            NormalBug::DropZ => "normal-without-z",
+            NormalBug::ObjectMatrix => "normal-by-object-matrix",
+        }
+    }
+
+    /// What the bug is, as the end of a sentence.
+    #[must_use]
+    pub fn describe(self) -> &'static str {
+        match self {
+            NormalBug::NotFlipped => "its normal is not turned to face the ray",
+            NormalBug::DropX => "its object-space normal lacked its x component",
+            NormalBug::DropY => "its object-space normal lacked its y component",
+            NormalBug::DropZ => "its object-space normal lacked its z component",
+            NormalBug::ObjectMatrix => {
+                "its normal were transformed by the object matrix, not its inverse transpose"
+            }
+        }
+    }
+
+    /// The shading normal (facing the ray) the bug gives at `hit`, or `None` where it
+    /// gives raylab's or no usable normal.
+    #[must_use]
+    pub fn normal(self, hit: &SurfacePoint, ray_dir: DVec3, object: &WorldObject) -> Option<DVec3> {
+        let m = object.world_from_object.matrix3;
+        let n_object = (m.transpose() * hit.n_outward).normalize_or_zero();
+        let drop = |axis: usize| {
+            let mut n = n_object;
+            n[axis] = 0.0;
+            // A normal that loses almost all of its length is a different bug (a cap).
+            (n.length() > 0.2).then(|| (object.normal_from_object * n).normalize_or_zero())
+        };
+        let outward = match self {
+            NormalBug::NotFlipped => return (hit.n != hit.n_outward).then_some(hit.n_outward),
+            NormalBug::DropX => drop(0)?,
+            NormalBug::DropY => drop(1)?,
+            NormalBug::DropZ => drop(2)?,
+            NormalBug::ObjectMatrix => (m * n_object).normalize_or_zero(),
+        };
+        let facing = if outward.dot(ray_dir) > 0.0 {
+            -outward
+        } else {
+            outward
+        };
+        (facing != DVec3::ZERO && (facing - hit.n).length() > 1e-9).then_some(facing)
+    }
+}
+
+/// A wrong specular lobe.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SpecularBug {
+    /// `r = l - 2 (n.l) n`: the light direction reflected the wrong way (or `r.d` with
+    /// the ray direction `d` instead of the view vector).
+    NegatedReflection,
+    /// Blinn-Phong `(n.h)^s` with `h = (l + v) / |l + v|` instead of Phong.
+    HalfVector,
+    /// `max(0, (r.v)^s)` instead of `max(0, r.v)^s`: even exponents light the back of
+    /// the lobe.
+    NoMaxBeforePower,
+}
+
+impl SpecularBug {
+    /// Every specular bug.
+    pub const ALL: [SpecularBug; 3] = [
+        SpecularBug::NegatedReflection,
+        SpecularBug::HalfVector,
+        SpecularBug::NoMaxBeforePower,
+    ];
+
+    /// A short name for reports.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            SpecularBug::NegatedReflection => "reflected-vector-negated",
+            SpecularBug::HalfVector => "half-vector",
+            SpecularBug::NoMaxBeforePower => "no-max-before-power",
+        }
+    }
+
+    /// What the bug is, as the end of a sentence.
+    #[must_use]
+    pub fn describe(self) -> &'static str {
+        match self {
+            SpecularBug::NegatedReflection => {
+                "the specular term used the wrong reflected vector, l - 2(n.l)n instead of 2(n.l)n - l"
+            }
+            SpecularBug::HalfVector => "the specular term used Blinn's half vector instead of r.v",
+            SpecularBug::NoMaxBeforePower => "the specular term took the power before max(0, r.v)",
+        }
+    }
+
+    /// The specular term under the bug for a visible light with n.l > 0.
+    #[must_use]
+    pub fn specular(self, material: &Material, light: &LocalLight) -> DVec3 {
+        let LocalLight {
+            n,
+            to_light,
+            view,
+            strength,
+        } = *light;
+        let s = material.shininess;
+        let lobe = match self {
+            SpecularBug::NegatedReflection => {
+                let r = to_light - 2.0 * n.dot(to_light) * n;
+                phong_power(r.dot(view).max(0.0), s)
+            }
+            SpecularBug::HalfVector => {
+                let h = (to_light + view).normalize_or_zero();
+                phong_power(n.dot(h).max(0.0), s)
+            }
+            SpecularBug::NoMaxBeforePower => {
+                let r_dot_v = (2.0 * n.dot(to_light) * n - to_light).dot(view);
+                if s.fract() == 0.0 && s <= 1024.0 {
+                    r_dot_v.powi(s as i32).max(0.0)
+                } else {
+                    phong_power(r_dot_v.max(0.0), s)
+                }
+            }
+        };
+        if lobe > 0.0 {
+            material.specular * strength * lobe
+        } else {
+            DVec3::ZERO
+        }
+    }
+}
+
+/// Colour clamped to [0, 1] before the final pixel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ClampBug {
+    /// Each ray's local colour is clamped before the reflection is added.
+    LocalBeforeReflection,
+    /// Each ray's whole colour is clamped before its mirror multiplies it.
+    EveryRay,
+}
+
+impl ClampBug {
+    /// Every clamping bug.
+    pub const ALL: [ClampBug; 2] = [ClampBug::LocalBeforeReflection, ClampBug::EveryRay];
+
+    /// A short name for reports.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            ClampBug::LocalBeforeReflection => "clamp-before-reflection",
+            ClampBug::EveryRay => "clamp-every-ray",
+        }
+    }
+
+    /// What the bug is, as the end of a sentence.
+    #[must_use]
+    pub fn describe(self) -> &'static str {
+        match self {
+            ClampBug::LocalBeforeReflection => {
+                "colour was clamped per ray before the reflection was added"
+            }
+            ClampBug::EveryRay => {
+                "each reflected ray's colour was clamped before the mirror scaled it"
+            }
+        }
+    }
+
+    /// A ray's colour under the bug: `local` its own terms, `km` and `reflected` its
+    /// mirror term (the reflected colour as the bug computed it), if any.
+    #[must_use]
+    pub fn combine(self, local: DVec3, mirror: Option<(DVec3, DVec3)>) -> DVec3 {
+        let clamp = |c: DVec3| c.clamp(DVec3::ZERO, DVec3::ONE);
+        let reflected = mirror.map_or(DVec3::ZERO, |(km, c)| km * c);
+        match self {
+            ClampBug::LocalBeforeReflection => clamp(local) + reflected,
+            ClampBug::EveryRay => clamp(local + reflected),
+        }
+    }
+}
+
+/// A part of a shape, which a renderer may fail to hit on its own.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Part {
+    /// The whole of a sphere or cube.
+    Whole,
+    /// A plane seen from the side its normal points to.
+    Front,
+    /// A plane seen from behind.
+    Back,
+    /// The curved side of a cylinder or cone.
+    Side,
+    /// The disc caps of a cylinder or cone.
+    Caps,
+}
+
+impl Part {
+    /// Every part.
+    pub const ALL: [Part; 5] = [Part::Whole, Part::Front, Part::Back, Part::Side, Part::Caps];
+
+    /// The parts a shape is made of.
+    #[must_use]
+    pub fn of_shape(shape: Shape) -> &'static [Part] {
+        match shape {
+            Shape::Sphere | Shape::Cube => &[Part::Whole],
+            Shape::Plane => &[Part::Front, Part::Back],
+            Shape::Cylinder | Shape::Cone => &[Part::Side, Part::Caps],
+        }
+    }
+
+    /// The part of `object` that `hit` (made by a ray along `ray_dir`) lies on.
+    #[must_use]
+    pub fn at(object: &WorldObject, hit: &SurfacePoint, ray_dir: DVec3) -> Part {
+        let n_object =
+            (object.world_from_object.matrix3.transpose() * hit.n_outward).normalize_or_zero();
+        match object.shape {
+            Shape::Sphere | Shape::Cube => Part::Whole,
+            Shape::Plane if hit.n_outward.dot(ray_dir) < 0.0 => Part::Front,
+            Shape::Plane => Part::Back,
+            // Cap normals are +-z; side normals have |z| of 0 (cylinder) or 1/sqrt 2 (cone,
+            // pointing to -z).
+            Shape::Cylinder if n_object.z.abs() > 0.9 => Part::Caps,
+            Shape::Cone if n_object.z > 0.9 => Part::Caps,
+            Shape::Cylinder | Shape::Cone => Part::Side,
+        }
+    }
+
+    /// The part's name in a sentence.
+    #[must_use]
+    pub fn describe(self) -> &'static str {
+        match self {
+            Part::Whole => "the whole object",
+            Part::Front => "the front (normal side)",
+            Part::Back => "the back",
+            Part::Side => "the side",
+            Part::Caps => "the caps",
+        }
+    }
+}
+
+/// One light at one point, as the local terms need it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LocalLight {
+    /// The shading normal (facing the ray).
+    pub n: DVec3,
+    /// Unit vector to the light.
+    pub to_light: DVec3,
+    /// Unit vector to the viewer (minus the ray direction).
+    pub view: DVec3,
+    /// L_l(p).
+    pub strength: DVec3,
+}
+
+/// The diffuse and specular terms of the contract for a visible light with normal `n`
+/// (zero where n.l <= 0).
+#[must_use]
+pub fn local_terms(material: &Material, light: &LocalLight) -> (DVec3, DVec3) {
+    let n_dot_l = light.n.dot(light.to_light);
+    if n_dot_l <= 0.0 {
+        return (DVec3::ZERO, DVec3::ZERO);
+    }
+    let diffuse = material.diffuse * light.strength * n_dot_l;
+    let r = 2.0 * n_dot_l * light.n - light.to_light;
+    let r_dot_v = r.dot(light.view).max(0.0);
+    let specular = if r_dot_v > 0.0 {
+        material.specular * light.strength * phong_power(r_dot_v, material.shininess)
+    } else {
+        DVec3::ZERO
+    };
+    (diffuse, specular)
+}
+
+/// `x^s` as the tracer computes it: whole exponents by `powi`.
+#[inline]
+#[must_use]
+pub fn phong_power(x: f64, s: f64) -> f64 {
+    if s.fract() == 0.0 && s <= 1024.0 {
+        x.powi(s as i32)
+    } else {
+        x.powf(s)
+    }
+}

@@ -1,0 +1,211 @@
+//! The components raylab's picture is split into, and their numbering. A *channel* is
+//! one kind of contribution on one object: the ambient term of the floor, light 2's
+//! diffuse term on the ball, the ball's picture if its normals lacked their z part...
+//! Every channel is a per-pixel colour; the fit scales them.
+
+use super::bugs::{ClampBug, NormalBug, Part, SpecularBug};
+
+/// What a channel holds. Light indices are positions in the world's list of
+/// non-ambient lights.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Kind {
+    /// `ka * ambient` at every hit of the object (mirrored hits weighted by the mirrors).
+    Ambient,
+    /// `km * colour(reflected ray)` at the object's hits: the whole mirror image in it.
+    Reflection,
+    /// Light `l`'s diffuse term, as shadowed, at the object's hits.
+    Diffuse(usize),
+    /// Light `l`'s specular term, as shadowed, at the object's hits.
+    Specular(usize),
+    /// What light `l` would add where it is shadowed (0 in raylab's picture).
+    Shadow(usize),
+    /// The change of the object's diffuse and specular terms under a normal bug.
+    Normal(NormalBug),
+    /// The change of the object's specular term under a specular bug.
+    Highlight(SpecularBug),
+    /// The change of a pixel seeing the object under a clamping bug.
+    Clamp(ClampBug),
+    /// The change of the pixels where a part of the object is seen, if it were missing.
+    Missing(Part),
+    /// Rays that hit nothing (object: none).
+    Background,
+}
+
+/// A family: the channels a group may combine (across lights and objects).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Family {
+    /// [`Kind::Ambient`].
+    Ambient,
+    /// [`Kind::Reflection`].
+    Reflection,
+    /// [`Kind::Diffuse`].
+    Diffuse,
+    /// [`Kind::Specular`].
+    Specular,
+    /// [`Kind::Shadow`].
+    Shadow,
+    /// [`Kind::Normal`] of one bug.
+    Normal(NormalBug),
+    /// [`Kind::Highlight`] of one bug.
+    Highlight(SpecularBug),
+    /// [`Kind::Clamp`] of one bug.
+    Clamp(ClampBug),
+    /// [`Kind::Missing`], any part.
+    Missing,
+    /// [`Kind::Background`].
+    Background,
+}
+
+impl Kind {
+    /// The family of the kind.
+    #[must_use]
+    pub fn family(self) -> Family {
+        match self {
+            Kind::Ambient => Family::Ambient,
+            Kind::Reflection => Family::Reflection,
+            Kind::Diffuse(_) => Family::Diffuse,
+            Kind::Specular(_) => Family::Specular,
+            Kind::Shadow(_) => Family::Shadow,
+            Kind::Normal(b) => Family::Normal(b),
+            Kind::Highlight(b) => Family::Highlight(b),
+            Kind::Clamp(b) => Family::Clamp(b),
+            Kind::Missing(_) => Family::Missing,
+            Kind::Background => Family::Background,
+        }
+    }
+
+    /// The light of a per-light kind.
+    #[must_use]
+    pub fn light(self) -> Option<usize> {
+        match self {
+            Kind::Diffuse(l) | Kind::Specular(l) | Kind::Shadow(l) => Some(l),
+            _ => None,
+        }
+    }
+
+    /// Whether the kind is part of raylab's picture (the channels of these sum to it);
+    /// the others are directions of change.
+    #[must_use]
+    pub fn is_partition(self) -> bool {
+        matches!(
+            self,
+            Kind::Ambient | Kind::Diffuse(_) | Kind::Specular(_) | Kind::Background
+        )
+    }
+}
+
+/// Numbers the channels of a world with `lights` non-ambient lights and `objects` objects.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ChannelSpace {
+    /// Non-ambient lights.
+    pub lights: usize,
+    /// Objects.
+    pub objects: usize,
+}
+
+/// Kinds per object that do not depend on a light.
+const FIXED: usize = 2;
+
+impl ChannelSpace {
+    fn per_object(&self) -> usize {
+        FIXED
+            + 3 * self.lights
+            + NormalBug::ALL.len()
+            + SpecularBug::ALL.len()
+            + ClampBug::ALL.len()
+            + Part::ALL.len()
+    }
+
+    /// How many channels there are.
+    #[must_use]
+    pub fn count(&self) -> usize {
+        self.objects * self.per_object() + 1
+    }
+
+    /// The channel of `kind` on `object` (`None` only for the background).
+    ///
+    /// # Panics
+    /// When the object or light index is out of range, or the background has an object.
+    #[must_use]
+    pub fn id(&self, kind: Kind, object: Option<usize>) -> u32 {
+        let l = self.lights;
+        let (nb, sb, cb) = (
+            NormalBug::ALL.len(),
+            SpecularBug::ALL.len(),
+            ClampBug::ALL.len(),
+        );
+        let slot = match kind {
+            Kind::Background => {
+                assert!(object.is_none(), "the background belongs to no object");
+                return (self.objects * self.per_object()) as u32;
+            }
+            Kind::Ambient => 0,
+            Kind::Reflection => 1,
+            Kind::Diffuse(i) => FIXED + i,
+            Kind::Specular(i) => FIXED + l + i,
+            Kind::Shadow(i) => FIXED + 2 * l + i,
+            Kind::Normal(b) => FIXED + 3 * l + b as usize,
+            Kind::Highlight(b) => FIXED + 3 * l + nb + b as usize,
+            Kind::Clamp(b) => FIXED + 3 * l + nb + sb + b as usize,
+            Kind::Missing(p) => FIXED + 3 * l + nb + sb + cb + p as usize,
+        };
+        if let Some(i) = kind.light() {
+            assert!(i < l, "light {i} of {l}");
+        }
+        let object = object.expect("every kind but the background has an object");
+        assert!(object < self.objects, "object {object} of {}", self.objects);
+        (object * self.per_object() + slot) as u32
+    }
+
+    /// The kind and object of a channel.
+    #[must_use]
+    pub fn decode(&self, id: u32) -> (Kind, Option<usize>) {
+        let id = id as usize;
+        let per = self.per_object();
+        if id >= self.objects * per {
+            return (Kind::Background, None);
+        }
+        let (object, slot) = (id / per, id % per);
+        let l = self.lights;
+        let (nb, sb, cb) = (
+            NormalBug::ALL.len(),
+            SpecularBug::ALL.len(),
+            ClampBug::ALL.len(),
+        );
+        let kind = match slot {
+            0 => Kind::Ambient,
+            1 => Kind::Reflection,
+            s if s < FIXED + l => Kind::Diffuse(s - FIXED),
+            s if s < FIXED + 2 * l => Kind::Specular(s - FIXED - l),
+            s if s < FIXED + 3 * l => Kind::Shadow(s - FIXED - 2 * l),
+            s if s < FIXED + 3 * l + nb => Kind::Normal(NormalBug::ALL[s - FIXED - 3 * l]),
+            s if s < FIXED + 3 * l + nb + sb => {
+                Kind::Highlight(SpecularBug::ALL[s - FIXED - 3 * l - nb])
+            }
+            s if s < FIXED + 3 * l + nb + sb + cb => {
+                Kind::Clamp(ClampBug::ALL[s - FIXED - 3 * l - nb - sb])
+            }
+            s => Kind::Missing(Part::ALL[s - FIXED - 3 * l - nb - sb - cb]),
+        };
+        (kind, Some(object))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_channel_decodes_to_itself() {
+        let space = ChannelSpace {
+            lights: 3,
+            objects: 4,
+        };
+        let mut seen = std::collections::HashSet::new();
+        for id in 0..space.count() as u32 {
+            let (kind, object) = space.decode(id);
+            assert_eq!(space.id(kind, object), id);
+            assert!(seen.insert((kind, object)));
+        }
+    }
+}

@@ -1,0 +1,237 @@
+//! The verdicts: what an explanation says (term, light, object, factor, share), why
+//! (its cause), where (its pixels), and how sure the numbers make it.
+
+use serde::Serialize;
+
+use super::bugs::{ClampBug, NormalBug, Part, SpecularBug};
+use super::encoding::Encoding;
+use crate::scene::{Light, Scene};
+
+/// The term an explanation names.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ExplainedTerm {
+    /// `ka * ambient`.
+    Ambient,
+    /// A light's diffuse term.
+    Diffuse,
+    /// A light's specular term.
+    Specular,
+    /// Shadowing of a light.
+    Shadows,
+    /// The mirror term.
+    Reflection,
+    /// Which surface a pixel sees.
+    Geometry,
+    /// The colour of rays that hit nothing.
+    Background,
+    /// How linear colour became 8 bits.
+    Encoding,
+}
+
+impl ExplainedTerm {
+    /// The name used in JSON and text.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            ExplainedTerm::Ambient => "ambient",
+            ExplainedTerm::Diffuse => "diffuse",
+            ExplainedTerm::Specular => "specular",
+            ExplainedTerm::Shadows => "shadows",
+            ExplainedTerm::Reflection => "reflection",
+            ExplainedTerm::Geometry => "geometry",
+            ExplainedTerm::Background => "background",
+            ExplainedTerm::Encoding => "encoding",
+        }
+    }
+}
+
+/// Why the pictures differ, as far as the numbers tell.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Cause {
+    /// The term is scaled by `factor`.
+    Factor,
+    /// A wrong normal.
+    Normal(NormalBug),
+    /// A wrong specular lobe.
+    Highlight(SpecularBug),
+    /// Colour clamped too early.
+    Clamp(ClampBug),
+    /// A part of an object (or all of it: `None`) is not there.
+    Missing(Option<Part>),
+    /// The 8-bit encoding differs.
+    Encoding(Encoding),
+    /// Pixels at an object's outline differ, no factor explains them.
+    Silhouette,
+    /// Shading varies across an object in a way no factor or known bug explains.
+    Shading,
+}
+
+impl Cause {
+    /// The name used in JSON.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Cause::Factor => "factor",
+            Cause::Normal(b) => b.name(),
+            Cause::Highlight(b) => b.name(),
+            Cause::Clamp(b) => b.name(),
+            Cause::Missing(Some(Part::Back)) => "one-sided",
+            Cause::Missing(_) => "missing",
+            Cause::Encoding(e) => e.name(),
+            Cause::Silhouette => "silhouette",
+            Cause::Shading => "shading",
+        }
+    }
+}
+
+/// One explanation of (part of) the difference.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Explanation {
+    /// The term.
+    pub term: ExplainedTerm,
+    /// Index of the light in the scene's light list, or `None` (every light, or none).
+    pub light: Option<usize>,
+    /// Index of the object in the scene, or `None` (every object, or none).
+    pub object: Option<usize>,
+    /// The object's name.
+    pub object_name: Option<String>,
+    /// The fitted scale of raylab's component in the other image: 1 as raylab, 0 missing.
+    pub factor: f64,
+    /// Share of the squared difference this explains (0 to 1).
+    pub share: f64,
+    /// The pixels it concerns, ascending row-major indices.
+    pub pixels: Vec<u32>,
+    /// Why.
+    pub cause: Cause,
+    /// How sure the numbers make it, 0 to 1.
+    pub confidence: f64,
+    /// One sentence for a reader.
+    pub summary: String,
+}
+
+impl Explanation {
+    /// "high", "medium" or "low".
+    #[must_use]
+    pub fn sureness(&self) -> &'static str {
+        if self.confidence >= 0.7 {
+            "high"
+        } else if self.confidence >= 0.4 {
+            "medium"
+        } else {
+            "low"
+        }
+    }
+
+    /// Whether pixel `p` is among the explanation's pixels.
+    #[must_use]
+    pub fn covers(&self, p: u32) -> bool {
+        self.pixels.binary_search(&p).is_ok()
+    }
+}
+
+fn light_name(scene: &Scene, light: usize) -> String {
+    let kind = scene.lights.get(light).map_or("?", Light::kind_name);
+    format!("light {light} ({kind})")
+}
+
+fn on_object(name: Option<&str>) -> String {
+    name.map_or_else(String::new, |n| format!(" on '{n}'"))
+}
+
+/// The sentence for an explanation whose other fields are set.
+#[must_use]
+pub fn summary(e: &Explanation, scene: &Scene) -> String {
+    let object = e.object_name.as_deref();
+    let light = e.light.map(|l| light_name(scene, l));
+    let f = e.factor;
+    let weight = 1.0 - f;
+    let term = e.term.name();
+    match e.cause {
+        Cause::Factor if e.term == ExplainedTerm::Shadows => {
+            let whose = light.map_or("Shadows".to_owned(), |l| format!("Shadows of {l}"));
+            if f < 0.1 {
+                format!(
+                    "{whose}{} are missing: shadowed places are lit in the other image (shadow factor {f:.2}).",
+                    on_object(object)
+                )
+            } else {
+                format!(
+                    "{whose}{} take away {f:.2} of the light raylab's take away.",
+                    on_object(object)
+                )
+            }
+        }
+        Cause::Factor => {
+            let subject = match (&light, object) {
+                (Some(l), Some(o)) => format!("The {term} of {l} on '{o}'"),
+                (Some(l), None) => format!("The {term} of {l}"),
+                (None, Some(o)) => format!("The {term} of '{o}'"),
+                (None, None) => format!("The {term} term"),
+            };
+            if f < 0.05 {
+                format!("{subject} is missing in the other image (factor {f:.2}).")
+            } else {
+                format!("{subject} is {f:.2} times raylab's in the other image.")
+            }
+        }
+        Cause::Normal(bug) => match object {
+            Some(o) => format!(
+                "'{o}' is shaded as if {} (the bug's picture fits with weight {weight:.2}).",
+                bug.describe()
+            ),
+            None => format!(
+                "Every object is shaded as if {} (weight {weight:.2}).",
+                bug.describe()
+            ),
+        },
+        Cause::Highlight(bug) => format!(
+            "Highlights{} look as if {} (weight {weight:.2}).",
+            on_object(object),
+            bug.describe()
+        ),
+        Cause::Clamp(bug) => format!(
+            "Reflections{} are darker where they exceed 1: {} (weight {weight:.2}).",
+            on_object(object).replace(" on ", " in "),
+            bug.describe()
+        ),
+        Cause::Missing(part) => {
+            let o = object.unwrap_or("an object");
+            match part {
+                Some(Part::Back) => format!(
+                    "'{o}' is invisible from behind in the other image: a one-sided plane (weight {weight:.2})."
+                ),
+                Some(Part::Whole) | None => format!(
+                    "'{o}' is missing in the other image: what lies behind it shows instead (weight {weight:.2})."
+                ),
+                Some(p) => format!(
+                    "{} of '{o}' are missing in the other image: what lies behind shows instead (weight {weight:.2}).",
+                    capitalised(p.describe())
+                ),
+            }
+        }
+        Cause::Encoding(Encoding::LinearTruncate) => {
+            "The other image truncates to 8 bits, floor(255 c), where raylab rounds.".to_owned()
+        }
+        Cause::Encoding(encoding) => format!(
+            "The other image is written as {}, raylab's as linear round(255 c).",
+            encoding.name()
+        ),
+        Cause::Silhouette => format!(
+            "The outline of {} differs over {} pixels: the shape is elsewhere, another size, or hit where it should not be.",
+            object.map_or("the objects".to_owned(), |o| format!("'{o}'")),
+            e.pixels.len()
+        ),
+        Cause::Shading => format!(
+            "Shading varies across {} in a way no factor or known bug explains; it follows the {term} term, as a wrong normal or reflected vector would.",
+            object.map_or("the picture".to_owned(), |o| format!("'{o}'"))
+        ),
+    }
+}
+
+fn capitalised(text: &str) -> String {
+    let mut chars = text.chars();
+    chars
+        .next()
+        .map_or_else(String::new, |c| c.to_uppercase().chain(chars).collect())
+}

@@ -1,0 +1,181 @@
+//! What no factor or known bug explains, localised. After the search, pixels still off
+//! by more than [`OFF_LEVELS`] levels are sorted into two verdicts:
+//!
+//! - near an outline in raylab's object-id view (within [`OUTLINE_REACH`] pixels):
+//!   *geometry*, the surfaces differ there (a silhouette that moved, grew or shrank);
+//! - inside an object: *shading* that varies across it, labelled with the term whose
+//!   picture the left-over difference follows most (its magnitude-weighted overlap).
+
+use super::channels::Kind;
+use super::components::{Components, MISS};
+use super::explanation::{Cause, ExplainedTerm, Explanation, summary};
+use super::target::FitState;
+use crate::scene::Scene;
+
+/// A pixel counts as still different when some channel is this many 8-bit levels outside
+/// what its byte stands for.
+pub const OFF_LEVELS: f64 = 2.0;
+
+/// Pixels this close to an outline count as geometry.
+pub const OUTLINE_REACH: i64 = 2;
+
+/// A localised verdict must explain at least this share to be reported.
+pub const MIN_SHARE: f64 = 0.02;
+
+/// Confidence of a silhouette verdict: the outline is certain, the cause is not.
+const SILHOUETTE_CONFIDENCE: f64 = 0.5;
+
+/// Confidence of a shading verdict: it says where, not which bug.
+const SHADING_CONFIDENCE: f64 = 0.35;
+
+/// Whether each pixel lies within [`OUTLINE_REACH`] of a change of label.
+fn near_outline(components: &Components) -> Vec<bool> {
+    let (w, h) = (i64::from(components.width), i64::from(components.height));
+    let label = |x: i64, y: i64| components.labels[(y * w + x) as usize];
+    let mut edge = vec![false; components.labels.len()];
+    for y in 0..h {
+        for x in 0..w {
+            let here = label(x, y);
+            let p = (y * w + x) as usize;
+            edge[p] = components.mixed[p]
+                || [(1, 0), (0, 1), (-1, 0), (0, -1)].iter().any(|&(dx, dy)| {
+                    let (nx, ny) = (x + dx, y + dy);
+                    nx >= 0 && ny >= 0 && nx < w && ny < h && label(nx, ny) != here
+                });
+        }
+    }
+    let mut near = vec![false; edge.len()];
+    for y in 0..h {
+        for x in 0..w {
+            near[(y * w + x) as usize] = (-OUTLINE_REACH..=OUTLINE_REACH).any(|dy| {
+                (-OUTLINE_REACH..=OUTLINE_REACH).any(|dx| {
+                    let (nx, ny) = (x + dx, y + dy);
+                    nx >= 0 && ny >= 0 && nx < w && ny < h && edge[(ny * w + nx) as usize]
+                })
+            });
+        }
+    }
+    near
+}
+
+/// The object a pixel near an outline belongs to: its own, or the nearest neighbour's.
+fn outline_object(components: &Components, p: usize) -> Option<usize> {
+    if components.labels[p] != MISS {
+        return Some(components.labels[p] as usize);
+    }
+    let w = i64::from(components.width);
+    let (x, y) = (p as i64 % w, p as i64 / w);
+    for reach in 1..=OUTLINE_REACH + 1 {
+        for dy in -reach..=reach {
+            for dx in -reach..=reach {
+                let (nx, ny) = (x + dx, y + dy);
+                if nx >= 0 && ny >= 0 && nx < w && ny < i64::from(components.height) {
+                    let label = components.labels[(ny * w + nx) as usize];
+                    if label != MISS {
+                        return Some(label as usize);
+                    }
+                }
+            }
+        }
+    }
+    None
+}
+
+/// The term whose picture a pixel's left-over difference overlaps, weighted.
+fn term_weights(components: &Components, p: usize, size: f64, weights: &mut [f64; 4]) {
+    for entry in components.pixel(p) {
+        let slot = match components.space.decode(entry.channel).0 {
+            Kind::Ambient => 0,
+            Kind::Diffuse(_) => 1,
+            Kind::Specular(_) => 2,
+            Kind::Reflection => 3,
+            _ => continue,
+        };
+        let v = entry.value.map(f64::from);
+        weights[slot] += size * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    }
+}
+
+/// One object's left-over pixels of one kind.
+#[derive(Default)]
+struct Pile {
+    error: f64,
+    pixels: Vec<u32>,
+    terms: [f64; 4],
+}
+
+/// The localised verdicts for what `state` leaves unexplained, as shares of `total`.
+#[must_use]
+pub fn localise(
+    components: &Components,
+    state: &FitState,
+    scene: &Scene,
+    total: f64,
+) -> Vec<Explanation> {
+    let off = (OFF_LEVELS / 255.0).powi(2);
+    let near = near_outline(components);
+    let objects = scene.objects.len();
+    let mut outline: Vec<Pile> = (0..=objects).map(|_| Pile::default()).collect();
+    let mut inside: Vec<Pile> = (0..objects).map(|_| Pile::default()).collect();
+    for (p, &error) in state.error.iter().enumerate() {
+        if error < off {
+            continue;
+        }
+        let pile = if near[p] {
+            &mut outline[outline_object(components, p).unwrap_or(objects)]
+        } else if components.labels[p] != MISS {
+            let pile = &mut inside[components.labels[p] as usize];
+            term_weights(components, p, error.sqrt(), &mut pile.terms);
+            pile
+        } else {
+            continue;
+        };
+        pile.error += error;
+        pile.pixels.push(p as u32);
+    }
+    let mut out = Vec::new();
+    let mut emit =
+        |pile: Pile, object: Option<usize>, term: ExplainedTerm, cause: Cause, confidence| {
+            if pile.error / total < MIN_SHARE {
+                return;
+            }
+            let mut e = Explanation {
+                term,
+                light: None,
+                object,
+                object_name: object.map(|o| scene.objects[o].name.clone()),
+                factor: 1.0,
+                share: pile.error / total,
+                pixels: pile.pixels,
+                cause,
+                confidence,
+                summary: String::new(),
+            };
+            e.summary = summary(&e, scene);
+            out.push(e);
+        };
+    for (index, pile) in outline.into_iter().enumerate() {
+        let object = (index < objects).then_some(index);
+        emit(
+            pile,
+            object,
+            ExplainedTerm::Geometry,
+            Cause::Silhouette,
+            SILHOUETTE_CONFIDENCE,
+        );
+    }
+    for (index, pile) in inside.into_iter().enumerate() {
+        let terms = pile.terms;
+        let best = (0..4)
+            .max_by(|&a, &b| terms[a].total_cmp(&terms[b]))
+            .unwrap_or(1);
+        let term = [
+            ExplainedTerm::Ambient,
+            ExplainedTerm::Diffuse,
+            ExplainedTerm::Specular,
+            ExplainedTerm::Reflection,
+        ][best];
+        emit(pile, Some(index), term, Cause::Shading, SHADING_CONFIDENCE);
+    }
+    out
+}

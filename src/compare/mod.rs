@@ -1,0 +1,185 @@
+//! Compare raylab's picture of a scene with another renderer's picture of it, and say
+//! which light, object and term explain the difference (see docs/COMPARE.md).
+//!
+//! 1. [`components`]: raylab's picture split into channels (each term of each light on
+//!    each object, and what each known bug or missing part would change), traced once
+//!    through the tracer's own shading code.
+//! 2. [`encoding`]: the other picture's 8-bit encoding is found, and each byte read as
+//!    the interval of values it stands for, so rounding never counts as a difference.
+//! 3. [`search`]: a greedy least-squares fit over groups of channels; each accepted
+//!    group is an explanation with its share of the squared difference.
+//! 4. [`verdicts`] and [`localise`]: steps become sentences; what nothing explains is
+//!    localised as geometry (outlines) or shading (inside objects).
+//!
+//! No egui here: the command line and the editor show the same [`Comparison`].
+
+pub mod bugs;
+pub mod channels;
+pub mod components;
+pub mod encoding;
+pub mod error;
+pub mod explanation;
+pub mod groups;
+pub mod localise;
+pub mod other_image;
+pub mod recorder;
+pub mod report;
+pub mod report_image;
+pub mod search;
+pub mod target;
+pub mod verdicts;
+
+pub use encoding::Encoding;
+pub use error::CompareError;
+pub use explanation::{Cause, ExplainedTerm, Explanation};
+pub use other_image::OtherImage;
+pub use report::{Comparison, PSNR_IDENTICAL_DB, PixelValues};
+pub use report_image::{report_png, write_report_png};
+
+use crate::scene::Scene;
+use crate::trace::{RenderProgress, World};
+
+use components::{MISS, render_components};
+use explanation::summary;
+use target::{FitState, Target};
+
+/// A step must lower the error by at least this share of the whole difference...
+pub const MIN_STEP_SHARE: f64 = 0.005;
+
+/// ...and by at least this much: four channels a full 8-bit level outside their bytes.
+/// A difference smaller than this is no difference.
+pub const MIN_ERROR: f64 = 4.0 / (255.0 * 255.0);
+
+/// How to compare.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CompareOptions {
+    /// Samples per pixel of raylab's picture; `None` for the scene's own.
+    pub samples_per_pixel: Option<u32>,
+}
+
+/// Compares raylab's picture of `scene` (at the scene's size) with `other`.
+/// `progress` reports rows traced and can cancel.
+///
+/// # Errors
+/// [`CompareError::SizeMismatch`] when `other` is not the scene's size,
+/// [`CompareError::Scene`] when the scene cannot be compiled, and
+/// [`CompareError::Cancelled`].
+pub fn compare(
+    scene: &Scene,
+    other: &OtherImage,
+    options: &CompareOptions,
+    progress: &RenderProgress,
+) -> Result<Comparison, CompareError> {
+    let (width, height) = (scene.camera.width, scene.camera.height);
+    if (other.width, other.height) != (width, height) {
+        return Err(CompareError::SizeMismatch {
+            other_width: other.width,
+            other_height: other.height,
+            scene_width: width,
+            scene_height: height,
+        });
+    }
+    let world = World::new(scene).map_err(|e| CompareError::Scene(e.to_string()))?;
+    let spp = options
+        .samples_per_pixel
+        .unwrap_or(scene.render.samples_per_pixel)
+        .max(1);
+    let components = render_components(scene, &world, (width, height), spp, progress)
+        .ok_or(CompareError::Cancelled)?;
+
+    // raylab's own encoding first: its error is the whole difference.
+    let rounded = Target::new(other, Encoding::LinearRound);
+    let mut state = FitState::new(components.beauty.clone(), &rounded);
+    let total = state.total;
+    let floor = (MIN_STEP_SHARE * total).max(MIN_ERROR);
+    let mut explanations = Vec::new();
+    let encoding = encoding::detect(&components.beauty, &other.rgb);
+    let target = if encoding == Encoding::LinearRound {
+        rounded
+    } else {
+        let target = Target::new(other, encoding);
+        let decoded = FitState::new(components.beauty.clone(), &target);
+        if state.total - decoded.total >= floor {
+            explanations.push(encoding_explanation(
+                &state, &decoded, encoding, scene, total,
+            ));
+        }
+        state = decoded;
+        target
+    };
+    if total >= MIN_ERROR {
+        let shapes: Vec<_> = world.objects.iter().map(|o| o.shape).collect();
+        let groups = groups::Groups::new(components.space, &shapes);
+        let steps = search::search(&components, &groups, &target, &mut state, floor);
+        explanations.extend(verdicts::explain_steps(
+            &steps,
+            &groups,
+            &components,
+            scene,
+            &world,
+            total,
+        ));
+    }
+    let localised = if total >= MIN_ERROR {
+        localise::localise(&components, &state, scene, total)
+    } else {
+        Vec::new()
+    };
+    let localised_share: f64 = localised.iter().map(|e| e.share).sum();
+    explanations.extend(localised);
+    explanations.sort_by(|a, b| b.share.total_cmp(&a.share));
+    let unexplained_share = if total >= MIN_ERROR {
+        (state.total / total - localised_share).max(0.0)
+    } else {
+        0.0
+    };
+
+    let raylab = components.image();
+    let raylab_rgb = report::rgb_of(&raylab);
+    Ok(Comparison {
+        width,
+        height,
+        samples_per_pixel: spp,
+        psnr_db: report::psnr_db(&raylab_rgb, &other.rgb),
+        difference: report::difference(&raylab_rgb, &other.rgb),
+        raylab,
+        raylab_rgb,
+        other: other.clone(),
+        encoding,
+        objects: components
+            .labels
+            .iter()
+            .map(|&l| (l != MISS).then_some(l as usize))
+            .collect(),
+        object_names: scene.objects.iter().map(|o| o.name.clone()).collect(),
+        explanations,
+        unexplained_share,
+    })
+}
+
+/// The explanation of reading the other picture with another encoding.
+fn encoding_explanation(
+    before: &FitState,
+    after: &FitState,
+    encoding: Encoding,
+    scene: &Scene,
+    total: f64,
+) -> Explanation {
+    let pixels = (0..before.error.len() as u32)
+        .filter(|&p| after.error[p as usize] < before.error[p as usize])
+        .collect();
+    let mut e = Explanation {
+        term: ExplainedTerm::Encoding,
+        light: None,
+        object: None,
+        object_name: None,
+        factor: 1.0,
+        share: (before.total - after.total) / total,
+        pixels,
+        cause: Cause::Encoding(encoding),
+        confidence: 1.0 - after.total / before.total.max(f64::MIN_POSITIVE),
+        summary: String::new(),
+    };
+    e.summary = summary(&e, scene);
+    e
+}

@@ -1,0 +1,346 @@
+//! The recorder that splits one camera sample into channels. It listens to the tracer's
+//! own shading code (through [`Recorder`]), so every number is the one the picture
+//! used; what the tracer does not report (the light a shadow took away, the terms under
+//! each known bug) is computed here from the same inputs.
+//!
+//! A mirror bounce at depth d is weighted by the product of the mirror colours before it
+//! (`throughput`), so a term seen in a mirror lands in the channel of the object it lies
+//! on, scaled as the pixel sees it.
+
+use glam::DVec3;
+
+use super::bugs::{ClampBug, LocalLight, NormalBug, Part, SpecularBug, local_terms};
+use super::channels::{ChannelSpace, Kind};
+use crate::scene::{Material, Shape};
+use crate::trace::lights::LightSample;
+use crate::trace::spawn::{spawn_ray, spawn_ray_to};
+use crate::trace::{
+    LightRecord, NoRecorder, Ray, RayCounts, Recorder, SurfacePoint, TermSwitches, Tracer, View,
+    World,
+};
+
+/// Per-channel colour sums of one sample or one pixel: a short list, channels unique.
+#[derive(Clone, Debug, Default)]
+pub struct Tally {
+    /// `(channel, colour)` pairs.
+    pub entries: Vec<(u32, DVec3)>,
+}
+
+impl Tally {
+    /// Adds `value` to `channel` (nothing for a zero value).
+    pub fn add(&mut self, channel: u32, value: DVec3) {
+        if value == DVec3::ZERO {
+            return;
+        }
+        match self.entries.iter_mut().find(|(c, _)| *c == channel) {
+            Some((_, sum)) => *sum += value,
+            None => self.entries.push((channel, value)),
+        }
+    }
+
+    /// Adds every entry of `other`.
+    pub fn absorb(&mut self, other: &Tally) {
+        for &(channel, value) in &other.entries {
+            self.add(channel, value);
+        }
+    }
+}
+
+/// What the recorder needs to know about the world, prepared once.
+pub struct Context<'w> {
+    /// The world traced.
+    pub world: &'w World,
+    /// The channel numbering.
+    pub space: ChannelSpace,
+    /// For each scene light index, its index among the world's non-ambient lights.
+    pub world_light: Vec<Option<usize>>,
+    /// For each object, the world without it (for the first few objects), to see what
+    /// a ray would meet if the object were missing.
+    pub without: Vec<Option<World>>,
+}
+
+impl<'w> Context<'w> {
+    /// The context of `world` with `scene_lights` lights in the scene's list, and
+    /// `without[o]` the world without object `o` (or `None` not to try it missing).
+    #[must_use]
+    pub fn new(world: &'w World, scene_lights: usize, without: Vec<Option<World>>) -> Self {
+        let mut world_light = vec![None; scene_lights];
+        for (index, &scene_index) in world.light_scene_index.iter().enumerate() {
+            world_light[scene_index] = Some(index);
+        }
+        Self {
+            world,
+            space: ChannelSpace {
+                lights: world.lights.len(),
+                objects: world.objects.len(),
+            },
+            world_light,
+            without,
+        }
+    }
+
+    fn material(&self, object: usize) -> &'w Material {
+        &self.world.materials[self.world.objects[object].material]
+    }
+}
+
+/// One ray of the mirror chain.
+#[derive(Clone, Copy, Debug)]
+struct Bounce {
+    object: Option<usize>,
+    hit: Option<SurfacePoint>,
+    ray: Ray,
+    ray_dir: DVec3,
+    /// Product of the mirror colours of the bounces before this one.
+    throughput: DVec3,
+    /// `(km, colour of the reflected ray)` once the mirror term is known.
+    mirror: Option<(DVec3, DVec3)>,
+    /// The ray's colour under each clamping bug.
+    clamped: [DVec3; ClampBug::ALL.len()],
+}
+
+/// Splits one sample into channels. Reused across samples: call [`SampleRecorder::start`]
+/// before each.
+pub struct SampleRecorder<'c, 'w> {
+    ctx: &'c Context<'w>,
+    chain: Vec<Bounce>,
+    /// The channels of the current sample.
+    pub tally: Tally,
+    /// Per channel, squared changes of the diffuse and of the specular part (for the
+    /// normal bugs: which term shows the bug more).
+    pub split: Vec<[f64; 2]>,
+}
+
+impl<'c, 'w> SampleRecorder<'c, 'w> {
+    /// A recorder for `ctx`.
+    #[must_use]
+    pub fn new(ctx: &'c Context<'w>) -> Self {
+        Self {
+            ctx,
+            chain: Vec::new(),
+            tally: Tally::default(),
+            split: vec![[0.0; 2]; ctx.space.count()],
+        }
+    }
+
+    /// Forgets the previous sample.
+    pub fn start(&mut self) {
+        self.chain.clear();
+        self.tally.entries.clear();
+    }
+
+    /// The camera ray's hit of the current sample, if it hit something.
+    #[must_use]
+    pub fn primary_hit(&self) -> Option<SurfacePoint> {
+        self.chain.first().and_then(|b| b.hit)
+    }
+
+    fn push(&mut self, depth: u32, ray: &Ray, hit: Option<SurfacePoint>) {
+        let depth = depth as usize;
+        self.chain.truncate(depth);
+        let throughput = match self.chain.last() {
+            None => DVec3::ONE,
+            Some(before) => {
+                before.throughput
+                    * before
+                        .object
+                        .map_or(DVec3::ZERO, |o| self.ctx.material(o).mirror)
+            }
+        };
+        self.chain.push(Bounce {
+            object: hit.map(|h| h.object),
+            hit,
+            ray: *ray,
+            ray_dir: ray.dir,
+            throughput,
+            mirror: None,
+            clamped: [DVec3::ZERO; ClampBug::ALL.len()],
+        });
+    }
+
+    fn channel(&self, kind: Kind, object: usize) -> u32 {
+        self.ctx.space.id(kind, Some(object))
+    }
+
+    /// Whether a light behind the surface (for raylab's normal) reaches the point: a
+    /// closed solid shadows itself; a plane's other side needs a shadow ray.
+    fn reaches_from_behind(&self, hit: &SurfacePoint, sample: &LightSample) -> bool {
+        let world = self.ctx.world;
+        if world.objects[hit.object].shape != Shape::Plane {
+            return false;
+        }
+        let except = Some(hit.object);
+        match sample.light_position {
+            Some(position) => {
+                let (ray, t_max) = spawn_ray_to(hit, position);
+                world.occluder_except(&ray, t_max, except).is_none()
+            }
+            None => world
+                .occluder_except(&spawn_ray(hit, sample.to_light), f64::INFINITY, except)
+                .is_none(),
+        }
+    }
+
+    /// The terms under each normal and specular bug, as changes from raylab's.
+    fn bugs(
+        &mut self,
+        bounce: &Bounce,
+        hit: &SurfacePoint,
+        record: &LightRecord,
+        sample: &LightSample,
+    ) {
+        let object = hit.object;
+        let material = self.ctx.material(object);
+        let world_object = &self.ctx.world.objects[object];
+        let t = bounce.throughput;
+        let light = LocalLight {
+            n: hit.n,
+            to_light: sample.to_light,
+            view: -bounce.ray_dir,
+            strength: record.strength,
+        };
+        let lit = record.n_dot_l > 0.0 && record.blocked_by.is_none();
+        let mut behind: Option<bool> = None;
+        for bug in NormalBug::ALL {
+            let Some(n) = bug.normal(hit, bounce.ray_dir, world_object) else {
+                continue;
+            };
+            let visible = if record.n_dot_l > 0.0 {
+                record.blocked_by.is_none()
+            } else if n.dot(sample.to_light) > 0.0 {
+                *behind.get_or_insert_with(|| self.reaches_from_behind(hit, sample))
+            } else {
+                false
+            };
+            let (diffuse, specular) = if visible {
+                local_terms(material, &LocalLight { n, ..light })
+            } else {
+                (DVec3::ZERO, DVec3::ZERO)
+            };
+            let (d_diffuse, d_specular) = (diffuse - record.diffuse, specular - record.specular);
+            let channel = self.channel(Kind::Normal(bug), object);
+            self.tally.add(channel, t * (d_diffuse + d_specular));
+            let split = &mut self.split[channel as usize];
+            split[0] += (t * d_diffuse).length_squared();
+            split[1] += (t * d_specular).length_squared();
+        }
+        if lit && material.specular != DVec3::ZERO {
+            for bug in SpecularBug::ALL {
+                let specular = bug.specular(material, &light);
+                let channel = self.channel(Kind::Highlight(bug), object);
+                self.tally.add(channel, t * (specular - record.specular));
+            }
+        }
+    }
+}
+
+impl SampleRecorder<'_, '_> {
+    /// What the ray of `bounce` would return if the object it hit were missing (traced
+    /// again in the world without it), as a change of the pixel.
+    fn missing(&mut self, bounce: &Bounce, colour: DVec3) {
+        let Some(hit) = bounce.hit else { return };
+        let Some(Some(world)) = self.ctx.without.get(hit.object) else {
+            return;
+        };
+        let tracer = Tracer::new(world, TermSwitches::ALL_ON, View::Beauty);
+        let seen = tracer.trace_primary(&bounce.ray, &mut RayCounts::default(), &mut NoRecorder);
+        if seen.is_finite() {
+            let part = Part::at(&self.ctx.world.objects[hit.object], &hit, bounce.ray_dir);
+            let channel = self.channel(Kind::Missing(part), hit.object);
+            self.tally.add(channel, bounce.throughput * (seen - colour));
+        }
+    }
+}
+
+impl Recorder for SampleRecorder<'_, '_> {
+    fn hit(&mut self, depth: u32, ray: &Ray, hit: &SurfacePoint) {
+        self.push(depth, ray, Some(*hit));
+    }
+
+    fn miss(&mut self, depth: u32, ray: &Ray, background: DVec3) {
+        self.push(depth, ray, None);
+        let t = self.chain[depth as usize].throughput;
+        let channel = self.ctx.space.id(Kind::Background, None);
+        self.tally.add(channel, t * background);
+    }
+
+    fn ambient(&mut self, depth: u32, colour: DVec3) {
+        let bounce = self.chain[depth as usize];
+        if let Some(object) = bounce.object {
+            let channel = self.channel(Kind::Ambient, object);
+            self.tally.add(channel, bounce.throughput * colour);
+        }
+    }
+
+    fn light(&mut self, depth: u32, record: &LightRecord) {
+        let bounce = self.chain[depth as usize];
+        let (Some(hit), Some(index)) = (bounce.hit, self.ctx.world_light[record.scene_index])
+        else {
+            return;
+        };
+        let object = hit.object;
+        let t = bounce.throughput;
+        self.tally.add(
+            self.channel(Kind::Diffuse(index), object),
+            t * record.diffuse,
+        );
+        self.tally.add(
+            self.channel(Kind::Specular(index), object),
+            t * record.specular,
+        );
+        let Some(sample) = self.ctx.world.lights[index].sample(hit.p) else {
+            return;
+        };
+        if record.blocked_by.is_some() {
+            let light = LocalLight {
+                n: hit.n,
+                to_light: sample.to_light,
+                view: -bounce.ray_dir,
+                strength: record.strength,
+            };
+            let (diffuse, specular) = local_terms(self.ctx.material(object), &light);
+            self.tally.add(
+                self.channel(Kind::Shadow(index), object),
+                t * (diffuse + specular),
+            );
+        }
+        self.bugs(&bounce, &hit, record, &sample);
+    }
+
+    fn reflection(&mut self, depth: u32, km: DVec3, reflected: DVec3) {
+        let bounce = &mut self.chain[depth as usize];
+        bounce.mirror = Some((km, reflected));
+        let (t, object) = (bounce.throughput, bounce.object);
+        if let Some(object) = object {
+            self.tally
+                .add(self.channel(Kind::Reflection, object), t * km * reflected);
+        }
+    }
+
+    fn result(&mut self, depth: u32, colour: DVec3) {
+        let d = depth as usize;
+        let bounce = self.chain[d];
+        let local = colour - bounce.mirror.map_or(DVec3::ZERO, |(km, c)| km * c);
+        for (i, bug) in ClampBug::ALL.into_iter().enumerate() {
+            let mirror = bounce
+                .mirror
+                .map(|(km, _)| (km, self.chain[d + 1].clamped[i]));
+            self.chain[d].clamped[i] = bug.combine(local, mirror);
+        }
+        if d == 0
+            && let Some(object) = bounce.object
+        {
+            let clamp = |c: DVec3| c.clamp(DVec3::ZERO, DVec3::ONE);
+            for (i, bug) in ClampBug::ALL.into_iter().enumerate() {
+                // Only where the written pixel changes; unclamped, as the model adds the
+                // change before its own final clamp.
+                let bugged = self.chain[0].clamped[i];
+                if clamp(bugged) != clamp(colour) {
+                    self.tally
+                        .add(self.channel(Kind::Clamp(bug), object), bugged - colour);
+                }
+            }
+        }
+        self.missing(&bounce, colour);
+    }
+}

@@ -1,0 +1,139 @@
+//! From the search's steps to explanations: each step's group read as a term, light and
+//! object (a group over every object whose change lies on one object names it; likewise
+//! for lights), steps that say the same merged, and each given its confidence:
+//!
+//! ```text
+//! confidence = margin * (1 - |1 - weight|)   for bugs and missing parts
+//! confidence = margin                        for term factors
+//! ```
+//!
+//! where `margin` is how much better the step explains the difference than its best
+//! competitor ([`super::search::Step::margin`]: 1 when nothing else explains those
+//! pixels, 0 when a competitor explains them as well).
+
+use super::channels::Family;
+use super::components::Components;
+use super::explanation::{Cause, ExplainedTerm, Explanation, summary};
+use super::groups::Groups;
+use super::search::Step;
+use crate::scene::Scene;
+use crate::trace::World;
+
+/// The share of a change on one object above which the object is named.
+const NAMED: f64 = 0.995;
+
+/// The single index holding at least [`NAMED`] of the energy, if one does.
+fn concentrated(energy: &[f64]) -> Option<usize> {
+    let total: f64 = energy.iter().sum();
+    let (index, most) = energy
+        .iter()
+        .copied()
+        .enumerate()
+        .max_by(|a, b| a.1.total_cmp(&b.1))?;
+    (total > 0.0 && most >= NAMED * total).then_some(index)
+}
+
+/// The term and cause a family stands for; `split` tells a normal bug's diffuse from
+/// its specular share.
+fn term_and_cause(
+    family: Family,
+    split: [f64; 2],
+    part: Option<super::bugs::Part>,
+) -> (ExplainedTerm, Cause) {
+    match family {
+        Family::Ambient => (ExplainedTerm::Ambient, Cause::Factor),
+        Family::Reflection => (ExplainedTerm::Reflection, Cause::Factor),
+        Family::Diffuse => (ExplainedTerm::Diffuse, Cause::Factor),
+        Family::Specular => (ExplainedTerm::Specular, Cause::Factor),
+        Family::Shadow => (ExplainedTerm::Shadows, Cause::Factor),
+        Family::Background => (ExplainedTerm::Background, Cause::Factor),
+        Family::Normal(bug) => {
+            let term = if split[1] > split[0] {
+                ExplainedTerm::Specular
+            } else {
+                ExplainedTerm::Diffuse
+            };
+            (term, Cause::Normal(bug))
+        }
+        Family::Highlight(bug) => (ExplainedTerm::Specular, Cause::Highlight(bug)),
+        Family::Clamp(bug) => (ExplainedTerm::Reflection, Cause::Clamp(bug)),
+        Family::Missing => (ExplainedTerm::Geometry, Cause::Missing(part)),
+    }
+}
+
+/// The explanations of the search's steps, merged, with `total` the error they are
+/// shares of.
+#[must_use]
+pub fn explain_steps(
+    steps: &[Step],
+    groups: &Groups,
+    components: &Components,
+    scene: &Scene,
+    world: &World,
+    total: f64,
+) -> Vec<Explanation> {
+    let mut out: Vec<(Explanation, f64)> = Vec::new();
+    for step in steps {
+        let group = &groups.list[step.group];
+        let split = group.members.iter().fold([0.0; 2], |acc, &m| {
+            let s = components.split[m as usize];
+            [acc[0] + s[0], acc[1] + s[1]]
+        });
+        let (term, cause) = term_and_cause(group.family, split, group.part);
+        // Lights are named only by the group: every light is every light, even where
+        // one of them dominates.
+        let light = group.light.map(|l| world.light_scene_index[l]);
+        let object = group
+            .object
+            .or_else(|| concentrated(&step.energy_by_object));
+        let is_bug = !matches!(cause, Cause::Factor);
+        let confidence = if is_bug {
+            step.margin * (1.0 - (1.0 - step.coefficient).abs()).max(0.0)
+        } else {
+            step.margin
+        };
+        let found = out.iter_mut().find(|(e, _)| {
+            e.term == term && e.cause == cause && e.light == light && e.object == object
+        });
+        match found {
+            Some((e, coefficient)) => {
+                *coefficient += step.coefficient;
+                let weight = e.share + step.gain / total;
+                e.confidence = (e.confidence * e.share + confidence * step.gain / total) / weight;
+                e.share = weight;
+                e.pixels.extend(&step.pixels);
+                e.pixels.sort_unstable();
+                e.pixels.dedup();
+            }
+            None => out.push((
+                Explanation {
+                    term,
+                    light,
+                    object,
+                    object_name: object.map(|o| scene.objects[o].name.clone()),
+                    factor: 1.0,
+                    share: step.gain / total,
+                    pixels: step.pixels.clone(),
+                    cause,
+                    confidence,
+                    summary: String::new(),
+                },
+                step.coefficient,
+            )),
+        }
+    }
+    out.into_iter()
+        .map(|(mut e, coefficient)| {
+            // Terms scale from 1; shadows and bugs add a picture whose weight is 1 - factor.
+            let factor = if e.cause == Cause::Factor && e.term != ExplainedTerm::Shadows {
+                1.0 + coefficient
+            } else {
+                1.0 - coefficient
+            };
+            // Rounding noise around 0 reads as "-0.00" otherwise.
+            e.factor = if factor.abs() < 1e-6 { 0.0 } else { factor };
+            e.summary = summary(&e, scene);
+            e
+        })
+        .collect()
+}

@@ -1,0 +1,184 @@
+//! Tokens to typed blocks, collecting every error on the way.
+//!
+//! A block is the tokens up to the next `End`. Inside a block, a keyword starts an entry
+//! and takes the tokens after it that look like numbers (they start with a digit, a sign
+//! or a point); keywords that take a name (`Material`, `filename`, and the axis of
+//! `Rotate`) take the next token whatever it is. Anything else where a keyword should be
+//! is an unknown keyword, reported and skipped together with the numbers after it, so one
+//! mistake gives one error. Numbers are whole tokens: `1,0` is a bad number, not `1`.
+//!
+//! Values the scene format cannot hold (negative colours, zero scales, a spot angle over
+//! 180 degrees...) are errors here too, at the token that holds them.
+//!
+//! This file splits the stream into blocks and reads block headers; `entries` splits a
+//! block body into keyword entries, `values` checks their arguments, and one file per
+//! block kind (`scene`, `camera`, `light`, `material`, `object`, with `transform` shared by
+//! cameras and objects) turns entries into typed settings.
+
+mod camera;
+mod entries;
+mod light;
+mod material;
+mod object;
+mod scene;
+mod transform;
+mod values;
+
+use super::error::LegacyError;
+use super::lexer::Token;
+use super::syntax::{At, Block, ParsedBlock};
+use entries::decode;
+use values::looks_numeric;
+
+/// The block types, as written in files (matched ignoring case).
+const BLOCK_WORDS: [&str; 5] = ["Scene", "Camera", "Light", "Material", "Object"];
+
+fn at(token: &Token<'_>) -> At {
+    At {
+        line: token.line,
+        token: token.text.to_owned(),
+    }
+}
+
+fn error(token: &Token<'_>, message: impl Into<String>) -> LegacyError {
+    LegacyError::new(token.line, token.text, message)
+}
+
+/// Parses the whole token stream into blocks. Blocks with errors in their header are
+/// left out; entries with errors are left out of their block. Every error is pushed.
+pub fn parse(tokens: &[Token<'_>], errors: &mut Vec<LegacyError>) -> Vec<ParsedBlock> {
+    let mut blocks = Vec::new();
+    let mut rest = tokens;
+    while let Some(first) = rest.first() {
+        match rest.iter().position(|t| t.is("End")) {
+            Some(0) => {
+                errors.push(error(first, "`End` with no block before it"));
+                rest = &rest[1..];
+            }
+            Some(end) => {
+                blocks.extend(parse_block(&rest[..end], errors));
+                rest = &rest[end + 1..];
+            }
+            None => {
+                if let Some(word) = block_word(first) {
+                    errors.push(error(
+                        first,
+                        format!("the {word} block has no `End` (unexpected end of file)"),
+                    ));
+                    blocks.extend(parse_block(rest, errors));
+                } else {
+                    errors.push(error(
+                        first,
+                        "unexpected end of file: tokens after the last `End`",
+                    ));
+                }
+                break;
+            }
+        }
+    }
+    blocks
+}
+
+fn block_word(token: &Token<'_>) -> Option<&'static str> {
+    BLOCK_WORDS.iter().copied().find(|word| token.is(word))
+}
+
+/// One block: its tokens without the `End`; never empty.
+fn parse_block(tokens: &[Token<'_>], errors: &mut Vec<LegacyError>) -> Option<ParsedBlock> {
+    let (first, rest) = tokens.split_first()?;
+    match block_word(first) {
+        Some("Scene") => {
+            let (settings, _) = decode(rest, scene::SCENE_WORDS, first, errors, scene::setting);
+            Some(ParsedBlock {
+                block: Block::Scene(settings),
+                at: at(first),
+            })
+        }
+        Some("Camera") => camera::parse_camera(first, rest, errors),
+        Some("Light") => light::parse_light(first, rest, errors),
+        Some("Material") => material::parse_material(first, rest, errors),
+        Some("Object") => object::parse_object(first, rest, errors),
+        _ => {
+            errors.push(error(
+                first,
+                "unknown block type (expected Scene, Camera, Light, Material or Object)",
+            ));
+            None
+        }
+    }
+}
+
+/// A block header: the type (or name) token right after the block word, the numbers after
+/// it, and the body. `None`, with an error, when the block is empty.
+struct Header<'t, 'a> {
+    kind: Token<'a>,
+    numbers: &'t [Token<'a>],
+    body: &'t [Token<'a>],
+}
+
+fn header<'t, 'a>(
+    word: &Token<'a>,
+    rest: &'t [Token<'a>],
+    needs: &str,
+    errors: &mut Vec<LegacyError>,
+) -> Option<Header<'t, 'a>> {
+    let Some((kind, after)) = rest.split_first() else {
+        errors.push(error(word, format!("the block needs {needs}")));
+        return None;
+    };
+    let count = after.iter().take_while(|t| looks_numeric(t.text)).count();
+    Some(Header {
+        kind: *kind,
+        numbers: &after[..count],
+        body: &after[count..],
+    })
+}
+
+/// Reports numbers after a header that takes none.
+fn no_numbers(header: &Header<'_, '_>, errors: &mut Vec<LegacyError>) -> bool {
+    if let Some(first) = header.numbers.first() {
+        errors.push(error(
+            first,
+            format!(
+                "`{}` takes no numbers, found {}",
+                header.kind.text,
+                header.numbers.len()
+            ),
+        ));
+        return false;
+    }
+    true
+}
+
+#[cfg(test)]
+fn parse_text(text: &str) -> (Vec<ParsedBlock>, Vec<LegacyError>) {
+    let mut errors = Vec::new();
+    let blocks = parse(&super::lexer::tokenize(text), &mut errors);
+    (blocks, errors)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn wrong_count_then_unknown_keyword_are_two_separate_errors() {
+        let (_, mut errors) = parse_text("Material m\n Colour 1 0\n Shiny 3\nEnd");
+        errors.sort_by_key(|e| e.line);
+        let summary: Vec<(usize, &str)> =
+            errors.iter().map(|e| (e.line, e.token.as_str())).collect();
+        assert_eq!(summary, [(2, "Colour"), (3, "Shiny")]);
+    }
+
+    #[test]
+    fn block_word_inside_a_block_hints_at_a_missing_end() {
+        let (_, errors) = parse_text("Object Sphere\n Translate 0 0 1\nObject Cube\nEnd");
+        assert_eq!(errors.len(), 1, "{errors:?}");
+        assert_eq!((errors[0].line, errors[0].token.as_str()), (3, "Object"));
+        assert!(
+            errors[0].message.contains("line 1 missing"),
+            "{}",
+            errors[0]
+        );
+    }
+}
