@@ -128,10 +128,9 @@ impl RecoveryStore {
             .write(true)
             .open(&path)?;
         file.try_lock().map_err(|e| match e {
-            TryLockError::WouldBlock => std::io::Error::other(format!(
-                "{} is locked by another editor",
-                path.display()
-            )),
+            TryLockError::WouldBlock => {
+                std::io::Error::other(format!("{} is locked by another editor", path.display()))
+            }
             TryLockError::Error(e) => e,
         })?;
         *held = Some(HeldLock { file, path });

@@ -7,7 +7,7 @@ mod editor_harness;
 
 use std::path::Path;
 
-use editor_harness::{harness_with, temp_dir};
+use editor_harness::{harness_with_file_dialog, temp_dir};
 use egui::{Key, Modifiers};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -17,7 +17,7 @@ use raylab::ui::{Command, DialogPurpose, EditorApp, EditorOptions, NativeDialogs
 
 /// The editor on a desktop with no native file dialog; dialogs open in `dir`.
 fn harness_in(dir: &Path) -> Harness<'static, EditorApp> {
-    harness_with(EditorOptions {
+    harness_with_file_dialog(EditorOptions {
         native_dialogs: NativeDialogs::Unavailable,
         dialog_folder: Some(dir.to_owned()),
         ..EditorOptions::default()
@@ -34,6 +34,14 @@ fn untitled_and_edited(harness: &mut Harness<'_, EditorApp>) {
     harness.run();
     assert!(harness.state().is_dirty());
     assert_eq!(harness.state().path(), None);
+}
+
+/// The dialog's file name field, holding the suggested name (its text run holds it too).
+fn file_name_field<'h>(harness: &'h Harness<'_, EditorApp>) -> egui_kittest::Node<'h> {
+    harness.get_by(|node| {
+        node.role() == egui::accesskit::Role::TextInput
+            && node.value().as_deref() == Some("untitled.ron")
+    })
 }
 
 fn menu(harness: &mut Harness<'_, EditorApp>, entry: &str) {
@@ -66,11 +74,10 @@ fn save_as_of_an_untitled_scene_without_native_dialogs_writes_the_file() {
         Some(DialogPurpose::SaveSceneAs)
     );
     // The name is suggested; the user types another one, without the extension.
-    let name = harness.get_by_value("untitled.ron");
-    name.focus();
+    file_name_field(&harness).focus();
     harness.run();
     harness.key_combination_modifiers(Modifiers::COMMAND, &[Key::A]);
-    harness.get_by_value("untitled.ron").type_text("my scene");
+    file_name_field(&harness).type_text("my scene");
     harness.run();
     harness.get_by_label("Save").click();
     harness.run();
@@ -113,7 +120,10 @@ fn a_cancelled_save_dialog_cancels_the_quit() {
     assert!(!harness.state().is_closing());
     assert!(harness.state().is_dirty());
     assert_eq!(harness.state().error(), None);
-    assert!(std::fs::read_dir(&dir).unwrap().next().is_none(), "nothing written");
+    assert!(
+        std::fs::read_dir(&dir).unwrap().next().is_none(),
+        "nothing written"
+    );
 }
 
 #[test]
@@ -145,7 +155,10 @@ fn open_and_export_browse_use_the_in_app_dialog() {
     harness.get_by_label("Open").click();
     harness.run();
     assert_eq!(harness.state().scene(), &scene);
-    assert_eq!(harness.state().path(), Some(dir.join("other.ron").as_path()));
+    assert_eq!(
+        harness.state().path(),
+        Some(dir.join("other.ron").as_path())
+    );
 
     harness.state_mut().push(Command::ShowExport);
     harness.run();
@@ -158,5 +171,8 @@ fn open_and_export_browse_use_the_in_app_dialog() {
     harness.get_by_label("Save").click();
     harness.run();
     let expected = dir.join("other.png");
-    assert_eq!(harness.state().export().path, expected.display().to_string());
+    assert_eq!(
+        harness.state().export().path,
+        expected.display().to_string()
+    );
 }

@@ -99,14 +99,18 @@ fn a_running_export_can_be_cancelled_and_writes_nothing() {
 fn export_window_at(harness: &mut Harness<'_, EditorApp>, width: u32, height: u32, path: &Path) {
     harness.state_mut().push(Command::ShowExport);
     harness.run();
-    harness.get_by_label("export width").set_value_accesskit(f64::from(width));
+    harness
+        .get_by_label("export width")
+        .set_value_accesskit(f64::from(width));
     harness.run();
     harness.get_by_label("keep aspect").click();
     harness.run();
     harness
         .get_by_label("export height")
         .set_value_accesskit(f64::from(height));
-    harness.get_by_label("export samples").set_value_accesskit(1.0);
+    harness
+        .get_by_label("export samples")
+        .set_value_accesskit(1.0);
     harness.run();
     set_export_path(harness, path);
 }
@@ -121,7 +125,14 @@ fn the_window_stays_put_when_its_status_line_appears() {
     harness.get_by_label("Render and save").click();
     harness.run_ok();
     step_until(&mut harness, "the export", |app| !app.export().is_running());
-    assert!(harness.state().export().status.as_ref().is_some_and(Result::is_err));
+    assert!(
+        harness
+            .state()
+            .export()
+            .status
+            .as_ref()
+            .is_some_and(Result::is_err)
+    );
     assert_eq!(harness.get_by_label("Render and save").rect(), button);
     assert_eq!(harness.get_by_label("export path").rect(), field);
 }
@@ -131,7 +142,9 @@ fn width_and_height_keep_the_aspect_ratio_until_unlinked() {
     let mut harness = harness();
     harness.state_mut().push(Command::ShowExport);
     harness.run();
-    harness.get_by_label("export width").set_value_accesskit(200.0);
+    harness
+        .get_by_label("export width")
+        .set_value_accesskit(200.0);
     harness.run();
     let size = |h: &Harness<'_, EditorApp>| {
         let o = h.state().export().settings.unwrap();
@@ -140,7 +153,9 @@ fn width_and_height_keep_the_aspect_ratio_until_unlinked() {
     assert_eq!(size(&harness), (200, 150), "the default scene is 4:3");
     harness.get_by_label("keep aspect").click();
     harness.run();
-    harness.get_by_label("export height").set_value_accesskit(100.0);
+    harness
+        .get_by_label("export height")
+        .set_value_accesskit(100.0);
     harness.run();
     assert_eq!(size(&harness), (200, 100));
 }
@@ -174,5 +189,9 @@ fn as_the_viewport_shows_it_exports_the_switches_and_view_on_screen() {
     let (expected, _) = render(&world, &options, &RenderProgress::default()).unwrap();
     let expected = image::load_from_memory(&expected.png_bytes()).unwrap();
     let written = image::open(&path).expect("the export was written");
-    assert_eq!(written.to_rgb8(), expected.to_rgb8(), "what `raylab render --view depth` gives");
+    assert_eq!(
+        written.to_rgb8(),
+        expected.to_rgb8(),
+        "what `raylab render --view depth` gives"
+    );
 }

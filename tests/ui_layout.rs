@@ -39,7 +39,10 @@ fn at_800_by_500_every_toolbar_control_is_on_screen_between_the_panels() {
     let harness = editor_harness(EditorOptions::default(), size, 64);
     let left = harness.get_by_label("Camera").rect().max.x;
     let right = harness.get_by_label("INSPECTOR").rect().min.x;
-    assert!(right - left > 300.0, "the side panels leave the viewport room");
+    assert!(
+        right - left > 300.0,
+        "the side panels leave the viewport room"
+    );
     let rects: Vec<(&str, Rect)> = TOOLBAR_CONTROLS
         .iter()
         .map(|label| (*label, harness.get_by_label(label).rect()))
@@ -64,11 +67,22 @@ fn a_preview_that_is_not_the_full_picture_says_so_and_why() {
     let mut settings = *harness.state().preview_settings();
     settings.switches.set(Term::Diffuse, false);
     settings.view = View::Depth;
-    harness.state_mut().push(Command::SetPreviewSettings(settings));
+    harness
+        .state_mut()
+        .push(Command::SetPreviewSettings(settings));
     harness.run();
     let marker = harness.get_by_label_contains(NOT_FULL_PICTURE);
-    let text = marker.accesskit_node().label().unwrap_or_default();
-    assert!(text.contains("diffuse off") && text.contains("depth view"), "{text}");
+    // A label's text is its accessible value (kittest matches either).
+    let node = marker.accesskit_node();
+    let text = format!(
+        "{} {}",
+        node.label().unwrap_or_default(),
+        node.value().unwrap_or_default()
+    );
+    assert!(
+        text.contains("diffuse off") && text.contains("depth view"),
+        "{text}"
+    );
     let picture = harness.get_by_label(VIEWPORT_LABEL).rect();
     assert!(picture.contains_rect(marker.rect()), "over the picture");
 }
@@ -129,7 +143,11 @@ fn a_light_marker_under_the_gizmo_buttons_does_not_take_their_presses() {
 
     harness.get_by_label("Rotate").click();
     harness.run();
-    assert_eq!(harness.state().selection(), &Selection::None, "no light picked");
+    assert_eq!(
+        harness.state().selection(),
+        &Selection::None,
+        "no light picked"
+    );
     drag(&mut harness, rotate, rotate + Vec2::new(60.0, 25.0));
     assert_eq!(
         harness.state().scene(),
@@ -137,4 +155,3 @@ fn a_light_marker_under_the_gizmo_buttons_does_not_take_their_presses() {
         "a press on the button neither drags the light nor orbits the camera"
     );
 }
-

@@ -58,7 +58,6 @@ fn unsaved_edits_reach_the_recovery_file_and_leave_it_on_save() {
     assert!(!own.exists(), "nothing left to recover after a save");
 }
 
-
 #[test]
 fn an_autosave_that_fails_says_so_in_the_status_bar() {
     use raylab::recovery::RecoveryStore;
@@ -75,7 +74,10 @@ fn an_autosave_that_fails_says_so_in_the_status_bar() {
     harness.run();
     harness.key_press(Key::Delete);
     harness.run();
-    let error = harness.state().autosave_error().expect("the failure is kept");
+    let error = harness
+        .state()
+        .autosave_error()
+        .expect("the failure is kept");
     assert!(error.contains("autosave failed"), "{error}");
     harness.get_by_label_contains("autosave failed");
 }

@@ -1,6 +1,7 @@
 //! Showing is not editing: every inspector panel opened on a scene at the edges of the
 //! contract (mirrored and tiny scales, rotations past a turn, huge and tiny Phong
-//! exponents, the most samples, HDR colours, the widest spot) leaves the scene
+//! exponents and zero, the most samples, the deepest mirrors, HDR colours, spots wider
+//! than a hemisphere) leaves the scene
 //! bit-identical, with no undo step and no modified mark.
 
 mod editor_harness;
@@ -16,11 +17,12 @@ use raylab::ui::{Command, EditorApp, EditorOptions, Selection};
 const EDGE_SCENE: &str = r#"Scene(
     camera: (position: (0.0, 2.0, 9.0), look_at: (0.0, 0.5, -0.0), up: (0.0, 1.0, 0.0),
              fov_deg: 0.25, width: 16384, height: 1),
-    render: (max_depth: 64, background: (4.0, 0.0, 1e-9), samples_per_pixel: 65536),
+    render: (max_depth: 10000, background: (4.0, 0.0, 1e-9), samples_per_pixel: 65536),
     materials: {
         "sharp": (ambient: (3.0, 0.0, 0.0), diffuse: (0.0, 1e-7, 0.5), specular: (20.0, 1.0, 1.0),
                   shininess: 1000000.0, mirror: (1.0, 1.0, 1.0)),
         "dull": (diffuse: (0.5, 0.5, 0.5), shininess: 0.000001),
+        "flat": (specular: (1.0, 1.0, 1.0), shininess: 0.0),
     },
     objects: [
         (name: "mirrored", shape: Cube, material: "sharp",
@@ -33,10 +35,12 @@ const EDGE_SCENE: &str = r#"Scene(
         Ambient(colour: (2.0, 2.0, 2.0), intensity: 0.0),
         Point(position: (1e12, -4.0, 3.0), colour: (5.0, 0.25, 100.0), intensity: 1000000.0),
         Directional(direction: (0.001, -1.0, 0.0), colour: (1.5, 1.0, 0.0)),
-        Spot(position: (0.0, 5.0, 0.0), direction: (0.0, -1.0, 0.0), angle_deg: 90.0,
+        Spot(position: (0.0, 5.0, 0.0), direction: (0.0, -1.0, 0.0), angle_deg: 180.0,
              colour: (40.0, 30.0, 20.0), intensity: 7.5),
         Spot(position: (0.0, 5.0, 0.0), direction: (0.0, -1.0, 0.0), angle_deg: 0.0001,
              colour: (0.0, 0.0, 0.0)),
+        Spot(position: (0.0, 5.0, 0.0), direction: (0.0, -1.0, 0.0), angle_deg: 135.0,
+             colour: (1.0, 1.0, 1.0)),
     ],
 )
 "#;
@@ -136,5 +140,36 @@ fn a_field_takes_values_beyond_its_drag_range_and_refuses_what_the_validator_ref
     harness.get_by_label("samples").set_value_accesskit(65536.0);
     harness.run();
     assert_eq!(harness.state().scene().render.samples_per_pixel, 65536);
+    harness
+        .get_by_label("max depth")
+        .set_value_accesskit(f64::from(raylab::scene::MAX_DEPTH));
+    harness.run();
+    assert_eq!(
+        harness.state().scene().render.max_depth,
+        raylab::scene::MAX_DEPTH
+    );
+
+    // The widest spot the contract takes, and a Phong exponent of 0.
+    harness
+        .state_mut()
+        .push(Command::Edit(raylab::ui::SceneEdit::AddLight(
+            raylab::scene::LightKind::Spot,
+        )));
+    harness.run();
+    harness.get_by_label("angle").set_value_accesskit(150.0);
+    harness.run();
+    let spot = harness.state().scene().lights.last().unwrap().clone();
+    assert!(
+        matches!(spot, raylab::scene::Light::Spot { angle_deg, .. } if angle_deg == 150.0),
+        "{spot:?}"
+    );
+    harness.get_by_label("red plastic").click();
+    harness.run();
+    harness.get_by_label("shininess").set_value_accesskit(0.0);
+    harness.run();
+    assert_eq!(
+        harness.state().scene().materials["red plastic"].shininess,
+        0.0
+    );
     raylab::scene::validate(harness.state().scene()).unwrap();
 }

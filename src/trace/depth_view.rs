@@ -81,7 +81,12 @@ mod tests {
             ..RenderOptions::from_scene(&scene)
         };
         let (image, _) = render(&world, &options, &RenderProgress::default()).unwrap();
-        let greys: Vec<f32> = image.pixels.iter().map(|p| p.x).filter(|g| *g > 0.0).collect();
+        let greys: Vec<f32> = image
+            .pixels
+            .iter()
+            .map(|p| p.x)
+            .filter(|g| *g > 0.0)
+            .collect();
         let lightest = greys.iter().copied().fold(0.0_f32, f32::max);
         let darkest = greys.iter().copied().fold(1.0_f32, f32::min);
         // The old 1 / (1 + t / d) mapping spread this scene over less than half the scale.
@@ -90,10 +95,20 @@ mod tests {
 
     #[test]
     fn nearest_is_white_farthest_dark_and_a_flat_range_is_white() {
-        let range = DepthRange { near: 2.0, far: 10.0 };
+        let range = DepthRange {
+            near: 2.0,
+            far: 10.0,
+        };
         assert_eq!(range.grey(2.0), 1.0);
         assert!((range.grey(10.0) - FAR_GREY).abs() < 1e-12);
         assert_eq!(range.grey(0.5), 1.0);
-        assert_eq!(DepthRange { near: 3.0, far: 3.0 }.grey(3.0), 1.0);
+        assert_eq!(
+            DepthRange {
+                near: 3.0,
+                far: 3.0
+            }
+            .grey(3.0),
+            1.0
+        );
     }
 }

@@ -74,11 +74,19 @@ impl EditorApp {
             }
             _ => None,
         }
-        .or_else(|| self.path.as_deref().and_then(Path::parent).map(Path::to_owned));
+        .or_else(|| {
+            self.path
+                .as_deref()
+                .and_then(Path::parent)
+                .map(Path::to_owned)
+        });
         let name = match purpose {
             DialogPurpose::ExportPng => PathBuf::from(self.export.path.trim())
                 .file_name()
-                .map_or_else(|| "render.png".to_owned(), |n| n.to_string_lossy().into_owned()),
+                .map_or_else(
+                    || "render.png".to_owned(),
+                    |n| n.to_string_lossy().into_owned(),
+                ),
             _ => format!("{}.ron", self.file_label().trim_end_matches(".ron")),
         };
         if let Err(error) = self
@@ -153,8 +161,7 @@ impl EditorApp {
                 // An imported scene has no file yet: everything is unsaved.
                 self.saved = files::new_scene();
                 if !warnings.is_empty() {
-                    self.warning =
-                        Some(format!("Imported with warnings: {}", warnings.join("; ")));
+                    self.warning = Some(format!("Imported with warnings: {}", warnings.join("; ")));
                 }
             }
             Err(error) => self.error = Some(format!("{}: {error}", path.display())),

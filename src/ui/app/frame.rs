@@ -3,11 +3,11 @@
 
 use crate::ui::commands::{Command, Selection};
 use crate::ui::document::confirm::{DiscardAction, discard_modal};
-use crate::ui::panels::notices::{Tone, notice_ui};
 use crate::ui::document::export_window::export_window;
 use crate::ui::document::files;
 use crate::ui::panels::inspector::inspector_ui;
 use crate::ui::panels::menu::{MenuState, menu_ui};
+use crate::ui::panels::notices::{Tone, notice_ui};
 use crate::ui::panels::outliner::outliner_ui;
 use crate::ui::panels::status_bar::{StatusInfo, status_bar_ui};
 use crate::ui::shortcuts::{help_window, shortcut_commands};
@@ -123,7 +123,13 @@ impl EditorApp {
             notice_ui(ui, Tone::Error, error, Command::DismissError, &mut commands);
         }
         if let Some(warning) = &self.warning {
-            notice_ui(ui, Tone::Warning, warning, Command::DismissWarning, &mut commands);
+            notice_ui(
+                ui,
+                Tone::Warning,
+                warning,
+                Command::DismissWarning,
+                &mut commands,
+            );
         }
         egui::Panel::bottom("status").show(ui, |ui| {
             let file = self.file_label();

@@ -76,8 +76,8 @@ fn floor_under(scene: &Scene, target: DVec3, frame: &Frame) -> Option<DVec3> {
         .filter(|o| o.shape == Shape::Plane)
         .filter_map(|plane| {
             let world_from_object = plane.transform.world_from_object();
-            let normal = (world_from_object.matrix3.inverse().transpose() * DVec3::Z)
-                .normalize_or_zero();
+            let normal =
+                (world_from_object.matrix3.inverse().transpose() * DVec3::Z).normalize_or_zero();
             let facing = normal.dot(frame.up);
             if facing.abs() < FLOOR_COS {
                 return None;
@@ -149,8 +149,13 @@ mod tests {
             let m = transform.world_from_object();
             let bounds = world_bounds(shape, &transform);
             // The default scene's floor is the plane y = 0.
-            assert!(bounds.min.y.abs() < 1e-6, "{shape:?} rests on y = 0: {bounds:?}");
-            let p = camera.project(m.translation).expect("in front of the camera");
+            assert!(
+                bounds.min.y.abs() < 1e-6,
+                "{shape:?} rests on y = 0: {bounds:?}"
+            );
+            let p = camera
+                .project(m.translation)
+                .expect("in front of the camera");
             assert!(p.x > 0.0 && p.x < 800.0 && p.y > 0.0 && p.y < 600.0, "{p}");
             let axis = m.transform_vector3(DVec3::Z).normalize();
             match shape {

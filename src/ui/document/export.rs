@@ -288,8 +288,14 @@ mod tests {
     fn an_export_too_large_for_memory_is_refused_before_it_starts() {
         assert!(check_export_memory(800, 600, Some(1 << 30)).is_ok());
         let error = check_export_memory(16384, 16384, Some(8_000_000_000)).unwrap_err();
-        assert!(error.contains("16384×16384") && error.contains("8.0 GB"), "{error}");
-        assert!(check_export_memory(16384, 16384, None).is_ok(), "no limit known");
+        assert!(
+            error.contains("16384×16384") && error.contains("8.0 GB"),
+            "{error}"
+        );
+        assert!(
+            check_export_memory(16384, 16384, None).is_ok(),
+            "no limit known"
+        );
 
         let scene = crate::scene::examples::default_scene();
         let mut state = ExportState::default();
@@ -328,10 +334,16 @@ mod tests {
         shown.view = crate::trace::View::Depth;
         let mut state = ExportState::default();
         state.show(&scene, None);
-        assert_eq!(state.options(&scene, &shown).view, crate::trace::View::Beauty);
+        assert_eq!(
+            state.options(&scene, &shown).view,
+            crate::trace::View::Beauty
+        );
         state.as_shown = true;
         let options = state.options(&scene, &shown);
-        assert_eq!((options.switches, options.view), (shown.switches, shown.view));
+        assert_eq!(
+            (options.switches, options.view),
+            (shown.switches, shown.view)
+        );
         assert_eq!(options.width, scene.camera.width);
     }
 }

@@ -117,6 +117,9 @@ mod tests {
         }
         // Away from the edges it sits where it always did, up and right of the cursor.
         let middle = Pos2::new(300.0, 200.0);
-        assert_eq!(readout_pos(middle, size, picture), middle + Vec2::new(14.0, -24.0));
+        assert_eq!(
+            readout_pos(middle, size, picture),
+            middle + Vec2::new(14.0, -24.0)
+        );
     }
 }

@@ -131,7 +131,10 @@ fn recent_ui(ui: &mut Ui, recent: &RecentFiles, commands: &mut Vec<Command>) {
         let (text, hover) = if failed {
             (
                 RichText::new(format!("{name} (could not open)")).weak(),
-                format!("{}\nThe last try to open it failed; click to try again", path.display()),
+                format!(
+                    "{}\nThe last try to open it failed; click to try again",
+                    path.display()
+                ),
             )
         } else {
             (RichText::new(name), path.display().to_string())

@@ -8,10 +8,10 @@ use crate::preview::Pass;
 use crate::scene::Scene;
 use crate::trace::{PinholeCamera, World};
 use crate::ui::commands::{Command, Selection};
+use crate::ui::viewport::full_picture_marker::full_picture_marker_ui;
 use crate::ui::viewport::pixel_inspector::inspected_pixel;
 use crate::ui::viewport::preview_link::PreviewLink;
 use crate::ui::viewport::preview_settings::PreviewSettings;
-use crate::ui::viewport::full_picture_marker::full_picture_marker_ui;
 use crate::ui::viewport::toolbar::toolbar_ui;
 
 /// Accessible name of the picture, for tests and screen readers.
@@ -69,10 +69,7 @@ pub fn viewport_ui(
         non_finite,
         commands,
     );
-    let outer = Rect::from_min_max(
-        Pos2::new(full.min.x, header.max.y + bar_height),
-        full.max,
-    );
+    let outer = Rect::from_min_max(Pos2::new(full.min.x, header.max.y + bar_height), full.max);
     ui.painter()
         .rect_filled(outer, CornerRadius::ZERO, Color32::from_gray(14));
     let aspect = scene.camera.width as f32 / scene.camera.height.max(1) as f32;

@@ -114,7 +114,10 @@ impl PreviewSettings {
             reasons.push(format!("solo {}", term.name()));
         }
         if self.view != View::Beauty {
-            reasons.push(format!("{} view", crate::ui::viewport::toolbar::view_label(self.view)));
+            reasons.push(format!(
+                "{} view",
+                crate::ui::viewport::toolbar::view_label(self.view)
+            ));
         }
         reasons
     }
@@ -151,6 +154,10 @@ mod tests {
             loaded.not_full_picture_reasons(),
             ["diffuse off", "solo specular", "depth view"]
         );
-        assert!(PreviewSettings::default().not_full_picture_reasons().is_empty());
+        assert!(
+            PreviewSettings::default()
+                .not_full_picture_reasons()
+                .is_empty()
+        );
     }
 }

@@ -49,7 +49,9 @@ pub fn toolbar_ui(
             guard_ui(ui, &mut edited, non_finite);
             ui.separator();
             ui.toggle_value(&mut edited.inspect, "Inspect")
-                .on_hover_text("Click a pixel to see every number behind it (or hold Alt and click)");
+                .on_hover_text(
+                    "Click a pixel to see every number behind it (or hold Alt and click)",
+                );
             ui.toggle_value(&mut edited.show_convergence, "Convergence")
                 .on_hover_text("Plot how much each preview pass still changes the picture");
         })

@@ -25,9 +25,7 @@ pub(super) fn vec3_row_ui(ui: &mut Ui, label: &str, value: &mut DVec3, speed: f6
                 .zip([&mut value.x, &mut value.y, &mut value.z])
         {
             number_ui(ui, component, limits, Some(width), |drag| {
-                drag.speed(speed)
-                    .prefix(format!("{axis} "))
-                    .suffix(suffix)
+                drag.speed(speed).prefix(format!("{axis} ")).suffix(suffix)
             })
             .accessible_name(format!("{label} {axis}"));
         }
@@ -78,10 +76,7 @@ fn swatch_ui(ui: &mut Ui, label: &str, colour: &mut DVec3) {
         .accessible_name(format!("{label} colour"));
     // The picker works in f32 through HSV and may hand back a value that moved by
     // rounding alone: only a real change from the user is taken.
-    let moved = picked
-        .iter()
-        .zip(shown)
-        .any(|(a, b)| (a - b).abs() > 1e-4);
+    let moved = picked.iter().zip(shown).any(|(a, b)| (a - b).abs() > 1e-4);
     if response.changed() && moved {
         *colour = glam::Vec3::from_array(picked).as_dvec3() * scale;
     }
@@ -89,9 +84,16 @@ fn swatch_ui(ui: &mut Ui, label: &str, colour: &mut DVec3) {
 
 /// One labelled number.
 pub(super) fn number_row_ui(ui: &mut Ui, label: &str, value: &mut f64, speed: f64, limits: Limits) {
-    let suffix = if matches!(label, "angle" | "fov") { "°" } else { "" };
+    let suffix = if matches!(label, "angle" | "fov") {
+        "°"
+    } else {
+        ""
+    };
     let label = ui.label(label);
-    number_ui(ui, value, limits, None, |drag| drag.speed(speed).suffix(suffix)).labelled_by(label.id);
+    number_ui(ui, value, limits, None, |drag| {
+        drag.speed(speed).suffix(suffix)
+    })
+    .labelled_by(label.id);
     ui.end_row();
 }
 

@@ -5,6 +5,8 @@
 
 use std::ops::RangeInclusive;
 
+pub(super) use crate::scene::{MAX_DEPTH, MAX_SAMPLES_PER_PIXEL, MAX_SPOT_ANGLE_DEG};
+
 /// The numbers a field takes: `min..=max`, minus the open ends and (for scales) zero.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) struct Limits {
@@ -71,33 +73,14 @@ pub(super) const FOV_DEG: Limits = Limits {
     ..Limits::closed(0.0, 180.0)
 };
 
-/// The largest spot half-angle the validator takes, in degrees.
-/// Wire to the scene's constant once the validator exports it (issue 15 widens it to 180).
-pub(super) const MAX_SPOT_ANGLE_DEG: f64 = 90.0;
-
-/// A spot light's half-angle: (0, [`MAX_SPOT_ANGLE_DEG`]].
+/// A spot light's half-angle: (0, [`MAX_SPOT_ANGLE_DEG`]], as the validator takes it.
 pub(super) const SPOT_ANGLE_DEG: Limits = Limits {
     min_open: true,
     ..Limits::closed(0.0, MAX_SPOT_ANGLE_DEG)
 };
 
-/// Whether the validator refuses a Phong exponent of exactly 0 (it does today; issue 15
-/// makes it take any exponent >= 0: set this to `false` then).
-const SHININESS_ZERO_REFUSED: bool = true;
-
-/// The Phong exponent: any value >= 0 the validator takes, however large.
-pub(super) const SHININESS: Limits = Limits {
-    min_open: SHININESS_ZERO_REFUSED,
-    ..Limits::NON_NEGATIVE
-};
-
-/// The deepest mirror recursion the validator takes.
-/// Wire to the scene's constant once exported (issue 15 asks for any depth).
-pub(super) const MAX_DEPTH: u32 = 64;
-
-/// The most samples per pixel the validator takes (the scene's `MAX_SAMPLES_PER_PIXEL`,
-/// not yet exported from `crate::scene`).
-pub(super) const MAX_SAMPLES_PER_PIXEL: u32 = 65536;
+/// The Phong exponent: any value >= 0, however large (0 lights where r.v > 0).
+pub(super) const SHININESS: Limits = Limits::NON_NEGATIVE;
 
 /// Output width and height in pixels.
 pub(super) const IMAGE_SIDE: RangeInclusive<u32> = 1..=crate::scene::MAX_IMAGE_SIDE;
@@ -115,8 +98,18 @@ mod tests {
         assert_eq!(Limits::NONZERO.take(0.0), None);
         assert_eq!(Limits::NONZERO.take(-3.0), Some(-3.0));
         assert_eq!(Limits::NON_NEGATIVE.take(-1.0), Some(0.0));
-        assert_eq!(SPOT_ANGLE_DEG.take(MAX_SPOT_ANGLE_DEG), Some(MAX_SPOT_ANGLE_DEG));
+        assert_eq!(
+            SPOT_ANGLE_DEG.take(MAX_SPOT_ANGLE_DEG),
+            Some(MAX_SPOT_ANGLE_DEG)
+        );
         assert_eq!(Limits::ANY.take(f64::NAN), None);
         assert_eq!(SHININESS.take(1e9), Some(1e9));
+        assert_eq!(
+            SHININESS.take(0.0),
+            Some(0.0),
+            "shininess 0 is in the contract"
+        );
+        assert_eq!(SPOT_ANGLE_DEG.take(180.0), Some(180.0));
+        assert_eq!(SPOT_ANGLE_DEG.take(0.0), None);
     }
 }

@@ -3,8 +3,8 @@
 
 mod camera;
 mod fields;
-mod limits;
 mod light;
+mod limits;
 mod material;
 mod object;
 mod render_settings;
