@@ -297,7 +297,7 @@ fn a_recent_file_that_fails_to_open_stays_in_the_list_marked() {
     harness.state_mut().push(Command::Open(path.clone()));
     harness.run();
     assert!(harness.state().error().is_some(), "the failure is shown");
-    assert_eq!(harness.state().recent().paths(), [listed.clone()]);
+    assert_eq!(harness.state().recent().paths(), std::slice::from_ref(&listed));
     assert!(harness.state().recent().has_failed(&listed));
     harness.get_by_label("File").click();
     harness.run();
