@@ -7,7 +7,7 @@ mod editor_harness;
 
 use std::path::Path;
 
-use editor_harness::{harness_with_file_dialog, temp_dir};
+use editor_harness::{close_window, harness_with_file_dialog, temp_dir};
 use egui::{Key, Modifiers};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -48,17 +48,6 @@ fn menu(harness: &mut Harness<'_, EditorApp>, entry: &str) {
     harness.get_by_label("File").click();
     harness.run();
     harness.get_by_label(entry).click();
-    harness.run();
-}
-
-fn close_window(harness: &mut Harness<'_, EditorApp>) {
-    harness
-        .input_mut()
-        .viewports
-        .entry(egui::ViewportId::ROOT)
-        .or_default()
-        .events
-        .push(egui::ViewportEvent::Close);
     harness.run();
 }
 

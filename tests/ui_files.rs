@@ -6,7 +6,7 @@ mod editor_harness;
 
 use std::path::{Path, PathBuf};
 
-use editor_harness::{harness, select_red_ball, temp_dir};
+use editor_harness::{close_window, harness, select_red_ball, temp_dir};
 use egui::{Key, Modifiers};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -180,17 +180,7 @@ fn closing_the_window_with_unsaved_changes_asks_first() {
         raylab::scene::Shape::Cube,
     )));
     harness.run();
-    let close = |harness: &mut Harness<'_, EditorApp>| {
-        harness
-            .input_mut()
-            .viewports
-            .entry(egui::ViewportId::ROOT)
-            .or_default()
-            .events
-            .push(egui::ViewportEvent::Close);
-        harness.run();
-    };
-    close(&mut harness);
+    close_window(&mut harness);
     assert_eq!(
         harness.state().pending_discard(),
         Some(&raylab::ui::DiscardAction::Quit)
@@ -208,7 +198,7 @@ fn closing_the_window_with_unsaved_changes_asks_first() {
     harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     harness.run();
     assert!(!harness.state().is_dirty());
-    close(&mut harness);
+    close_window(&mut harness);
     assert_eq!(harness.state().pending_discard(), None);
 }
 
@@ -297,7 +287,10 @@ fn a_recent_file_that_fails_to_open_stays_in_the_list_marked() {
     harness.state_mut().push(Command::Open(path.clone()));
     harness.run();
     assert!(harness.state().error().is_some(), "the failure is shown");
-    assert_eq!(harness.state().recent().paths(), std::slice::from_ref(&listed));
+    assert_eq!(
+        harness.state().recent().paths(),
+        std::slice::from_ref(&listed)
+    );
     assert!(harness.state().recent().has_failed(&listed));
     harness.get_by_label("File").click();
     harness.run();

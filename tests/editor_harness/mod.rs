@@ -20,14 +20,7 @@ pub fn harness_with(options: EditorOptions) -> Harness<'static, EditorApp> {
 /// widget has an accessible name: egui_file's path and file name fields have none, and
 /// they are that crate's widgets, not ours.
 pub fn harness_with_file_dialog(options: EditorOptions) -> Harness<'static, EditorApp> {
-    let app = EditorApp::new(options, RecentFiles::default());
-    let mut harness = Harness::builder()
-        .with_size(Vec2::new(1280.0, 800.0))
-        .with_max_steps(64)
-        .with_accessibility_check(false)
-        .build_ui_state(|ui, app: &mut EditorApp| app.editor_ui(ui), app);
-    harness.run();
-    harness
+    build(options, Vec2::new(1280.0, 800.0), 64, false)
 }
 
 /// The editor on the default scene in a 1280x800 window, preview off.
@@ -63,10 +56,20 @@ pub fn editor_harness(
     size: Vec2,
     max_steps: u64,
 ) -> Harness<'static, EditorApp> {
+    build(options, size, max_steps, true)
+}
+
+fn build(
+    options: EditorOptions,
+    size: Vec2,
+    max_steps: u64,
+    accessibility_check: bool,
+) -> Harness<'static, EditorApp> {
     let app = EditorApp::new(options, RecentFiles::default());
     let mut harness = Harness::builder()
         .with_size(size)
         .with_max_steps(max_steps)
+        .with_accessibility_check(accessibility_check)
         .build_ui_state(|ui, app: &mut EditorApp| app.editor_ui(ui), app);
     harness.run();
     harness
@@ -84,6 +87,18 @@ pub fn click_at(harness: &mut Harness<'_, EditorApp>, pos: Pos2) {
         });
     }
     harness.run_ok();
+}
+
+/// Asks the window to close, as the window manager's close button does.
+pub fn close_window(harness: &mut Harness<'_, EditorApp>) {
+    harness
+        .input_mut()
+        .viewports
+        .entry(egui::ViewportId::ROOT)
+        .or_default()
+        .events
+        .push(egui::ViewportEvent::Close);
+    harness.run();
 }
 
 /// A fresh folder under the system's temporary folder.
