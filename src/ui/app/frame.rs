@@ -36,7 +36,11 @@ impl EditorApp {
             self.preview = Some(PreviewLink::new(&ctx));
         }
         if let Some(preview) = &mut self.preview {
-            preview.poll(&ctx, self.preview_settings.nan_guard);
+            preview.poll(
+                &ctx,
+                self.preview_settings.nan_guard,
+                self.preview_settings.show_convergence,
+            );
         }
         self.input(&ctx);
         self.panels_ui(ui);

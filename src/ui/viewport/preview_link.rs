@@ -87,15 +87,20 @@ impl PreviewLink {
         });
     }
 
-    /// Takes the published frames (or error): each feeds the convergence curve, the
-    /// newest goes into the texture, painted with the NaN guard's overlay if `nan_guard`.
-    pub fn poll(&mut self, ctx: &egui::Context, nan_guard: bool) {
+    /// Takes the published frames (or error): each feeds the convergence curve while
+    /// `convergence_shown` (its per-pass RMSE is UI-thread work nobody would see
+    /// otherwise; a hidden plot drops the curve), the newest goes into the texture,
+    /// painted with the NaN guard's overlay if `nan_guard`.
+    pub fn poll(&mut self, ctx: &egui::Context, nan_guard: bool, convergence_shown: bool) {
         let mut newest = None;
         for message in self.worker.drain() {
-            if let Ok(frame) = &message.result {
+            if convergence_shown && let Ok(frame) = &message.result {
                 self.convergence.add(message.generation, frame);
             }
             newest = Some(message);
+        }
+        if !convergence_shown && self.convergence.generation().is_some() {
+            self.convergence = ConvergenceCurve::default();
         }
         let Some(message) = newest else {
             if nan_guard != self.texture_guarded
