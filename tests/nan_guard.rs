@@ -44,6 +44,7 @@ fn no_example_scene_has_a_non_finite_sample_in_any_view() {
                     samples_per_pixel: 4,
                     switches,
                     view,
+                    isolation: Default::default(),
                 };
                 let sums =
                     render_samples(&world, &options, 0..4, &RenderProgress::default()).unwrap();

@@ -271,8 +271,9 @@ fn cli_options(scene: &Scene, off: &[Term], solo: Option<Term>, view: View) -> R
         off: off.to_vec(),
         solo,
         view,
+        isolation: Default::default(),
     };
-    args.options(scene)
+    args.options(scene).unwrap()
 }
 
 /// Whether two images are equal pixel for pixel (exact f32 equality).
@@ -295,7 +296,7 @@ fn the_final_frame_is_bit_identical_to_the_cli_render_for_the_same_switches() {
     for (generation, (off, solo, view)) in (1..).zip(cases) {
         let options = cli_options(&scene, off, solo, view);
         let mut request = PreviewRequest::for_scene(generation, scene.clone());
-        request.options = options;
+        request.options = options.clone();
         worker.submit(request);
         let messages = until_final(&mut worker, generation);
         let last = messages.last().unwrap().result.as_ref().unwrap();
@@ -321,7 +322,7 @@ fn a_one_sample_scene_ends_on_the_cli_image_too() {
     let scene = small_scene(200, 100, 1);
     let options = cli_options(&scene, &[Term::Specular], None, View::ShadowMask);
     let mut request = PreviewRequest::for_scene(1, scene.clone());
-    request.options = options;
+    request.options = options.clone();
     worker.submit(request);
     let messages = until_final(&mut worker, 1);
     let last = messages.last().unwrap().result.as_ref().unwrap();

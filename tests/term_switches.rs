@@ -4,7 +4,7 @@ use std::path::Path;
 
 use raylab::scene::load_scene;
 use raylab::trace::{
-    Image, RenderOptions, RenderProgress, Term, TermSwitches, View, World, render,
+    Image, Isolation, RenderOptions, RenderProgress, Term, TermSwitches, View, World, render,
 };
 
 fn render_default(switches: TermSwitches, view: View) -> Image {
@@ -17,6 +17,7 @@ fn render_default(switches: TermSwitches, view: View) -> Image {
         samples_per_pixel: 1,
         switches,
         view,
+        isolation: Isolation::NONE,
     };
     render(&world, &options, &RenderProgress::default())
         .unwrap()

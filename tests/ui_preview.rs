@@ -83,11 +83,16 @@ fn cli_image(scene: &Scene, off: &[Term], solo: Option<Term>, view: View) -> ray
         off: off.to_vec(),
         solo,
         view,
+        isolation: Default::default(),
     };
     let world = World::new(scene).unwrap();
-    render(&world, &args.options(scene), &RenderProgress::default())
-        .unwrap()
-        .0
+    render(
+        &world,
+        &args.options(scene).unwrap(),
+        &RenderProgress::default(),
+    )
+    .unwrap()
+    .0
 }
 
 /// The preview's final image equals the CLI's pixel for pixel (exact f32 equality).

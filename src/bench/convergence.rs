@@ -74,7 +74,7 @@ pub fn convergence_curves(
     };
     let (reference, _) = timed(&RenderOptions {
         samples_per_pixel: plan.reference_spp,
-        ..base
+        ..base.clone()
     });
     let mut curve = Vec::new();
 
@@ -85,7 +85,7 @@ pub fn convergence_curves(
             width: (plan.width / divider).max(1),
             height: (plan.height / divider).max(1),
             samples_per_pixel: 1,
-            ..base
+            ..base.clone()
         };
         let (image, seconds) = timed(&options);
         elapsed += seconds;
@@ -100,7 +100,7 @@ pub fn convergence_curves(
     for &spp in &plan.uniform_spp {
         let (image, seconds) = timed(&RenderOptions {
             samples_per_pixel: spp,
-            ..base
+            ..base.clone()
         });
         curve.push(point(
             "uniform",

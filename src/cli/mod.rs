@@ -4,6 +4,7 @@
 mod bench;
 mod diff;
 mod import;
+mod isolation;
 mod render;
 
 use std::path::PathBuf;
@@ -14,6 +15,7 @@ use clap::{Parser, Subcommand};
 pub use bench::BenchArgs;
 pub use diff::DiffArgs;
 pub use import::ImportArgs;
+pub use isolation::IsolationArgs;
 pub use render::RenderArgs;
 
 /// raylab: a Whitted-style ray tracer and scene editor.

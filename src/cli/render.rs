@@ -1,10 +1,12 @@
-//! `raylab render`: a scene file to a PNG, with the term switches and debug views.
+//! `raylab render`: a scene file to a PNG, with the term and isolation switches and the
+//! debug views.
 
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use clap::Args;
 
+use super::isolation::IsolationArgs;
 use crate::preview::BackgroundJob;
 use crate::scene::Scene;
 use crate::scene::{MAX_IMAGE_SIDE, load_scene, write_atomically};
@@ -36,12 +38,17 @@ pub struct RenderArgs {
     /// What to show: beauty, normal, depth, object-id or shadow-mask.
     #[arg(long, default_value = "beauty")]
     pub view: View,
+    /// Lights muted or solo, objects hidden.
+    #[command(flatten)]
+    pub isolation: IsolationArgs,
 }
 
 impl RenderArgs {
     /// The render options these arguments ask for, given the scene's defaults.
-    #[must_use]
-    pub fn options(&self, scene: &Scene) -> RenderOptions {
+    ///
+    /// # Errors
+    /// An isolation flag naming a light or object the scene does not have.
+    pub fn options(&self, scene: &Scene) -> Result<RenderOptions, String> {
         let mut options = RenderOptions::from_scene(scene);
         let aspect = f64::from(scene.camera.width) / f64::from(scene.camera.height);
         let side = |x: f64| (x.round() as u32).clamp(1, MAX_IMAGE_SIDE);
@@ -60,7 +67,8 @@ impl RenderArgs {
         }
         options.switches = switches.with_solo(self.solo);
         options.view = self.view;
-        options
+        options.isolation = self.isolation.isolation(scene)?;
+        Ok(options)
     }
 }
 
@@ -70,10 +78,11 @@ impl RenderArgs {
 /// A message naming what went wrong (file, scene problem, write failure).
 pub fn run(args: &RenderArgs) -> Result<(), String> {
     let scene = load_scene(&args.scene).map_err(|e| format!("{}: {e}", args.scene.display()))?;
-    let world = World::new(&scene).map_err(|e| format!("{}: {e}", args.scene.display()))?;
-    let options = args.options(&scene);
+    let options = args.options(&scene)?;
+    let world = World::isolated(&scene, &options.isolation)
+        .map_err(|e| format!("{}: {e}", args.scene.display()))?;
     let started = Instant::now();
-    let (image, rays) = render_with_progress_bar(world, options)?;
+    let (image, rays) = render_with_progress_bar(world, options.clone())?;
     let elapsed = started.elapsed();
     write_atomically(&args.output, &image.png_bytes())
         .map_err(|e| format!("cannot write {}: {e}", args.output.display()))?;

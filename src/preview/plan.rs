@@ -91,7 +91,7 @@ pub fn plan_passes(options: &RenderOptions) -> Vec<Pass> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::trace::{TermSwitches, View};
+    use crate::trace::{Isolation, TermSwitches, View};
 
     fn options(width: u32, height: u32, samples_per_pixel: u32) -> RenderOptions {
         RenderOptions {
@@ -100,6 +100,7 @@ mod tests {
             samples_per_pixel,
             switches: TermSwitches::ALL_ON,
             view: View::Beauty,
+            isolation: Isolation::NONE,
         }
     }
 

@@ -168,9 +168,11 @@ fn run(shared: &Shared, sender: &Sender<Published>, waker: &Waker) {
         };
         // A panic in the tracer must not end the worker: report it and wait for the next
         // request (an edit may well avoid whatever caused it).
-        let outcome = run_caught("the renderer", || match World::new(&request.scene) {
-            Ok(world) => render_plan(shared, &world, &request.options, &publish),
-            Err(error) => publish(Err(error.to_string())),
+        let outcome = run_caught("the renderer", || {
+            match World::isolated(&request.scene, &request.options.isolation) {
+                Ok(world) => render_plan(shared, &world, &request.options, &publish),
+                Err(error) => publish(Err(error.to_string())),
+            }
         });
         if let Err(message) = outcome {
             lock(&shared.mailbox).running = None;
@@ -287,7 +289,7 @@ fn render_pass(
                 width,
                 height,
                 samples_per_pixel: 1,
-                ..*target
+                ..target.clone()
             };
             let sums = render_samples(world, &options, 0..1, progress)?;
             Some(Rendered::new(&sums, 1, sums.rays))
@@ -298,7 +300,7 @@ fn render_pass(
         } => {
             let options = RenderOptions {
                 samples_per_pixel: count,
-                ..*target
+                ..target.clone()
             };
             let state = accumulated.get_or_insert_with(|| Accumulated {
                 sums: SampleSums::zero(options.width, options.height),

@@ -53,6 +53,7 @@ pub fn render_adaptive(
     adaptive: &AdaptiveOptions,
     progress: &RenderProgress,
 ) -> Option<AdaptiveRender> {
+    super::isolation::assert_compiled_for(world, &options.isolation);
     let (width, height) = (options.width, options.height);
     let camera = PinholeCamera::new(&world.camera, width, height);
     let tracer = Tracer::new(world, options.switches, options.view);

@@ -109,9 +109,14 @@ impl Recorder for ReportRecorder {
 }
 
 /// Inspects the centre of pixel `(px, py)` of an image rendered with `options` (beauty
-/// view with its term switches), through the same code path as the renderer.
+/// view with its term switches), through the same code path as the renderer. Object and
+/// light indices in the report are the scene's.
+///
+/// # Panics
+/// When `world` was compiled for other isolation switches than `options.isolation`.
 #[must_use]
 pub fn inspect_pixel(world: &World, options: &RenderOptions, px: u32, py: u32) -> PixelReport {
+    super::isolation::assert_compiled_for(world, &options.isolation);
     let camera = PinholeCamera::new(&world.camera, options.width, options.height);
     let tracer = Tracer::new(world, options.switches, super::terms::View::Beauty);
     let ray = camera.ray(DVec2::new(f64::from(px) + 0.5, f64::from(py) + 0.5));
@@ -125,12 +130,13 @@ pub fn inspect_pixel(world: &World, options: &RenderOptions, px: u32, py: u32) -
     }
 }
 
-/// The object under pixel point `(x, y)` (in pixels, fractional) of a `width` x `height`
-/// image: the tracer's own primary ray, so picking is exact.
+/// The scene index of the object under pixel point `(x, y)` (in pixels, fractional) of a
+/// `width` x `height` image: the tracer's own primary ray, so picking is exact (and never
+/// finds an object the world was compiled without).
 #[must_use]
 pub fn pick(world: &World, width: u32, height: u32, point: DVec2) -> Option<usize> {
     let camera = PinholeCamera::new(&world.camera, width, height);
     world
         .intersect(&camera.ray(point), f64::INFINITY)
-        .map(|hit| hit.object)
+        .map(|hit| world.scene_object(hit.object))
 }

@@ -8,6 +8,7 @@ pub mod camera;
 pub mod depth_view;
 pub mod image;
 pub mod inspect;
+pub mod isolation;
 pub mod lights;
 pub mod quadratic;
 pub mod ray;
@@ -23,10 +24,11 @@ pub use adaptive::{AdaptiveOptions, AdaptiveRender, render_adaptive};
 pub use camera::PinholeCamera;
 pub use image::Image;
 pub use inspect::{BounceReport, PixelReport, inspect_pixel, pick};
+pub use isolation::IsolationError;
 pub use ray::Ray;
 pub use render::{
     RenderOptions, RenderProgress, SampleSums, render, render_samples, render_samples_into,
 };
 pub use shade::{LightRecord, NoRecorder, RayCounts, Recorder, Tracer};
-pub use terms::{Term, TermSwitches, View};
+pub use terms::{Isolation, Term, TermSwitches, View};
 pub use world::{Acceleration, BVH_MIN_OBJECTS, SurfacePoint, World};

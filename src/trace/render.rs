@@ -9,9 +9,10 @@ use rayon::prelude::*;
 
 use super::camera::PinholeCamera;
 use super::image::Image;
+use super::isolation::assert_compiled_for;
 use super::sampling::Strata;
 use super::shade::{NoRecorder, RayCounts, Tracer};
-use super::terms::{TermSwitches, View};
+use super::terms::{Isolation, TermSwitches, View};
 use super::world::World;
 use crate::scene::Scene;
 
@@ -20,7 +21,7 @@ use crate::scene::Scene;
 pub const TILE_SIZE: u32 = 16;
 
 /// What to render.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct RenderOptions {
     /// Image width in pixels.
     pub width: u32,
@@ -32,6 +33,9 @@ pub struct RenderOptions {
     pub switches: TermSwitches,
     /// Beauty or a debug view.
     pub view: View,
+    /// Lights muted or solo, objects hidden: the world must be compiled with them
+    /// ([`World::isolated`]).
+    pub isolation: Isolation,
 }
 
 impl RenderOptions {
@@ -44,6 +48,7 @@ impl RenderOptions {
             samples_per_pixel: scene.render.samples_per_pixel,
             switches: TermSwitches::ALL_ON,
             view: View::Beauty,
+            isolation: Isolation::NONE,
         }
     }
 }
@@ -151,7 +156,8 @@ pub fn render_samples(
 /// also added to `sums.rays`), or `None` if cancelled, leaving `sums` untouched.
 ///
 /// # Panics
-/// When `sums` is not `options.width` x `options.height`.
+/// When `sums` is not `options.width` x `options.height`, or `world` was compiled for
+/// other isolation switches than `options.isolation`.
 pub fn render_samples_into(
     world: &World,
     options: &RenderOptions,
@@ -165,6 +171,7 @@ pub fn render_samples_into(
         (width, height),
         "sums of another size"
     );
+    assert_compiled_for(world, &options.isolation);
     let camera = PinholeCamera::new(&world.camera, width, height);
     let tracer = Tracer::new(world, options.switches, options.view);
     let tiles_x = width.div_ceil(TILE_SIZE);

@@ -57,7 +57,7 @@ pub struct LightRecord {
     pub strength: DVec3,
     /// n.l (may be negative: the light is behind the surface).
     pub n_dot_l: f64,
-    /// The object that blocked the shadow ray, if one did.
+    /// The scene index of the object that blocked the shadow ray, if one did.
     pub blocked_by: Option<usize>,
     /// Whether a shadow ray was cast at all.
     pub shadow_ray_cast: bool,
@@ -171,7 +171,9 @@ impl<'w> Tracer<'w> {
             View::ObjectId => self
                 .world
                 .intersect(ray, f64::INFINITY)
-                .map_or(DVec3::ZERO, |hit| object_id_colour(hit.object)),
+                .map_or(DVec3::ZERO, |hit| {
+                    object_id_colour(self.world.scene_object(hit.object))
+                }),
             View::ShadowMask => self
                 .world
                 .intersect(ray, f64::INFINITY)
@@ -243,7 +245,15 @@ impl<'w> Tracer<'w> {
             recorder.miss(depth, ray, background);
             return (Bounce::local(background), None);
         };
-        recorder.hit(depth, ray, &hit);
+        // Recorders see the scene's object index, whatever the world left out.
+        recorder.hit(
+            depth,
+            ray,
+            &SurfacePoint {
+                object: self.world.scene_object(hit.object),
+                ..hit
+            },
+        );
         let world = self.world;
         let material = &world.materials[world.objects[hit.object].material];
         let mut colour = DVec3::ZERO;
@@ -277,7 +287,9 @@ impl<'w> Tracer<'w> {
                 if n_dot_l > 0.0 {
                     if terms.shadows {
                         record.shadow_ray_cast = true;
-                        record.blocked_by = self.occluder(&hit, &sample, counts);
+                        record.blocked_by = self
+                            .occluder(&hit, &sample, counts)
+                            .map(|i| world.scene_object(i));
                     }
                     if record.blocked_by.is_none() {
                         if terms.diffuse {

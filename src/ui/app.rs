@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 use egui::util::undoer::{Settings as UndoSettings, Undoer};
 
 use crate::scene::Scene;
+use crate::trace::Isolation;
 use crate::ui::commands::{Command, Selection};
 use crate::ui::document::autosave::Autosave;
 use crate::ui::document::confirm::DiscardAction;
@@ -15,6 +16,8 @@ use crate::ui::document::files;
 use crate::ui::document::native_dialogs::{NativeDialogs, native_dialogs_available};
 use crate::ui::document::recent::RecentFiles;
 use crate::ui::screenshot::ScreenshotHook;
+use crate::ui::viewport::isolation::keep_in_range;
+use crate::ui::viewport::isolation_memory::IsolationMemory;
 use crate::ui::viewport::pixel_inspector::PixelInspection;
 use crate::ui::viewport::preview_link::PreviewLink;
 use crate::ui::viewport::preview_settings::PreviewSettings;
@@ -57,6 +60,10 @@ pub struct EditorApp {
     preview: Option<PreviewLink>,
     /// The toolbar's switches, view and overlays (editor state).
     preview_settings: PreviewSettings,
+    /// Lights muted or solo, objects hidden (editor state, remembered per file).
+    isolation: Isolation,
+    /// The isolation of every file that has some, for the next time it opens.
+    isolation_memory: IsolationMemory,
     /// The pixel under the inspector, kept current with the scene and switches.
     inspection: Option<PixelInspection>,
     export: ExportState,
@@ -96,6 +103,8 @@ impl EditorApp {
             preview_enabled: options.preview,
             preview: None,
             preview_settings: PreviewSettings::default(),
+            isolation: Isolation::NONE,
+            isolation_memory: IsolationMemory::default(),
             inspection: None,
             export: ExportState::default(),
             recent,
@@ -223,6 +232,32 @@ impl EditorApp {
         &self.preview_settings
     }
 
+    /// Lights muted or solo and objects hidden, by scene index.
+    #[must_use]
+    pub fn isolation(&self) -> &Isolation {
+        &self.isolation
+    }
+
+    /// Installs the per-file isolation memory of an earlier run (read from eframe's
+    /// storage at start-up) and brings back the open file's switches.
+    pub fn set_isolation_memory(&mut self, memory: IsolationMemory) {
+        self.isolation_memory = memory;
+        if let Some(path) = &self.path {
+            self.isolation = self.isolation_memory.recall(path);
+            keep_in_range(&mut self.isolation, &self.scene);
+        }
+    }
+
+    /// The per-file isolation memory as it would be saved now.
+    #[must_use]
+    pub fn isolation_memory(&self) -> IsolationMemory {
+        let mut memory = self.isolation_memory.clone();
+        if let Some(path) = &self.path {
+            memory.remember(path, &self.isolation);
+        }
+        memory
+    }
+
     /// The pixel inspector's contents, when open.
     #[must_use]
     pub fn inspection(&self) -> Option<&PixelInspection> {
@@ -253,6 +288,7 @@ impl EditorApp {
             self.recent.save(storage);
             self.preview_settings.save(storage);
             self.file_dialogs.save_setting(storage);
+            self.isolation_memory().save(storage);
         }
     }
 

@@ -27,6 +27,8 @@ pub use panels::inspector::trs_from_matrix;
 pub use panels::outliner::light_label;
 pub use viewport::convergence_plot::CONVERGENCE_EXPLANATION;
 pub use viewport::full_picture_marker::NOT_FULL_PICTURE;
+pub use viewport::isolation::{IsolationToggle, isolation_note};
+pub use viewport::isolation_memory::IsolationMemory;
 pub use viewport::picture::{VIEWPORT_LABEL, letterbox, pick_object};
 pub use viewport::pixel_inspector::{
     FINAL_COLOUR_LABEL, InspectedBounce, InspectedHit, InspectedLight, InspectedPixel,
@@ -100,6 +102,9 @@ pub fn run(scene: Option<PathBuf>) -> Result<(), String> {
                 )));
                 app.push(Command::SetPreferInAppFileDialog(
                     FileDialogs::stored_preference(cc.storage),
+                ));
+                app.set_isolation_memory(viewport::isolation_memory::IsolationMemory::load(
+                    cc.storage,
                 ));
             }
             if let Some(label) = std::env::var_os(SCREENSHOT_SELECT_ENV)

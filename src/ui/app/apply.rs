@@ -4,6 +4,7 @@
 use crate::ui::commands::{Command, SceneEdit, repair_selection};
 use crate::ui::document::confirm::DiscardAction;
 use crate::ui::document::file_dialog::DialogPurpose;
+use crate::ui::viewport::isolation::{IsolationAnchors, keep_in_range};
 use crate::ui::viewport::pixel_inspector::PixelInspection;
 
 use super::EditorApp;
@@ -34,18 +35,31 @@ impl EditorApp {
                     | Command::Open(_)
                     | Command::ImportLegacy(_)
             );
+            // The isolation switches follow their items through a reshuffle of this
+            // document (opening another brings that file's own switches).
+            let anchors = (!self.isolation.is_none()
+                && matches!(&command, Command::Undo | Command::Redo | Command::Edit(_)))
+            .then(|| IsolationAnchors::take(&self.scene, &self.isolation));
+            let undo = matches!(command, Command::Undo | Command::Redo);
             self.execute(command, ctx);
-            reshuffled |=
-                may_reshuffle || lists != (self.scene.objects.len(), self.scene.lights.len());
+            let lists_changed = lists != (self.scene.objects.len(), self.scene.lights.len());
+            if let Some(anchors) = anchors
+                && (undo || lists_changed)
+            {
+                self.isolation = anchors.follow(&self.scene);
+            }
+            reshuffled |= may_reshuffle || lists_changed;
         }
         repair_selection(&self.scene, &mut self.selection);
+        keep_in_range(&mut self.isolation, &self.scene);
         if let Some(inspection) = &self.inspection
-            && !inspection.is_current(&self.scene, self.preview_settings.switches)
+            && !inspection.is_current(&self.scene, self.preview_settings.switches, &self.isolation)
         {
             let pixel = inspection.pixel;
             self.inspection = Some(PixelInspection::new(
                 &self.scene,
                 self.preview_settings.switches,
+                &self.isolation,
                 pixel,
             ));
         }
@@ -100,9 +114,15 @@ impl EditorApp {
             Command::SetPreviewSettings(settings) => self.preview_settings = settings,
             Command::InspectPixel(pixel) => {
                 self.inspection = pixel.map(|pixel| {
-                    PixelInspection::new(&self.scene, self.preview_settings.switches, pixel)
+                    PixelInspection::new(
+                        &self.scene,
+                        self.preview_settings.switches,
+                        &self.isolation,
+                        pixel,
+                    )
                 });
             }
+            Command::Isolate(toggle) => toggle.apply(&mut self.isolation),
         }
     }
 

@@ -13,6 +13,7 @@ use crate::ui::document::autosave::RestoreAnswer;
 use crate::ui::document::confirm::{DiscardAction, DiscardAnswer};
 use crate::ui::document::file_dialog::{DialogOutcome, DialogPurpose};
 use crate::ui::document::files;
+use crate::ui::viewport::isolation::keep_in_range;
 
 impl EditorApp {
     /// Does `action` now, or asks first when it would drop unsaved changes.
@@ -174,6 +175,8 @@ impl EditorApp {
         match files::save_scene_to(&self.scene, path) {
             Ok(()) => {
                 self.saved = self.scene.clone();
+                // The switches stay with the scene, now under its new name.
+                self.isolation_memory = self.isolation_memory();
                 self.path = Some(path.to_owned());
                 self.recent.push(path);
                 self.message = Some(format!("Saved {}", path.display()));
@@ -190,8 +193,14 @@ impl EditorApp {
         self.request_dialog(DialogPurpose::SaveSceneAs, ctx);
     }
 
-    /// A new document: fresh undo history, nothing unsaved, selection cleared.
+    /// A new document: fresh undo history, nothing unsaved, selection cleared, the
+    /// isolation switches remembered for the file left and recalled for the file opened.
     pub(super) fn replace_scene(&mut self, scene: Scene, path: Option<PathBuf>) {
+        self.isolation_memory = self.isolation_memory();
+        self.isolation = path.as_deref().map_or(crate::trace::Isolation::NONE, |p| {
+            self.isolation_memory.recall(p)
+        });
+        keep_in_range(&mut self.isolation, &scene);
         self.saved = scene.clone();
         self.scene = scene;
         self.path = path;

@@ -55,7 +55,7 @@ impl EditorApp {
             ctx.request_repaint_after(wait);
         }
         if let Some(preview) = &mut self.preview {
-            preview.sync(&self.scene, &self.preview_settings);
+            preview.sync(&self.scene, &self.preview_settings, &self.isolation);
         }
         let title = self.title();
         if title != self.title {
@@ -159,7 +159,13 @@ impl EditorApp {
             .size_range(120.0..=420.0)
             .show(ui, |ui| {
                 panel_title_ui(ui, "Outliner");
-                outliner_ui(ui, &self.scene, &self.selection, &mut commands);
+                outliner_ui(
+                    ui,
+                    &self.scene,
+                    &self.selection,
+                    &self.isolation,
+                    &mut commands,
+                );
             });
         egui::Panel::right("inspector")
             .resizable(true)
@@ -184,6 +190,7 @@ impl EditorApp {
                 self.preview.as_ref(),
                 &self.selection,
                 &self.preview_settings,
+                &self.isolation,
                 &mut commands,
             );
         });

@@ -119,4 +119,6 @@ pub enum Command {
     SetPreviewSettings(crate::ui::viewport::preview_settings::PreviewSettings),
     /// Inspect a pixel of the scene camera's image, or close the pixel inspector (`None`).
     InspectPixel(Option<(u32, u32)>),
+    /// Mute, solo or hide (editor state, not undoable, not a scene edit).
+    Isolate(crate::ui::viewport::isolation::IsolationToggle),
 }

@@ -96,6 +96,7 @@ impl ExportState {
     pub fn options(&self, scene: &Scene, shown: &PreviewSettings) -> RenderOptions {
         let sized = self
             .settings
+            .clone()
             .unwrap_or_else(|| RenderOptions::from_scene(scene));
         let looks = if self.as_shown {
             shown.render_options(scene)
@@ -317,7 +318,7 @@ mod tests {
         state.show(&scene, None);
         state.aspect = 2.0;
         state.resize(401, 10, false);
-        let size = |s: &ExportState| s.settings.map(|o| (o.width, o.height));
+        let size = |s: &ExportState| s.settings.as_ref().map(|o| (o.width, o.height));
         assert_eq!(size(&state), Some((401, 201)));
         state.resize(10, 50, true);
         assert_eq!(size(&state), Some((100, 50)));

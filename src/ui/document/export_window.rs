@@ -89,8 +89,9 @@ fn export_ui(
 fn size_rows_ui(ui: &mut Ui, state: &mut ExportState, scene: &Scene) {
     let mut settings = state
         .settings
+        .clone()
         .unwrap_or_else(|| crate::trace::RenderOptions::from_scene(scene));
-    state.settings = Some(settings);
+    state.settings = Some(settings.clone());
     let (mut width, mut height) = (settings.width, settings.height);
     ui.label("Width");
     let width_changed = ui
@@ -121,7 +122,7 @@ fn size_rows_ui(ui: &mut Ui, state: &mut ExportState, scene: &Scene) {
     if width_changed || height_changed {
         state.resize(width, height, height_changed);
     }
-    settings = state.settings.unwrap_or(settings);
+    settings = state.settings.clone().unwrap_or(settings);
     ui.label("Samples");
     ui.add(DragValue::new(&mut settings.samples_per_pixel).range(1..=MAX_EXPORT_SAMPLES))
         .accessible_name("export samples");

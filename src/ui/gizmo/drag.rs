@@ -10,9 +10,11 @@ use glam::DVec2;
 use crate::gizmo::handles::{HandleShape, pick_handle};
 use crate::gizmo::{GizmoMode, HandleId};
 use crate::scene::{Light, Scene, Transform};
+use crate::trace::Isolation;
 use crate::ui::commands::{Command, Selection};
 use crate::ui::gizmo::edit::{DragGeometry, Grabbed, drag_edit, grab};
 use crate::ui::gizmo::hit::handle_shapes;
+use crate::ui::gizmo::lights::{dim_unlit_markers, marker_toggles_ui};
 use crate::ui::gizmo::overlay::{Part, gizmo_elements};
 use crate::ui::gizmo::paint::{paint_elements, paint_matrix_hint, paint_readout};
 use crate::ui::gizmo::projection::{ViewMapping, cone_length, sun_anchor};
@@ -62,6 +64,7 @@ pub fn gizmo_ui(
     picture: Rect,
     scene: &Scene,
     selection: &Selection,
+    isolation: &Isolation,
     commands: &mut Vec<Command>,
 ) -> bool {
     let ctx = ui.ctx().clone();
@@ -85,7 +88,8 @@ pub fn gizmo_ui(
     }
 
     let view = ViewMapping::new(scene, picture);
-    let elements = gizmo_elements(scene, selection, state.mode, &view);
+    let mut elements = gizmo_elements(scene, selection, state.mode, &view);
+    dim_unlit_markers(&mut elements, isolation);
     let shapes = handle_shapes(&elements);
     let hit_shapes: Vec<HandleShape> = shapes.iter().map(|(s, _)| *s).collect();
     // A marker or handle under the mode buttons must not take their presses.
@@ -144,6 +148,9 @@ pub fn gizmo_ui(
     let hot = dragged_handle.or_else(|| response.hover_pos().and_then(pick));
     let painter = ui.painter_at(picture);
     paint_elements(&painter, &elements, hot);
+    marker_toggles_ui(
+        ui, picture, &elements, scene, selection, isolation, commands,
+    );
     if let Selection::Object(i) = selection
         && let Some(object) = scene.objects.get(*i)
         && matches!(object.transform, Transform::Matrix(_))

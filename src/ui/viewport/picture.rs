@@ -6,9 +6,10 @@ use glam::DVec2;
 
 use crate::preview::Pass;
 use crate::scene::Scene;
-use crate::trace::{PinholeCamera, World};
+use crate::trace::{Isolation, PinholeCamera, World};
 use crate::ui::commands::{Command, Selection};
 use crate::ui::viewport::full_picture_marker::full_picture_marker_ui;
+use crate::ui::viewport::isolation::isolation_note;
 use crate::ui::viewport::pixel_inspector::inspected_pixel;
 use crate::ui::viewport::preview_link::PreviewLink;
 use crate::ui::viewport::preview_settings::PreviewSettings;
@@ -28,11 +29,11 @@ pub fn letterbox(outer: Rect, aspect: f32) -> Rect {
     Rect::from_center_size(outer.center(), size)
 }
 
-/// The object whose surface the primary ray of the pixel under `image_point` hits first.
-/// `image_point` is in the scene's output pixels; the ray goes through that pixel's centre,
-/// as the renderer's one-sample pass does.
+/// The object whose surface the primary ray of the pixel under `image_point` hits first,
+/// hidden objects left out. `image_point` is in the scene's output pixels; the ray goes
+/// through that pixel's centre, as the renderer's one-sample pass does.
 #[must_use]
-pub fn pick_object(scene: &Scene, image_point: DVec2) -> Option<usize> {
+pub fn pick_object(scene: &Scene, isolation: &Isolation, image_point: DVec2) -> Option<usize> {
     let (width, height) = (scene.camera.width, scene.camera.height);
     if !(image_point.x >= 0.0
         && image_point.y >= 0.0
@@ -41,7 +42,7 @@ pub fn pick_object(scene: &Scene, image_point: DVec2) -> Option<usize> {
     {
         return None;
     }
-    let world = World::new(scene).ok()?;
+    let world = World::isolated(scene, isolation).ok()?;
     let pixel_centre = image_point.floor() + DVec2::splat(0.5);
     crate::trace::pick(&world, width, height, pixel_centre)
 }
@@ -53,6 +54,7 @@ pub fn viewport_ui(
     preview: Option<&PreviewLink>,
     selection: &Selection,
     settings: &PreviewSettings,
+    isolation: &Isolation,
     commands: &mut Vec<Command>,
 ) {
     let full = ui.available_rect_before_wrap();
@@ -61,12 +63,14 @@ pub fn viewport_ui(
     let non_finite = preview
         .and_then(PreviewLink::frame)
         .map(|f| f.non_finite_samples);
+    let isolated = isolation_note(isolation, scene);
     let bar_height = toolbar_ui(
         ui,
         header.left_bottom(),
         full.width(),
         settings,
         non_finite,
+        isolated.as_deref(),
         commands,
     );
     let outer = Rect::from_min_max(Pos2::new(full.min.x, header.max.y + bar_height), full.max);
@@ -119,7 +123,9 @@ pub fn viewport_ui(
     let alt = ui.input(|i| i.modifiers.alt);
     let inspecting = settings.inspect || alt;
     let gizmo_took_click = !settings.inspect
-        && crate::ui::gizmo::drag::gizmo_ui(ui, &response, picture, scene, selection, commands);
+        && crate::ui::gizmo::drag::gizmo_ui(
+            ui, &response, picture, scene, selection, isolation, commands,
+        );
     if inspecting {
         let moved = alt
             && response.hovered()
@@ -140,7 +146,8 @@ pub fn viewport_ui(
         .filter(|_| response.clicked() && !inspecting && !gizmo_took_click)
     {
         let image_point = image_from_screen(picture, scene, pos);
-        let selection = pick_object(scene, image_point).map_or(Selection::None, Selection::Object);
+        let selection =
+            pick_object(scene, isolation, image_point).map_or(Selection::None, Selection::Object);
         commands.push(Command::Select(selection));
     }
 }
@@ -285,9 +292,18 @@ mod tests {
                 .world_from_object()
                 .transform_point3(inside);
             let p = camera.project(centre).unwrap();
-            assert_eq!(pick_object(&scene, p), Some(index), "{name}");
+            assert_eq!(
+                pick_object(&scene, &Isolation::NONE, p),
+                Some(index),
+                "{name}"
+            );
         }
-        assert_eq!(pick_object(&scene, DVec2::new(-1.0, 5.0)), None);
-        assert_eq!(pick_object(&scene, DVec2::new(400.0, 2.0)), None, "sky");
+        let none = Isolation::NONE;
+        assert_eq!(pick_object(&scene, &none, DVec2::new(-1.0, 5.0)), None);
+        assert_eq!(
+            pick_object(&scene, &none, DVec2::new(400.0, 2.0)),
+            None,
+            "sky"
+        );
     }
 }

@@ -11,7 +11,7 @@ use crate::preview::{
     ConvergenceCurve, Frame, MAX_PREVIEW_LONG_SIDE, Pass, PreviewRequest, PreviewWorker,
 };
 use crate::scene::Scene;
-use crate::trace::RenderOptions;
+use crate::trace::{Isolation, RenderOptions};
 use crate::ui::viewport::preview_settings::PreviewSettings;
 use crate::ui::viewport::toolbar::NAN_COLOUR;
 
@@ -66,20 +66,23 @@ impl PreviewLink {
         }
     }
 
-    /// Sends `scene` with the toolbar's switches and view to the worker if either differs
-    /// from what was last sent.
-    pub fn sync(&mut self, scene: &Scene, settings: &PreviewSettings) {
+    /// Sends `scene` with the toolbar's switches and view and the isolation switches to
+    /// the worker if any of them differs from what was last sent.
+    pub fn sync(&mut self, scene: &Scene, settings: &PreviewSettings, isolation: &Isolation) {
         let options = RenderOptions {
             switches: settings.switches,
             view: settings.view,
+            isolation: isolation.clone(),
             ..PreviewRequest::capped_options(scene, MAX_PREVIEW_LONG_SIDE)
         };
-        if self.submitted.as_ref() == Some(scene) && self.submitted_options == Some(options) {
+        if self.submitted.as_ref() == Some(scene)
+            && self.submitted_options.as_ref() == Some(&options)
+        {
             return;
         }
         self.generation += 1;
         self.submitted = Some(scene.clone());
-        self.submitted_options = Some(options);
+        self.submitted_options = Some(options.clone());
         self.worker.submit(PreviewRequest {
             generation: self.generation,
             scene: std::sync::Arc::new(scene.clone()),
@@ -153,7 +156,7 @@ impl PreviewLink {
     /// The options of the last request sent to the worker.
     #[must_use]
     pub fn submitted_options(&self) -> Option<RenderOptions> {
-        self.submitted_options
+        self.submitted_options.clone()
     }
 
     /// The generation of the last request sent.

@@ -7,6 +7,7 @@ use egui::{Align, Color32, CornerRadius, Layout, Pos2, Rect, RichText, Shape, St
 
 use crate::trace::{Term, View};
 use crate::ui::commands::Command;
+use crate::ui::viewport::isolation::IsolationToggle;
 use crate::ui::viewport::preview_settings::PreviewSettings;
 
 /// Height of one row of the toolbar; a narrow viewport wraps it onto more rows.
@@ -17,7 +18,8 @@ pub const NAN_COLOUR: Color32 = Color32::from_rgb(255, 0, 255);
 
 /// Shows the toolbar across `width` from `top_left`, wrapping onto as many rows as the
 /// width needs so every control stays reachable; pushes [`Command::SetPreviewSettings`]
-/// on a change. `non_finite` is the guard count of the frame on screen, if there is one.
+/// on a change. `non_finite` is the guard count of the frame on screen, if there is one;
+/// `isolated` says what is muted, solo or hidden, if anything is.
 /// Returns the strip's height.
 pub fn toolbar_ui(
     ui: &mut egui::Ui,
@@ -25,6 +27,7 @@ pub fn toolbar_ui(
     width: f32,
     settings: &PreviewSettings,
     non_finite: Option<u64>,
+    isolated: Option<&str>,
     commands: &mut Vec<Command>,
 ) -> f32 {
     // The background goes under the controls, but its height is known only after them.
@@ -43,6 +46,10 @@ pub fn toolbar_ui(
         .scope_builder(builder, |ui| {
             ui.spacing_mut().item_spacing = egui::vec2(4.0, 4.0);
             terms_ui(ui, &mut edited);
+            if let Some(note) = isolated {
+                ui.separator();
+                isolation_marker_ui(ui, note, commands);
+            }
             ui.separator();
             view_ui(ui, &mut edited);
             ui.separator();
@@ -74,6 +81,20 @@ pub fn toolbar_ui(
         commands.push(Command::SetPreviewSettings(edited));
     }
     rect.height()
+}
+
+/// Not the full picture: a button back to everything, then what is isolated (the button
+/// first, so a long note never pushes it out of view).
+fn isolation_marker_ui(ui: &mut egui::Ui, note: &str, commands: &mut Vec<Command>) {
+    if ui
+        .small_button("show all")
+        .on_hover_text("Unmute, unsolo and unhide everything")
+        .clicked()
+    {
+        commands.push(Command::Isolate(IsolationToggle::ShowAll));
+    }
+    ui.label(RichText::new(format!("◐ {note}")).color(crate::ui::style::ACCENT))
+        .on_hover_text("Lights muted or solo and objects hidden: not the full picture");
 }
 
 /// The NaN guard toggle and, when on, the count of the frame on screen.

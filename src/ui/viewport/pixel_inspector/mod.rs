@@ -1,15 +1,21 @@
 //! The pixel inspector: every number behind one pixel, for the ray through its centre,
 //! as the tracer's own shading code recorded it ([`inspect_pixel`]). The numbers are the
 //! tracer's [`PixelReport`] itself; this model only adds the names of the objects,
-//! materials and lights its indices point at, so the window lays out text.
+//! materials and lights its indices point at, and of the lights and objects the
+//! isolation switches leave out (shown as such, not as missing), so the window lays out
+//! text.
 
 mod window;
 
 use crate::scene::Scene;
-use crate::trace::{PixelReport, RenderOptions, TermSwitches, View, World, inspect_pixel};
+use crate::trace::{
+    Isolation, PixelReport, RenderOptions, TermSwitches, View, World, inspect_pixel,
+};
 use crate::ui::panels::outliner::light_label;
 
-pub use window::{FINAL_COLOUR_LABEL, pixel_inspector_ui, shadow_text, switches_text};
+pub use window::{
+    FINAL_COLOUR_LABEL, isolation_lines, pixel_inspector_ui, shadow_text, switches_text,
+};
 
 /// One pixel inspected in one scene with one set of switches.
 #[derive(Clone, Debug)]
@@ -18,6 +24,8 @@ pub struct PixelInspection {
     pub pixel: (u32, u32),
     /// The switches it was traced with.
     pub switches: TermSwitches,
+    /// The lights and objects left out when it was traced.
+    pub isolation: Isolation,
     /// The scene it was traced in (to notice edits).
     pub scene: Scene,
     /// The tracer's record with names resolved, or why the scene cannot be traced.
@@ -31,6 +39,10 @@ pub struct InspectedPixel {
     pub report: PixelReport,
     /// Names for each of `report.bounces`, same order.
     pub bounces: Vec<InspectedBounce>,
+    /// The lights that do not shine (muted, or not solo while others are), by label.
+    pub lights_off: Vec<String>,
+    /// The objects left out, by name.
+    pub hidden_objects: Vec<String>,
 }
 
 /// The names behind one ray of the chain.
@@ -61,10 +73,16 @@ pub struct InspectedLight {
 }
 
 impl PixelInspection {
-    /// Traces pixel `pixel` of `scene` at its own resolution with `switches`.
+    /// Traces pixel `pixel` of `scene` at its own resolution with `switches` and
+    /// `isolation`.
     #[must_use]
-    pub fn new(scene: &Scene, switches: TermSwitches, pixel: (u32, u32)) -> Self {
-        let result = World::new(scene)
+    pub fn new(
+        scene: &Scene,
+        switches: TermSwitches,
+        isolation: &Isolation,
+        pixel: (u32, u32),
+    ) -> Self {
+        let result = World::isolated(scene, isolation)
             .map_err(|e| e.to_string())
             .and_then(|world| {
                 let (width, height) = (scene.camera.width, scene.camera.height);
@@ -76,23 +94,25 @@ impl PixelInspection {
                 let options = RenderOptions {
                     switches,
                     view: View::Beauty,
+                    isolation: isolation.clone(),
                     ..RenderOptions::from_scene(scene)
                 };
                 let report = inspect_pixel(&world, &options, pixel.0, pixel.1);
-                Ok(resolve(&world, scene, report))
+                Ok(resolve(scene, isolation, report))
             });
         Self {
             pixel,
             switches,
+            isolation: isolation.clone(),
             scene: scene.clone(),
             result,
         }
     }
 
-    /// Whether this inspection still describes `scene` with `switches`.
+    /// Whether this inspection still describes `scene` with `switches` and `isolation`.
     #[must_use]
-    pub fn is_current(&self, scene: &Scene, switches: TermSwitches) -> bool {
-        self.switches == switches && self.scene == *scene
+    pub fn is_current(&self, scene: &Scene, switches: TermSwitches, isolation: &Isolation) -> bool {
+        self.switches == switches && self.isolation == *isolation && self.scene == *scene
     }
 }
 
@@ -112,36 +132,50 @@ pub fn inspected_pixel(scene: &Scene, image_point: glam::DVec2) -> Option<(u32, 
     })
 }
 
-/// Names for the indices of a report.
-fn resolve(world: &World, scene: &Scene, report: PixelReport) -> InspectedPixel {
-    let object_name = |i: usize| world.objects.get(i).map_or("?", |o| o.name.as_str());
+/// Names for the (scene) indices of a report, and for what `isolation` leaves out.
+fn resolve(scene: &Scene, isolation: &Isolation, report: PixelReport) -> InspectedPixel {
+    let object_name = |i: usize| scene.objects.get(i).map_or("?", |o| o.name.as_str());
+    let label = |i: usize| {
+        scene
+            .lights
+            .get(i)
+            .map_or_else(|| format!("light {}", i + 1), |light| light_label(light, i))
+    };
     let bounces = report
         .bounces
         .iter()
         .map(|b| InspectedBounce {
             hit: b.hit.map(|hit| InspectedHit {
                 object: object_name(hit.object).to_owned(),
-                material: world
+                material: scene
                     .objects
                     .get(hit.object)
-                    .and_then(|o| world.material_names.get(o.material))
-                    .cloned()
+                    .map(|o| o.material.clone())
                     .unwrap_or_default(),
             }),
             lights: b
                 .lights
                 .iter()
                 .map(|l| InspectedLight {
-                    label: scene.lights.get(l.scene_index).map_or_else(
-                        || format!("light {}", l.scene_index + 1),
-                        |light| light_label(light, l.scene_index),
-                    ),
+                    label: label(l.scene_index),
                     blocked_by: l.blocked_by.map(|i| object_name(i).to_owned()),
                 })
                 .collect(),
         })
         .collect();
-    InspectedPixel { report, bounces }
+    InspectedPixel {
+        report,
+        bounces,
+        lights_off: (0..scene.lights.len())
+            .filter(|&i| !isolation.is_light_lit(i))
+            .map(label)
+            .collect(),
+        hidden_objects: isolation
+            .hidden_objects
+            .iter()
+            .map(|&i| object_name(i).to_owned())
+            .collect(),
+    }
 }
 
 #[cfg(test)]
@@ -155,7 +189,8 @@ mod tests {
         let mut blocked = 0;
         for y in (0..scene.camera.height).step_by(37) {
             for x in (0..scene.camera.width).step_by(41) {
-                let inspection = PixelInspection::new(&scene, TermSwitches::ALL_ON, (x, y));
+                let inspection =
+                    PixelInspection::new(&scene, TermSwitches::ALL_ON, &Isolation::NONE, (x, y));
                 let pixel = inspection.result.unwrap();
                 assert_eq!(pixel.bounces.len(), pixel.report.bounces.len());
                 for (bounce, names) in pixel.report.bounces.iter().zip(&pixel.bounces) {
@@ -180,10 +215,11 @@ mod tests {
     #[test]
     fn a_pixel_outside_the_image_or_a_broken_scene_is_an_error_not_a_panic() {
         let mut scene = crate::ui::files::default_scene();
-        let outside = PixelInspection::new(&scene, TermSwitches::ALL_ON, (10_000, 0));
+        let none = Isolation::NONE;
+        let outside = PixelInspection::new(&scene, TermSwitches::ALL_ON, &none, (10_000, 0));
         assert!(outside.result.unwrap_err().contains("outside"));
         scene.objects[0].material = "missing".to_owned();
-        let broken = PixelInspection::new(&scene, TermSwitches::ALL_ON, (1, 1));
+        let broken = PixelInspection::new(&scene, TermSwitches::ALL_ON, &none, (1, 1));
         assert!(broken.result.is_err());
     }
 }

@@ -67,6 +67,9 @@ pub fn switches_text(switches: TermSwitches) -> String {
 }
 
 fn pixel_ui(ui: &mut egui::Ui, pixel: &InspectedPixel) {
+    for line in isolation_lines(pixel) {
+        ui.label(RichText::new(line).color(crate::ui::style::ACCENT));
+    }
     let report = &pixel.report;
     egui::ScrollArea::vertical()
         .max_height(380.0)
@@ -165,6 +168,26 @@ fn light_ui(ui: &mut egui::Ui, light: &LightRecord, names: &InspectedLight, dept
             number_row_ui(ui, "diffuse", colour_text(light.diffuse));
             number_row_ui(ui, "specular", colour_text(light.specular));
         });
+}
+
+/// What the isolation switches leave out of every bounce, one line each:
+/// "off (muted or not solo): Point light 2" and "hidden (rays pass through): red ball".
+#[must_use]
+pub fn isolation_lines(pixel: &InspectedPixel) -> Vec<String> {
+    let mut lines = Vec::new();
+    if !pixel.lights_off.is_empty() {
+        lines.push(format!(
+            "off (muted or not solo): {}",
+            pixel.lights_off.join(", ")
+        ));
+    }
+    if !pixel.hidden_objects.is_empty() {
+        lines.push(format!(
+            "hidden (rays pass through): {}",
+            pixel.hidden_objects.join(", ")
+        ));
+    }
+    lines
 }
 
 /// "blocked by red ball", "cast, reaches the light", "not cast".
