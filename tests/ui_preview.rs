@@ -5,9 +5,8 @@
 mod editor_harness;
 
 use std::path::PathBuf;
-use std::time::{Duration, Instant};
 
-use editor_harness::{click_at, editor_harness};
+use editor_harness::{click_at, editor_harness, step_until};
 use egui::{Event, Modifiers, PointerButton, Pos2, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -48,17 +47,6 @@ fn harness_sized(name: &str, size: Vec2) -> Harness<'static, EditorApp> {
     harness.run_ok();
     assert_eq!(harness.state().scene(), &small_scene());
     harness
-}
-
-/// Steps the harness until `done` holds, sleeping between steps (bounded).
-fn step_until(harness: &mut Harness<'_, EditorApp>, what: &str, done: impl Fn(&EditorApp) -> bool) {
-    let deadline = Instant::now() + Duration::from_secs(120);
-    while !done(harness.state()) {
-        assert!(Instant::now() < deadline, "timed out waiting for {what}");
-        std::thread::sleep(Duration::from_millis(10));
-        harness.step();
-    }
-    harness.run_ok();
 }
 
 /// Waits until the final frame of the newest request is on screen.

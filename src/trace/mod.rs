@@ -5,6 +5,7 @@ pub mod adaptive;
 pub mod bounds;
 pub mod bvh;
 pub mod camera;
+pub mod depth_view;
 pub mod image;
 pub mod inspect;
 pub mod isolation;

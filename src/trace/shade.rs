@@ -16,6 +16,7 @@
 use glam::DVec3;
 use smallvec::SmallVec;
 
+use super::depth_view::DepthRange;
 use super::ray::Ray;
 use super::spawn::{spawn_ray, spawn_ray_to};
 use super::terms::{ActiveTerms, Term, TermSwitches, View};
@@ -117,6 +118,8 @@ pub struct Tracer<'w> {
     primary: ActiveTerms,
     secondary: ActiveTerms,
     view: View,
+    /// The depth view's grey scale, found once per render.
+    depth_range: Option<DepthRange>,
 }
 
 impl<'w> Tracer<'w> {
@@ -133,6 +136,9 @@ impl<'w> Tracer<'w> {
             primary: switches.primary(),
             secondary: switches.secondary(),
             view,
+            depth_range: (view == View::Depth)
+                .then(|| DepthRange::visible(world))
+                .flatten(),
         }
     }
 
@@ -160,7 +166,7 @@ impl<'w> Tracer<'w> {
                 .world
                 .intersect(ray, f64::INFINITY)
                 .map_or(DVec3::ZERO, |hit| {
-                    DVec3::splat(1.0 / (1.0 + hit.t / self.world.view_distance))
+                    DVec3::splat(self.depth_range.map_or(1.0, |range| range.grey(hit.t)))
                 }),
             View::ObjectId => self
                 .world

@@ -12,7 +12,9 @@ use crate::ui::compare::CompareSession;
 use crate::ui::document::autosave::Autosave;
 use crate::ui::document::confirm::DiscardAction;
 use crate::ui::document::export::ExportState;
+use crate::ui::document::file_dialog::FileDialogs;
 use crate::ui::document::files;
+use crate::ui::document::native_dialogs::{NativeDialogs, native_dialogs_available};
 use crate::ui::document::recent::RecentFiles;
 use crate::ui::screenshot::ScreenshotHook;
 use crate::ui::viewport::isolation::keep_in_range;
@@ -38,6 +40,10 @@ pub struct EditorOptions {
     pub screenshot_final: bool,
     /// Where unsaved work is kept for crash recovery (none: no autosave).
     pub recovery: Option<crate::recovery::RecoveryStore>,
+    /// Whether native file dialogs may be used (tests make them unavailable).
+    pub native_dialogs: NativeDialogs,
+    /// Where file dialogs open for a scene without a folder (the working folder if none).
+    pub dialog_folder: Option<PathBuf>,
 }
 
 /// The editor.
@@ -66,7 +72,13 @@ pub struct EditorApp {
     compare: CompareSession,
     recent: RecentFiles,
     pending: Option<DiscardAction>,
+    /// An action to do once the Save As dialog has saved the scene ("Save" in the
+    /// unsaved-changes question of an untitled scene).
+    after_save: Option<DiscardAction>,
+    file_dialogs: FileDialogs,
     error: Option<String>,
+    /// Something the user should know that is not a failure (an import's warnings).
+    warning: Option<String>,
     message: Option<String>,
     show_help: bool,
     focus_name: bool,
@@ -101,7 +113,16 @@ impl EditorApp {
             compare: CompareSession::default(),
             recent,
             pending: None,
+            after_save: None,
+            file_dialogs: FileDialogs::new(
+                match options.native_dialogs {
+                    NativeDialogs::Detect => native_dialogs_available(),
+                    NativeDialogs::Unavailable => false,
+                },
+                options.dialog_folder,
+            ),
             error: None,
+            warning: None,
             message: None,
             show_help: false,
             focus_name: false,
@@ -148,10 +169,40 @@ impl EditorApp {
         self.scene != self.saved
     }
 
+    /// Whether Undo would do something (an edit was made since the scene was opened).
+    #[must_use]
+    pub fn can_undo(&self) -> bool {
+        self.undoer.has_undo(&self.scene)
+    }
+
     /// The error shown in the error area, if any.
     #[must_use]
     pub fn error(&self) -> Option<&str> {
         self.error.as_deref()
+    }
+
+    /// The warning shown in the warning area, if any.
+    #[must_use]
+    pub fn warning(&self) -> Option<&str> {
+        self.warning.as_deref()
+    }
+
+    /// The last autosave error, while autosave keeps failing.
+    #[must_use]
+    pub fn autosave_error(&self) -> Option<&str> {
+        self.autosave.error.as_deref()
+    }
+
+    /// Whether the editor has let the window close (after Quit was answered).
+    #[must_use]
+    pub fn is_closing(&self) -> bool {
+        self.allow_close
+    }
+
+    /// The file dialogs (which one is open, the in-app preference).
+    #[must_use]
+    pub fn file_dialogs(&self) -> &FileDialogs {
+        &self.file_dialogs
     }
 
     /// The action waiting for a "discard unsaved changes?" answer.
@@ -246,6 +297,7 @@ impl EditorApp {
         if self.screenshot.is_none() {
             self.recent.save(storage);
             self.preview_settings.save(storage);
+            self.file_dialogs.save_setting(storage);
             self.isolation_memory().save(storage);
         }
     }

@@ -3,6 +3,7 @@
 
 use crate::ui::commands::{Command, SceneEdit, repair_selection};
 use crate::ui::document::confirm::DiscardAction;
+use crate::ui::document::file_dialog::DialogPurpose;
 use crate::ui::viewport::isolation::{IsolationAnchors, keep_in_range};
 use crate::ui::viewport::pixel_inspector::PixelInspection;
 
@@ -91,17 +92,24 @@ impl EditorApp {
             Command::ImportLegacy(path) => self.guard(DiscardAction::Import(path), ctx),
             Command::Quit => self.guard(DiscardAction::Quit, ctx),
             Command::Save => match self.path.clone() {
-                Some(path) => self.save_as(&path),
-                None => self.save_as_dialog(),
+                Some(path) => {
+                    self.save_as(&path);
+                }
+                None => self.save_as_dialog(ctx),
             },
-            Command::SaveAsDialog => self.save_as_dialog(),
-            Command::SaveAs(path) => self.save_as(&path),
+            Command::SaveAsDialog => self.save_as_dialog(ctx),
+            Command::SaveAs(path) => {
+                self.save_as(&path);
+            }
             Command::ShowExport => {
                 let default = self.path.as_ref().map(|p| p.with_extension("png"));
                 self.export.show(&self.scene, default);
             }
             Command::ShowHelp => self.show_help = !self.show_help,
+            Command::BrowseExportPath => self.request_dialog(DialogPurpose::ExportPng, ctx),
+            Command::SetPreferInAppFileDialog(prefer) => self.file_dialogs.prefer_in_app = prefer,
             Command::DismissError => self.error = None,
+            Command::DismissWarning => self.warning = None,
             Command::FocusName => self.focus_name = true,
             Command::SetPreviewSettings(settings) => self.preview_settings = settings,
             Command::ShowCompare => self.compare.show_window(),

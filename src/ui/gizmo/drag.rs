@@ -47,6 +47,8 @@ struct GizmoState {
     mode: GizmoMode,
     drag: Option<Drag>,
     readout: Option<String>,
+    /// Where the mode buttons were last frame: presses there are theirs.
+    toolbar: Option<Rect>,
 }
 
 fn to_dvec(p: Pos2) -> DVec2 {
@@ -90,14 +92,21 @@ pub fn gizmo_ui(
     dim_unlit_markers(&mut elements, isolation);
     let shapes = handle_shapes(&elements);
     let hit_shapes: Vec<HandleShape> = shapes.iter().map(|(s, _)| *s).collect();
-    let pick = |pos: Pos2| pick_handle(to_dvec(pos), &hit_shapes).map(|k| shapes[k].1);
+    // A marker or handle under the mode buttons must not take their presses.
+    let toolbar = state.toolbar;
+    let over_toolbar = |pos: Pos2| toolbar.is_some_and(|r| r.expand(2.0).contains(pos));
+    let pick = |pos: Pos2| {
+        (!over_toolbar(pos))
+            .then(|| pick_handle(to_dvec(pos), &hit_shapes).map(|k| shapes[k].1))
+            .flatten()
+    };
 
     let modifiers = ctx.input(|i| i.modifiers);
     if response.drag_started() {
         let start = ctx
             .input(|i| i.pointer.press_origin())
             .or_else(|| response.interact_pointer_pos());
-        if let Some(start) = start {
+        if let Some(start) = start.filter(|p| !over_toolbar(*p)) {
             state.drag = start_drag(response, scene, selection, &view, modifiers, start, pick);
         }
     }
@@ -171,7 +180,9 @@ pub fn gizmo_ui(
         (None, None) => {}
     }
 
-    match gizmo_modes_ui(ui, picture, &mut state.mode) {
+    let (action, toolbar) = gizmo_modes_ui(ui, picture, &mut state.mode);
+    state.toolbar = toolbar;
+    match action {
         Some(ToolbarAction::Frame) => frame_selection(scene, selection, commands),
         None => {}
     }

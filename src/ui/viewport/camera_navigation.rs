@@ -6,7 +6,7 @@
 
 use egui::{Id, MouseWheelUnit, Pos2, Vec2};
 
-use crate::gizmo::navigate::{frame, orbit, pan, zoom};
+use crate::gizmo::navigate::{frame_in_scene, orbit, pan, zoom};
 use crate::gizmo::view::bounding_sphere;
 use crate::scene::{Camera, Light, Scene};
 use crate::ui::commands::{Command, SceneEdit, Selection};
@@ -133,7 +133,7 @@ pub fn frame_selection(scene: &Scene, selection: &Selection, commands: &mut Vec<
         && centre.is_finite()
         && radius.is_finite()
     {
-        push_camera(frame(&scene.camera, centre, radius), commands);
+        push_camera(frame_in_scene(scene, centre, radius), commands);
     }
 }
 
@@ -141,5 +141,44 @@ pub fn frame_selection(scene: &Scene, selection: &Selection, commands: &mut Vec<
 fn push_camera(camera: Camera, commands: &mut Vec<Command>) {
     if camera.position.is_finite() && camera.look_at.is_finite() {
         commands.push(Command::Edit(SceneEdit::SetCamera(camera)));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use glam::DVec3;
+
+    use super::*;
+    use crate::scene::{Object, Shape, Transform, Trs};
+
+    #[test]
+    fn frame_selection_keeps_the_eye_out_of_a_solid_where_plain_framing_would_put_it() {
+        let mut scene = crate::scene::examples::default_scene();
+        let selection = Selection::Object(1);
+        let (centre, radius) = selection_sphere(&scene, &selection).unwrap();
+        // A box around the eye that framing along the current view direction would give.
+        let blocked_eye = crate::gizmo::navigate::frame(&scene.camera, centre, radius).position;
+        let half_size = 0.5 * (blocked_eye - centre).length();
+        scene.objects.push(Object {
+            name: "wall".into(),
+            shape: Shape::Cube,
+            transform: Transform::Trs(Trs {
+                translate: blocked_eye,
+                rotate_deg: DVec3::ZERO,
+                scale: DVec3::splat(half_size),
+            }),
+            material: scene.objects[0].material.clone(),
+        });
+        let mut commands = Vec::new();
+        frame_selection(&scene, &selection, &mut commands);
+        let [Command::Edit(SceneEdit::SetCamera(camera))] = commands.as_slice() else {
+            panic!("one camera edit, got {commands:?}");
+        };
+        assert!(
+            (camera.look_at - centre).length() < 1e-9,
+            "aimed at the selection"
+        );
+        let inside_wall = (camera.position - blocked_eye).abs().max_element() < half_size;
+        assert!(!inside_wall, "eye {} is inside the box", camera.position);
     }
 }

@@ -4,6 +4,7 @@
 
 pub mod camera_navigation;
 pub mod convergence_plot;
+pub mod full_picture_marker;
 pub mod isolation;
 pub mod isolation_memory;
 pub mod picture;

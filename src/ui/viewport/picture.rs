@@ -8,11 +8,12 @@ use crate::preview::Pass;
 use crate::scene::Scene;
 use crate::trace::{Isolation, PinholeCamera, World};
 use crate::ui::commands::{Command, Selection};
+use crate::ui::viewport::full_picture_marker::full_picture_marker_ui;
 use crate::ui::viewport::isolation::isolation_note;
 use crate::ui::viewport::pixel_inspector::inspected_pixel;
 use crate::ui::viewport::preview_link::PreviewLink;
 use crate::ui::viewport::preview_settings::PreviewSettings;
-use crate::ui::viewport::toolbar::{TOOLBAR_HEIGHT, toolbar_ui};
+use crate::ui::viewport::toolbar::toolbar_ui;
 
 /// Accessible name of the picture, for tests and screen readers.
 pub const VIEWPORT_LABEL: &str = "Viewport";
@@ -58,17 +59,21 @@ pub fn viewport_ui(
 ) {
     let full = ui.available_rect_before_wrap();
     let header = Rect::from_min_size(full.min, Vec2::new(full.width(), HEADER_HEIGHT));
-    let bar = Rect::from_min_size(
-        header.left_bottom(),
-        Vec2::new(full.width(), TOOLBAR_HEIGHT),
-    );
-    let outer = Rect::from_min_max(Pos2::new(full.min.x, bar.max.y), full.max);
     header_ui(ui, header, scene);
     let non_finite = preview
         .and_then(PreviewLink::frame)
         .map(|f| f.non_finite_samples);
     let isolated = isolation_note(isolation, scene);
-    toolbar_ui(ui, bar, settings, non_finite, isolated.as_deref(), commands);
+    let bar_height = toolbar_ui(
+        ui,
+        header.left_bottom(),
+        full.width(),
+        settings,
+        non_finite,
+        isolated.as_deref(),
+        commands,
+    );
+    let outer = Rect::from_min_max(Pos2::new(full.min.x, header.max.y + bar_height), full.max);
     ui.painter()
         .rect_filled(outer, CornerRadius::ZERO, Color32::from_gray(14));
     let aspect = scene.camera.width as f32 / scene.camera.height.max(1) as f32;
@@ -108,6 +113,7 @@ pub fn viewport_ui(
         pass_badge(&painter, picture, preview);
     }
     selection_marker(&painter, picture, scene, selection);
+    full_picture_marker_ui(ui, picture, &settings.not_full_picture_reasons());
     if response.hovered() {
         ui.ctx().set_cursor_icon(egui::CursorIcon::Crosshair);
     }
@@ -158,13 +164,6 @@ fn header_ui(ui: &mut egui::Ui, header: Rect, scene: &Scene) {
         header.max.y - 0.5,
         Stroke::new(1.0, Color32::from_gray(40)),
     );
-    painter.text(
-        header.left_center() + Vec2::new(10.0, 0.0),
-        Align2::LEFT_CENTER,
-        "VIEWPORT",
-        FontId::proportional(10.0),
-        Color32::from_gray(150),
-    );
     let info = format!(
         "{} × {}  ·  {} spp  ·  depth {}",
         scene.camera.width,
@@ -172,13 +171,19 @@ fn header_ui(ui: &mut egui::Ui, header: Rect, scene: &Scene) {
         scene.render.samples_per_pixel,
         scene.render.max_depth
     );
-    painter.text(
-        header.right_center() - Vec2::new(10.0, 0.0),
-        Align2::RIGHT_CENTER,
-        info,
-        FontId::proportional(12.0),
-        Color32::from_gray(170),
+    let info = painter.layout_no_wrap(info, FontId::proportional(12.0), Color32::from_gray(170));
+    let title = painter.layout_no_wrap(
+        "VIEWPORT".to_owned(),
+        FontId::proportional(10.0),
+        Color32::from_gray(150),
     );
+    // A narrow viewport drops the title rather than print the two over each other.
+    if title.size().x + info.size().x + 40.0 <= header.width() {
+        let pos = header.left_center() + Vec2::new(10.0, -title.size().y / 2.0);
+        painter.galley(pos, title, Color32::from_gray(150));
+    }
+    let pos = header.right_center() - Vec2::new(10.0 + info.size().x, info.size().y / 2.0);
+    painter.galley(pos, info, Color32::from_gray(170));
 }
 
 /// Scene output pixels of a screen position over the picture.
