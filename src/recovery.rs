@@ -2,8 +2,17 @@
 //! recovery file in the platform's data folder (atomically), one file per running
 //! editor. The next start finds the files of editors that are no longer running and
 //! offers to restore the newest. No egui here: the editor decides when to call these.
+//!
+//! Whether an editor still runs is not guessed from a process id (ids are reused, and a
+//! dead but unreaped process still has one): each editor holds an exclusive lock on its
+//! own `.lock` file from its first write on, and the operating system releases that lock
+//! when the process ends, however it ends. A recovery file whose lock can be taken is an
+//! orphan.
 
+use std::fs::{File, OpenOptions, TryLockError};
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Arc, Mutex};
 use std::time::{SystemTime, UNIX_EPOCH};
 
 use serde::{Deserialize, Serialize};
@@ -21,11 +30,14 @@ pub struct Recovery {
     pub scene: Scene,
 }
 
-/// The recovery files of one folder, and this process's own.
+/// The recovery files of one folder, and this editor's own. Clones share the lock.
 #[derive(Clone, Debug)]
 pub struct RecoveryStore {
     folder: PathBuf,
-    pid: u32,
+    /// This editor's id, unique among editors ever started: `<pid>-<start ns>-<n>`.
+    id: String,
+    /// The lock that says "this editor is running", taken at the first write.
+    lock: Arc<Mutex<Option<HeldLock>>>,
 }
 
 /// A recovery file left by an editor that is no longer running.
@@ -37,37 +49,60 @@ pub struct Orphan {
     pub recovery: Recovery,
 }
 
+/// An exclusive lock on a file, released (and the file removed) when dropped; the
+/// operating system releases it when the process dies.
+#[derive(Debug)]
+struct HeldLock {
+    file: File,
+    path: PathBuf,
+}
+
+impl Drop for HeldLock {
+    fn drop(&mut self) {
+        let _ = self.file.unlock();
+        let _ = std::fs::remove_file(&self.path);
+    }
+}
+
 const PREFIX: &str = "recovery-";
 const SUFFIX: &str = ".ron";
+const LOCK_SUFFIX: &str = ".lock";
+
+/// Editors started by this process so far (tests start several).
+static STARTED: AtomicU64 = AtomicU64::new(0);
 
 impl RecoveryStore {
-    /// Recovery files in `folder`, this process writing `recovery-<pid>.ron`.
+    /// Recovery files in `folder`; this editor gets a fresh id.
     #[must_use]
     pub fn new(folder: PathBuf) -> Self {
+        let started_ns = SystemTime::now()
+            .duration_since(UNIX_EPOCH)
+            .map_or(0, |d| d.as_nanos());
+        let n = STARTED.fetch_add(1, Ordering::Relaxed);
         Self {
             folder,
-            pid: std::process::id(),
+            id: format!("{}-{started_ns}-{n}", std::process::id()),
+            lock: Arc::default(),
         }
     }
 
-    /// The same store as another process id would see it (for tests).
-    #[must_use]
-    pub fn with_pid(folder: PathBuf, pid: u32) -> Self {
-        Self { folder, pid }
-    }
-
-    /// This process's recovery file.
+    /// This editor's recovery file.
     #[must_use]
     pub fn own_path(&self) -> PathBuf {
-        self.folder.join(format!("{PREFIX}{}{SUFFIX}", self.pid))
+        self.folder.join(format!("{PREFIX}{}{SUFFIX}", self.id))
     }
 
-    /// Writes the unsaved scene, atomically.
+    fn lock_path(&self, id: &str) -> PathBuf {
+        self.folder.join(format!("{PREFIX}{id}{LOCK_SUFFIX}"))
+    }
+
+    /// Writes the unsaved scene, atomically (taking this editor's lock first).
     ///
     /// # Errors
     /// The I/O error (the editor shows it and keeps going).
     pub fn save(&self, scene: &Scene, source: Option<&Path>) -> std::io::Result<()> {
         std::fs::create_dir_all(&self.folder)?;
+        self.hold_lock()?;
         let recovery = Recovery {
             source: source.map(Path::to_owned),
             saved_at_unix: SystemTime::now()
@@ -80,7 +115,29 @@ impl RecoveryStore {
         write_atomically(&self.own_path(), text.as_bytes())
     }
 
-    /// Removes this process's recovery file (after a save, or on a clean exit).
+    /// Takes this editor's lock unless it holds it already.
+    fn hold_lock(&self) -> std::io::Result<()> {
+        let mut held = self.lock.lock().unwrap_or_else(|e| e.into_inner());
+        if held.is_some() {
+            return Ok(());
+        }
+        let path = self.lock_path(&self.id);
+        let file = OpenOptions::new()
+            .create(true)
+            .truncate(false)
+            .write(true)
+            .open(&path)?;
+        file.try_lock().map_err(|e| match e {
+            TryLockError::WouldBlock => {
+                std::io::Error::other(format!("{} is locked by another editor", path.display()))
+            }
+            TryLockError::Error(e) => e,
+        })?;
+        *held = Some(HeldLock { file, path });
+        Ok(())
+    }
+
+    /// Removes this editor's recovery file (after a save, or on a clean exit).
     pub fn clear(&self) {
         let _ = std::fs::remove_file(self.own_path());
     }
@@ -95,7 +152,7 @@ impl RecoveryStore {
         let mut orphans: Vec<Orphan> = entries
             .filter_map(|entry| entry.ok().map(|e| e.path()))
             .filter(|path| {
-                recovery_pid(path).is_some_and(|pid| pid != self.pid && !process_is_running(pid))
+                recovery_id(path).is_some_and(|id| id != self.id && !self.is_running(id))
             })
             .filter_map(|path| {
                 let text = read_text_file(&path).ok()?;
@@ -107,25 +164,32 @@ impl RecoveryStore {
         orphans
     }
 
+    /// Whether the editor `id` still holds its lock. Only a lock held elsewhere counts:
+    /// a missing or unreadable lock file means the file is offered rather than lost.
+    fn is_running(&self, id: &str) -> bool {
+        let Ok(file) = File::open(self.lock_path(id)) else {
+            return false;
+        };
+        match file.try_lock_shared() {
+            Ok(()) => {
+                let _ = file.unlock();
+                false
+            }
+            Err(TryLockError::WouldBlock) => true,
+            Err(TryLockError::Error(_)) => false,
+        }
+    }
+
     /// Deletes an orphan once it has been restored or declined.
     pub fn discard(orphan: &Orphan) {
         let _ = std::fs::remove_file(&orphan.path);
     }
 }
 
-/// The process id in a recovery file's name.
-fn recovery_pid(path: &Path) -> Option<u32> {
+/// The editor id in a recovery file's name.
+fn recovery_id(path: &Path) -> Option<&str> {
     let name = path.file_name()?.to_str()?;
-    name.strip_prefix(PREFIX)?
-        .strip_suffix(SUFFIX)?
-        .parse()
-        .ok()
-}
-
-/// Whether a process with this id is running (Linux: `/proc/<pid>`; elsewhere assume
-/// not, so a recovery file is offered rather than lost).
-fn process_is_running(pid: u32) -> bool {
-    cfg!(target_os = "linux") && Path::new(&format!("/proc/{pid}")).exists()
+    name.strip_prefix(PREFIX)?.strip_suffix(SUFFIX)
 }
 
 #[cfg(test)]
@@ -140,15 +204,20 @@ mod tests {
     }
 
     #[test]
-    fn a_dead_editors_file_is_offered_and_a_live_ones_is_not() {
+    fn a_running_editors_file_is_not_offered_until_its_lock_is_released() {
         let dir = folder("offer");
         let mut scene = Scene::empty();
         scene.render.max_depth = 2;
-        // A pid that cannot be running (above the kernel's pid_max).
-        let dead = RecoveryStore::with_pid(dir.clone(), u32::MAX - 1);
-        dead.save(&scene, Some(Path::new("/tmp/a.ron"))).unwrap();
+        // Another editor of this very process: its process id is ours, so only the
+        // lock can tell whether it runs.
+        let other = RecoveryStore::new(dir.clone());
+        other.save(&scene, Some(Path::new("/tmp/a.ron"))).unwrap();
         let me = RecoveryStore::new(dir.clone());
         me.save(&Scene::empty(), None).unwrap();
+        assert!(me.orphans().is_empty(), "the other editor still runs");
+
+        // It ends without clearing its file, as a crash would: the lock goes with it.
+        drop(other);
         let orphans = me.orphans();
         assert_eq!(orphans.len(), 1);
         assert_eq!(orphans[0].recovery.scene, scene);
@@ -161,6 +230,22 @@ mod tests {
         assert!(!me.own_path().exists());
         RecoveryStore::discard(&orphans[0]);
         assert!(me.orphans().is_empty());
+    }
+
+    #[test]
+    fn a_file_without_a_lock_is_offered_whatever_its_process_id() {
+        let dir = folder("pid");
+        std::fs::create_dir_all(&dir).unwrap();
+        let recovery = Recovery {
+            source: None,
+            saved_at_unix: 1,
+            scene: Scene::empty(),
+        };
+        let text = ron::ser::to_string(&recovery).unwrap();
+        // Named after a process id that runs (ours), as the pid-era files were.
+        let name = format!("{PREFIX}{}{SUFFIX}", std::process::id());
+        std::fs::write(dir.join(name), text).unwrap();
+        assert_eq!(RecoveryStore::new(dir).orphans().len(), 1);
     }
 
     #[test]

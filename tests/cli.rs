@@ -1,21 +1,11 @@
 //! The command line: `raylab render` writes PNGs with the switches and views; bad input
 //! gives a clear message and a non-zero exit, never a panic.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+mod common;
 
-fn raylab(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_raylab"))
-        .args(args)
-        .output()
-        .unwrap()
-}
+use std::path::Path;
 
-fn out_dir() -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("raylab-cli-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
+use common::cli::{out_dir, raylab};
 
 fn scene(name: &str) -> String {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -27,7 +17,7 @@ fn scene(name: &str) -> String {
 
 #[test]
 fn render_writes_a_png_of_the_asked_size_keeping_the_aspect_ratio() {
-    let out = out_dir().join("small.png");
+    let out = out_dir("cli").join("small.png");
     let result = raylab(&[
         "render",
         &scene("default.ron"),
@@ -53,7 +43,7 @@ fn render_writes_a_png_of_the_asked_size_keeping_the_aspect_ratio() {
 fn switches_and_views_match_the_library() {
     use raylab::scene::load_scene;
     use raylab::trace::{RenderOptions, RenderProgress, Term, TermSwitches, View, World, render};
-    let dir = out_dir();
+    let dir = out_dir("cli");
     let scene_path = scene("default.ron");
     let loaded = load_scene(Path::new(&scene_path)).unwrap();
     let world = World::new(&loaded).unwrap();
@@ -100,6 +90,7 @@ fn switches_and_views_match_the_library() {
             samples_per_pixel: 2,
             switches,
             view,
+            isolation: Default::default(),
         };
         let (expected, _) = render(&world, &options, &RenderProgress::default()).unwrap();
         let written = image::open(&out).unwrap().to_rgba8().into_raw();
@@ -109,7 +100,7 @@ fn switches_and_views_match_the_library() {
 
 #[test]
 fn bad_input_is_a_message_and_a_failure_exit() {
-    let out = out_dir().join("never.png");
+    let out = out_dir("cli").join("never.png");
     let out = out.to_str().unwrap();
     for (args, expect) in [
         (
@@ -153,7 +144,7 @@ fn bad_input_is_a_message_and_a_failure_exit() {
         assert!(stderr.contains(expect), "{args:?}: {stderr}");
         assert!(!stderr.contains("panicked"), "{stderr}");
     }
-    let broken = out_dir().join("broken.ron");
+    let broken = out_dir("cli").join("broken.ron");
     std::fs::write(
         &broken,
         "Scene(objects: [(shape: Sphere,, material: \"m\")])",

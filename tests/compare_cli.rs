@@ -2,26 +2,15 @@
 //! report image, legacy `.txt` scenes and PPM images; and for a wrong size, a missing
 //! file, a non-image or a 16-bit image, a clear message and a non-zero exit.
 
+mod common;
+
 #[path = "compare/shader.rs"]
 mod shader;
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::Path;
 
+use common::cli::{out_dir, raylab};
 use shader::{Bugs, lab_scene, render as render_with};
-
-fn raylab(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_raylab"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
-fn out_dir() -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("raylab-compare-cli-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
 
 fn lab_path() -> String {
     concat!(env!("CARGO_MANIFEST_DIR"), "/tests/compare/lab.ron").to_owned()
@@ -49,7 +38,7 @@ fn failure(args: &[&str]) -> String {
 
 #[test]
 fn json_has_the_fixed_fields_sorted_by_share_and_the_report_is_written() {
-    let dir = out_dir();
+    let dir = out_dir("compare-cli");
     let scene = lab_scene();
     let other = render_with(
         &scene,
@@ -108,7 +97,7 @@ fn json_has_the_fixed_fields_sorted_by_share_and_the_report_is_written() {
 
 #[test]
 fn readable_lines_without_json() {
-    let dir = out_dir();
+    let dir = out_dir("compare-cli");
     let scene = lab_scene();
     let other = render_with(
         &scene,
@@ -137,7 +126,7 @@ fn readable_lines_without_json() {
 
 #[test]
 fn a_legacy_scene_is_imported_and_its_own_render_is_identical() {
-    let dir = out_dir();
+    let dir = out_dir("compare-cli");
     let legacy = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/legacy/lit_sphere.txt");
     let ron = dir.join("lit_sphere.ron");
     assert!(
@@ -167,7 +156,7 @@ fn a_legacy_scene_is_imported_and_its_own_render_is_identical() {
 
 #[test]
 fn a_size_mismatch_names_both_sizes() {
-    let file = out_dir().join("small.png");
+    let file = out_dir("compare-cli").join("small.png");
     write_png(&file, 10, 8, &vec![[0, 0, 0]; 80]);
     let stderr = failure(&["diff", &lab_path(), path(&file)]);
     assert!(
@@ -178,7 +167,7 @@ fn a_size_mismatch_names_both_sizes() {
 
 #[test]
 fn a_missing_file_is_named() {
-    let file = out_dir().join("nowhere.png");
+    let file = out_dir("compare-cli").join("nowhere.png");
     let stderr = failure(&["diff", &lab_path(), path(&file)]);
     assert!(
         stderr.contains("cannot read") && stderr.contains("nowhere.png"),
@@ -188,14 +177,14 @@ fn a_missing_file_is_named() {
 
 #[test]
 fn a_file_that_is_not_an_image_is_named() {
-    let file = out_dir().join("notes.png");
+    let file = out_dir("compare-cli").join("notes.png");
     std::fs::write(&file, "these are not pixels").unwrap();
     let stderr = failure(&["diff", &lab_path(), path(&file)]);
     assert!(
         stderr.contains("notes.png is not a readable PNG or PPM image"),
         "{stderr}"
     );
-    let truncated = out_dir().join("truncated.png");
+    let truncated = out_dir("compare-cli").join("truncated.png");
     let mut bytes = Vec::new();
     image::RgbImage::new(120, 90)
         .write_to(
@@ -213,7 +202,7 @@ fn a_file_that_is_not_an_image_is_named() {
 
 #[test]
 fn a_sixteen_bit_image_is_refused_with_the_reason() {
-    let file = out_dir().join("deep.png");
+    let file = out_dir("compare-cli").join("deep.png");
     image::ImageBuffer::<image::Rgb<u16>, _>::new(120, 90)
         .save(&file)
         .unwrap();
@@ -223,9 +212,9 @@ fn a_sixteen_bit_image_is_refused_with_the_reason() {
 
 #[test]
 fn a_broken_scene_is_named() {
-    let file = out_dir().join("broken.ron");
+    let file = out_dir("compare-cli").join("broken.ron");
     std::fs::write(&file, "Scene(objects: [").unwrap();
-    let image = out_dir().join("any.png");
+    let image = out_dir("compare-cli").join("any.png");
     write_png(&image, 2, 2, &[[0, 0, 0]; 4]);
     let stderr = failure(&["diff", path(&file), path(&image)]);
     assert!(stderr.contains("broken.ron"), "{stderr}");

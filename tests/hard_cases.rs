@@ -243,6 +243,7 @@ fn render_with_ids(scene: &Scene) -> (Image, Image) {
         samples_per_pixel: 1,
         switches: TermSwitches::ALL_ON,
         view,
+        isolation: Default::default(),
     };
     let progress = RenderProgress::default();
     (

@@ -30,7 +30,7 @@ fn every_bounce_is_the_sum_of_its_terms_and_the_pixel_matches_the_render() {
     ] {
         let options = RenderOptions {
             switches,
-            ..options
+            ..options.clone()
         };
         let (image, _) = render(&world, &options, &RenderProgress::default()).unwrap();
         let mut mirrors_seen = 0;

@@ -1,15 +1,111 @@
 //! The NaN/infinity guard: the renderer counts the samples that came out non-finite and
-//! lists their pixels (the editor's guard view paints them). On every example scene, for
-//! every view and a few term switches, the list stays empty.
+//! lists their pixels (the editor's guard view paints them), and `raylab render` reports
+//! them with a non-zero exit. A scene that really makes one is caught; a light whose
+//! strength overflows is refused by name; on every example scene, for every view and a
+//! few term switches, the list stays empty.
+
+mod common;
 
 use std::path::Path;
 use std::time::Duration;
 
+use common::cli::{out_dir, raylab};
 use raylab::preview::{PreviewRequest, PreviewWorker};
-use raylab::scene::load_scene;
+use raylab::scene::{load_scene, parse_scene};
 use raylab::trace::{
     RenderOptions, RenderProgress, Term, TermSwitches, View, World, render_samples,
 };
+
+/// A 33 x 33 view of a unit sphere with a point light 1e-7 above the surface point under
+/// the centre pixel: each of colour and intensity is finite and so is their product, but
+/// divided by d^2 = 1e-14 the light's strength there is infinite.
+const LIGHT_ON_THE_SURFACE: &str = r#"
+Scene(
+    camera: (position: (0.0, 0.0, 5.0), look_at: (0.0, 0.0, 0.0), fov_deg: 40.0,
+             width: 33, height: 33),
+    render: (samples_per_pixel: 1),
+    materials: { "white": (ambient: (0.1, 0.1, 0.1), diffuse: (0.8, 0.8, 0.8)) },
+    objects: [(shape: Sphere, material: "white")],
+    lights: [
+        Ambient(colour: (1.0, 1.0, 1.0)),
+        Point(position: (0.0, 0.0, 1.0000001), colour: (1.0, 1.0, 1.0), intensity: 1e300),
+    ],
+)
+"#;
+
+/// `raylab render SCENE -o OUT`.
+fn render(scene: &Path, out: &Path) -> std::process::Output {
+    raylab(&[
+        "render",
+        scene.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ])
+}
+
+fn temp_path(name: &str) -> std::path::PathBuf {
+    out_dir("nan-guard").join(name)
+}
+
+#[test]
+fn a_non_finite_sample_is_caught_listed_and_fails_the_command_line() {
+    let scene = parse_scene(LIGHT_ON_THE_SURFACE).unwrap();
+    let world = World::new(&scene).unwrap();
+    let options = RenderOptions::from_scene(&scene);
+    let sums = render_samples(&world, &options, 0..1, &RenderProgress::default()).unwrap();
+    assert_eq!(
+        sums.non_finite, 1,
+        "the centre sample meets an infinite light"
+    );
+    assert_eq!(sums.non_finite_pixels, vec![16 * 33 + 16]);
+    assert!(
+        sums.sums.iter().all(|s| s.is_finite()),
+        "kept out of the sums"
+    );
+
+    let path = temp_path("surface_light.ron");
+    std::fs::write(&path, LIGHT_ON_THE_SURFACE).unwrap();
+    let out = temp_path("surface_light.png");
+    let result = render(&path, &out);
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    assert!(!result.status.success(), "{stderr}");
+    assert!(
+        stderr.contains("1 pixels had non-finite samples") && stderr.contains("x 16, y 16"),
+        "{stderr}"
+    );
+    assert!(out.exists(), "the image is written to be looked at");
+
+    // The same scene with the light a little higher renders cleanly and exits 0.
+    let fine = LIGHT_ON_THE_SURFACE.replace("1.0000001", "1.5");
+    std::fs::write(&path, fine).unwrap();
+    let result = render(&path, &out);
+    assert!(
+        result.status.success(),
+        "{}",
+        String::from_utf8_lossy(&result.stderr)
+    );
+}
+
+#[test]
+fn a_light_whose_colour_times_intensity_overflows_is_refused_by_name() {
+    let text = LIGHT_ON_THE_SURFACE.replace("1.0000001", "3.0").replace(
+        "colour: (1.0, 1.0, 1.0), intensity: 1e300",
+        "colour: (1e10, 1.0, 1.0), intensity: 1e300",
+    );
+    let error = parse_scene(&text).and_then(|s| World::new(&s).map(|_| ()));
+    let message = error.expect_err("refused").to_string();
+    assert!(
+        message.contains("lights[1] (Point)") && message.contains("overflows"),
+        "{message}"
+    );
+    let path = temp_path("overflowing_light.ron");
+    std::fs::write(&path, &text).unwrap();
+    let out = temp_path("overflowing_light.png");
+    let result = render(&path, &out);
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    assert!(!result.status.success());
+    assert!(stderr.contains("lights[1] (Point)"), "{stderr}");
+}
 
 fn example_scenes() -> Vec<(String, raylab::scene::Scene)> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
@@ -44,6 +140,7 @@ fn no_example_scene_has_a_non_finite_sample_in_any_view() {
                     samples_per_pixel: 4,
                     switches,
                     view,
+                    isolation: Default::default(),
                 };
                 let sums =
                     render_samples(&world, &options, 0..4, &RenderProgress::default()).unwrap();

@@ -1,11 +1,12 @@
-//! The preview worker: generations, pass order, cancellation, staleness, errors.
+//! The preview worker: generations, pass order, cancellation, staleness, the bounded
+//! outbox, errors. No test here asserts a time; latencies are measured by `raylab bench`.
 
 use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
 use raylab::cli::RenderArgs;
-use raylab::preview::{Pass, PreviewRequest, PreviewWorker, Published};
+use raylab::preview::{OUTBOX_CAPACITY, Pass, PreviewRequest, PreviewWorker, Published};
 use raylab::scene::{Scene, parse_scene};
 use raylab::trace::{
     Image, RenderOptions, RenderProgress, SampleSums, Term, View, World, render, render_samples,
@@ -34,6 +35,15 @@ fn worker_with_counter() -> (PreviewWorker, Arc<AtomicUsize>) {
         counter.fetch_add(1, Ordering::SeqCst);
     }));
     (worker, wakes)
+}
+
+/// Waits (up to [`WAIT`]) until `done` holds.
+fn wait_for(mut done: impl FnMut() -> bool) {
+    let started = Instant::now();
+    while !done() {
+        assert!(started.elapsed() < WAIT, "gave up waiting");
+        std::thread::sleep(Duration::from_millis(2));
+    }
 }
 
 fn next(worker: &mut PreviewWorker) -> Published {
@@ -104,23 +114,73 @@ fn passes_arrive_coarse_first_then_full_then_samples() {
 }
 
 #[test]
-fn drain_hands_out_every_pass_in_plan_order() {
+fn drain_hands_out_passes_in_plan_order_up_to_the_final_one() {
     let (mut worker, _) = worker_with_counter();
     let scene = small_scene(320, 240, 16);
     let request = PreviewRequest::for_scene(1, scene);
     let plan = raylab::preview::plan_passes(&request.options);
     worker.submit(request);
-    let deadline = Instant::now() + WAIT;
     let mut passes = Vec::new();
-    while passes.len() < plan.len() {
-        assert!(Instant::now() < deadline, "got only {passes:?}");
-        std::thread::sleep(Duration::from_millis(5));
+    let mut final_seen = false;
+    wait_for(|| {
         for message in worker.drain() {
             assert_eq!(message.generation, 1);
-            passes.push(message.result.unwrap().pass);
+            let frame = message.result.unwrap();
+            final_seen |= frame.is_final;
+            passes.push(frame.pass);
         }
-    }
-    assert_eq!(passes, plan);
+        final_seen
+    });
+    // A slow reader may miss passes (the outbox drops the oldest), never reorder them.
+    let positions: Vec<usize> = passes
+        .iter()
+        .map(|p| {
+            plan.iter()
+                .position(|q| q == p)
+                .expect("a pass of the plan")
+        })
+        .collect();
+    assert!(positions.windows(2).all(|w| w[0] < w[1]), "{passes:?}");
+    assert_eq!(passes.last(), plan.last());
+}
+
+#[test]
+fn after_a_submit_no_frame_of_an_older_generation_can_be_taken() {
+    let (mut worker, wakes) = worker_with_counter();
+    worker.submit(PreviewRequest::for_scene(1, small_scene(320, 240, 1)));
+    // A frame of generation 1 is published and not read yet when the edit comes.
+    wait_for(|| wakes.load(Ordering::SeqCst) >= 1);
+    let mut edited = small_scene(320, 240, 1);
+    edited.render.background = glam::DVec3::new(1.0, 0.0, 0.0);
+    worker.submit(PreviewRequest::for_scene(2, edited));
+    let messages = until_final(&mut worker, 2);
+    let generations: Vec<u64> = messages.iter().map(|m| m.generation).collect();
+    assert!(generations.iter().all(|&g| g == 2), "{generations:?}");
+}
+
+#[test]
+fn an_unread_outbox_keeps_only_the_newest_frames_and_the_whole_curve() {
+    let (mut worker, wakes) = worker_with_counter();
+    let request = PreviewRequest::for_scene(1, small_scene(64, 48, 256));
+    let plan = raylab::preview::plan_passes(&request.options);
+    assert!(plan.len() > OUTBOX_CAPACITY, "{plan:?}");
+    worker.submit(request);
+    wait_for(|| wakes.load(Ordering::SeqCst) == plan.len());
+    let messages = worker.drain();
+    let passes: Vec<Pass> = messages
+        .iter()
+        .map(|m| m.result.as_ref().unwrap().pass)
+        .collect();
+    assert_eq!(passes, plan[plan.len() - OUTBOX_CAPACITY..]);
+    let last = messages.last().unwrap().result.as_ref().unwrap();
+    assert!(last.is_final);
+    // Every anti-aliasing pass (4, 8, ..., 256 samples) is on the final frame's curve.
+    let sampled = plan
+        .iter()
+        .filter(|p| matches!(p, Pass::Full { samples, .. } if *samples > 1))
+        .count();
+    assert_eq!(last.convergence.points().len(), sampled);
+    assert!(worker.drain().is_empty());
 }
 
 #[test]
@@ -191,15 +251,14 @@ fn stale_generations_are_never_published_after_a_newer_one() {
     assert!(worker.recv_timeout(Duration::from_millis(500)).is_none());
 }
 
-/// Submits a render far longer than the bounds below and waits until its first
-/// anti-aliasing pass (4 samples a pixel) is under way. Returns how long the one-sample
-/// full-resolution pass took: the pass being rendered takes about four times that.
-fn start_long_render(worker: &mut PreviewWorker, generation: u64) -> Duration {
+/// Submits a render far longer than the test and waits until its first anti-aliasing
+/// pass is under way.
+fn start_long_render(worker: &mut PreviewWorker, generation: u64) {
     worker.submit(PreviewRequest::for_scene(
         generation,
-        small_scene(2000, 1500, 1024),
+        small_scene(800, 600, 1024),
     ));
-    let one_sample = loop {
+    loop {
         let message = next(worker);
         assert_eq!(message.generation, generation);
         let frame = message.result.unwrap();
@@ -209,22 +268,16 @@ fn start_long_render(worker: &mut PreviewWorker, generation: u64) -> Duration {
                 target: 1,
             })
         {
-            break frame.elapsed;
+            break;
         }
-    };
-    let started = Instant::now();
-    while worker.pass_progress().is_none_or(|p| p <= 0.0) {
-        assert!(started.elapsed() < WAIT, "the sampling pass never started");
-        std::thread::sleep(Duration::from_millis(2));
     }
-    one_sample
+    wait_for(|| worker.pass_progress().is_some_and(|p| p > 0.0));
 }
 
 #[test]
-fn a_long_render_is_cancelled_quickly_by_a_new_submit_and_by_drop() {
+fn a_submit_or_a_drop_during_a_long_pass_ends_it_and_nothing_of_it_follows() {
     let (mut worker, _) = worker_with_counter();
-    let one_sample = start_long_render(&mut worker, 1);
-    let submitted = Instant::now();
+    start_long_render(&mut worker, 1);
     worker.submit(PreviewRequest::for_scene(2, small_scene(64, 48, 1)));
     let message = next(&mut worker);
     assert_eq!(
@@ -232,20 +285,12 @@ fn a_long_render_is_cancelled_quickly_by_a_new_submit_and_by_drop() {
         "nothing more of the cancelled render"
     );
     assert!(message.result.is_ok());
-    let took = submitted.elapsed();
-    assert!(
-        took < Duration::from_secs(10) && took < one_sample,
-        "restart took {took:?}; a one-sample pass takes {one_sample:?}"
-    );
+    assert!(worker.recv_timeout(Duration::from_millis(200)).is_none());
 
-    let one_sample = start_long_render(&mut worker, 3);
-    let dropping = Instant::now();
+    // Dropping joins the thread, which returns only once the pass has stopped (how soon
+    // is `raylab bench`'s restart latency; trace::tiles tests the one-batch bound).
+    start_long_render(&mut worker, 3);
     drop(worker);
-    let took = dropping.elapsed();
-    assert!(
-        took < Duration::from_secs(10) && took < one_sample,
-        "drop took {took:?}; a one-sample pass takes {one_sample:?}"
-    );
 }
 
 #[test]
@@ -271,8 +316,9 @@ fn cli_options(scene: &Scene, off: &[Term], solo: Option<Term>, view: View) -> R
         off: off.to_vec(),
         solo,
         view,
+        isolation: Default::default(),
     };
-    args.options(scene)
+    args.options(scene).unwrap()
 }
 
 /// Whether two images are equal pixel for pixel (exact f32 equality).
@@ -295,7 +341,7 @@ fn the_final_frame_is_bit_identical_to_the_cli_render_for_the_same_switches() {
     for (generation, (off, solo, view)) in (1..).zip(cases) {
         let options = cli_options(&scene, off, solo, view);
         let mut request = PreviewRequest::for_scene(generation, scene.clone());
-        request.options = options;
+        request.options = options.clone();
         worker.submit(request);
         let messages = until_final(&mut worker, generation);
         let last = messages.last().unwrap().result.as_ref().unwrap();
@@ -321,7 +367,7 @@ fn a_one_sample_scene_ends_on_the_cli_image_too() {
     let scene = small_scene(200, 100, 1);
     let options = cli_options(&scene, &[Term::Specular], None, View::ShadowMask);
     let mut request = PreviewRequest::for_scene(1, scene.clone());
-    request.options = options;
+    request.options = options.clone();
     worker.submit(request);
     let messages = until_final(&mut worker, 1);
     let last = messages.last().unwrap().result.as_ref().unwrap();

@@ -110,7 +110,14 @@ proptest! {
         let world = World::new(&scene).unwrap();
         let switches = TermSwitches::ALL_ON.with_solo(Term::ALL.get(solo).copied());
         for view in View::ALL {
-            let options = RenderOptions { width: 12, height: 9, samples_per_pixel: 2, switches, view };
+            let options = RenderOptions {
+                width: 12,
+                height: 9,
+                samples_per_pixel: 2,
+                switches,
+                view,
+                isolation: Default::default(),
+            };
             let sums = render_samples(&world, &options, 0..2, &RenderProgress::default()).unwrap();
             prop_assert_eq!(sums.non_finite, 0);
             prop_assert!(sums.sums.iter().all(|s| s.is_finite() && s.min_element() >= 0.0));

@@ -5,9 +5,8 @@
 mod editor_harness;
 
 use std::path::PathBuf;
-use std::time::{Duration, Instant};
 
-use editor_harness::{click_at, editor_harness};
+use editor_harness::{click_at, editor_harness, step_until};
 use egui::{Event, Modifiers, PointerButton, Pos2, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -50,17 +49,6 @@ fn harness_sized(name: &str, size: Vec2) -> Harness<'static, EditorApp> {
     harness
 }
 
-/// Steps the harness until `done` holds, sleeping between steps (bounded).
-fn step_until(harness: &mut Harness<'_, EditorApp>, what: &str, done: impl Fn(&EditorApp) -> bool) {
-    let deadline = Instant::now() + Duration::from_secs(120);
-    while !done(harness.state()) {
-        assert!(Instant::now() < deadline, "timed out waiting for {what}");
-        std::thread::sleep(Duration::from_millis(10));
-        harness.step();
-    }
-    harness.run_ok();
-}
-
 /// Waits until the final frame of the newest request is on screen.
 fn wait_for_final(harness: &mut Harness<'_, EditorApp>) {
     step_until(harness, "the final frame", |app| {
@@ -95,11 +83,16 @@ fn cli_image(scene: &Scene, off: &[Term], solo: Option<Term>, view: View) -> ray
         off: off.to_vec(),
         solo,
         view,
+        isolation: Default::default(),
     };
     let world = World::new(scene).unwrap();
-    render(&world, &args.options(scene), &RenderProgress::default())
-        .unwrap()
-        .0
+    render(
+        &world,
+        &args.options(scene).unwrap(),
+        &RenderProgress::default(),
+    )
+    .unwrap()
+    .0
 }
 
 /// The preview's final image equals the CLI's pixel for pixel (exact f32 equality).
@@ -324,45 +317,30 @@ fn an_alt_click_inspects_without_the_toggle() {
 }
 
 #[test]
-fn the_convergence_plot_has_a_point_per_pass_after_the_first() {
+fn the_convergence_plot_shows_the_estimated_error_of_each_anti_aliasing_pass() {
     let mut harness = harness("convergence");
     wait_for_final(&mut harness);
     toggle(&mut harness, "Convergence");
     assert!(harness.state().preview_settings().show_convergence);
-    harness.get_by_label("Change from previous pass");
+    harness.get_by_label("Estimated remaining error");
     // Restart so the curve follows a fresh generation from its first pass.
     toggle(&mut harness, "reflection");
     wait_for_final(&mut harness);
     let preview = harness.state().preview().unwrap();
-    let curve = preview.convergence();
-    assert_eq!(curve.generation(), Some(preview.generation()));
+    let (generation, curve) = preview.convergence().unwrap();
+    assert_eq!(generation, preview.generation());
     let passes: Vec<Pass> = curve.points().iter().map(|p| p.pass).collect();
-    // 160 x 120: coarse 1/2, then 1 sample, then 4 samples; the first has no predecessor.
+    // 160 x 120: coarse 1/2 and 1 sample have no estimate; the 4-sample pass has one.
     assert_eq!(
         passes,
-        vec![
-            Pass::Full {
-                samples: 1,
-                target: 1
-            },
-            Pass::Full {
-                samples: 4,
-                target: 4
-            },
-        ]
+        vec![Pass::Full {
+            samples: 4,
+            target: 4
+        }]
     );
-    assert!(
-        curve
-            .points()
-            .iter()
-            .all(|p| p.change.is_finite() && p.change >= 0.0)
-    );
-    assert!(
-        curve
-            .points()
-            .windows(2)
-            .all(|w| w[0].render_time <= w[1].render_time)
-    );
+    let point = curve.points()[0];
+    assert!(point.estimated_rmse.is_finite() && point.estimated_rmse > 0.0);
+    assert_eq!(point.render_time, curve.render_time(), "the last pass");
 }
 
 #[test]

@@ -8,9 +8,11 @@ pub mod plot;
 pub mod precision;
 pub mod throughput;
 
+use std::collections::BTreeMap;
+
 use serde::Serialize;
 
-pub use convergence::{CurvePoint, convergence_curves};
+pub use convergence::{CurveChecks, CurvePoint, convergence_curves, curve_checks};
 pub use crossover::{CrossoverPoint, bvh_crossover};
 pub use precision::{PrecisionCost, precision_cost};
 pub use throughput::{SceneThroughput, scene_throughput};
@@ -30,10 +32,16 @@ pub struct BenchReport {
     pub first_preview_ms: Option<f64>,
     /// Edit to first full-resolution preview frame, through the preview worker.
     pub first_full_preview_ms: Option<f64>,
+    /// Edit submitted midway through the last pass to the first frame of the edit, by the
+    /// scene's samples per pixel ("16", "4096"), through the preview worker.
+    pub restart_latency_ms: BTreeMap<String, f64>,
     /// Per example scene.
     pub scenes: Vec<SceneThroughput>,
     /// Error against time for the default scene, per strategy.
     pub curve: Vec<CurvePoint>,
+    /// The curve's progressive passes against uniform sampling, and the preview's error
+    /// estimate against the true error.
+    pub curve_checks: CurveChecks,
     /// The intersection kernel in f32 and f64.
     pub precision: PrecisionCost,
     /// Flat list against BVH for growing object counts.

@@ -13,7 +13,11 @@ const SERIES: [(&str, RGBColor); 3] = [
     ("progressive", RGBColor(60, 160, 90)),
 ];
 
-/// Draws RMSE (log scale) against render time (log scale), one line per strategy.
+/// The progressive preview's own estimate of its error, drawn dashed beside its true error.
+const ESTIMATE: (&str, RGBColor) = ("progressive, estimated", RGBColor(60, 160, 90));
+
+/// Draws RMSE (log scale) against render time (log scale), one line per strategy, and the
+/// preview's estimate of its error as a dashed line.
 ///
 /// # Errors
 /// A message when the font cannot be registered or the file cannot be written.
@@ -30,7 +34,11 @@ pub fn plot_curve(curve: &[CurvePoint], path: &Path, title: &str) -> Result<(), 
     let root = BitMapBackend::with_buffer(&mut pixels, SIZE).into_drawing_area();
     root.fill(&WHITE).map_err(|e| error(&e))?;
     let times = curve.iter().map(|p| p.time_ms.max(1e-3));
-    let errors = curve.iter().map(|p| p.rmse.max(1e-6));
+    let errors = curve
+        .iter()
+        .flat_map(|p| [Some(p.rmse), p.estimated_rmse])
+        .flatten()
+        .map(|e| e.max(1e-6));
     let (t_min, t_max) = times.fold((f64::INFINITY, 0.0f64), |(a, b), t| (a.min(t), b.max(t)));
     let (e_min, e_max) = errors.fold((f64::INFINITY, 0.0f64), |(a, b), e| (a.min(e), b.max(e)));
     let mut chart = ChartBuilder::on(&root)
@@ -46,7 +54,7 @@ pub fn plot_curve(curve: &[CurvePoint], path: &Path, title: &str) -> Result<(), 
     chart
         .configure_mesh()
         .x_desc("render time (ms)")
-        .y_desc("RMSE against the reference")
+        .y_desc("RMSE vs reference (dashed: estimate)")
         .label_style(("sans-serif", 15))
         .draw()
         .map_err(|e| error(&e))?;
@@ -73,6 +81,25 @@ pub fn plot_curve(curve: &[CurvePoint], path: &Path, title: &str) -> Result<(), 
                     .map(|p| Circle::new(p, 4, colour.filled())),
             )
             .map_err(|e| error(&e))?;
+    }
+    let estimates: Vec<(f64, f64)> = curve
+        .iter()
+        .filter_map(|p| Some((p.time_ms.max(1e-3), p.estimated_rmse?.max(1e-6))))
+        .collect();
+    if !estimates.is_empty() {
+        let (name, colour) = ESTIMATE;
+        chart
+            .draw_series(DashedLineSeries::new(
+                estimates,
+                8,
+                6,
+                colour.stroke_width(2),
+            ))
+            .map_err(|e| error(&e))?
+            .label(name)
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 8, y)], colour.stroke_width(2))
+            });
     }
     chart
         .configure_series_labels()

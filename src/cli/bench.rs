@@ -7,7 +7,7 @@ use clap::Args;
 use crate::bench::convergence::ConvergencePlan;
 use crate::bench::plot::plot_curve;
 use crate::bench::{
-    BenchReport, bvh_crossover, convergence_curves, precision_cost, scene_throughput,
+    BenchReport, bvh_crossover, convergence_curves, curve_checks, precision_cost, scene_throughput,
 };
 use crate::scene::examples::EXAMPLE_SCENES;
 use crate::scene::{Scene, load_scene, parse_scene};
@@ -126,6 +126,8 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
         std::time::Duration::from_secs(60),
     )
     .ok_or("the preview worker did not answer")?;
+    eprintln!("restart latency: an edit midway through the last pass");
+    let restart_latency_ms = restart_latency(&default_scene, if args.quick { 3 } else { 7 })?;
     eprintln!("acceleration: flat list against BVH");
     let counts: &[usize] = if args.quick {
         &[4, 16, 64]
@@ -144,12 +146,39 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
         full_frame_1spp_ms: default.frame_ms,
         first_preview_ms: Some(latency.first_frame.as_secs_f64() * 1e3),
         first_full_preview_ms: Some(latency.full_resolution.as_secs_f64() * 1e3),
+        restart_latency_ms,
         scenes,
+        curve_checks: curve_checks(&curve),
         curve,
         precision,
         bvh_crossover,
         diff_500_ms,
     })
+}
+
+/// Sample counts whose restart latency the report gives.
+const RESTART_SPP: [u32; 2] = [16, 4096];
+
+/// The default scene at 64 x 48 (small enough to reach the last pass of 4096 samples in
+/// about a second) at each of [`RESTART_SPP`]: median milliseconds from an edit midway
+/// through the last pass to the edit's first frame.
+fn restart_latency(
+    scene: &Scene,
+    runs: u32,
+) -> Result<std::collections::BTreeMap<String, f64>, String> {
+    let mut small = scene.clone();
+    small.camera.width = 64;
+    small.camera.height = 48;
+    RESTART_SPP
+        .iter()
+        .map(|&spp| {
+            small.render.samples_per_pixel = spp;
+            let timeout = std::time::Duration::from_secs(120);
+            crate::preview::measure_restart_latency(&small, runs, timeout)
+                .map(|latency| (spp.to_string(), latency.as_secs_f64() * 1e3))
+                .ok_or_else(|| format!("no restart latency measured at {spp} spp"))
+        })
+        .collect()
 }
 
 fn print_tables(report: &BenchReport) {
@@ -184,15 +213,28 @@ fn print_tables(report: &BenchReport) {
         "edit to first full-resolution preview frame: {}",
         latency(report.first_full_preview_ms)
     );
-    println!();
-    println!("| strategy | spp | time (ms) | RMSE | PSNR (dB) |");
-    println!("|---|---|---|---|---|");
-    for p in &report.curve {
+    for (spp, ms) in &report.restart_latency_ms {
         println!(
-            "| {} | {:.3} | {:.1} | {:.5} | {:.2} |",
+            "edit midway through the last pass at {spp} spp (64x48) to its first frame: {ms:.2} ms"
+        );
+    }
+    println!();
+    println!("| strategy | spp | time (ms) | RMSE | estimated RMSE | PSNR (dB) |");
+    println!("|---|---|---|---|---|---|");
+    for p in &report.curve {
+        let estimate = p
+            .estimated_rmse
+            .map_or(String::new(), |e| format!("{e:.5}"));
+        println!(
+            "| {} | {:.3} | {:.1} | {:.5} | {estimate} | {:.2} |",
             p.strategy, p.spp, p.time_ms, p.rmse, p.psnr
         );
     }
+    let checks = &report.curve_checks;
+    println!(
+        "progressive RMSE / uniform RMSE at equal spp: at most {:.3}; preview estimate / true RMSE from 4 spp: {:.2} to {:.2}",
+        checks.progressive_over_uniform, checks.estimate_over_true[0], checks.estimate_over_true[1]
+    );
     println!();
     println!("| objects | flat list (ms) | BVH (ms) | BVH / flat |");
     println!("|---|---|---|---|");

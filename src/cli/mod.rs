@@ -6,6 +6,7 @@ mod bench;
 mod diff;
 mod import;
 mod inspect;
+mod isolation;
 mod render;
 
 use std::path::PathBuf;
@@ -17,6 +18,7 @@ pub use bench::BenchArgs;
 pub use diff::DiffArgs;
 pub use import::ImportArgs;
 pub use inspect::{InspectArgs, TermArgs, inspect_text};
+pub use isolation::IsolationArgs;
 pub use render::RenderArgs;
 
 /// raylab: a Whitted-style ray tracer and scene editor.

@@ -1,14 +1,16 @@
-//! `raylab render`: a scene file to a PNG, with the term switches and debug views.
+//! `raylab render`: a scene file to a PNG, with the term and isolation switches and the
+//! debug views.
 
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use clap::Args;
 
+use super::isolation::IsolationArgs;
 use crate::preview::BackgroundJob;
 use crate::scene::Scene;
 use crate::scene::{MAX_IMAGE_SIDE, load_scene, write_atomically};
-use crate::trace::{Image, RayCounts, RenderOptions, Term, TermSwitches, View, World, render};
+use crate::trace::{RenderOptions, SampleSums, Term, TermSwitches, View, World, render_samples};
 
 /// Arguments of `raylab render`.
 #[derive(Debug, Args)]
@@ -36,12 +38,17 @@ pub struct RenderArgs {
     /// What to show: beauty, normal, depth, object-id or shadow-mask.
     #[arg(long, default_value = "beauty")]
     pub view: View,
+    /// Lights muted or solo, objects hidden.
+    #[command(flatten)]
+    pub isolation: IsolationArgs,
 }
 
 impl RenderArgs {
     /// The render options these arguments ask for, given the scene's defaults.
-    #[must_use]
-    pub fn options(&self, scene: &Scene) -> RenderOptions {
+    ///
+    /// # Errors
+    /// An isolation flag naming a light or object the scene does not have.
+    pub fn options(&self, scene: &Scene) -> Result<RenderOptions, String> {
         let mut options = RenderOptions::from_scene(scene);
         let aspect = f64::from(scene.camera.width) / f64::from(scene.camera.height);
         let side = |x: f64| (x.round() as u32).clamp(1, MAX_IMAGE_SIDE);
@@ -60,21 +67,27 @@ impl RenderArgs {
         }
         options.switches = switches.with_solo(self.solo);
         options.view = self.view;
-        options
+        options.isolation = self.isolation.isolation(scene)?;
+        Ok(options)
     }
 }
 
 /// Runs `raylab render`.
 ///
 /// # Errors
-/// A message naming what went wrong (file, scene problem, write failure).
+/// A message naming what went wrong (file, scene problem, write failure), or how many
+/// pixels had non-finite samples (the image is written all the same, those samples
+/// black, so it can be looked at).
 pub fn run(args: &RenderArgs) -> Result<(), String> {
     let scene = load_scene(&args.scene).map_err(|e| format!("{}: {e}", args.scene.display()))?;
-    let world = World::new(&scene).map_err(|e| format!("{}: {e}", args.scene.display()))?;
-    let options = args.options(&scene);
+    let options = args.options(&scene)?;
+    let world = World::isolated(&scene, &options.isolation)
+        .map_err(|e| format!("{}: {e}", args.scene.display()))?;
     let started = Instant::now();
-    let (image, rays) = render_with_progress_bar(world, options)?;
+    let sums = render_with_progress_bar(world, options.clone())?;
     let elapsed = started.elapsed();
+    let image = sums.average(options.samples_per_pixel);
+    let rays = sums.rays;
     write_atomically(&args.output, &image.png_bytes())
         .map_err(|e| format!("cannot write {}: {e}", args.output.display()))?;
     eprintln!(
@@ -87,22 +100,47 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         rays.total(),
         rays.total() as f64 / elapsed.as_secs_f64() / 1e6,
     );
-    Ok(())
+    non_finite_report(&sums)
+}
+
+/// `Ok` when every sample was finite, else a message with how many pixels (and samples)
+/// were not, which `raylab render` turns into a non-zero exit.
+///
+/// # Errors
+/// At least one sample came out NaN or infinite.
+pub fn non_finite_report(sums: &SampleSums) -> Result<(), String> {
+    if sums.non_finite == 0 {
+        return Ok(());
+    }
+    let first = sums.non_finite_pixels.first().map_or(String::new(), |&i| {
+        format!(" (first at x {}, y {})", i % sums.width, i / sums.width)
+    });
+    Err(format!(
+        "{} pixels had non-finite samples ({} samples in all){first}; they were written \
+         without those samples",
+        sums.non_finite_pixels.len(),
+        sums.non_finite
+    ))
 }
 
 /// Renders on a background job while a progress bar on stderr follows it; the bar
 /// appears only if the render takes longer than a moment, and the wait ends the moment
 /// the render does (a tiny render pays no polling delay).
 ///
+/// Returns the sums of all `options.samples_per_pixel` samples, exactly as
+/// [`crate::trace::render`] adds them, with the guard's counts.
+///
 /// # Errors
 /// The render panicked.
 pub fn render_with_progress_bar(
     world: World,
     options: RenderOptions,
-) -> Result<(Image, RayCounts), String> {
+) -> Result<SampleSums, String> {
     const SHOW_AFTER: Duration = Duration::from_millis(300);
     const TICK: Duration = Duration::from_millis(50);
-    let job = BackgroundJob::spawn("render", move |p| render(&world, &options, p), || {})?;
+    let samples = 0..options.samples_per_pixel;
+    let work = move |p: &_| render_samples(&world, &options, samples, p);
+    let job = BackgroundJob::spawn("render", work, || {})?;
     let started = Instant::now();
     let mut bar: Option<indicatif::ProgressBar> = None;
     let outcome = job.wait(TICK, |fraction| {
@@ -124,4 +162,24 @@ pub fn render_with_progress_bar(
         b.finish_and_clear();
     }
     outcome
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_report_counts_pixels_and_samples_and_names_the_first_pixel() {
+        let mut sums = SampleSums::zero(10, 4);
+        assert_eq!(non_finite_report(&sums), Ok(()));
+        sums.non_finite = 3;
+        sums.non_finite_pixels = vec![23, 31];
+        let message = non_finite_report(&sums).unwrap_err();
+        assert!(
+            message.starts_with(
+                "2 pixels had non-finite samples (3 samples in all) (first at x 3, y 2)"
+            ),
+            "{message}"
+        );
+    }
 }

@@ -13,7 +13,7 @@ use rayon::prelude::*;
 use super::channels::ChannelSpace;
 use super::recorder::{Context, SampleRecorder, Tally};
 use crate::scene::Scene;
-use crate::trace::sampling::Strata;
+use crate::trace::sampling::sample_in_pixel;
 use crate::trace::{
     Image, PinholeCamera, RayCounts, RenderProgress, TermSwitches, Tracer, View, World,
 };
@@ -122,10 +122,11 @@ pub fn render_components(
     let space = ctx.space;
     let camera = PinholeCamera::new(&world.camera, width, height);
     let spp = spp.max(1);
+    // one batch per row here
     progress
-        .tiles_total
+        .batches_total
         .store(height as usize, Ordering::Relaxed);
-    progress.tiles_done.store(0, Ordering::Relaxed);
+    progress.batches_done.store(0, Ordering::Relaxed);
     let rows: Vec<Option<Row>> = (0..height)
         .into_par_iter()
         .map(|y| {
@@ -133,7 +134,7 @@ pub fn render_components(
                 return None;
             }
             let row = render_row(&ctx, &camera, width, y, spp);
-            progress.tiles_done.fetch_add(1, Ordering::Relaxed);
+            progress.batches_done.fetch_add(1, Ordering::Relaxed);
             Some(row)
         })
         .collect();
@@ -175,7 +176,6 @@ pub fn render_components(
 
 fn render_row(ctx: &Context, camera: &PinholeCamera, width: u32, y: u32, spp: u32) -> Row {
     let tracer = Tracer::new(ctx.world, TermSwitches::ALL_ON, View::Beauty);
-    let strata = Strata::for_count(spp);
     let scale = 1.0 / f64::from(spp);
     let mut recorder = SampleRecorder::new(ctx);
     let mut row = Row {
@@ -193,7 +193,7 @@ fn render_row(ctx: &Context, camera: &PinholeCamera, width: u32, y: u32, spp: u3
         let mut sum = DVec3::ZERO;
         let mut labels = Vec::with_capacity(1);
         for index in 0..spp {
-            let point = DVec2::new(f64::from(x), f64::from(y)) + strata.sample(x, y, index);
+            let point = DVec2::new(f64::from(x), f64::from(y)) + sample_in_pixel(x, y, index, spp);
             let ray = camera.ray(point);
             recorder.start();
             let colour = tracer.trace_primary(&ray, &mut row.rays, &mut recorder);

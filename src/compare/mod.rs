@@ -34,7 +34,7 @@ pub use error::CompareError;
 pub use explanation::{Cause, ExplainedTerm, Explanation};
 pub use other_image::OtherImage;
 pub use report::{Comparison, PSNR_IDENTICAL_DB, PixelValues};
-pub use report_image::{report_png, write_report_png};
+pub use report_image::{difference_heatmap, report_png, write_report_png};
 
 use crate::scene::Scene;
 use crate::trace::{RenderProgress, World};

@@ -27,6 +27,25 @@ struct Panel {
     lines: Vec<String>,
 }
 
+/// The difference heatmap, one colour per pixel, and the number of levels shown as
+/// white (the largest difference, at least 1). The report and the editor show this.
+#[must_use]
+pub fn difference_heatmap(comparison: &Comparison) -> (Vec<[u8; 3]>, u8) {
+    let most = comparison
+        .difference
+        .iter()
+        .copied()
+        .max()
+        .unwrap_or(0)
+        .max(1);
+    let pixels = comparison
+        .difference
+        .iter()
+        .map(|&d| heat(f64::from(d) / f64::from(most)))
+        .collect();
+    (pixels, most)
+}
+
 /// A colour ramp for the heatmap: black, red, yellow, white as `t` goes 0 to 1.
 fn heat(t: f64) -> [u8; 3] {
     let t = t.clamp(0.0, 1.0) * 3.0;
@@ -76,13 +95,7 @@ fn mask_panel(comparison: &Comparison, index: usize, e: &Explanation) -> Panel {
 }
 
 fn panels(comparison: &Comparison) -> Vec<Panel> {
-    let most = comparison
-        .difference
-        .iter()
-        .copied()
-        .max()
-        .unwrap_or(0)
-        .max(1);
+    let (heatmap, most) = difference_heatmap(comparison);
     let mut panels = vec![
         Panel {
             pixels: comparison.raylab_rgb.clone(),
@@ -98,11 +111,7 @@ fn panels(comparison: &Comparison) -> Vec<Panel> {
             lines: vec![format!("read as {}", comparison.encoding.name())],
         },
         Panel {
-            pixels: comparison
-                .difference
-                .iter()
-                .map(|&d| heat(f64::from(d) / f64::from(most)))
-                .collect(),
+            pixels: heatmap,
             title: "difference".to_owned(),
             lines: vec![
                 format!("white = {most} levels (largest channel)"),

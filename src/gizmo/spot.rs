@@ -11,8 +11,9 @@ use crate::trace::Ray;
 
 /// Smallest half-angle a rim drag can set, degrees (the contract needs > 0).
 pub const MIN_ANGLE_DEG: f64 = 0.1;
-/// Largest half-angle a rim drag can set, degrees (kept under 90 so the cone is a cone).
-pub const MAX_ANGLE_DEG: f64 = 89.9;
+/// Largest half-angle a rim drag can set, degrees: all the contract takes (beyond 90 the
+/// light reaches behind itself; at 180 it lights every direction).
+pub const MAX_ANGLE_DEG: f64 = crate::scene::MAX_SPOT_ANGLE_DEG;
 
 /// Where the tip handle is.
 #[must_use]
@@ -109,7 +110,7 @@ pub fn aim_from_tip_drag(position: DVec3, length: f64, ray: &Ray) -> Option<DVec
 
 /// The half-angle a rim drag sets: the rim follows the cursor in the plane through the
 /// light that holds the axis and the rim handle's radial direction. Clamped to
-/// [`MIN_ANGLE_DEG`, `MAX_ANGLE_DEG`]; a cursor behind the light gives the maximum.
+/// [`MIN_ANGLE_DEG`, `MAX_ANGLE_DEG`]; a cursor behind the light gives an angle over 90.
 #[must_use]
 pub fn angle_from_rim_drag(
     position: DVec3,
@@ -184,15 +185,19 @@ mod tests {
     }
 
     #[test]
-    fn rim_drag_is_clamped_inside_zero_to_ninety() {
+    fn rim_drag_reaches_behind_the_light_up_to_the_contracts_widest_cone() {
         let light = DVec3::ZERO;
         let direction = -DVec3::Y;
         let radial = DVec3::X;
-        // A point above the light (behind it): the widest cone.
-        let behind = Ray::new(DVec3::new(2.0, 1.0, 5.0), -DVec3::Z);
+        // A point above the light and to the side (behind it): 135 degrees, not a cap at 90.
+        let behind = Ray::new(DVec3::new(1.0, 1.0, 5.0), -DVec3::Z);
+        let angle = angle_from_rim_drag(light, direction, radial, &behind).unwrap();
+        assert!((angle - 135.0).abs() < 1e-9, "{angle}");
+        // Straight above the light: the widest cone the contract takes.
+        let above = Ray::new(DVec3::new(0.0, 2.0, 5.0), -DVec3::Z);
         assert_eq!(
-            angle_from_rim_drag(light, direction, radial, &behind),
-            Some(MAX_ANGLE_DEG)
+            angle_from_rim_drag(light, direction, radial, &above),
+            Some(crate::scene::MAX_SPOT_ANGLE_DEG)
         );
         // A point on the axis: the narrowest.
         let on_axis = Ray::new(DVec3::new(0.0, -3.0, 5.0), -DVec3::Z);

@@ -1,74 +1,74 @@
-//! How fast the preview converges: for one generation, the change from each published
-//! pass to the one before it, against the render time spent since the edit. The editor
-//! plots it live; it needs no reference image, so it is honest about what it measures:
-//! how much each pass still changed the picture (it falls towards 0 as the image settles).
+//! How far the preview still is from converged: for every anti-aliasing pass, an estimate
+//! of the RMSE between the picture and the one infinitely many samples would give, from
+//! two halves of the pixel's samples, against the render time spent since the edit. The
+//! worker computes it as it renders (no reference image needed, no work on the UI
+//! thread); the benchmark checks it against the true error.
 
 use std::time::Duration;
 
 use glam::Vec3;
 
-use super::frame::Frame;
 use super::plan::Pass;
 use crate::trace::Image;
 
-/// One point of the curve: a pass, when it finished, and how much it changed the image.
+/// One point of the curve: a sampled pass, when it finished, and its estimated error.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ConvergencePoint {
     /// The pass.
     pub pass: Pass,
     /// Render time of the generation's passes up to and including this one.
     pub render_time: Duration,
-    /// RMSE between this pass and the previous one (displayed values: clamped to [0, 1]).
-    pub change: f64,
+    /// Estimated RMSE of this pass's displayed values (clamped to [0, 1]) against the
+    /// converged picture; see [`estimated_rmse`].
+    pub estimated_rmse: f64,
 }
 
-/// The curve of the current generation; starts over when a newer generation arrives.
-#[derive(Clone, Debug, Default)]
+/// The curve of one generation so far; every published frame carries a copy, so the
+/// newest frame alone is enough to draw it.
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct ConvergenceCurve {
-    generation: Option<u64>,
     render_time: Duration,
-    previous: Option<Image>,
     points: Vec<ConvergencePoint>,
 }
 
 impl ConvergenceCurve {
-    /// Adds a published pass of `generation`; a newer generation resets the curve, an
-    /// older one is ignored.
-    pub fn add(&mut self, generation: u64, frame: &Frame) {
-        match self.generation {
-            Some(current) if generation < current => return,
-            Some(current) if generation == current => {}
-            _ => *self = Self::default(),
-        }
-        self.generation = Some(generation);
-        self.render_time += frame.elapsed;
-        if let Some(previous) = &self.previous {
+    /// Adds a pass that took `elapsed`; it becomes a point when it has an estimate.
+    pub fn add(&mut self, pass: Pass, elapsed: Duration, estimated_rmse: Option<f64>) {
+        self.render_time += elapsed;
+        if let Some(estimated_rmse) = estimated_rmse {
             self.points.push(ConvergencePoint {
-                pass: frame.pass,
+                pass,
                 render_time: self.render_time,
-                change: rmse_nearest(&frame.image, previous),
+                estimated_rmse,
             });
         }
-        self.previous = Some(frame.image.clone());
     }
 
-    /// The generation the curve belongs to.
-    #[must_use]
-    pub fn generation(&self) -> Option<u64> {
-        self.generation
-    }
-
-    /// The points so far, in pass order (none before the second pass).
+    /// The points so far, in pass order (none before the first anti-aliasing pass).
     #[must_use]
     pub fn points(&self) -> &[ConvergencePoint] {
         &self.points
     }
 
-    /// Render time of the generation so far.
+    /// Render time of the generation so far, every pass included.
     #[must_use]
     pub fn render_time(&self) -> Duration {
         self.render_time
     }
+}
+
+/// The estimated RMSE of `all`, the mean of samples `0..all_samples` of every pixel,
+/// given `first`, the mean of the first `first_samples` of them.
+///
+/// With A the mean of the first s samples, B the mean of the other n - s and M = (s A +
+/// (n - s) B) / n, two independent estimates whose variance falls as 1 / count give
+/// E[(M - I)^2] = E[(A - M)^2] s / (n - s). For halves (s = n / 2) the estimate is the RMS
+/// of A - M, which is (A - B) / 2. Stratified halves are better than independent, so this
+/// errs on the high side; the benchmark measures by how much.
+#[must_use]
+pub fn estimated_rmse(first: &Image, first_samples: u32, all: &Image, all_samples: u32) -> f64 {
+    let rest = all_samples.saturating_sub(first_samples).max(1);
+    rmse_nearest(first, all) * (f64::from(first_samples) / f64::from(rest)).sqrt()
 }
 
 /// RMSE of the clamped values of `a` and `b` over the larger image's pixel grid, the
@@ -99,19 +99,6 @@ pub fn rmse_nearest(a: &Image, b: &Image) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::trace::RayCounts;
-
-    fn frame(pass: Pass, image: Image, ms: u64) -> Frame {
-        Frame {
-            image,
-            pass,
-            elapsed: Duration::from_millis(ms),
-            rays: RayCounts::default(),
-            is_final: false,
-            non_finite_samples: 0,
-            non_finite_pixels: Vec::new(),
-        }
-    }
 
     fn filled(width: u32, height: u32, value: f32) -> Image {
         let mut image = Image::new(width, height);
@@ -136,23 +123,75 @@ mod tests {
     }
 
     #[test]
-    fn the_curve_measures_each_pass_against_the_one_before_and_resets_on_a_new_generation() {
+    fn the_estimate_of_independent_samples_matches_their_true_error() {
+        // Pixels whose samples are independent coin flips (0 or 1, true mean 0.5): the
+        // estimate from the halves must agree with the error against 0.5.
+        let (width, n, s) = (4096u32, 16u32, 8u32);
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut flip = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 40) & 1
+        };
+        let mut first = Image::new(width, 1);
+        let mut all = Image::new(width, 1);
+        for x in 0..width as usize {
+            let samples: Vec<f32> = (0..n).map(|_| flip() as f32).collect();
+            first.pixels[x] = Vec3::splat(samples[..s as usize].iter().sum::<f32>() / s as f32);
+            all.pixels[x] = Vec3::splat(samples.iter().sum::<f32>() / n as f32);
+        }
+        let truth = rmse_nearest(&all, &filled(width, 1, 0.5));
+        let estimate = estimated_rmse(&first, s, &all, n);
+        assert!(
+            (estimate / truth - 1.0).abs() < 0.1,
+            "estimate {estimate}, true {truth}"
+        );
+        // Unequal parts are weighted: 4 of 16 samples first.
+        let mut quarter = Image::new(width, 1);
+        let mut state = 7u64;
+        let mut flip = || {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1);
+            (state >> 63) as f32
+        };
+        for x in 0..width as usize {
+            let samples: Vec<f32> = (0..n).map(|_| flip()).collect();
+            quarter.pixels[x] = Vec3::splat(samples[..4].iter().sum::<f32>() / 4.0);
+            all.pixels[x] = Vec3::splat(samples.iter().sum::<f32>() / n as f32);
+        }
+        let truth = rmse_nearest(&all, &filled(width, 1, 0.5));
+        let estimate = estimated_rmse(&quarter, 4, &all, n);
+        assert!(
+            (estimate / truth - 1.0).abs() < 0.1,
+            "estimate {estimate}, true {truth}"
+        );
+    }
+
+    #[test]
+    fn the_curve_adds_time_for_every_pass_and_a_point_for_each_estimate() {
         let mut curve = ConvergenceCurve::default();
-        curve.add(3, &frame(Pass::Coarse { divider: 2 }, filled(2, 2, 0.0), 5));
-        assert!(curve.points().is_empty());
-        let full = Pass::Full {
+        curve.add(Pass::Coarse { divider: 2 }, Duration::from_millis(5), None);
+        let one = Pass::Full {
             samples: 1,
             target: 1,
         };
-        curve.add(3, &frame(full, filled(4, 4, 0.25), 20));
-        assert_eq!(curve.points().len(), 1);
-        assert_eq!(curve.points()[0].render_time, Duration::from_millis(25));
-        assert!((curve.points()[0].change - 0.25).abs() < 1e-9);
-        curve.add(2, &frame(full, filled(4, 4, 1.0), 20));
-        assert_eq!(curve.points().len(), 1, "an older generation is ignored");
-        curve.add(4, &frame(Pass::Coarse { divider: 2 }, filled(2, 2, 0.0), 5));
-        assert_eq!(curve.generation(), Some(4));
+        curve.add(one, Duration::from_millis(20), None);
         assert!(curve.points().is_empty());
-        assert_eq!(curve.render_time(), Duration::from_millis(5));
+        let four = Pass::Full {
+            samples: 4,
+            target: 16,
+        };
+        curve.add(four, Duration::from_millis(80), Some(0.02));
+        assert_eq!(
+            curve.points(),
+            &[ConvergencePoint {
+                pass: four,
+                render_time: Duration::from_millis(105),
+                estimated_rmse: 0.02
+            }]
+        );
+        assert_eq!(curve.render_time(), Duration::from_millis(105));
     }
 }

@@ -2,6 +2,7 @@
 
 use std::time::Duration;
 
+use super::convergence::ConvergenceCurve;
 use super::plan::Pass;
 use crate::trace::{Image, RayCounts};
 
@@ -23,6 +24,11 @@ pub struct Frame {
     pub non_finite_samples: u64,
     /// Row-major indices into `image` of the pixels with such a sample, ascending.
     pub non_finite_pixels: Vec<u32>,
+    /// For an anti-aliasing pass, the estimated RMSE of `image` against the converged
+    /// picture ([`super::estimated_rmse`]); `None` for passes of one sample per pixel.
+    pub estimated_rmse: Option<f64>,
+    /// The generation's convergence curve up to and including this pass.
+    pub convergence: ConvergenceCurve,
 }
 
 /// A message from the worker, tagged with the generation of the request it answers.

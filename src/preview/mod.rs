@@ -4,9 +4,9 @@
 //! each finished pass as `(generation, frame)`. No egui types here: the UI passes a waker
 //! closure and polls [`PreviewWorker::latest`].
 //!
-//! Ordering guarantee: a frame of an older generation is never published after a frame of
-//! a newer one, and a submit cancels the running pass at its next tile boundary. A panic
-//! while rendering is published as an error and the worker waits for the next request.
+//! Ordering guarantee: once a submit returns, no frame of an older generation can be
+//! taken, and the running pass stops within one batch of samples per tile. A panic while
+//! rendering is published as an error and the worker waits for the next request.
 
 mod convergence;
 mod frame;
@@ -14,16 +14,18 @@ mod job;
 mod latency;
 mod plan;
 mod probe;
+mod progressive;
 mod request;
 mod worker;
 
-pub use convergence::{ConvergenceCurve, ConvergencePoint, rmse_nearest};
+pub use convergence::{ConvergenceCurve, ConvergencePoint, estimated_rmse, rmse_nearest};
 pub use frame::{Frame, Published};
 pub use job::{BackgroundJob, panic_message, run_caught};
-pub use latency::{PreviewLatency, measure_latency};
+pub use latency::{PreviewLatency, measure_latency, measure_restart_latency};
 pub use plan::{
     COARSE_MAX_DIVIDER, COARSE_MIN_LONG_SIDE, Pass, coarse_divider, coarse_dividers, plan_passes,
 };
 pub use probe::{Probe, ProbeWork, WorldCache};
+pub use progressive::render_plan;
 pub use request::{MAX_PREVIEW_LONG_SIDE, PreviewRequest};
-pub use worker::{PreviewWorker, Waker};
+pub use worker::{OUTBOX_CAPACITY, PreviewWorker, Waker};

@@ -91,7 +91,7 @@ pub fn plan_passes(options: &RenderOptions) -> Vec<Pass> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::trace::{TermSwitches, View};
+    use crate::trace::{Isolation, TermSwitches, View};
 
     fn options(width: u32, height: u32, samples_per_pixel: u32) -> RenderOptions {
         RenderOptions {
@@ -100,6 +100,7 @@ mod tests {
             samples_per_pixel,
             switches: TermSwitches::ALL_ON,
             view: View::Beauty,
+            isolation: Isolation::NONE,
         }
     }
 
@@ -174,5 +175,37 @@ mod tests {
                 target: 1
             }]
         );
+    }
+
+    #[test]
+    fn every_sample_prefix_the_plan_shows_covers_the_pixel_quadrants_evenly() {
+        use crate::trace::sampling::sample_in_pixel;
+        for target in [2, 4, 6, 12, 16, 48, 64, 1024, 4096] {
+            for pass in plan_passes(&options(64, 64, target)) {
+                let Pass::Full { samples, target } = pass else {
+                    continue;
+                };
+                if target == 1 {
+                    continue;
+                }
+                for (px, py) in [(0, 0), (5, 3), (63, 17), (40, 41)] {
+                    let mut quadrants = [0u32; 4];
+                    for index in 0..samples {
+                        let s = sample_in_pixel(px, py, index, target);
+                        quadrants[usize::from(s.y >= 0.5) * 2 + usize::from(s.x >= 0.5)] += 1;
+                    }
+                    let (least, most) = (quadrants.iter().min(), quadrants.iter().max());
+                    let (least, most) = (*least.unwrap(), *most.unwrap());
+                    if samples % 4 == 0 {
+                        assert!(
+                            least == most,
+                            "{samples} of {target}, pixel ({px}, {py}): {quadrants:?}"
+                        );
+                    } else {
+                        assert!(least >= samples / 4 && most <= samples / 4 + 2);
+                    }
+                }
+            }
+        }
     }
 }

@@ -1,34 +1,41 @@
 //! The worker thread: takes the newest request from a one-slot mailbox, renders its
-//! passes, and publishes each one unless a newer request has arrived meanwhile.
+//! passes, and publishes each one into a small outbox, unless a newer request has arrived
+//! meanwhile. The currency check and the publish happen under one lock, and a submit
+//! clears the outbox of older generations, so once `submit` returns nothing older can be
+//! taken. The outbox keeps at most [`OUTBOX_CAPACITY`] messages, dropping the oldest: a
+//! window that does not poll (minimised) does not buffer a whole plan, and since every
+//! frame carries its generation's convergence curve nothing is lost but older pictures.
 
-use std::sync::mpsc::{self, Receiver, Sender};
+use std::collections::VecDeque;
 use std::sync::{Arc, Condvar, Mutex, MutexGuard};
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
 use super::frame::{Frame, Published};
 use super::job::run_caught;
-use super::plan::{Pass, plan_passes};
+use super::progressive::render_plan;
 use super::request::PreviewRequest;
-use crate::trace::{Image, RayCounts, RenderOptions, RenderProgress, SampleSums, World};
-use crate::trace::{render_samples, render_samples_into};
+use crate::trace::{RenderProgress, World};
 
 /// Called after every publish, from the worker thread (the editor asks for a repaint).
 pub type Waker = Box<dyn Fn() + Send + Sync>;
 
+/// Messages the outbox holds at most before it drops the oldest.
+pub const OUTBOX_CAPACITY: usize = 4;
+
 /// Owns the worker thread; dropping it cancels the render and joins the thread.
 pub struct PreviewWorker {
     shared: Arc<Shared>,
-    published: Receiver<Published>,
     thread: Option<JoinHandle<()>>,
-    /// The newest generation handed to the UI, so it never goes back.
-    last_taken: Option<u64>,
 }
 
 /// State shared by the UI side and the thread.
 struct Shared {
     mailbox: Mutex<Mailbox>,
+    /// Wakes the thread for a request or shutdown.
     wake: Condvar,
+    /// Wakes a [`PreviewWorker::recv_timeout`] for a publish.
+    published: Condvar,
 }
 
 #[derive(Default)]
@@ -37,9 +44,18 @@ struct Mailbox {
     next: Option<PreviewRequest>,
     /// The newest generation ever submitted.
     newest: Option<u64>,
-    /// Progress of the pass being rendered, to cancel it.
+    /// Progress of the pass being rendered, to cancel it; `None` between passes.
     running: Option<Arc<RenderProgress>>,
+    /// Published messages not yet taken, oldest first, all of the newest generation.
+    outbox: VecDeque<Published>,
     shutdown: bool,
+}
+
+impl Mailbox {
+    /// Whether `generation` is still the newest request and nothing waits to replace it.
+    fn is_current(&self, generation: u64) -> bool {
+        !self.shutdown && self.next.is_none() && self.newest == Some(generation)
+    }
 }
 
 impl PreviewWorker {
@@ -52,30 +68,31 @@ impl PreviewWorker {
         let shared = Arc::new(Shared {
             mailbox: Mutex::new(Mailbox::default()),
             wake: Condvar::new(),
+            published: Condvar::new(),
         });
-        let (sender, published) = mpsc::channel();
         let thread_shared = Arc::clone(&shared);
         let thread = std::thread::Builder::new()
             .name("raylab-preview".to_owned())
-            .spawn(move || run(&thread_shared, &sender, &waker))
+            .spawn(move || run(&thread_shared, &waker))
             .expect("cannot start the preview thread");
         Self {
             shared,
-            published,
             thread: Some(thread),
-            last_taken: None,
         }
     }
 
-    /// Asks for `request` to be rendered, cancelling whatever is running at its next tile
-    /// boundary. A request older than one already submitted is ignored.
+    /// Asks for `request` to be rendered, cancelling whatever is running before its next
+    /// batch of samples and dropping unread messages of older generations. A request
+    /// older than one already submitted is ignored.
     pub fn submit(&self, request: PreviewRequest) {
         let mut mailbox = lock(&self.shared.mailbox);
         if mailbox.newest.is_some_and(|g| request.generation < g) {
             return;
         }
-        mailbox.newest = Some(request.generation);
+        let generation = request.generation;
+        mailbox.newest = Some(generation);
         mailbox.next = Some(request);
+        mailbox.outbox.retain(|m| m.generation >= generation);
         if let Some(running) = &mailbox.running {
             running.cancel();
         }
@@ -84,48 +101,40 @@ impl PreviewWorker {
 
     /// The newest message published since the last call, if any; older ones are dropped.
     pub fn latest(&mut self) -> Option<Published> {
-        let mut newest = None;
-        while let Ok(message) = self.published.try_recv() {
-            newest = Some(message);
-        }
-        self.accept(newest)
+        lock(&self.shared.mailbox).outbox.drain(..).next_back()
     }
 
-    /// Every message published since the last call, oldest first, without any older than
-    /// one already handed out (for a view that follows each pass, such as a curve).
+    /// Every message still in the outbox, oldest first (for a view that follows each
+    /// pass; at most [`OUTBOX_CAPACITY`] when the caller fell behind).
     pub fn drain(&mut self) -> Vec<Published> {
-        let mut messages = Vec::new();
-        while let Ok(message) = self.published.try_recv() {
-            if let Some(message) = self.accept(Some(message)) {
-                messages.push(message);
-            }
-        }
-        messages
+        lock(&self.shared.mailbox).outbox.drain(..).collect()
     }
 
     /// Waits up to `timeout` for the next message (for tests and headless use).
     pub fn recv_timeout(&mut self, timeout: Duration) -> Option<Published> {
-        let message = self.published.recv_timeout(timeout).ok();
-        self.accept(message)
+        let deadline = Instant::now() + timeout;
+        let mut mailbox = lock(&self.shared.mailbox);
+        loop {
+            if let Some(message) = mailbox.outbox.pop_front() {
+                return Some(message);
+            }
+            let left = deadline.checked_duration_since(Instant::now())?;
+            mailbox = self
+                .shared
+                .published
+                .wait_timeout(mailbox, left)
+                .unwrap_or_else(std::sync::PoisonError::into_inner)
+                .0;
+        }
     }
 
-    /// Fraction of the running pass done, 0 to 1; `None` when idle.
+    /// Fraction of the running pass done, 0 to 1; `None` when idle or between passes.
     #[must_use]
     pub fn pass_progress(&self) -> Option<f64> {
         lock(&self.shared.mailbox)
             .running
             .as_ref()
             .map(|p| p.fraction())
-    }
-
-    /// Passes a message on unless it is older than one already handed out.
-    fn accept(&mut self, message: Option<Published>) -> Option<Published> {
-        let message = message?;
-        if self.last_taken.is_some_and(|g| message.generation < g) {
-            return None;
-        }
-        self.last_taken = Some(message.generation);
-        Some(message)
     }
 }
 
@@ -153,27 +162,29 @@ fn lock(mutex: &Mutex<Mailbox>) -> MutexGuard<'_, Mailbox> {
 }
 
 /// The thread's loop: wait for a request, render it, repeat until shutdown.
-fn run(shared: &Shared, sender: &Sender<Published>, waker: &Waker) {
+fn run(shared: &Shared, waker: &Waker) {
     while let Some(request) = next_request(shared) {
+        let generation = request.generation;
         let publish = |result: Result<Frame, String>| {
-            if is_current(shared, request.generation) {
-                let message = Published {
-                    generation: request.generation,
-                    result,
-                };
-                if sender.send(message).is_ok() {
-                    waker();
-                }
+            if put_in_outbox(shared, Published { generation, result }) {
+                waker();
             }
         };
         // A panic in the tracer must not end the worker: report it and wait for the next
         // request (an edit may well avoid whatever caused it).
-        let outcome = run_caught("the renderer", || match World::new(&request.scene) {
-            Ok(world) => render_plan(shared, &world, &request.options, &publish),
-            Err(error) => publish(Err(error.to_string())),
+        let outcome = run_caught("the renderer", || {
+            match World::isolated(&request.scene, &request.options.isolation) {
+                Ok(world) => render_plan(
+                    &world,
+                    &request.options,
+                    &mut || start_pass(shared),
+                    &mut |frame| publish(Ok(frame)),
+                ),
+                Err(error) => publish(Err(error.to_string())),
+            }
         });
+        lock(&shared.mailbox).running = None;
         if let Err(message) = outcome {
-            lock(&shared.mailbox).running = None;
             publish(Err(message));
         }
     }
@@ -196,41 +207,20 @@ fn next_request(shared: &Shared) -> Option<PreviewRequest> {
     }
 }
 
-/// Whether `generation` is still the newest request and nothing is waiting to replace it.
-fn is_current(shared: &Shared, generation: u64) -> bool {
-    let mailbox = lock(&shared.mailbox);
-    !mailbox.shutdown && mailbox.next.is_none() && mailbox.newest == Some(generation)
-}
-
-/// Renders the passes of the plan in order; stops when one is cancelled.
-fn render_plan(
-    shared: &Shared,
-    world: &World,
-    target: &RenderOptions,
-    publish: &dyn Fn(Result<Frame, String>),
-) {
-    let passes = plan_passes(target);
-    let mut accumulated = None;
-    for (index, &pass) in passes.iter().enumerate() {
-        let Some(progress) = start_pass(shared) else {
-            return;
-        };
-        let started = Instant::now();
-        let image_and_rays = render_pass(world, target, pass, &mut accumulated, &progress);
-        lock(&shared.mailbox).running = None;
-        let Some(rendered) = image_and_rays else {
-            return;
-        };
-        publish(Ok(Frame {
-            image: rendered.image,
-            pass,
-            elapsed: started.elapsed(),
-            rays: rendered.rays,
-            is_final: index + 1 == passes.len(),
-            non_finite_samples: rendered.non_finite_samples,
-            non_finite_pixels: rendered.non_finite_pixels,
-        }));
+/// Puts `message` in the outbox if its generation is still current, under the same lock
+/// a submit takes; returns whether it went in. The pass it reports is over.
+fn put_in_outbox(shared: &Shared, message: Published) -> bool {
+    let mut mailbox = lock(&shared.mailbox);
+    mailbox.running = None;
+    if !mailbox.is_current(message.generation) {
+        return false;
     }
+    mailbox.outbox.push_back(message);
+    while mailbox.outbox.len() > OUTBOX_CAPACITY {
+        mailbox.outbox.pop_front();
+    }
+    shared.published.notify_all();
+    true
 }
 
 /// Registers a fresh progress for the next pass, unless a newer request is waiting.
@@ -242,77 +232,4 @@ fn start_pass(shared: &Shared) -> Option<Arc<RenderProgress>> {
     let progress = Arc::new(RenderProgress::default());
     mailbox.running = Some(Arc::clone(&progress));
     Some(progress)
-}
-
-/// Anti-aliasing samples summed so far at full resolution.
-struct Accumulated {
-    sums: SampleSums,
-    samples: u32,
-}
-
-/// What one pass made.
-struct Rendered {
-    image: Image,
-    /// Rays of this pass alone.
-    rays: RayCounts,
-    non_finite_samples: u64,
-    non_finite_pixels: Vec<u32>,
-}
-
-impl Rendered {
-    fn new(sums: &SampleSums, count: u32, rays: RayCounts) -> Self {
-        Self {
-            image: sums.average(count),
-            rays,
-            non_finite_samples: sums.non_finite,
-            non_finite_pixels: sums.non_finite_pixels.clone(),
-        }
-    }
-}
-
-/// Renders one pass; accumulating passes continue the sums in `accumulated` (sample by
-/// sample in index order, exactly as [`crate::trace::render`] sums them, so the final
-/// frame is bit-identical to a direct render). `None` if cancelled.
-fn render_pass(
-    world: &World,
-    target: &RenderOptions,
-    pass: Pass,
-    accumulated: &mut Option<Accumulated>,
-    progress: &RenderProgress,
-) -> Option<Rendered> {
-    match pass {
-        Pass::Coarse { .. } | Pass::Full { target: 1, .. } => {
-            let (width, height) = pass.size(target.width, target.height);
-            let options = RenderOptions {
-                width,
-                height,
-                samples_per_pixel: 1,
-                ..*target
-            };
-            let sums = render_samples(world, &options, 0..1, progress)?;
-            Some(Rendered::new(&sums, 1, sums.rays))
-        }
-        Pass::Full {
-            samples,
-            target: count,
-        } => {
-            let options = RenderOptions {
-                samples_per_pixel: count,
-                ..*target
-            };
-            let state = accumulated.get_or_insert_with(|| Accumulated {
-                sums: SampleSums::zero(options.width, options.height),
-                samples: 0,
-            });
-            let rays = render_samples_into(
-                world,
-                &options,
-                state.samples..samples,
-                &mut state.sums,
-                progress,
-            )?;
-            state.samples = samples;
-            Some(Rendered::new(&state.sums, samples, rays))
-        }
-    }
 }

@@ -21,4 +21,6 @@ pub use model::{
 };
 pub use text_file::{MAX_SCENE_FILE_BYTES, TextFileError, read_text_file};
 pub use transform::{MatrixRows, Transform, Trs, affine_from_rows, rows_from_affine};
-pub use validate::{MAX_DEPTH, MAX_IMAGE_SIDE, MAX_SPOT_ANGLE_DEG, validate};
+pub use validate::{
+    MAX_DEPTH, MAX_IMAGE_SIDE, MAX_SAMPLES_PER_PIXEL, MAX_SPOT_ANGLE_DEG, validate,
+};

@@ -49,6 +49,7 @@ pub fn validate(scene: &Scene) -> Result<(), SceneError> {
     }
     for (index, light) in scene.lights.iter().enumerate() {
         check_light(light)
+            .and_then(|()| check_light_strength(light))
             .map_err(|e| prefixed(&format!("lights[{index}] ({})", light.kind_name()), e))?;
     }
     Ok(())
@@ -248,4 +249,18 @@ fn check_intensity(intensity: f64) -> Result<(), SceneError> {
         return invalid(format!("intensity is {intensity}; it cannot be negative"));
     }
     Ok(())
+}
+
+/// A light whose colour and intensity are each finite can still have a product that is
+/// not: it would shade to infinity or NaN (and black pixels), so it is refused by name.
+fn check_light_strength(light: &Light) -> Result<(), SceneError> {
+    let strength = light.strength();
+    if strength.is_finite() {
+        return Ok(());
+    }
+    invalid(format!(
+        "colour {} * intensity {} overflows to {strength}; lower one of them",
+        light.colour(),
+        light.intensity()
+    ))
 }

@@ -1,5 +1,7 @@
 //! Adaptive sampling: a few stratified samples everywhere, then the rest of the sample
-//! budget where pixels vary. The error of a pixel's mean falls as sigma / sqrt(n); for a
+//! budget where pixels vary. Pilot and extra samples are one prefix of each pixel's
+//! sequence (`sampling::sequence_sample`), so whatever count a pixel ends with, its
+//! samples are well spread. The error of a pixel's mean falls as sigma / sqrt(n); for a
 //! fixed total, the sum of squared errors is smallest with n proportional to sigma, so
 //! flat regions keep their pilot samples and edges, shadow boundaries and highlights get
 //! the rest.
@@ -10,7 +12,7 @@ use rayon::prelude::*;
 use super::camera::PinholeCamera;
 use super::image::Image;
 use super::render::{RenderOptions, RenderProgress, trace_sample};
-use super::sampling::{Strata, sample_sequence};
+use super::sampling::sequence_sample;
 use super::shade::{RayCounts, Tracer};
 use super::world::World;
 
@@ -53,11 +55,11 @@ pub fn render_adaptive(
     adaptive: &AdaptiveOptions,
     progress: &RenderProgress,
 ) -> Option<AdaptiveRender> {
+    super::isolation::assert_compiled_for(world, &options.isolation);
     let (width, height) = (options.width, options.height);
     let camera = PinholeCamera::new(&world.camera, width, height);
     let tracer = Tracer::new(world, options.switches, options.view);
     let pilot = adaptive.pilot_spp.max(1);
-    let strata = Strata::for_count(pilot);
 
     // pilot: stratified samples in every pixel
     let (mut stats, mut rays) = rows_in_parallel(width, height, progress, |px, py, rays| {
@@ -65,7 +67,7 @@ pub fn render_adaptive(
         for i in 0..pilot {
             add_sample(
                 &mut s,
-                trace_sample(&tracer, &camera, px, py, strata.sample(px, py, i), rays),
+                trace_sample(&tracer, &camera, px, py, sequence_sample(px, py, i), rays),
             );
         }
         s
@@ -88,13 +90,13 @@ pub fn render_adaptive(
         })
         .collect();
 
-    // extra samples from a low-discrepancy sequence, so any count is well spread
+    // extra samples continue each pixel's sequence after its pilot
     let (more, more_rays) = rows_in_parallel(width, height, progress, |px, py, rays| {
         let mut s = PixelStats::default();
-        for j in 0..extra[(py * width + px) as usize] {
+        for j in pilot..pilot + extra[(py * width + px) as usize] {
             add_sample(
                 &mut s,
-                trace_sample(&tracer, &camera, px, py, sample_sequence(px, py, j), rays),
+                trace_sample(&tracer, &camera, px, py, sequence_sample(px, py, j), rays),
             );
         }
         s
@@ -185,4 +187,111 @@ fn dilated_deviation(stats: &[PixelStats], width: u32, height: u32) -> Vec<f64> 
             most
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::trace::{TermSwitches, View, render, render_samples};
+
+    fn world_and_options() -> (World, RenderOptions) {
+        let scene = crate::scene::examples::default_scene();
+        let options = RenderOptions {
+            width: 64,
+            height: 48,
+            samples_per_pixel: 1,
+            switches: TermSwitches::ALL_ON,
+            view: View::Beauty,
+            isolation: crate::trace::Isolation::NONE,
+        };
+        (World::new(&scene).unwrap(), options)
+    }
+
+    /// RMSE of the clamped values of two images of the same size.
+    fn rmse(a: &Image, b: &Image) -> f64 {
+        let clamp = |v: glam::Vec3| v.clamp(glam::Vec3::ZERO, glam::Vec3::ONE);
+        let sum: f64 = a
+            .pixels
+            .iter()
+            .zip(&b.pixels)
+            .map(|(x, y)| f64::from((clamp(*x) - clamp(*y)).length_squared()))
+            .sum();
+        (sum / (3.0 * a.pixels.len() as f64)).sqrt()
+    }
+
+    #[test]
+    fn with_no_budget_beyond_the_pilot_it_is_the_uniform_render() {
+        let (world, options) = world_and_options();
+        let adaptive = AdaptiveOptions {
+            pilot_spp: 4,
+            mean_spp: 4.0,
+            max_spp: 64,
+        };
+        let progress = RenderProgress::default();
+        let result = render_adaptive(&world, &options, &adaptive, &progress).unwrap();
+        let uniform = RenderOptions {
+            samples_per_pixel: 4,
+            ..options
+        };
+        let (image, rays) = render(&world, &uniform, &progress).unwrap();
+        assert_eq!(result.image.pixels, image.pixels);
+        assert_eq!(result.rays, rays);
+        assert_eq!(result.samples, 4 * 64 * 48);
+    }
+
+    #[test]
+    fn the_budget_is_spent_where_pixels_vary_and_beats_uniform_at_the_pilot_count() {
+        let (world, options) = world_and_options();
+        let pixels = 64.0 * 48.0;
+        let adaptive = AdaptiveOptions {
+            pilot_spp: 4,
+            mean_spp: 16.0,
+            max_spp: 256,
+        };
+        let progress = RenderProgress::default();
+        let result = render_adaptive(&world, &options, &adaptive, &progress).unwrap();
+        // Each pixel's share is rounded, so the total is the budget within half a sample a
+        // pixel.
+        let mean = result.samples as f64 / pixels;
+        assert!((mean - 16.0).abs() <= 0.5, "mean {mean} samples a pixel");
+        // The reference uses samples 256..512, disjoint from the adaptive ones.
+        let reference_options = RenderOptions {
+            samples_per_pixel: 512,
+            ..options.clone()
+        };
+        let reference = render_samples(&world, &reference_options, 256..512, &progress)
+            .unwrap()
+            .average(256);
+        let uniform = |spp| {
+            let options = RenderOptions {
+                samples_per_pixel: spp,
+                ..options.clone()
+            };
+            render(&world, &options, &progress).unwrap().0
+        };
+        let adaptive_error = rmse(&result.image, &reference);
+        let pilot_error = rmse(&uniform(4), &reference);
+        let uniform_error = rmse(&uniform(16), &reference);
+        assert!(
+            adaptive_error < 0.7 * pilot_error,
+            "adaptive {adaptive_error}, pilot alone {pilot_error}"
+        );
+        assert!(
+            adaptive_error < 1.1 * uniform_error,
+            "adaptive {adaptive_error}, uniform at the same mean {uniform_error}"
+        );
+    }
+
+    #[test]
+    fn a_cancelled_render_returns_nothing() {
+        let (world, options) = world_and_options();
+        let progress = RenderProgress::default();
+        progress.cancel();
+        let adaptive = AdaptiveOptions {
+            pilot_spp: 2,
+            mean_spp: 8.0,
+            max_spp: 32,
+        };
+        assert!(render_adaptive(&world, &options, &adaptive, &progress).is_none());
+    }
 }

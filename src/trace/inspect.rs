@@ -137,13 +137,22 @@ impl Recorder for ReportRecorder<'_> {
         let bounce = &mut self.bounces[depth as usize];
         bounce.lights.push(*record);
         // The renderer only asks whether something is in the way; the record also shows
-        // where the ray meets the blocker.
+        // where the ray meets the blocker (the record names it by its scene index).
         if let Some(shadow) = record.shadow_ray
             && let Some(blocker) = shadow.blocked_by
+            && let Some(world_index) = self
+                .world
+                .object_scene_index
+                .iter()
+                .position(|&i| i == blocker)
             && let Some(hit) = self
                 .world
-                .intersect_object(blocker, &shadow.ray, shadow.t_max)
+                .intersect_object(world_index, &shadow.ray, shadow.t_max)
         {
+            let hit = SurfacePoint {
+                object: blocker,
+                ..hit
+            };
             bounce.blocker_hits.push((record.scene_index, hit));
         }
     }
@@ -159,9 +168,14 @@ impl Recorder for ReportRecorder<'_> {
 }
 
 /// Inspects the centre of pixel `(px, py)` of an image rendered with `options` (beauty
-/// view with its term switches), through the same code path as the renderer.
+/// view with its term switches), through the same code path as the renderer. Object and
+/// light indices in the report are the scene's.
+///
+/// # Panics
+/// When `world` was compiled for other isolation switches than `options.isolation`.
 #[must_use]
 pub fn inspect_pixel(world: &World, options: &RenderOptions, px: u32, py: u32) -> PixelReport {
+    super::isolation::assert_compiled_for(world, &options.isolation);
     let camera = PinholeCamera::new(&world.camera, options.width, options.height);
     let tracer = Tracer::new(world, options.switches, super::terms::View::Beauty);
     let ray = camera.ray(DVec2::new(f64::from(px) + 0.5, f64::from(py) + 0.5));
@@ -240,12 +254,13 @@ pub fn try_inspect_pixel(
     Ok(inspect_pixel(world, options, px, py))
 }
 
-/// The object under pixel point `(x, y)` (in pixels, fractional) of a `width` x `height`
-/// image: the tracer's own primary ray, so picking is exact.
+/// The scene index of the object under pixel point `(x, y)` (in pixels, fractional) of a
+/// `width` x `height` image: the tracer's own primary ray, so picking is exact (and never
+/// finds an object the world was compiled without).
 #[must_use]
 pub fn pick(world: &World, width: u32, height: u32, point: DVec2) -> Option<usize> {
     let camera = PinholeCamera::new(&world.camera, width, height);
     world
         .intersect(&camera.ray(point), f64::INFINITY)
-        .map(|hit| hit.object)
+        .map(|hit| world.scene_object(hit.object))
 }

@@ -5,8 +5,10 @@ pub mod adaptive;
 pub mod bounds;
 pub mod bvh;
 pub mod camera;
+pub mod depth_view;
 pub mod image;
 pub mod inspect;
+pub mod isolation;
 pub mod lights;
 pub mod quadratic;
 pub mod ray;
@@ -18,6 +20,7 @@ pub mod shade;
 pub mod shapes;
 pub mod spawn;
 pub mod terms;
+pub mod tiles;
 pub mod world;
 
 pub use adaptive::{AdaptiveOptions, AdaptiveRender, render_adaptive};
@@ -26,6 +29,7 @@ pub use image::Image;
 pub use inspect::{
     BounceReport, PixelOutside, PixelReport, inspect_pixel, pick, switches_text, try_inspect_pixel,
 };
+pub use isolation::IsolationError;
 pub use ray::Ray;
 pub use ray_tree::{RayHit, RayKind, TracedRay, traced_rays};
 pub use record::{LightOutcome, LightSkip, ShadowRay, SkippedLight};
@@ -33,5 +37,6 @@ pub use render::{
     RenderOptions, RenderProgress, SampleSums, render, render_samples, render_samples_into,
 };
 pub use shade::{LightRecord, NoRecorder, RayCounts, Recorder, Tracer};
-pub use terms::{Term, TermSwitches, View};
+pub use terms::{Isolation, Term, TermSwitches, View};
+pub use tiles::TILE_SIZE;
 pub use world::{Acceleration, BVH_MIN_OBJECTS, SurfacePoint, World};

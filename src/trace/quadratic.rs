@@ -29,6 +29,58 @@ pub fn solve_quadratic(a: f64, h: f64, c: f64, disc: f64) -> Option<[f64; 2]> {
     Some(sorted(q / a, c / q))
 }
 
+/// A vector of the space a unit ball lives in: 3D for the sphere, the xy plane for the
+/// cylinder's side.
+pub trait RadialVector:
+    Copy + std::ops::Sub<Output = Self> + std::ops::Mul<f64, Output = Self>
+{
+    /// The dot product.
+    fn dot(self, other: Self) -> f64;
+    /// The squared length.
+    fn length_squared(self) -> f64;
+}
+
+impl RadialVector for glam::DVec2 {
+    fn dot(self, other: Self) -> f64 {
+        glam::DVec2::dot(self, other)
+    }
+    fn length_squared(self) -> f64 {
+        glam::DVec2::length_squared(self)
+    }
+}
+
+impl RadialVector for glam::DVec3 {
+    fn dot(self, other: Self) -> f64 {
+        glam::DVec3::dot(self, other)
+    }
+    fn length_squared(self) -> f64 {
+        glam::DVec3::length_squared(self)
+    }
+}
+
+/// Both roots of `|o + t d|^2 = 1`, smaller first: the ray from `o` along `d` crossing the
+/// unit ball's boundary. `None` when it misses or does not move (`d == 0`).
+///
+/// The quarter discriminant is computed as a (1 - |o - (o.d / a) d|^2): the squared
+/// distance from the centre to the ray's closest point, which does not cancel for rays
+/// far from the ball the way (o.d)^2 - a (|o|^2 - 1) does. An origin on the boundary to
+/// within rounding gives the root t = 0 exactly and the other at -2h/a.
+#[must_use]
+pub fn unit_ball_roots<V: RadialVector>(o: V, d: V) -> Option<[f64; 2]> {
+    let a = d.length_squared();
+    if a == 0.0 {
+        return None;
+    }
+    let h = o.dot(d);
+    let c = o.length_squared() - 1.0;
+    if c.abs() <= crate::trace::shapes::gamma(3) * (c + 1.0) {
+        return Some(sorted(0.0, -2.0 * h / a));
+    }
+    let closest = o - d * (h / a);
+    let disc = a * (1.0 - closest.length_squared());
+    solve_quadratic(a, h, c, disc)
+}
+
 /// Two roots, smaller first.
 #[must_use]
 pub fn sorted(t0: f64, t1: f64) -> [f64; 2] {

@@ -1,37 +1,37 @@
-//! Whole images: the frame cut into tiles, tiles traced in parallel with rayon. Progress
-//! and cancellation are checked at tile boundaries.
+//! Whole images: what to render, its progress and cancel flag, and the sums of samples a
+//! render adds up (tiles and batches in [`super::tiles`]).
 
 use std::ops::Range;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use glam::{DVec2, DVec3, Vec3};
-use rayon::prelude::*;
 
 use super::camera::PinholeCamera;
 use super::image::Image;
-use super::sampling::Strata;
+use super::isolation::assert_compiled_for;
+use super::sampling::sample_in_pixel;
 use super::shade::{NoRecorder, RayCounts, Tracer};
-use super::terms::{TermSwitches, View};
+use super::terms::{Isolation, TermSwitches, View};
+use super::tiles::render_tiles;
 use super::world::World;
 use crate::scene::Scene;
 
-/// Side of a square tile in pixels: small enough to balance two cores and to cancel
-/// quickly, big enough that per-tile overhead is noise.
-pub const TILE_SIZE: u32 = 16;
-
 /// What to render.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct RenderOptions {
     /// Image width in pixels.
     pub width: u32,
     /// Image height in pixels.
     pub height: u32,
-    /// Stratified samples per pixel.
+    /// Anti-aliasing samples per pixel (see [`super::sampling`]).
     pub samples_per_pixel: u32,
     /// Term switches.
     pub switches: TermSwitches,
     /// Beauty or a debug view.
     pub view: View,
+    /// Lights muted or solo, objects hidden: the world must be compiled with them
+    /// ([`World::isolated`]).
+    pub isolation: Isolation,
 }
 
 impl RenderOptions {
@@ -44,18 +44,20 @@ impl RenderOptions {
             samples_per_pixel: scene.render.samples_per_pixel,
             switches: TermSwitches::ALL_ON,
             view: View::Beauty,
+            isolation: Isolation::NONE,
         }
     }
 }
 
-/// Shared between a render and whoever watches it: tiles done, and a cancel flag.
+/// Shared between a render and whoever watches it: batches of samples done, and a cancel
+/// flag. A batch is one sample for every pixel of a tile (see [`render_samples_into`]).
 #[derive(Debug, Default)]
 pub struct RenderProgress {
-    /// Tiles finished so far.
-    pub tiles_done: AtomicUsize,
-    /// Tiles in the whole render (set when it starts).
-    pub tiles_total: AtomicUsize,
-    /// Set to stop the render at the next tile boundary.
+    /// Batches finished so far.
+    pub batches_done: AtomicUsize,
+    /// Batches in the whole render (set when it starts).
+    pub batches_total: AtomicUsize,
+    /// Set to stop the render before its next batch.
     pub cancel: AtomicBool,
 }
 
@@ -74,11 +76,11 @@ impl RenderProgress {
     /// Fraction done, 0 to 1.
     #[must_use]
     pub fn fraction(&self) -> f64 {
-        let total = self.tiles_total.load(Ordering::Relaxed);
+        let total = self.batches_total.load(Ordering::Relaxed);
         if total == 0 {
             0.0
         } else {
-            self.tiles_done.load(Ordering::Relaxed) as f64 / total as f64
+            self.batches_done.load(Ordering::Relaxed) as f64 / total as f64
         }
     }
 }
@@ -148,10 +150,12 @@ pub fn render_samples(
 /// Continues `sums` with the samples `samples` (of `options.samples_per_pixel`): each
 /// pixel's sum goes on adding its samples in index order, so rendering `0..4` then `4..8`
 /// gives exactly the numbers of `0..8` at once. Returns the rays of this batch (they are
-/// also added to `sums.rays`), or `None` if cancelled, leaving `sums` untouched.
+/// also added to `sums.rays`), or `None` if cancelled, leaving `sums` untouched. A cancel
+/// stops every tile within one batch (one sample for each of its pixels).
 ///
 /// # Panics
-/// When `sums` is not `options.width` x `options.height`.
+/// When `sums` is not `options.width` x `options.height`, or `world` was compiled for
+/// other isolation switches than `options.isolation`.
 pub fn render_samples_into(
     world: &World,
     options: &RenderOptions,
@@ -165,48 +169,15 @@ pub fn render_samples_into(
         (width, height),
         "sums of another size"
     );
+    assert_compiled_for(world, &options.isolation);
     let camera = PinholeCamera::new(&world.camera, width, height);
     let tracer = Tracer::new(world, options.switches, options.view);
-    let tiles_x = width.div_ceil(TILE_SIZE);
-    let tiles_y = height.div_ceil(TILE_SIZE);
-    let tile_count = (tiles_x * tiles_y) as usize;
-    progress.tiles_total.store(tile_count, Ordering::Relaxed);
-    progress.tiles_done.store(0, Ordering::Relaxed);
-
-    let before: &SampleSums = sums;
-    let tiles: Vec<Option<Tile>> = (0..tile_count)
-        .into_par_iter()
-        .map(|index| {
-            if progress.is_cancelled() {
-                return None;
-            }
-            let x0 = (index as u32 % tiles_x) * TILE_SIZE;
-            let y0 = (index as u32 / tiles_x) * TILE_SIZE;
-            let tile = render_tile(&tracer, &camera, options, samples.clone(), before, x0, y0);
-            progress.tiles_done.fetch_add(1, Ordering::Relaxed);
-            Some(tile)
-        })
-        .collect();
-    let tiles: Vec<Tile> = tiles.into_iter().collect::<Option<_>>()?;
-
-    let mut rays = RayCounts::default();
-    let mut new_pixels = Vec::new();
-    for tile in tiles {
-        rays.add(&tile.rays);
-        sums.non_finite += tile.non_finite;
-        new_pixels.extend(tile.non_finite_pixels);
-        for (row, chunk) in tile.sums.chunks(tile.w as usize).enumerate() {
-            let start = (tile.y0 as usize + row) * width as usize + tile.x0 as usize;
-            sums.sums[start..start + chunk.len()].copy_from_slice(chunk);
-        }
-    }
-    sums.rays.add(&rays);
-    if !new_pixels.is_empty() {
-        sums.non_finite_pixels.extend(new_pixels);
-        sums.non_finite_pixels.sort_unstable();
-        sums.non_finite_pixels.dedup();
-    }
-    Some(rays)
+    let count = options.samples_per_pixel;
+    let sample = |px: u32, py: u32, index: u32, rays: &mut RayCounts| {
+        let offset = sample_in_pixel(px, py, index, count);
+        trace_colour(&tracer, &camera, px, py, offset, rays)
+    };
+    render_tiles(sums, samples, progress, &sample)
 }
 
 /// Renders a whole image with all of `options.samples_per_pixel`; `None` if cancelled.
@@ -221,63 +192,6 @@ pub fn render(
     Some((image, sums.rays))
 }
 
-/// One finished tile.
-struct Tile {
-    x0: u32,
-    y0: u32,
-    w: u32,
-    sums: Vec<DVec3>,
-    rays: RayCounts,
-    non_finite: u64,
-    non_finite_pixels: Vec<u32>,
-}
-
-/// Renders one tile, each pixel's sum continuing from its sum in `before`.
-fn render_tile(
-    tracer: &Tracer,
-    camera: &PinholeCamera,
-    options: &RenderOptions,
-    samples: Range<u32>,
-    before: &SampleSums,
-    x0: u32,
-    y0: u32,
-) -> Tile {
-    let w = TILE_SIZE.min(options.width - x0);
-    let h = TILE_SIZE.min(options.height - y0);
-    let mut tile = Tile {
-        x0,
-        y0,
-        w,
-        sums: Vec::with_capacity((w * h) as usize),
-        rays: RayCounts::default(),
-        non_finite: 0,
-        non_finite_pixels: Vec::new(),
-    };
-    let strata = Strata::for_count(options.samples_per_pixel);
-    for py in y0..y0 + h {
-        for px in x0..x0 + w {
-            let pixel = py * options.width + px;
-            let mut sum = before.sums[pixel as usize];
-            let mut finite = true;
-            for index in samples.clone() {
-                let offset = strata.sample(px, py, index);
-                match trace_sample(tracer, camera, px, py, offset, &mut tile.rays) {
-                    Some(colour) => sum += colour,
-                    None => {
-                        tile.non_finite += 1;
-                        finite = false;
-                    }
-                }
-            }
-            if !finite {
-                tile.non_finite_pixels.push(pixel);
-            }
-            tile.sums.push(sum);
-        }
-    }
-    tile
-}
-
 /// One camera sample at `offset` (in [0, 1)^2) within pixel `(px, py)`. `None` when the
 /// colour came out non-finite: the guard that keeps NaN and infinity out of every pixel
 /// (the caller counts these; they should never happen).
@@ -290,7 +204,20 @@ pub fn trace_sample(
     offset: DVec2,
     rays: &mut RayCounts,
 ) -> Option<DVec3> {
-    let point = DVec2::new(f64::from(px), f64::from(py)) + offset;
-    let colour = tracer.trace_primary(&camera.ray(point), rays, &mut NoRecorder);
+    let colour = trace_colour(tracer, camera, px, py, offset, rays);
     colour.is_finite().then_some(colour)
+}
+
+/// The unguarded colour of one camera sample (it may be non-finite).
+#[inline]
+fn trace_colour(
+    tracer: &Tracer,
+    camera: &PinholeCamera,
+    px: u32,
+    py: u32,
+    offset: DVec2,
+    rays: &mut RayCounts,
+) -> DVec3 {
+    let point = DVec2::new(f64::from(px), f64::from(py)) + offset;
+    tracer.trace_primary(&camera.ray(point), rays, &mut NoRecorder)
 }

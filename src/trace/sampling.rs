@@ -1,121 +1,138 @@
 //! Where in a pixel each anti-aliasing sample goes.
+//!
+//! Samples come from an Owen-scrambled Sobol sequence (`sobol_burley`), scrambled per
+//! pixel. Its first two dimensions form a (0,2)-sequence: the first 2^k samples, and every
+//! aligned block of 2^k samples, put exactly one sample in each elementary box of area
+//! 2^-k (each quadrant for 4, each cell of a 4x4 grid for 16, each 2x8 or 8x2 strip...).
+//! So every prefix a progressive preview shows (4, 8, 16, ... samples) is stratified over
+//! the whole pixel, and sample `index` is the same whatever the total count: the
+//! n-sample pass of a larger target is exactly the n-sample image.
 
 use glam::DVec2;
 
-/// The stratification of `count` samples per pixel: a grid of exactly `count` equal
-/// cells (`rows` the largest divisor of `count` not above its square root), so every
-/// stratum has the same area and no part of the pixel is left out, whatever the count.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Strata {
-    columns: u32,
-    rows: u32,
-}
+/// Samples of one scrambled sequence; `sobol_burley` supports this many indices. Beyond
+/// it a pixel continues with a freshly seeded sequence (no render asks for that many).
+const SEQUENCE_LENGTH: u32 = 1 << 16;
 
-impl Strata {
-    /// The grid for `count` samples (at least 1).
-    #[must_use]
-    pub fn for_count(count: u32) -> Self {
-        let count = count.max(1);
-        let mut rows = (f64::from(count).sqrt() as u32).max(1);
-        while !count.is_multiple_of(rows) {
-            rows -= 1;
-        }
-        Self {
-            columns: count / rows,
-            rows,
-        }
-    }
-
-    /// The position within pixel `(px, py)` (each coordinate in [0, 1)) of sample
-    /// `index`. One sample is the pixel centre. More samples take one cell each, jittered
-    /// within it by a deterministic hash of the pixel and index, so renders are
-    /// repeatable and samples can be added one pass at a time.
-    #[must_use]
-    pub fn sample(&self, px: u32, py: u32, index: u32) -> DVec2 {
-        if self.columns * self.rows == 1 {
-            return DVec2::splat(0.5);
-        }
-        let cell = DVec2::new(
-            f64::from(index % self.columns),
-            f64::from(index / self.columns % self.rows),
-        );
-        let jitter = DVec2::new(
-            unit_hash(px, py, index, 0x9e37_79b9),
-            unit_hash(px, py, index, 0x85eb_ca6b),
-        );
-        (cell + jitter) / DVec2::new(f64::from(self.columns), f64::from(self.rows))
-    }
-}
-
-/// Sample `index` of `count` within pixel `(px, py)`; see [`Strata::sample`]. Callers
-/// that take many samples build the [`Strata`] once.
+/// The position within pixel `(px, py)` (each coordinate in [0, 1)) of sample `index` of
+/// `count` samples per pixel. One sample is the pixel centre; more are
+/// [`sequence_sample`]s, so they do not depend on `count`.
 #[must_use]
 pub fn sample_in_pixel(px: u32, py: u32, index: u32, count: u32) -> DVec2 {
-    Strata::for_count(count).sample(px, py, index)
+    if count <= 1 {
+        DVec2::splat(0.5)
+    } else {
+        sequence_sample(px, py, index)
+    }
 }
 
-/// Sample `index` of an open-ended low-discrepancy sequence within pixel `(px, py)`: the
-/// R2 sequence (additive recurrence on the plastic number), shifted per pixel by a hash.
-/// Any prefix is well spread, so it suits sample counts decided on the fly.
+/// Sample `index` of pixel `(px, py)`'s own scrambled Sobol sequence, in [0, 1)^2. Any
+/// prefix is well spread and power-of-two prefixes are stratified, so it suits counts
+/// decided on the fly (adaptive sampling) as well as fixed ones.
 #[must_use]
-pub fn sample_sequence(px: u32, py: u32, index: u32) -> DVec2 {
-    const PLASTIC: f64 = 1.324_717_957_244_746;
-    let alpha = DVec2::new(1.0 / PLASTIC, 1.0 / (PLASTIC * PLASTIC));
-    let shift = DVec2::new(
-        unit_hash(px, py, u32::MAX, 0x27d4_eb2f),
-        unit_hash(px, py, u32::MAX, 0x1656_67b1),
-    );
-    (shift + alpha * f64::from(index)).fract()
+pub fn sequence_sample(px: u32, py: u32, index: u32) -> DVec2 {
+    let seed = pixel_seed(px, py, index / SEQUENCE_LENGTH);
+    let index = index % SEQUENCE_LENGTH;
+    DVec2::new(
+        f64::from(sobol_burley::sample(index, 0, seed)),
+        f64::from(sobol_burley::sample(index, 1, seed)),
+    )
 }
 
-/// A hash of the inputs mapped to [0, 1).
-fn unit_hash(x: u32, y: u32, i: u32, salt: u32) -> f64 {
-    let mut h = u64::from(x) | (u64::from(y) << 32);
-    h ^= u64::from(i).wrapping_mul(0x2545_f491_4f6c_dd1d) ^ u64::from(salt);
+/// A per-pixel scramble seed (and per run of [`SEQUENCE_LENGTH`] samples), so that
+/// neighbouring pixels' errors are independent noise rather than a shared pattern.
+fn pixel_seed(px: u32, py: u32, run: u32) -> u32 {
+    let mut h = u64::from(px) | (u64::from(py) << 32);
+    h ^= u64::from(run).wrapping_mul(0x2545_f491_4f6c_dd1d);
     // splitmix64 finaliser
     h = (h ^ (h >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
     h = (h ^ (h >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
     h ^= h >> 31;
-    (h >> 11) as f64 / (1u64 << 53) as f64
+    (h >> 32) as u32
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
+    /// How many of `samples` fall in each of the `2^a x 2^b` boxes of the pixel.
+    fn box_counts(samples: &[DVec2], a: u32, b: u32) -> Vec<u32> {
+        let (columns, rows) = (1u32 << a, 1u32 << b);
+        let mut counts = vec![0; (columns * rows) as usize];
+        for s in samples {
+            let column = (s.x * f64::from(columns)) as u32;
+            let row = (s.y * f64::from(rows)) as u32;
+            counts[(row * columns + column) as usize] += 1;
+        }
+        counts
+    }
+
+    fn samples(px: u32, py: u32, indices: std::ops::Range<u32>, count: u32) -> Vec<DVec2> {
+        indices.map(|i| sample_in_pixel(px, py, i, count)).collect()
+    }
+
     #[test]
-    fn one_sample_is_the_centre() {
+    fn one_sample_is_the_centre_and_more_lie_inside_the_pixel() {
         assert_eq!(sample_in_pixel(3, 7, 0, 1), DVec2::splat(0.5));
-    }
-
-    #[test]
-    fn samples_fill_distinct_cells_of_the_pixel() {
-        let count = 16;
-        let mut cells = std::collections::HashSet::new();
-        for i in 0..count {
-            let s = sample_in_pixel(1, 2, i, count);
-            assert!(s.x >= 0.0 && s.x < 1.0 && s.y >= 0.0 && s.y < 1.0);
-            cells.insert(((s.x * 4.0) as u32, (s.y * 4.0) as u32));
+        for s in samples(3, 7, 0..256, 256) {
+            assert!(
+                (0.0..1.0).contains(&s.x) && (0.0..1.0).contains(&s.y),
+                "{s}"
+            );
         }
-        assert_eq!(cells.len(), 16);
-        assert_eq!(sample_in_pixel(1, 2, 5, 16), sample_in_pixel(1, 2, 5, 16));
     }
 
     #[test]
-    fn any_count_covers_the_pixel_with_equal_strata() {
-        for (count, columns, rows) in [(2, 2, 1), (7, 7, 1), (12, 4, 3), (32, 8, 4), (64, 8, 8)] {
-            assert_eq!(Strata::for_count(count), Strata { columns, rows });
-            // Every cell holds exactly one sample.
-            let strata = Strata::for_count(count);
-            let mut cells = std::collections::HashSet::new();
-            for i in 0..count {
-                let s = strata.sample(9, 4, i);
-                cells.insert((
-                    (s.x * f64::from(columns)) as u32,
-                    (s.y * f64::from(rows)) as u32,
-                ));
+    fn power_of_two_prefixes_and_blocks_put_one_sample_in_every_elementary_box() {
+        for (px, py) in [(0, 0), (1, 0), (17, 3), (799, 599)] {
+            for k in 1..=8 {
+                let n = 1u32 << k;
+                // The prefix, and the second block of the same size.
+                for start in [0, n] {
+                    let block = samples(px, py, start..start + n, 1024);
+                    for a in 0..=k {
+                        let counts = box_counts(&block, a, k - a);
+                        assert!(
+                            counts.iter().all(|&c| c == 1),
+                            "pixel ({px}, {py}) samples {start}..{}: {}x{} boxes {counts:?}",
+                            start + n,
+                            1 << a,
+                            1 << (k - a)
+                        );
+                    }
+                }
             }
-            assert_eq!(cells.len() as u32, count);
         }
+    }
+
+    #[test]
+    fn a_sample_does_not_depend_on_the_count_and_pixels_differ() {
+        for index in 0..64 {
+            assert_eq!(
+                sample_in_pixel(5, 9, index, 64),
+                sample_in_pixel(5, 9, index, 4096)
+            );
+        }
+        assert_ne!(sample_in_pixel(5, 9, 3, 16), sample_in_pixel(6, 9, 3, 16));
+        assert_ne!(sample_in_pixel(5, 9, 3, 16), sample_in_pixel(5, 10, 3, 16));
+    }
+
+    #[test]
+    fn indices_past_one_sequence_continue_inside_the_pixel_with_new_points() {
+        let last = sequence_sample(2, 2, SEQUENCE_LENGTH - 1);
+        let next = sequence_sample(2, 2, SEQUENCE_LENGTH);
+        assert_ne!(last, next);
+        assert_ne!(
+            next,
+            sequence_sample(2, 2, 0),
+            "a fresh scramble, not a repeat"
+        );
+        let block = samples(
+            2,
+            2,
+            SEQUENCE_LENGTH..SEQUENCE_LENGTH + 16,
+            2 * SEQUENCE_LENGTH,
+        );
+        assert!(box_counts(&block, 2, 2).iter().all(|&c| c == 1));
     }
 }

@@ -16,6 +16,7 @@
 use glam::DVec3;
 use smallvec::SmallVec;
 
+use super::depth_view::DepthRange;
 use super::ray::Ray;
 use super::record::{LightSkip, ShadowRay, SkippedLight, unsampled_reason};
 use super::spawn::{spawn_ray, spawn_ray_to};
@@ -57,7 +58,7 @@ pub struct LightRecord {
     pub strength: DVec3,
     /// n.l (may be negative: the light is behind the surface).
     pub n_dot_l: f64,
-    /// The object that blocked the shadow ray, if one did.
+    /// The scene index of the object that blocked the shadow ray, if one did.
     pub blocked_by: Option<usize>,
     /// Whether a shadow ray was cast at all.
     pub shadow_ray_cast: bool,
@@ -127,6 +128,8 @@ pub struct Tracer<'w> {
     primary: ActiveTerms,
     secondary: ActiveTerms,
     view: View,
+    /// The depth view's grey scale, found once per render.
+    depth_range: Option<DepthRange>,
 }
 
 impl<'w> Tracer<'w> {
@@ -143,6 +146,9 @@ impl<'w> Tracer<'w> {
             primary: switches.primary(),
             secondary: switches.secondary(),
             view,
+            depth_range: (view == View::Depth)
+                .then(|| DepthRange::visible(world))
+                .flatten(),
         }
     }
 
@@ -170,12 +176,14 @@ impl<'w> Tracer<'w> {
                 .world
                 .intersect(ray, f64::INFINITY)
                 .map_or(DVec3::ZERO, |hit| {
-                    DVec3::splat(1.0 / (1.0 + hit.t / self.world.view_distance))
+                    DVec3::splat(self.depth_range.map_or(1.0, |range| range.grey(hit.t)))
                 }),
             View::ObjectId => self
                 .world
                 .intersect(ray, f64::INFINITY)
-                .map_or(DVec3::ZERO, |hit| object_id_colour(hit.object)),
+                .map_or(DVec3::ZERO, |hit| {
+                    object_id_colour(self.world.scene_object(hit.object))
+                }),
             View::ShadowMask => self
                 .world
                 .intersect(ray, f64::INFINITY)
@@ -247,7 +255,15 @@ impl<'w> Tracer<'w> {
             recorder.miss(depth, ray, background);
             return (Bounce::local(background), None);
         };
-        recorder.hit(depth, ray, &hit);
+        // Recorders see the scene's object index, whatever the world left out.
+        recorder.hit(
+            depth,
+            ray,
+            &SurfacePoint {
+                object: self.world.scene_object(hit.object),
+                ..hit
+            },
+        );
         let world = self.world;
         let material = &world.materials[world.objects[hit.object].material];
         let mut colour = DVec3::ZERO;
@@ -290,8 +306,13 @@ impl<'w> Tracer<'w> {
                     if terms.shadows {
                         let shadow_ray = self.shadow_ray(&hit, &sample, counts);
                         record.shadow_ray_cast = true;
-                        record.blocked_by = shadow_ray.blocked_by;
-                        record.shadow_ray = Some(shadow_ray);
+                        // The recorders see the scene's index of the blocker.
+                        let blocked_by = shadow_ray.blocked_by.map(|i| world.scene_object(i));
+                        record.blocked_by = blocked_by;
+                        record.shadow_ray = Some(ShadowRay {
+                            blocked_by,
+                            ..shadow_ray
+                        });
                     }
                     if record.blocked_by.is_none() {
                         if terms.diffuse {

@@ -1,6 +1,8 @@
-//! The term switches of the lighting model and the debug views. The editor, the command
-//! line and the library all use these, so a switch means the same thing everywhere.
+//! The term switches of the lighting model, the isolation switches of lights and objects,
+//! and the debug views. The editor, the command line and the library all use these, so a
+//! switch means the same thing everywhere.
 
+use std::collections::BTreeSet;
 use std::fmt;
 use std::str::FromStr;
 
@@ -150,6 +152,83 @@ pub struct ActiveTerms {
     pub background: bool,
 }
 
+/// Which lights and objects take part in a render, by their index in the scene's lists:
+/// the isolation switches, as the term switches are for terms. A muted light and a hidden
+/// object are absent from the render (a hidden object casts no shadow, is not reflected
+/// and cannot be picked); while any light is solo, only the solo lights shine. The
+/// background goes with one light's solo (see [`crate::trace::isolation`]) so that the
+/// solo images of all the lights add up to the full picture.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Isolation {
+    /// Lights switched off. Muting a solo light silences it too.
+    pub muted_lights: BTreeSet<usize>,
+    /// Lights shown alone (all of them together); empty: no solo.
+    pub solo_lights: BTreeSet<usize>,
+    /// Objects left out of the render.
+    pub hidden_objects: BTreeSet<usize>,
+}
+
+impl Isolation {
+    /// Every light and object takes part: the full picture.
+    pub const NONE: Self = Self {
+        muted_lights: BTreeSet::new(),
+        solo_lights: BTreeSet::new(),
+        hidden_objects: BTreeSet::new(),
+    };
+
+    /// Whether nothing is muted, solo or hidden.
+    #[must_use]
+    pub fn is_none(&self) -> bool {
+        self.muted_lights.is_empty()
+            && self.solo_lights.is_empty()
+            && self.hidden_objects.is_empty()
+    }
+
+    /// Whether light `index` shines: not muted, and solo if any light is.
+    #[must_use]
+    pub fn is_light_lit(&self, index: usize) -> bool {
+        !self.muted_lights.contains(&index)
+            && (self.solo_lights.is_empty() || self.solo_lights.contains(&index))
+    }
+
+    /// Whether object `index` takes part in the render.
+    #[must_use]
+    pub fn is_object_shown(&self, index: usize) -> bool {
+        !self.hidden_objects.contains(&index)
+    }
+
+    /// Mutes light `index`, or unmutes it if it was muted.
+    pub fn toggle_mute(&mut self, index: usize) {
+        if !self.muted_lights.remove(&index) {
+            self.muted_lights.insert(index);
+        }
+    }
+
+    /// Hides object `index`, or shows it again if it was hidden.
+    pub fn toggle_hide(&mut self, index: usize) {
+        if !self.hidden_objects.remove(&index) {
+            self.hidden_objects.insert(index);
+        }
+    }
+
+    /// Solo light `index`. With `add`, it joins (or, if solo already, leaves) the solo
+    /// lights; without, it becomes the only solo light, or ends the solo if it already was.
+    pub fn toggle_solo(&mut self, index: usize, add: bool) {
+        let was_solo = self.solo_lights.contains(&index);
+        if add {
+            if was_solo {
+                self.solo_lights.remove(&index);
+            } else {
+                self.solo_lights.insert(index);
+            }
+        } else if was_solo && self.solo_lights.len() == 1 {
+            self.solo_lights.clear();
+        } else {
+            self.solo_lights = BTreeSet::from([index]);
+        }
+    }
+}
+
 /// What the image shows.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum View {
@@ -220,6 +299,39 @@ mod tests {
         assert!(!p.background);
         assert!(switches.with_solo(Some(Term::Ambient)).primary().background);
         assert!(switches.secondary().ambient && switches.secondary().background);
+    }
+
+    #[test]
+    fn solo_replaces_or_adds_and_mute_wins_over_solo() {
+        let mut isolation = Isolation::NONE;
+        assert!(isolation.is_none() && isolation.is_light_lit(3));
+        isolation.toggle_solo(1, false);
+        isolation.toggle_solo(2, false);
+        assert_eq!(
+            isolation.solo_lights,
+            BTreeSet::from([2]),
+            "a plain solo replaces"
+        );
+        isolation.toggle_solo(0, true);
+        assert_eq!(
+            isolation.solo_lights,
+            BTreeSet::from([0, 2]),
+            "an added solo joins"
+        );
+        assert!(isolation.is_light_lit(0) && !isolation.is_light_lit(1));
+        isolation.toggle_mute(0);
+        assert!(!isolation.is_light_lit(0), "a muted solo light is silent");
+        isolation.toggle_solo(2, true);
+        isolation.toggle_solo(0, false);
+        assert!(
+            isolation.solo_lights.is_empty(),
+            "solo again on the only solo ends it"
+        );
+        isolation.toggle_mute(0);
+        isolation.toggle_hide(4);
+        assert!(!isolation.is_object_shown(4) && isolation.is_object_shown(3));
+        isolation.toggle_hide(4);
+        assert_eq!(isolation, Isolation::NONE);
     }
 
     #[test]

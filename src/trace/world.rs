@@ -8,6 +8,7 @@ use super::bvh::Bvh;
 use super::lights::WorldLight;
 use super::ray::Ray;
 use super::shapes::{self, ShapeHit, gamma};
+use super::terms::Isolation;
 use crate::scene::{Light, Material, Scene, SceneError, Shape, validate};
 
 /// One object, placed and ready to intersect.
@@ -49,7 +50,8 @@ impl WorldObject {
 /// A point on a surface where a ray hit, in world space.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SurfacePoint {
-    /// Index of the object hit.
+    /// Index of the object hit in [`World::objects`] (the tracer hands recorders and
+    /// callers the scene's index instead: [`World::scene_object`]).
     pub object: usize,
     /// Ray parameter of the hit.
     pub t: f64,
@@ -67,17 +69,19 @@ pub struct SurfacePoint {
 /// The compiled scene.
 #[derive(Clone, Debug)]
 pub struct World {
-    /// Objects in scene order (their index is the object id).
+    /// Objects in scene order, hidden ones left out.
     pub objects: Vec<WorldObject>,
+    /// Index in the scene's object list of each entry of `objects` (the object id).
+    pub object_scene_index: Vec<usize>,
     /// Materials, indexed by [`WorldObject::material`].
     pub materials: Vec<Material>,
     /// Names of `materials`, same order.
     pub material_names: Vec<String>,
-    /// Non-ambient lights in scene order.
+    /// Non-ambient lights in scene order, muted ones left out.
     pub lights: Vec<WorldLight>,
     /// Index in the scene's light list of each entry of `lights`.
     pub light_scene_index: Vec<usize>,
-    /// Sum of all ambient lights' strengths.
+    /// Sum of the ambient lights' strengths (those that shine).
     pub ambient: DVec3,
     /// Colour of rays that hit nothing.
     pub background: DVec3,
@@ -87,6 +91,8 @@ pub struct World {
     pub camera: crate::scene::Camera,
     /// A length typical of the scene: the camera's distance to its target.
     pub view_distance: f64,
+    /// The lights and objects left out when compiling ([`World::isolated`]).
+    pub isolation: Isolation,
     /// The hierarchy over the objects, for scenes large enough to need one.
     bvh: Option<Bvh>,
 }
@@ -105,7 +111,8 @@ pub enum Acceleration {
 pub const BVH_MIN_OBJECTS: usize = 32;
 
 impl World {
-    /// Validates and compiles a scene.
+    /// Validates and compiles a scene, every light and object in it (see
+    /// [`World::isolated`] for fewer).
     ///
     /// # Errors
     /// The scene's first validation problem.
@@ -150,6 +157,7 @@ impl World {
             }
         }
         let mut world = Self {
+            object_scene_index: (0..scene.objects.len()).collect(),
             objects,
             materials,
             material_names,
@@ -160,6 +168,7 @@ impl World {
             max_depth: scene.render.max_depth,
             camera: scene.camera.clone(),
             view_distance: (scene.camera.look_at - scene.camera.position).length(),
+            isolation: Isolation::NONE,
             bvh: None,
         };
         if world.objects.len() >= BVH_MIN_OBJECTS {

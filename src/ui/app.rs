@@ -6,13 +6,19 @@ use std::path::{Path, PathBuf};
 use egui::util::undoer::{Settings as UndoSettings, Undoer};
 
 use crate::scene::Scene;
+use crate::trace::Isolation;
 use crate::ui::commands::{Command, Selection};
+use crate::ui::compare::CompareSession;
 use crate::ui::document::autosave::Autosave;
 use crate::ui::document::confirm::DiscardAction;
 use crate::ui::document::export::ExportState;
+use crate::ui::document::file_dialog::FileDialogs;
 use crate::ui::document::files;
+use crate::ui::document::native_dialogs::{NativeDialogs, native_dialogs_available};
 use crate::ui::document::recent::RecentFiles;
 use crate::ui::screenshot::ScreenshotHook;
+use crate::ui::viewport::isolation::keep_in_range;
+use crate::ui::viewport::isolation_memory::IsolationMemory;
 use crate::ui::viewport::pixel_inspector::PixelInspection;
 use crate::ui::viewport::preview_link::PreviewLink;
 use crate::ui::viewport::preview_settings::PreviewSettings;
@@ -38,6 +44,10 @@ pub struct EditorOptions {
     pub screenshot_final: bool,
     /// Where unsaved work is kept for crash recovery (none: no autosave).
     pub recovery: Option<crate::recovery::RecoveryStore>,
+    /// Whether native file dialogs may be used (tests make them unavailable).
+    pub native_dialogs: NativeDialogs,
+    /// Where file dialogs open for a scene without a folder (the working folder if none).
+    pub dialog_folder: Option<PathBuf>,
 }
 
 /// The editor.
@@ -57,10 +67,22 @@ pub struct EditorApp {
     preview_settings: PreviewSettings,
     /// The view camera, the inspected and pinned pixels, the probes (never the scene).
     looking: looking::Looking,
+    /// Lights muted or solo, objects hidden (editor state, remembered per file).
+    isolation: Isolation,
+    /// The isolation of every file that has some, for the next time it opens.
+    isolation_memory: IsolationMemory,
     export: ExportState,
+    /// File > Compare with Image: the running or shown comparison.
+    compare: CompareSession,
     recent: RecentFiles,
     pending: Option<DiscardAction>,
+    /// An action to do once the Save As dialog has saved the scene ("Save" in the
+    /// unsaved-changes question of an untitled scene).
+    after_save: Option<DiscardAction>,
+    file_dialogs: FileDialogs,
     error: Option<String>,
+    /// Something the user should know that is not a failure (an import's warnings).
+    warning: Option<String>,
     message: Option<String>,
     show_help: bool,
     focus_name: bool,
@@ -90,10 +112,22 @@ impl EditorApp {
             preview: None,
             preview_settings: PreviewSettings::default(),
             looking,
+            isolation: Isolation::NONE,
+            isolation_memory: IsolationMemory::default(),
             export: ExportState::default(),
+            compare: CompareSession::default(),
             recent,
             pending: None,
+            after_save: None,
+            file_dialogs: FileDialogs::new(
+                match options.native_dialogs {
+                    NativeDialogs::Detect => native_dialogs_available(),
+                    NativeDialogs::Unavailable => false,
+                },
+                options.dialog_folder,
+            ),
             error: None,
+            warning: None,
             message: None,
             show_help: false,
             focus_name: false,
@@ -140,10 +174,40 @@ impl EditorApp {
         self.scene != self.saved
     }
 
+    /// Whether Undo would do something (an edit was made since the scene was opened).
+    #[must_use]
+    pub fn can_undo(&self) -> bool {
+        self.undoer.has_undo(&self.scene)
+    }
+
     /// The error shown in the error area, if any.
     #[must_use]
     pub fn error(&self) -> Option<&str> {
         self.error.as_deref()
+    }
+
+    /// The warning shown in the warning area, if any.
+    #[must_use]
+    pub fn warning(&self) -> Option<&str> {
+        self.warning.as_deref()
+    }
+
+    /// The last autosave error, while autosave keeps failing.
+    #[must_use]
+    pub fn autosave_error(&self) -> Option<&str> {
+        self.autosave.error.as_deref()
+    }
+
+    /// Whether the editor has let the window close (after Quit was answered).
+    #[must_use]
+    pub fn is_closing(&self) -> bool {
+        self.allow_close
+    }
+
+    /// The file dialogs (which one is open, the in-app preference).
+    #[must_use]
+    pub fn file_dialogs(&self) -> &FileDialogs {
+        &self.file_dialogs
     }
 
     /// The action waiting for a "discard unsaved changes?" answer.
@@ -175,6 +239,32 @@ impl EditorApp {
     #[must_use]
     pub fn preview_settings(&self) -> &PreviewSettings {
         &self.preview_settings
+    }
+
+    /// Lights muted or solo and objects hidden, by scene index.
+    #[must_use]
+    pub fn isolation(&self) -> &Isolation {
+        &self.isolation
+    }
+
+    /// Installs the per-file isolation memory of an earlier run (read from eframe's
+    /// storage at start-up) and brings back the open file's switches.
+    pub fn set_isolation_memory(&mut self, memory: IsolationMemory) {
+        self.isolation_memory = memory;
+        if let Some(path) = &self.path {
+            self.isolation = self.isolation_memory.recall(path);
+            keep_in_range(&mut self.isolation, &self.scene);
+        }
+    }
+
+    /// The per-file isolation memory as it would be saved now.
+    #[must_use]
+    pub fn isolation_memory(&self) -> IsolationMemory {
+        let mut memory = self.isolation_memory.clone();
+        if let Some(path) = &self.path {
+            memory.remember(path, &self.isolation);
+        }
+        memory
     }
 
     /// The pixel inspector's contents: the newest inspection of the inspected pixel
@@ -247,6 +337,12 @@ impl EditorApp {
         memory
     }
 
+    /// The comparison with another renderer's picture.
+    #[must_use]
+    pub fn compare(&self) -> &CompareSession {
+        &self.compare
+    }
+
     /// Recent files.
     #[must_use]
     pub fn recent(&self) -> &RecentFiles {
@@ -271,6 +367,8 @@ impl EditorApp {
             self.recent.save(storage);
             self.preview_settings.save(storage);
             self.view_memory().save(storage);
+            self.file_dialogs.save_setting(storage);
+            self.isolation_memory().save(storage);
         }
     }
 

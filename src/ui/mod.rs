@@ -4,6 +4,7 @@
 
 mod app;
 pub mod commands;
+pub mod compare;
 pub mod document;
 pub mod gizmo;
 pub mod panels;
@@ -20,11 +21,16 @@ pub use app::{EditorApp, EditorOptions};
 pub use commands::{Command, LightKind, SceneEdit, Selection};
 pub use document::confirm::DiscardAction;
 pub use document::export::ExportState;
+pub use document::file_dialog::{DialogPurpose, FileDialogs};
+pub use document::native_dialogs::NativeDialogs;
 pub use document::{files, recent};
 pub use gizmo::toolbar::{CAMERA_VIEW_LABEL, SET_CAMERA_LABEL};
 pub use panels::inspector::trs_from_matrix;
 pub use panels::outliner::light_label;
 pub use viewport::convergence_plot::CONVERGENCE_EXPLANATION;
+pub use viewport::full_picture_marker::NOT_FULL_PICTURE;
+pub use viewport::isolation::{IsolationToggle, isolation_note};
+pub use viewport::isolation_memory::IsolationMemory;
 pub use viewport::picture::{VIEWPORT_LABEL, letterbox};
 pub use viewport::pixel_inspector::{
     FINAL_COLOUR_LABEL, InspectedBounce, InspectedHit, InspectedLight, InspectedPixel,
@@ -69,6 +75,8 @@ pub fn run(scene: Option<PathBuf>) -> Result<(), String> {
             eframe::storage_dir("raylab")
                 .map(|dir| crate::recovery::RecoveryStore::new(dir.join("recovery")))
         },
+        native_dialogs: NativeDialogs::Detect,
+        dialog_folder: None,
     };
     let viewport = egui::ViewportBuilder::default()
         .with_title("raylab")
@@ -98,6 +106,12 @@ pub fn run(scene: Option<PathBuf>) -> Result<(), String> {
                 app.push(Command::SetPreviewSettings(PreviewSettings::load(
                     cc.storage,
                 )));
+                app.push(Command::SetPreferInAppFileDialog(
+                    FileDialogs::stored_preference(cc.storage),
+                ));
+                app.set_isolation_memory(viewport::isolation_memory::IsolationMemory::load(
+                    cc.storage,
+                ));
             }
             if let Some(label) = std::env::var_os(SCREENSHOT_SELECT_ENV)
                 && let Some(selection) = selection_by_label(app.scene(), &label.to_string_lossy())

@@ -1,7 +1,8 @@
 //! Helpers shared by the integration tests: small scenes built in code, and single rays;
-//! `legacy` for the legacy importer's tests.
+//! `cli` for running the binary; `legacy` for the legacy importer's tests.
 #![allow(dead_code)]
 
+pub mod cli;
 pub mod legacy;
 
 use std::collections::BTreeMap;

@@ -6,7 +6,7 @@
 use glam::{DVec2, DVec3};
 use raylab::compare::OtherImage;
 use raylab::scene::{Light, Scene, Shape};
-use raylab::trace::sampling::Strata;
+use raylab::trace::sampling::sample_in_pixel;
 use raylab::trace::spawn::{spawn_ray, spawn_ray_to};
 use raylab::trace::{PinholeCamera, Ray, SurfacePoint, World};
 
@@ -155,13 +155,12 @@ pub fn render(scene: &Scene, spp: u32, bugs: &Bugs) -> OtherImage {
     };
     let (w, h) = (scene.camera.width, scene.camera.height);
     let camera = PinholeCamera::new(&scene.camera, w, h);
-    let strata = Strata::for_count(spp);
     let mut rgb = Vec::with_capacity((w * h) as usize);
     for y in 0..h {
         for x in 0..w {
             let mut sum = DVec3::ZERO;
             for i in 0..spp {
-                let point = DVec2::new(f64::from(x), f64::from(y)) + strata.sample(x, y, i);
+                let point = DVec2::new(f64::from(x), f64::from(y)) + sample_in_pixel(x, y, i, spp);
                 sum += shader.radiance(&camera.ray(point), 0);
             }
             let c = (sum * (1.0 / f64::from(spp))).as_vec3();

@@ -4,7 +4,7 @@ use glam::{DVec2, DVec3};
 
 use super::{ShapeHit, disc_cap, gamma, in_range, nearer};
 use crate::trace::bounds::Aabb;
-use crate::trace::quadratic::{solve_quadratic, sorted};
+use crate::trace::quadratic::unit_ball_roots;
 use crate::trace::ray::Ray;
 
 /// Object-space bounds.
@@ -12,25 +12,12 @@ pub fn bounds() -> Aabb {
     Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0))
 }
 
-/// Roots with the infinite side x^2 + y^2 = 1. A ray along the axis (no xy motion) has
-/// none. The quarter discriminant uses the distance of the ray's closest approach to
-/// the axis, as the sphere does in 3D.
+/// Roots with the infinite side x^2 + y^2 = 1: the unit disc's boundary in the xy plane.
+/// A ray along the axis (no xy motion) has none.
 fn side_roots(ray: &Ray) -> Option<[f64; 2]> {
     let o = DVec2::new(ray.origin.x, ray.origin.y);
     let d = DVec2::new(ray.dir.x, ray.dir.y);
-    let a = d.length_squared();
-    if a == 0.0 {
-        return None;
-    }
-    let h = o.dot(d);
-    let c = o.length_squared() - 1.0;
-    if c.abs() <= gamma(3) * (c + 1.0) {
-        // The origin is on the side to within rounding: roots t = 0 and -2h/a.
-        return Some(sorted(0.0, -2.0 * h / a));
-    }
-    let closest = o - (h / a) * d;
-    let disc = a * (1.0 - closest.length_squared());
-    solve_quadratic(a, h, c, disc)
+    unit_ball_roots(o, d)
 }
 
 /// The nearest side hit within the height range.

@@ -4,7 +4,7 @@ use glam::DVec3;
 
 use super::{ShapeHit, gamma, in_range};
 use crate::trace::bounds::Aabb;
-use crate::trace::quadratic::{solve_quadratic, sorted};
+use crate::trace::quadratic::unit_ball_roots;
 use crate::trace::ray::Ray;
 
 /// Object-space bounds.
@@ -12,24 +12,10 @@ pub fn bounds() -> Aabb {
     Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0))
 }
 
-/// Both roots of the ray with the sphere, if any.
-///
-/// The quarter discriminant is computed as a (1 - |o - (o.d / a) d|^2): the squared
-/// distance from the centre to the ray's closest point, which does not cancel for rays
-/// far from the sphere the way (o.d)^2 - a (|o|^2 - 1) does.
+/// Both roots of the ray with the sphere, if any (see `unit_ball_roots` for the
+/// cancellation-free discriminant).
 fn roots(ray: &Ray) -> Option<[f64; 2]> {
-    let (o, d) = (ray.origin, ray.dir);
-    let a = d.length_squared();
-    let h = o.dot(d);
-    let c = o.length_squared() - 1.0;
-    if c.abs() <= gamma(3) * (c + 1.0) {
-        // The origin is on the sphere to within rounding: one root is t = 0 exactly,
-        // the other -2h/a (ahead only when the ray points inward).
-        return Some(sorted(0.0, -2.0 * h / a));
-    }
-    let closest = o - (h / a) * d;
-    let disc = a * (1.0 - closest.length_squared());
-    solve_quadratic(a, h, c, disc)
+    unit_ball_roots(ray.origin, ray.dir)
 }
 
 /// The closest hit with `t` in (0, t_max).

@@ -3,6 +3,8 @@
 
 use crate::ui::commands::{Command, SceneEdit, repair_selection};
 use crate::ui::document::confirm::DiscardAction;
+use crate::ui::document::file_dialog::DialogPurpose;
+use crate::ui::viewport::isolation::{IsolationAnchors, keep_in_range};
 use crate::ui::viewport::view_camera::ViewCamera;
 
 use super::EditorApp;
@@ -33,11 +35,23 @@ impl EditorApp {
                     | Command::Open(_)
                     | Command::ImportLegacy(_)
             );
+            // The isolation switches follow their items through a reshuffle of this
+            // document (opening another brings that file's own switches).
+            let anchors = (!self.isolation.is_none()
+                && matches!(&command, Command::Undo | Command::Redo | Command::Edit(_)))
+            .then(|| IsolationAnchors::take(&self.scene, &self.isolation));
+            let undo = matches!(command, Command::Undo | Command::Redo);
             self.execute(command, ctx);
-            reshuffled |=
-                may_reshuffle || lists != (self.scene.objects.len(), self.scene.lights.len());
+            let lists_changed = lists != (self.scene.objects.len(), self.scene.lights.len());
+            if let Some(anchors) = anchors
+                && (undo || lists_changed)
+            {
+                self.isolation = anchors.follow(&self.scene);
+            }
+            reshuffled |= may_reshuffle || lists_changed;
         }
         repair_selection(&self.scene, &mut self.selection);
+        keep_in_range(&mut self.isolation, &self.scene);
         let editing = ctx.input(|i| i.pointer.any_down()) || ctx.text_edit_focused();
         if !editing {
             self.undoer.add_undo(&self.scene);
@@ -65,21 +79,28 @@ impl EditorApp {
             Command::ImportLegacy(path) => self.guard(DiscardAction::Import(path), ctx),
             Command::Quit => self.guard(DiscardAction::Quit, ctx),
             Command::Save => match self.path.clone() {
-                Some(path) => self.save_as(&path),
-                None => self.save_as_dialog(),
+                Some(path) => {
+                    self.save_as(&path);
+                }
+                None => self.save_as_dialog(ctx),
             },
-            Command::SaveAsDialog => self.save_as_dialog(),
-            Command::SaveAs(path) => self.save_as(&path),
+            Command::SaveAsDialog => self.save_as_dialog(ctx),
+            Command::SaveAs(path) => {
+                self.save_as(&path);
+            }
             Command::ShowExport => {
                 let default = self.path.as_ref().map(|p| p.with_extension("png"));
                 self.export.show(&self.scene, default);
             }
             Command::ShowHelp => self.show_help = !self.show_help,
+            Command::BrowseExportPath => self.request_dialog(DialogPurpose::ExportPng, ctx),
+            Command::SetPreferInAppFileDialog(prefer) => self.file_dialogs.prefer_in_app = prefer,
             Command::DismissError => self.error = None,
+            Command::DismissWarning => self.warning = None,
             Command::FocusName => self.focus_name = true,
             Command::SetPreviewSettings(settings) => self.preview_settings = settings,
             Command::InspectPixel(pixel) => self.looking.inspected = pixel,
-            Command::Pick(request) => self.looking.pick(&self.scene, request),
+            Command::Pick(request) => self.looking.pick(&self.scene, &self.isolation, request),
             Command::SetView(view) => self.looking.view = view,
             Command::ToggleCameraView => {
                 let view = &mut self.looking.view;
@@ -91,6 +112,9 @@ impl EditorApp {
                 self.looking.view = ViewCamera::through(&self.scene.camera);
             }
             Command::SetRayPaths(settings) => self.looking.ray_paths = settings,
+            Command::ShowCompare => self.compare.show_window(),
+            Command::CompareWith(path) => self.compare.start(&self.scene, &path, ctx),
+            Command::Isolate(toggle) => toggle.apply(&mut self.isolation),
         }
     }
 

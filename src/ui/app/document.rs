@@ -1,5 +1,6 @@
 //! The document actions of the editor: new, open, save, import, each behind the
-//! "discard unsaved changes?" question where they would drop edits.
+//! "unsaved changes: save, discard or cancel?" question where they would drop edits,
+//! and what a file dialog's answer does.
 
 use std::path::{Path, PathBuf};
 
@@ -9,8 +10,10 @@ use super::{EditorApp, undoer};
 use crate::scene::Scene;
 use crate::ui::commands::Selection;
 use crate::ui::document::autosave::RestoreAnswer;
-use crate::ui::document::confirm::DiscardAction;
+use crate::ui::document::confirm::{DiscardAction, DiscardAnswer};
+use crate::ui::document::file_dialog::{DialogOutcome, DialogPurpose};
 use crate::ui::document::files;
+use crate::ui::viewport::isolation::keep_in_range;
 
 impl EditorApp {
     /// Does `action` now, or asks first when it would drop unsaved changes.
@@ -28,24 +31,108 @@ impl EditorApp {
                 self.replace_scene(files::new_scene(), None);
                 self.unnamed = "untitled";
             }
-            DiscardAction::OpenDialog => {
-                if let Some(path) = scene_dialog().pick_file() {
-                    self.open(&path);
-                }
-            }
+            DiscardAction::OpenDialog => self.request_dialog(DialogPurpose::OpenScene, ctx),
             DiscardAction::Open(path) => self.open(&path),
-            DiscardAction::ImportDialog => {
-                if let Some(path) = rfd::FileDialog::new()
-                    .set_title("Import legacy scene")
-                    .pick_file()
-                {
-                    self.import(&path);
-                }
-            }
+            DiscardAction::ImportDialog => self.request_dialog(DialogPurpose::ImportLegacy, ctx),
             DiscardAction::Import(path) => self.import(&path),
             DiscardAction::Quit => {
                 self.allow_close = true;
                 ctx.send_viewport_cmd(ViewportCommand::Close);
+            }
+        }
+    }
+
+    /// The answer to the unsaved-changes question about `action`.
+    pub(super) fn answer_discard(
+        &mut self,
+        action: DiscardAction,
+        answer: DiscardAnswer,
+        ctx: &egui::Context,
+    ) {
+        match answer {
+            DiscardAnswer::Save => match self.path.clone() {
+                Some(path) => {
+                    if self.save_as(&path) {
+                        self.perform(action, ctx);
+                    }
+                }
+                None => {
+                    self.after_save = Some(action);
+                    self.save_as_dialog(ctx);
+                }
+            },
+            DiscardAnswer::Discard => self.perform(action, ctx),
+            DiscardAnswer::Cancel => {}
+        }
+    }
+
+    /// Opens a file dialog for `purpose`, in the scene's folder; errors are shown.
+    pub(super) fn request_dialog(&mut self, purpose: DialogPurpose, ctx: &egui::Context) {
+        let folder = match purpose {
+            DialogPurpose::ExportPng => {
+                let typed = PathBuf::from(self.export.path.trim());
+                typed.parent().filter(|p| p.is_dir()).map(Path::to_owned)
+            }
+            _ => None,
+        }
+        .or_else(|| {
+            self.path
+                .as_deref()
+                .and_then(Path::parent)
+                .map(Path::to_owned)
+        });
+        let name = match purpose {
+            DialogPurpose::ExportPng => PathBuf::from(self.export.path.trim())
+                .file_name()
+                .map_or_else(
+                    || "render.png".to_owned(),
+                    |n| n.to_string_lossy().into_owned(),
+                ),
+            _ => format!("{}.ron", self.file_label().trim_end_matches(".ron")),
+        };
+        if let Err(error) = self
+            .file_dialogs
+            .request(purpose, folder.as_deref(), &name, ctx)
+        {
+            self.error = Some(format!("cannot show the file dialog: {error}"));
+        }
+    }
+
+    /// Shows the open file dialog, if any, and acts on its answer.
+    pub(super) fn file_dialog_ui(&mut self, ctx: &egui::Context) {
+        let Some((purpose, outcome)) = self.file_dialogs.ui(ctx) else {
+            return;
+        };
+        let after = if purpose == DialogPurpose::SaveSceneAs {
+            self.after_save.take()
+        } else {
+            None
+        };
+        let path = match outcome {
+            DialogOutcome::Picked(path) => path,
+            DialogOutcome::Cancelled => return,
+            DialogOutcome::Failed(error) => {
+                self.error = Some(format!("the file dialog failed: {error}"));
+                return;
+            }
+        };
+        match purpose {
+            DialogPurpose::OpenScene => self.open(&path),
+            DialogPurpose::ImportLegacy => self.import(&path),
+            DialogPurpose::SaveSceneAs => {
+                let path = if files::is_scene_file(&path) {
+                    path
+                } else {
+                    path.with_extension("ron")
+                };
+                if self.save_as(&path)
+                    && let Some(action) = after
+                {
+                    self.perform(action, ctx);
+                }
+            }
+            DialogPurpose::ExportPng => {
+                self.export.path = files::with_png_extension(path).display().to_string();
             }
         }
     }
@@ -59,8 +146,9 @@ impl EditorApp {
                 self.message = Some(format!("Opened {}", path.display()));
             }
             Err(error) => {
-                // A recent file that no longer opens leaves the list.
-                self.recent.remove(path);
+                // A recent file that does not open now (an unplugged drive, a share
+                // that is down) stays in the list, marked.
+                self.recent.mark_failed(path);
                 self.error = Some(error);
             }
         }
@@ -74,44 +162,49 @@ impl EditorApp {
                 // An imported scene has no file yet: everything is unsaved.
                 self.saved = files::new_scene();
                 if !warnings.is_empty() {
-                    self.error = Some(format!("Imported with warnings: {}", warnings.join("; ")));
+                    self.warning = Some(format!("Imported with warnings: {}", warnings.join("; ")));
                 }
             }
             Err(error) => self.error = Some(format!("{}: {error}", path.display())),
         }
     }
 
-    /// Saves to `path`, which becomes the scene's file; errors are shown.
-    pub(super) fn save_as(&mut self, path: &Path) {
+    /// Saves to `path`, which becomes the scene's file; errors are shown. Returns
+    /// whether the scene was saved.
+    pub(super) fn save_as(&mut self, path: &Path) -> bool {
         match files::save_scene_to(&self.scene, path) {
             Ok(()) => {
                 self.saved = self.scene.clone();
+                // The switches stay with the scene, now under its new name.
+                self.isolation_memory = self.isolation_memory();
                 self.path = Some(path.to_owned());
                 self.recent.push(path);
                 self.message = Some(format!("Saved {}", path.display()));
+                true
             }
-            Err(error) => self.error = Some(error),
+            Err(error) => {
+                self.error = Some(error);
+                false
+            }
         }
     }
 
-    pub(super) fn save_as_dialog(&mut self) {
-        let name = format!("{}.ron", self.file_label().trim_end_matches(".ron"));
-        if let Some(path) = scene_dialog().set_file_name(name).save_file() {
-            let path = if files::is_scene_file(&path) {
-                path
-            } else {
-                path.with_extension("ron")
-            };
-            self.save_as(&path);
-        }
+    pub(super) fn save_as_dialog(&mut self, ctx: &egui::Context) {
+        self.request_dialog(DialogPurpose::SaveSceneAs, ctx);
     }
 
     /// A new document: fresh undo history, nothing unsaved, selection cleared, the view
-    /// its file was left with (or its camera's).
+    /// its file was left with (or its camera's), the isolation switches remembered for
+    /// the file left and recalled for the file opened.
     pub(super) fn replace_scene(&mut self, scene: Scene, path: Option<PathBuf>) {
         if let Some(old) = &self.path {
             self.looking.memory.remember(old, &self.looking.view);
         }
+        self.isolation_memory = self.isolation_memory();
+        self.isolation = path.as_deref().map_or(crate::trace::Isolation::NONE, |p| {
+            self.isolation_memory.recall(p)
+        });
+        keep_in_range(&mut self.isolation, &scene);
         self.saved = scene.clone();
         self.scene = scene;
         self.path = path;
@@ -120,6 +213,7 @@ impl EditorApp {
         self.undoer.add_undo(&self.scene);
         self.selection = Selection::None;
         self.error = None;
+        self.warning = None;
     }
 
     /// Answers the crash-recovery offer as its buttons do (for tests and the window).
@@ -149,8 +243,4 @@ impl EditorApp {
         self.saved = saved;
         self.message = Some("Restored unsaved work from the last session".to_owned());
     }
-}
-
-fn scene_dialog() -> rfd::FileDialog {
-    rfd::FileDialog::new().add_filter("raylab scene", &["ron"])
 }

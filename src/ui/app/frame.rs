@@ -2,11 +2,13 @@
 //! windows and dialogs over them.
 
 use crate::ui::commands::{Command, Selection};
+use crate::ui::compare::{compare_view_ui, compare_window, is_compare_image};
 use crate::ui::document::confirm::{DiscardAction, discard_modal};
-use crate::ui::document::export::export_window;
+use crate::ui::document::export_window::export_window;
 use crate::ui::document::files;
 use crate::ui::panels::inspector::inspector_ui;
 use crate::ui::panels::menu::{MenuState, menu_ui};
+use crate::ui::panels::notices::{Tone, notice_ui};
 use crate::ui::panels::outliner::outliner_ui;
 use crate::ui::panels::status_bar::{StatusInfo, status_bar_ui};
 use crate::ui::shortcuts::{help_window, shortcut_commands};
@@ -59,10 +61,14 @@ impl EditorApp {
             preview.sync(
                 self.looking.shown_scene(&self.scene),
                 &self.preview_settings,
+                &self.isolation,
             );
         }
-        self.looking
-            .sync_inspections(&self.scene, self.preview_settings.switches);
+        self.looking.sync_inspections(
+            &self.scene,
+            self.preview_settings.switches,
+            &self.isolation,
+        );
         if self.looking.is_busy() {
             // Frames keep coming until the probe answers (it also wakes the window).
             ctx.request_repaint();
@@ -101,9 +107,11 @@ impl EditorApp {
         if let Some(path) = dropped.into_iter().next() {
             if files::is_scene_file(&path) {
                 self.commands.push(Command::Open(path));
+            } else if is_compare_image(&path) {
+                self.commands.push(Command::CompareWith(path));
             } else {
                 self.error = Some(format!(
-                    "{}: only .ron scene files can be opened",
+                    "{}: drop a .ron scene to open it, or a .png or .ppm picture to compare with",
                     path.display()
                 ));
             }
@@ -121,7 +129,9 @@ impl EditorApp {
         let mut commands = std::mem::take(&mut self.commands);
         egui::Panel::top("menu").show(ui, |ui| {
             let state = MenuState {
-                recent: self.recent.paths(),
+                recent: &self.recent,
+                in_app_dialogs: self.file_dialogs.uses_in_app(),
+                native_dialogs: self.file_dialogs.native_available(),
                 can_undo: self.undoer.has_undo(&self.scene),
                 can_redo: self.undoer.has_redo(&self.scene),
                 has_selection: matches!(
@@ -132,23 +142,16 @@ impl EditorApp {
             menu_ui(ui, &state, &mut commands);
         });
         if let Some(error) = &self.error {
-            egui::Panel::top("error")
-                .frame(
-                    egui::Frame::new()
-                        .fill(Color32::from_rgb(90, 28, 28))
-                        .inner_margin(8),
-                )
-                .show(ui, |ui| {
-                    ui.horizontal(|ui| {
-                        ui.label(RichText::new("▲").color(Color32::from_rgb(255, 200, 120)));
-                        ui.label(RichText::new(error).color(Color32::WHITE));
-                        ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
-                            if ui.button("Dismiss").clicked() {
-                                commands.push(Command::DismissError);
-                            }
-                        });
-                    });
-                });
+            notice_ui(ui, Tone::Error, error, Command::DismissError, &mut commands);
+        }
+        if let Some(warning) = &self.warning {
+            notice_ui(
+                ui,
+                Tone::Warning,
+                warning,
+                Command::DismissWarning,
+                &mut commands,
+            );
         }
         egui::Panel::bottom("status").show(ui, |ui| {
             let file = self.file_label();
@@ -160,22 +163,32 @@ impl EditorApp {
                 frame: self.preview.as_ref().and_then(PreviewLink::shown),
                 progress: self.preview.as_ref().and_then(PreviewLink::pass_progress),
                 error: self.preview.as_ref().and_then(PreviewLink::error),
+                autosave_error: self.autosave.error.as_deref(),
                 message: self.message.as_deref(),
             };
             status_bar_ui(ui, &info);
         });
+        // A small window starts with narrower side panels, and either can be narrowed
+        // further, so the viewport keeps room.
+        let window_width = ui.available_width();
         egui::Panel::left("outliner")
             .resizable(true)
-            .default_size(230.0)
-            .size_range(160.0..=420.0)
+            .default_size((window_width * 0.2).clamp(140.0, 230.0))
+            .size_range(120.0..=420.0)
             .show(ui, |ui| {
                 panel_title_ui(ui, "Outliner");
-                outliner_ui(ui, &self.scene, &self.selection, &mut commands);
+                outliner_ui(
+                    ui,
+                    &self.scene,
+                    &self.selection,
+                    &self.isolation,
+                    &mut commands,
+                );
             });
         egui::Panel::right("inspector")
             .resizable(true)
-            .default_size(330.0)
-            .size_range(240.0..=560.0)
+            .default_size((window_width * 0.3).clamp(220.0, 330.0))
+            .size_range(220.0..=560.0)
             .show(ui, |ui| {
                 panel_title_ui(ui, "Inspector");
                 inspector_ui(
@@ -189,11 +202,16 @@ impl EditorApp {
                 self.focus_name = false;
             });
         egui::CentralPanel::no_frame().show(ui, |ui| {
+            if self.compare.is_showing() {
+                compare_view_ui(ui, &mut self.compare, &self.scene, &mut commands);
+                return;
+            }
             let input = ViewportInput {
                 scene: &self.scene,
                 preview: self.preview.as_ref(),
                 selection: &self.selection,
                 settings: &self.preview_settings,
+                isolation: &self.isolation,
                 view: &self.looking.view,
                 ray_paths: &self.looking.ray_paths,
                 inspected: self.looking.inspected,
@@ -211,16 +229,27 @@ impl EditorApp {
             self.restore(answer);
         }
         help_window(ctx, &mut self.show_help);
-        export_window(ctx, &mut self.export, &self.scene);
+        export_window(
+            ctx,
+            &mut self.export,
+            &self.scene,
+            &self.preview_settings,
+            &mut self.commands,
+        );
+        compare_window(ctx, &mut self.compare, &mut self.commands);
+        self.file_dialog_ui(ctx);
         if let Some(pixel) = self.looking.inspected {
             let view = InspectorView {
                 pixel,
                 inspection: self.looking.inspection(),
-                current: self
-                    .looking
-                    .inspections_current(&self.scene, self.preview_settings.switches),
+                current: self.looking.inspections_current(
+                    &self.scene,
+                    self.preview_settings.switches,
+                    &self.isolation,
+                ),
                 ray_paths: &self.looking.ray_paths,
                 anchor: self.looking.anchor,
+                compared: self.compare.pixel_values(pixel),
             };
             pixel_inspector_ui(ctx, &view, &mut self.commands);
         }
@@ -234,16 +263,11 @@ impl EditorApp {
                 &mut self.commands,
             );
         }
-        if let Some(action) = self.pending.clone() {
-            let answer = discard_modal(ctx, &action);
-            match answer {
-                Some(true) => {
-                    self.pending = None;
-                    self.perform(action, ctx);
-                }
-                Some(false) => self.pending = None,
-                None => {}
-            }
+        if let Some(action) = self.pending.clone()
+            && let Some(answer) = discard_modal(ctx, &action)
+        {
+            self.pending = None;
+            self.answer_discard(action, answer, ctx);
         }
     }
 }
@@ -259,7 +283,7 @@ fn drop_hint(ctx: &egui::Context) {
     painter.text(
         rect.center(),
         egui::Align2::CENTER_CENTER,
-        "Drop a .ron scene to open it",
+        "Drop a .ron scene to open it, or a PNG to compare with",
         egui::FontId::proportional(22.0),
         Color32::WHITE,
     );

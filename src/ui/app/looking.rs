@@ -6,7 +6,7 @@ use std::sync::Arc;
 
 use crate::preview::WorldCache;
 use crate::scene::Scene;
-use crate::trace::TermSwitches;
+use crate::trace::{Isolation, TermSwitches};
 use crate::ui::viewport::pick_link::{PickLink, PickRequest};
 use crate::ui::viewport::pixel_inspector::link::InspectionLink;
 use crate::ui::viewport::pixel_inspector::{PixelAnchor, PixelInspection};
@@ -106,10 +106,10 @@ impl Looking {
         self.shown.insert(cached)
     }
 
-    /// Casts a click's ray off the UI thread.
-    pub fn pick(&mut self, scene: &Scene, request: PickRequest) {
+    /// Casts a click's ray off the UI thread, past the hidden objects.
+    pub fn pick(&mut self, scene: &Scene, isolation: &Isolation, request: PickRequest) {
         if let Some(probes) = &mut self.probes {
-            probes.picks.ask(scene, request);
+            probes.picks.ask(scene, isolation, request);
         }
     }
 
@@ -120,14 +120,19 @@ impl Looking {
         probes.picks.poll(scene)
     }
 
-    /// Asks for the inspected and pinned pixels of `scene` with `switches` if they are
-    /// not what was last asked.
-    pub fn sync_inspections(&mut self, scene: &Scene, switches: TermSwitches) {
+    /// Asks for the inspected and pinned pixels of `scene` with `switches` and
+    /// `isolation` if they are not what was last asked.
+    pub fn sync_inspections(
+        &mut self,
+        scene: &Scene,
+        switches: TermSwitches,
+        isolation: &Isolation,
+    ) {
         let pixels = self
             .ray_paths
             .pixels(self.inspected, scene.camera.width, scene.camera.height);
         if let Some(probes) = &mut self.probes {
-            probes.inspections.sync(scene, switches, pixels);
+            probes.inspections.sync(scene, switches, isolation, pixels);
         }
     }
 
@@ -149,10 +154,16 @@ impl Looking {
         self.probes.as_ref()?.inspections.get(pixel)
     }
 
-    /// Whether the inspections describe `scene` with `switches` as they are now.
-    pub fn inspections_current(&self, scene: &Scene, switches: TermSwitches) -> bool {
+    /// Whether the inspections describe `scene` with `switches` and `isolation` as they
+    /// are now.
+    pub fn inspections_current(
+        &self,
+        scene: &Scene,
+        switches: TermSwitches,
+        isolation: &Isolation,
+    ) -> bool {
         self.probes
             .as_ref()
-            .is_some_and(|p| p.inspections.is_current(scene, switches))
+            .is_some_and(|p| p.inspections.is_current(scene, switches, isolation))
     }
 }

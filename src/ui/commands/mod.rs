@@ -2,6 +2,7 @@
 //! the app applies them once per frame (`app.rs`), which also feeds undo and restarts the
 //! preview. Scene edits are plain functions here, testable without a window.
 
+mod placement;
 mod scene_edit;
 
 use std::path::PathBuf;
@@ -32,13 +33,15 @@ pub use scene_edit::{repair_selection, unique_name};
 /// A change to the scene (and the selection that follows it).
 #[derive(Clone, Debug, PartialEq)]
 pub enum SceneEdit {
-    /// Adds a unit shape with the first material (creating one if there is none).
+    /// Adds a unit shape where the camera looks, upright and standing on the floor if
+    /// there is one, with the first material (creating one if there is none).
     AddObject(Shape),
     /// Adds a light of a kind.
     AddLight(LightKind),
     /// Adds a grey material with a fresh name.
     AddMaterial,
-    /// Duplicates the selected object, light or material.
+    /// Duplicates the selected object or light (moved aside, so both are seen) or
+    /// material, and selects the copy.
     DuplicateSelected,
     /// Deletes the selected object, light or (unused) material.
     DeleteSelected,
@@ -102,8 +105,14 @@ pub enum Command {
     ShowHelp,
     /// Close the window (asks first if there are unsaved changes).
     Quit,
+    /// Pick the Export PNG file with a file dialog.
+    BrowseExportPath,
+    /// Use the in-app file dialog even where a native one can be shown (editor setting).
+    SetPreferInAppFileDialog(bool),
     /// Hide the error area.
     DismissError,
+    /// Hide the warning area.
+    DismissWarning,
     /// Put the keyboard focus in the inspector's name field (outliner "Rename").
     FocusName,
     /// Change the preview's switches, view and debug overlays (editor state, not undoable).
@@ -120,4 +129,10 @@ pub enum Command {
     SetSceneCameraFromView,
     /// Change what the ray-path overlay draws, and the pinned pixels.
     SetRayPaths(crate::ui::viewport::ray_paths::RayPathSettings),
+    /// Mute, solo or hide (editor state, not undoable, not a scene edit).
+    Isolate(crate::ui::viewport::isolation::IsolationToggle),
+    /// Show the Compare with Image window.
+    ShowCompare,
+    /// Compare the scene with another renderer's picture in this file (in the background).
+    CompareWith(PathBuf),
 }

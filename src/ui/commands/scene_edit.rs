@@ -3,8 +3,8 @@
 
 use glam::DVec3;
 
-use super::{SceneEdit, Selection};
-use crate::scene::{Light, LightKind, Material, Object, Scene, Transform};
+use super::{SceneEdit, Selection, placement};
+use crate::scene::{Light, LightKind, Material, Object, Scene};
 
 impl SceneEdit {
     /// Applies the edit; the selection follows added, duplicated and deleted items.
@@ -17,10 +17,11 @@ impl SceneEdit {
             SceneEdit::AddObject(shape) => {
                 let material = first_material(scene);
                 let name = unique_name(shape.name(), scene.objects.iter().map(|o| &o.name));
+                let transform = placement::new_object_transform(scene, shape);
                 scene.objects.push(Object {
                     name,
                     shape,
-                    transform: Transform::default(),
+                    transform,
                     material,
                 });
                 *selection = Selection::Object(scene.objects.len() - 1);
@@ -137,11 +138,16 @@ fn duplicate(scene: &mut Scene, selection: &mut Selection) -> Result<(), String>
         Selection::Object(i) => {
             let mut copy = scene.objects.get(i).ok_or("no such object")?.clone();
             copy.name = unique_name(&copy.name, scene.objects.iter().map(|o| &o.name));
+            let offset = placement::duplicate_offset(scene, copy.shape, &copy.transform);
+            copy.transform = placement::moved(&copy.transform, offset);
             scene.objects.insert(i + 1, copy);
             *selection = Selection::Object(i + 1);
         }
         Selection::Light(i) => {
-            let copy = scene.lights.get(i).ok_or("no such light")?.clone();
+            let mut copy = scene.lights.get(i).ok_or("no such light")?.clone();
+            if let Light::Point { position, .. } | Light::Spot { position, .. } = &mut copy {
+                *position += placement::duplicate_light_offset(scene);
+            }
             scene.lights.insert(i + 1, copy);
             *selection = Selection::Light(i + 1);
         }
@@ -247,6 +253,11 @@ mod tests {
             .apply(&mut scene, &mut selection)
             .unwrap();
         assert_eq!(scene.objects[7].name, "Cone 2");
+        assert_eq!(selection, Selection::Object(7), "the copy is selected");
+        assert_ne!(
+            scene.objects[7].transform, scene.objects[6].transform,
+            "the copy moved aside"
+        );
         SceneEdit::DeleteSelected
             .apply(&mut scene, &mut selection)
             .unwrap();

@@ -1,22 +1,36 @@
 //! Export PNG: renders in the background at the scene's resolution and samples (editable
-//! in the window), with a progress bar and Cancel, and writes the file atomically. When
-//! the file cannot be written the render is kept, so it can be saved elsewhere.
+//! in the window), either the full picture or as the viewport shows it, then encodes and
+//! writes the file atomically on the same background thread, so the window never waits
+//! for the encoder or the disk. When the file cannot be written the render is kept, so it
+//! can be saved elsewhere. A size that cannot fit in memory is refused before anything is
+//! allocated.
 
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-use egui::{DragValue, RichText, Ui};
-
 use crate::preview::BackgroundJob;
 use crate::scene::{MAX_IMAGE_SIDE, Scene};
 use crate::trace::{Image, RenderOptions, World, render};
-use crate::ui::document::files::{with_png_extension, write_png};
+use crate::ui::document::files::write_png;
+use crate::ui::viewport::preview_settings::PreviewSettings;
 
-/// A render running on its own thread.
+/// Peak bytes an export needs per pixel: the sample sums (f64 RGB) and the tiles they are
+/// gathered from, the averaged image (f32 RGB), and the 8-bit rows and encoded PNG.
+pub const EXPORT_BYTES_PER_PIXEL: u64 = 24 + 24 + 12 + 3 + 3;
+
+/// What an export job hands back: the image, and whether it reached the file.
+struct Written {
+    image: Image,
+    written: Result<(), String>,
+}
+
+/// A render (or a write of the kept render) running on its own thread.
 struct ExportJob {
-    job: BackgroundJob<Image>,
+    job: BackgroundJob<Written>,
     path: PathBuf,
     started: Instant,
+    /// Whether the job renders (false: it only writes the kept render).
+    renders: bool,
 }
 
 /// The Export window's state.
@@ -24,14 +38,22 @@ struct ExportJob {
 pub struct ExportState {
     /// Whether the window is shown.
     pub open: bool,
-    /// What to render: size and samples (the switches are always the full picture).
+    /// What to render: size and samples; the switches and view when `as_shown`.
     pub settings: Option<RenderOptions>,
+    /// Export with the viewport's switches, solo and view instead of the full picture.
+    pub as_shown: bool,
+    /// Width and height keep `aspect` when one of them is edited.
+    pub keep_aspect: bool,
+    /// Width over height, as linked.
+    pub aspect: f64,
     /// Where to write, as typed or picked.
     pub path: String,
     job: Option<ExportJob>,
     kept: Option<Image>,
     /// The outcome of the last export: a message, or an error.
     pub status: Option<Result<String, String>>,
+    /// Bytes an export may use (tests set it; by default the memory available now).
+    pub memory_budget: Option<u64>,
 }
 
 impl ExportState {
@@ -45,13 +67,21 @@ impl ExportState {
         }
         if self.job.is_none() {
             self.settings = Some(RenderOptions::from_scene(scene));
+            self.keep_aspect = true;
+            self.aspect = f64::from(scene.camera.width) / f64::from(scene.camera.height.max(1));
         }
     }
 
-    /// Whether a render is running.
+    /// Whether a render or a write is running.
     #[must_use]
     pub fn is_running(&self) -> bool {
         self.job.is_some()
+    }
+
+    /// Whether the running job renders (its progress means something).
+    #[must_use]
+    pub fn is_rendering(&self) -> bool {
+        self.job.as_ref().is_some_and(|j| j.renders)
     }
 
     /// The finished render that could not be written, if any.
@@ -60,32 +90,70 @@ impl ExportState {
         self.kept.as_ref()
     }
 
+    /// What the export renders: the window's size and samples, with the full picture's
+    /// switches, or the viewport's when `as_shown`.
+    #[must_use]
+    pub fn options(&self, scene: &Scene, shown: &PreviewSettings) -> RenderOptions {
+        let sized = self
+            .settings
+            .clone()
+            .unwrap_or_else(|| RenderOptions::from_scene(scene));
+        let looks = if self.as_shown {
+            shown.render_options(scene)
+        } else {
+            RenderOptions::from_scene(scene)
+        };
+        RenderOptions {
+            width: sized.width,
+            height: sized.height,
+            samples_per_pixel: sized.samples_per_pixel,
+            ..looks
+        }
+    }
+
     /// Starts rendering `scene` with the window's settings, to be written to `path`.
-    /// `ctx` is repainted when the render ends.
+    /// `ctx` is repainted when the job ends.
     ///
     /// # Errors
-    /// The scene cannot be rendered, or a render is already running.
-    pub fn start(&mut self, scene: &Scene, path: &Path, ctx: &egui::Context) -> Result<(), String> {
+    /// The scene cannot be rendered, the image would not fit in memory, or a job is
+    /// already running.
+    pub fn start(
+        &mut self,
+        scene: &Scene,
+        shown: &PreviewSettings,
+        path: &Path,
+        ctx: &egui::Context,
+    ) -> Result<(), String> {
         if self.job.is_some() {
             return Err("an export is already running".to_owned());
         }
-        let options = self
-            .settings
-            .unwrap_or_else(|| RenderOptions::from_scene(scene));
+        let options = self.options(scene, shown);
+        let budget = self.memory_budget.or_else(available_memory_bytes);
+        check_export_memory(options.width, options.height, budget)?;
         let world = World::new(scene).map_err(|e| format!("cannot render this scene: {e}"))?;
+        let target = path.to_owned();
         let ctx = ctx.clone();
         let job = BackgroundJob::spawn(
             "export",
-            move |progress| render(&world, &options, progress).map(|(image, _)| image),
+            move |progress| {
+                let (image, _) = render(&world, &options, progress)?;
+                let written = write_png(&image, &target);
+                Some(Written { image, written })
+            },
             move || ctx.request_repaint(),
         )?;
+        self.run(job, path, true);
+        Ok(())
+    }
+
+    fn run(&mut self, job: BackgroundJob<Written>, path: &Path, renders: bool) {
         self.job = Some(ExportJob {
             job,
             path: path.to_owned(),
             started: Instant::now(),
+            renders,
         });
         self.status = None;
-        Ok(())
     }
 
     /// Stops the running render at its next tile boundary.
@@ -95,7 +163,7 @@ impl ExportState {
         }
     }
 
-    /// Collects a finished render and writes it. Call every frame.
+    /// Collects a finished job. Call every frame.
     pub fn poll(&mut self) {
         let Some(job) = &self.job else {
             return;
@@ -103,24 +171,48 @@ impl ExportState {
         let Some(outcome) = job.job.try_result() else {
             return;
         };
-        let elapsed = job.started.elapsed();
+        let elapsed = job.renders.then(|| job.started.elapsed());
         let path = job.path.clone();
         self.job = None;
         match outcome {
-            Ok(image) => self.write(image, &path, Some(elapsed)),
+            Ok(Written { image, written }) => self.finish(image, written, &path, elapsed),
             Err(error) => self.status = Some(Err(error)),
         }
     }
 
-    /// Writes the kept render to `path` (after a failed write).
-    pub fn save_kept(&mut self, path: &Path) {
-        if let Some(image) = self.kept.take() {
-            self.write(image, path, None);
+    /// Writes the kept render to `path` (after a failed write), in the background.
+    ///
+    /// # Errors
+    /// The thread cannot start, or a job is already running.
+    pub fn save_kept(&mut self, path: &Path, ctx: &egui::Context) -> Result<(), String> {
+        if self.job.is_some() {
+            return Err("an export is already running".to_owned());
         }
+        let Some(image) = self.kept.take() else {
+            return Ok(());
+        };
+        let target = path.to_owned();
+        let ctx = ctx.clone();
+        let job = BackgroundJob::spawn(
+            "export",
+            move |_| {
+                let written = write_png(&image, &target);
+                Some(Written { image, written })
+            },
+            move || ctx.request_repaint(),
+        )?;
+        self.run(job, path, false);
+        Ok(())
     }
 
-    fn write(&mut self, image: Image, path: &Path, elapsed: Option<Duration>) {
-        match write_png(&image, path) {
+    fn finish(
+        &mut self,
+        image: Image,
+        written: Result<(), String>,
+        path: &Path,
+        elapsed: Option<Duration>,
+    ) {
+        match written {
             Ok(()) => {
                 let time =
                     elapsed.map_or_else(String::new, |t| format!(" in {:.1} s", t.as_secs_f64()));
@@ -146,106 +238,113 @@ impl ExportState {
     pub fn progress(&self) -> Option<f64> {
         self.job.as_ref().map(|j| j.job.fraction())
     }
-}
 
-/// Shows the Export PNG window (when open).
-pub fn export_window(ctx: &egui::Context, state: &mut ExportState, scene: &Scene) {
-    let mut open = state.open;
-    egui::Window::new("Export PNG")
-        .open(&mut open)
-        .resizable(false)
-        .collapsible(false)
-        .default_width(360.0)
-        .pivot(egui::Align2::CENTER_CENTER)
-        .default_pos(ctx.content_rect().center())
-        .show(ctx, |ui| export_ui(ui, state, scene));
-    state.open = open || state.is_running();
-    state.poll();
-    if state.is_running() {
-        ctx.request_repaint_after(Duration::from_millis(100));
+    /// Sets the width (or the height, `height_edited`), the other side following the
+    /// linked aspect ratio when `keep_aspect` is on.
+    pub fn resize(&mut self, width: u32, height: u32, height_edited: bool) {
+        let Some(settings) = &mut self.settings else {
+            return;
+        };
+        let side = |x: f64| (x.round() as u32).clamp(1, MAX_IMAGE_SIDE);
+        (settings.width, settings.height) = match (self.keep_aspect, height_edited) {
+            (false, _) => (width, height),
+            (true, false) => (width, side(f64::from(width) / self.aspect)),
+            (true, true) => (side(f64::from(height) * self.aspect), height),
+        };
     }
 }
 
-fn export_ui(ui: &mut Ui, state: &mut ExportState, scene: &Scene) {
-    let mut settings = state
-        .settings
-        .unwrap_or_else(|| RenderOptions::from_scene(scene));
-    let running = state.is_running();
-    ui.add_enabled_ui(!running, |ui| {
-        egui::Grid::new("export settings")
-            .num_columns(2)
-            .spacing([12.0, 6.0])
-            .show(ui, |ui| {
-                ui.label("Width");
-                ui.add(DragValue::new(&mut settings.width).range(1..=MAX_IMAGE_SIDE))
-                    .accessible_name("export width");
-                ui.end_row();
-                ui.label("Height");
-                ui.add(DragValue::new(&mut settings.height).range(1..=MAX_IMAGE_SIDE))
-                    .accessible_name("export height");
-                ui.end_row();
-                ui.label("Samples");
-                ui.add(DragValue::new(&mut settings.samples_per_pixel).range(1..=65536))
-                    .accessible_name("export samples");
-                ui.end_row();
-                ui.label("File");
-                ui.horizontal(|ui| {
-                    ui.add(egui::TextEdit::singleline(&mut state.path).desired_width(220.0))
-                        .accessible_name("export path");
-                    if ui.button("Browse…").clicked()
-                        && let Some(path) = rfd::FileDialog::new()
-                            .add_filter("PNG image", &["png"])
-                            .set_file_name("render.png")
-                            .save_file()
-                    {
-                        state.path = with_png_extension(path).display().to_string();
-                    }
-                });
-                ui.end_row();
-            });
-    });
-    state.settings = Some(settings);
-    ui.add_space(6.0);
-    if let Some(progress) = state.progress() {
-        ui.horizontal(|ui| {
-            ui.add(
-                egui::ProgressBar::new(progress as f32)
-                    .show_percentage()
-                    .desired_width(260.0),
-            );
-            if ui.button("Cancel").clicked() {
-                state.cancel();
-            }
-        });
-    } else {
-        ui.horizontal(|ui| {
-            let path = PathBuf::from(state.path.trim());
-            let has_path = !state.path.trim().is_empty();
-            if ui
-                .add_enabled(has_path, egui::Button::new("Render and save"))
-                .clicked()
-            {
-                let path = with_png_extension(path.clone());
-                if let Err(error) = state.start(scene, &path, ui.ctx()) {
-                    state.status = Some(Err(error));
-                }
-            }
-            if state.kept_image().is_some()
-                && ui
-                    .add_enabled(has_path, egui::Button::new("Save kept render"))
-                    .clicked()
-            {
-                state.save_kept(&with_png_extension(path));
-            }
-        });
+/// Refuses a `width` x `height` export that needs more than `budget` bytes (none: no
+/// limit known), with the numbers in the message.
+///
+/// # Errors
+/// The message for the user.
+pub fn check_export_memory(width: u32, height: u32, budget: Option<u64>) -> Result<(), String> {
+    let needed = u64::from(width) * u64::from(height) * EXPORT_BYTES_PER_PIXEL;
+    match budget {
+        Some(budget) if needed > budget => Err(format!(
+            "a {width}×{height} export needs about {:.1} GB of memory and {:.1} GB is \
+             available: choose a smaller size",
+            needed as f64 / 1e9,
+            budget as f64 / 1e9
+        )),
+        _ => Ok(()),
     }
-    match &state.status {
-        Some(Ok(message)) => {
-            ui.label(RichText::new(message).color(egui::Color32::from_rgb(140, 200, 140)));
-        }
-        Some(Err(error)) => {
-            ui.label(RichText::new(error).color(egui::Color32::from_rgb(255, 120, 110)));
-        }
-        None => {}
+}
+
+/// Memory the system can give now (Linux: `MemAvailable`); `None` where unknown.
+#[must_use]
+pub fn available_memory_bytes() -> Option<u64> {
+    let text = std::fs::read_to_string("/proc/meminfo").ok()?;
+    let line = text.lines().find(|l| l.starts_with("MemAvailable:"))?;
+    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib * 1024)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_export_too_large_for_memory_is_refused_before_it_starts() {
+        assert!(check_export_memory(800, 600, Some(1 << 30)).is_ok());
+        let error = check_export_memory(16384, 16384, Some(8_000_000_000)).unwrap_err();
+        assert!(
+            error.contains("16384×16384") && error.contains("8.0 GB"),
+            "{error}"
+        );
+        assert!(
+            check_export_memory(16384, 16384, None).is_ok(),
+            "no limit known"
+        );
+
+        let scene = crate::scene::examples::default_scene();
+        let mut state = ExportState::default();
+        state.show(&scene, None);
+        state.memory_budget = Some(1000);
+        let ctx = egui::Context::default();
+        let shown = PreviewSettings::default();
+        let error = state
+            .start(&scene, &shown, Path::new("never.png"), &ctx)
+            .unwrap_err();
+        assert!(error.contains("memory"), "{error}");
+        assert!(!state.is_running(), "nothing started");
+    }
+
+    #[test]
+    fn width_and_height_keep_the_aspect_ratio_unless_unlinked() {
+        let scene = crate::scene::examples::default_scene();
+        let mut state = ExportState::default();
+        state.show(&scene, None);
+        state.aspect = 2.0;
+        state.resize(401, 10, false);
+        let size = |s: &ExportState| s.settings.as_ref().map(|o| (o.width, o.height));
+        assert_eq!(size(&state), Some((401, 201)));
+        state.resize(10, 50, true);
+        assert_eq!(size(&state), Some((100, 50)));
+        state.keep_aspect = false;
+        state.resize(30, 50, true);
+        assert_eq!(size(&state), Some((30, 50)));
+    }
+
+    #[test]
+    fn as_shown_takes_the_viewports_switches_and_view() {
+        let scene = crate::scene::examples::default_scene();
+        let mut shown = PreviewSettings::default();
+        shown.switches.set(crate::trace::Term::Diffuse, false);
+        shown.view = crate::trace::View::Depth;
+        let mut state = ExportState::default();
+        state.show(&scene, None);
+        assert_eq!(
+            state.options(&scene, &shown).view,
+            crate::trace::View::Beauty
+        );
+        state.as_shown = true;
+        let options = state.options(&scene, &shown);
+        assert_eq!(
+            (options.switches, options.view),
+            (shown.switches, shown.view)
+        );
+        assert_eq!(options.width, scene.camera.width);
     }
 }

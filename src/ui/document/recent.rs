@@ -10,10 +10,14 @@ const KEY: &str = "raylab.recent_files";
 /// How many files are remembered.
 pub const MAX_RECENT: usize = 10;
 
-/// Most recent first, no duplicates.
+/// Most recent first, no duplicates. A file that failed to open stays, marked, so a
+/// file on an unplugged drive or a share that is down is still there next time.
 #[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub struct RecentFiles {
     paths: Vec<PathBuf>,
+    /// The files whose last open failed.
+    #[serde(default)]
+    failed: Vec<PathBuf>,
 }
 
 impl RecentFiles {
@@ -30,17 +34,30 @@ impl RecentFiles {
         eframe::set_value(storage, KEY, self);
     }
 
-    /// Moves (or adds) `path` to the front.
+    /// Moves (or adds) `path` to the front: it opened or was saved, so it is no longer
+    /// marked as failed.
     pub fn push(&mut self, path: &Path) {
         let path = std::fs::canonicalize(path).unwrap_or_else(|_| path.to_owned());
         self.paths.retain(|p| *p != path);
+        self.failed.retain(|p| *p != path);
         self.paths.insert(0, path);
         self.paths.truncate(MAX_RECENT);
     }
 
-    /// Forgets `path` (e.g. it no longer opens).
-    pub fn remove(&mut self, path: &Path) {
-        self.paths.retain(|p| p != path);
+    /// Marks `path` (as listed, or as given) as failing to open; it stays in the list.
+    pub fn mark_failed(&mut self, path: &Path) {
+        let listed = std::fs::canonicalize(path).unwrap_or_else(|_| path.to_owned());
+        for candidate in [path.to_owned(), listed] {
+            if self.paths.contains(&candidate) && !self.failed.contains(&candidate) {
+                self.failed.push(candidate);
+            }
+        }
+    }
+
+    /// Whether the last open of `path` failed.
+    #[must_use]
+    pub fn has_failed(&self, path: &Path) -> bool {
+        self.failed.iter().any(|p| p == path)
     }
 
     /// The files, most recent first.
@@ -85,5 +102,20 @@ mod tests {
                 .count(),
             1
         );
+    }
+
+    #[test]
+    fn a_file_that_failed_to_open_stays_marked_until_it_opens() {
+        let mut recent = RecentFiles::default();
+        let path = Path::new("/nonexistent/gone.ron");
+        recent.push(path);
+        recent.mark_failed(path);
+        assert_eq!(recent.paths(), [path]);
+        assert!(recent.has_failed(path));
+        let mut storage = MapStorage::default();
+        recent.save(&mut storage);
+        assert!(RecentFiles::load(Some(&storage)).has_failed(path));
+        recent.push(path);
+        assert!(!recent.has_failed(path));
     }
 }

@@ -10,9 +10,11 @@ use glam::DVec2;
 use crate::gizmo::handles::{HandleShape, pick_handle};
 use crate::gizmo::{GizmoMode, HandleId};
 use crate::scene::{Light, Scene, Transform};
+use crate::trace::Isolation;
 use crate::ui::commands::{Command, Selection};
 use crate::ui::gizmo::edit::{DragGeometry, Grabbed, drag_edit, grab};
 use crate::ui::gizmo::hit::handle_shapes;
+use crate::ui::gizmo::lights::{dim_unlit_markers, marker_toggles_ui};
 use crate::ui::gizmo::overlay::{Part, gizmo_elements};
 use crate::ui::gizmo::paint::{paint_elements, paint_matrix_hint, paint_readout};
 use crate::ui::gizmo::projection::ViewMapping;
@@ -45,6 +47,8 @@ struct GizmoState {
     mode: GizmoMode,
     drag: Option<Drag>,
     readout: Option<String>,
+    /// Where the mode buttons were last frame: presses there are theirs.
+    toolbar: Option<Rect>,
 }
 
 fn to_dvec(p: Pos2) -> DVec2 {
@@ -63,6 +67,7 @@ pub fn gizmo_ui(
     scene: &Scene,
     selection: &Selection,
     navigate_only: bool,
+    isolation: &Isolation,
     commands: &mut Vec<Command>,
 ) -> bool {
     let picture = *view.screen_from_image.to();
@@ -86,11 +91,15 @@ pub fn gizmo_ui(
         }
     }
 
-    let elements = gizmo_elements(scene, selection, state.mode, view);
+    let mut elements = gizmo_elements(scene, selection, state.mode, view);
+    dim_unlit_markers(&mut elements, isolation);
     let shapes = handle_shapes(&elements);
     let hit_shapes: Vec<HandleShape> = shapes.iter().map(|(s, _)| *s).collect();
+    // A marker or handle under the mode buttons must not take their presses.
+    let toolbar = state.toolbar;
+    let over_toolbar = |pos: Pos2| toolbar.is_some_and(|r| r.expand(2.0).contains(pos));
     let pick = |pos: Pos2| {
-        if navigate_only {
+        if navigate_only || over_toolbar(pos) {
             return None;
         }
         pick_handle(to_dvec(pos), &hit_shapes).map(|k| shapes[k].1)
@@ -101,7 +110,7 @@ pub fn gizmo_ui(
         let start = ctx
             .input(|i| i.pointer.press_origin())
             .or_else(|| response.interact_pointer_pos());
-        if let Some(start) = start {
+        if let Some(start) = start.filter(|p| !over_toolbar(*p)) {
             state.drag = start_drag(response, scene, selection, view, modifiers, start, pick);
         }
     }
@@ -147,6 +156,9 @@ pub fn gizmo_ui(
     let hot = dragged_handle.or_else(|| response.hover_pos().and_then(pick));
     let painter = ui.painter_at(picture);
     paint_elements(&painter, &elements, hot);
+    marker_toggles_ui(
+        ui, picture, &elements, scene, selection, isolation, commands,
+    );
     if let Selection::Object(i) = selection
         && let Some(object) = scene.objects.get(*i)
         && matches!(object.transform, Transform::Matrix(_))
@@ -179,7 +191,9 @@ pub fn gizmo_ui(
     }
 
     let camera_view = !crate::ui::gizmo::camera::shows_scene_camera(view, &scene.camera);
-    match gizmo_modes_ui(ui, picture, &mut state.mode, camera_view) {
+    let (action, toolbar) = gizmo_modes_ui(ui, picture, &mut state.mode, camera_view);
+    state.toolbar = toolbar;
+    match action {
         Some(ToolbarAction::Frame) => frame_selection(scene, selection, view, commands),
         Some(ToolbarAction::CameraView) => commands.push(Command::ToggleCameraView),
         Some(ToolbarAction::SetSceneCamera) => commands.push(Command::SetSceneCameraFromView),

@@ -1,14 +1,20 @@
-//! The light gizmos: a marker per light (a click selects it), a selected spotlight's cone
-//! with its tip and rim handles, and a directional light's arrow with its aim handle.
+//! The light gizmos: a marker per light (a click selects it; dimmed while the light is
+//! muted or another is solo, with mute and solo buttons beside the selected or isolated
+//! ones), a selected spotlight's cone with its tip and rim handles, and a directional
+//! light's arrow with its aim handle.
 
-use egui::{Color32, Pos2};
+use egui::{Color32, Pos2, Rect, UiBuilder, Vec2};
 use glam::DVec3;
 
 use super::overlay::{CONE_COLOUR, Element, Part, dot, line};
 use super::projection::{ViewMapping, sun_tail};
 use crate::gizmo::HandleId;
 use crate::gizmo::spot::{rim_handle, rim_points, rim_radial, tip_point};
-use crate::scene::Light;
+use crate::scene::{Light, Scene};
+use crate::trace::Isolation;
+use crate::ui::commands::{Command, Selection};
+use crate::ui::panels::outliner::light_label;
+use crate::ui::viewport::isolation::IsolationToggle;
 
 /// The marker of one light; a selected spotlight's cone (its handles come later, on top).
 pub(super) fn light_elements(
@@ -62,6 +68,82 @@ pub(super) fn light_elements(
             }
         }
     }
+}
+
+/// Dims the markers of the lights that do not shine under `isolation`.
+pub(super) fn dim_unlit_markers(elements: &mut [Element], isolation: &Isolation) {
+    for element in elements {
+        if let Some(HandleId::Marker(i)) = element.handle
+            && !isolation.is_light_lit(i)
+        {
+            element.colour = element.colour.gamma_multiply(0.3);
+        }
+    }
+}
+
+/// Where each light's marker is on screen: a point or spot light's dot, the head of a
+/// directional light's arrow (ambient lights have none).
+fn marker_positions(elements: &[Element]) -> Vec<(usize, Pos2)> {
+    elements
+        .iter()
+        .filter_map(|e| match (e.handle, &e.part) {
+            (Some(HandleId::Marker(i)), Part::Dot(p, _) | Part::Arrow(_, p)) => Some((i, *p)),
+            _ => None,
+        })
+        .collect()
+}
+
+/// Mute and solo buttons beside the marker of the selected light and of every muted or
+/// solo one (so the state shows in the picture); Ctrl- or Shift-click on solo adds.
+pub(super) fn marker_toggles_ui(
+    ui: &mut egui::Ui,
+    picture: Rect,
+    elements: &[Element],
+    scene: &Scene,
+    selection: &Selection,
+    isolation: &Isolation,
+    commands: &mut Vec<Command>,
+) {
+    let builder = UiBuilder::new().max_rect(picture);
+    ui.scope_builder(builder, |ui| {
+        ui.set_clip_rect(picture);
+        for (index, at) in marker_positions(elements) {
+            let muted = isolation.muted_lights.contains(&index);
+            let solo = isolation.solo_lights.contains(&index);
+            let Some(light) = scene.lights.get(index) else {
+                continue;
+            };
+            if !(muted || solo || *selection == Selection::Light(index)) {
+                continue;
+            }
+            let label = light_label(light, index);
+            let size = Vec2::new(20.0, 18.0);
+            let mute_rect = Rect::from_min_size(at + Vec2::new(9.0, -size.y - 4.0), size);
+            let solo_rect = mute_rect.translate(Vec2::new(size.x + 2.0, 0.0));
+            let mute = egui::Button::selectable(muted, "M").small();
+            if ui
+                .put(mute_rect, mute)
+                .accessible_name(format!("mute {label} (marker)"))
+                .on_hover_text("Mute: render without this light")
+                .clicked()
+            {
+                commands.push(Command::Isolate(IsolationToggle::Mute(index)));
+            }
+            let solo_button = egui::Button::selectable(solo, "S").small();
+            if ui
+                .put(solo_rect, solo_button)
+                .accessible_name(format!("solo {label} (marker)"))
+                .on_hover_text("Solo: only this light (Ctrl- or Shift-click: several)")
+                .clicked()
+            {
+                let add = ui.input(|i| i.modifiers.command || i.modifiers.shift);
+                commands.push(Command::Isolate(IsolationToggle::Solo {
+                    light: index,
+                    add,
+                }));
+            }
+        }
+    });
 }
 
 /// A light's colour as a marker colour: its hue, bright enough to see.

@@ -70,10 +70,22 @@ pub fn paint_readout(painter: &egui::Painter, at: Pos2, text: &str) {
         FontId::monospace(12.0),
         Color32::from_gray(240),
     );
-    let pos = at + Vec2::new(14.0, -24.0);
+    let pos = readout_pos(at, galley.size(), painter.clip_rect());
     let back = Rect::from_min_size(pos, galley.size()).expand(4.0);
     painter.rect_filled(back, 3.0, Color32::from_black_alpha(190));
     painter.galley(pos, galley, Color32::WHITE);
+}
+
+/// Where a readout of `size` goes: above and right of the cursor at `at`, moved inside
+/// `bounds` (the picture) so that a drag near an edge does not clip its label.
+#[must_use]
+pub fn readout_pos(at: Pos2, size: Vec2, bounds: Rect) -> Pos2 {
+    let inner = bounds.shrink(5.0);
+    let wanted = at + Vec2::new(14.0, -24.0);
+    Pos2::new(
+        wanted.x.min(inner.max.x - size.x).max(inner.min.x),
+        wanted.y.max(inner.min.y).min(inner.max.y - size.y),
+    )
 }
 
 /// A hint for an object with a general matrix transform, which has no gizmo.
@@ -85,4 +97,29 @@ pub fn paint_matrix_hint(painter: &egui::Painter, at: Pos2) {
         FontId::proportional(12.0),
         Color32::from_gray(220),
     );
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_readout_near_an_edge_stays_inside_the_picture() {
+        let picture = Rect::from_min_size(Pos2::new(100.0, 50.0), Vec2::new(400.0, 300.0));
+        let size = Vec2::new(90.0, 14.0);
+        for at in [
+            Pos2::new(495.0, 200.0),
+            Pos2::new(105.0, 52.0),
+            Pos2::new(499.0, 349.0),
+        ] {
+            let label = Rect::from_min_size(readout_pos(at, size, picture), size).expand(4.0);
+            assert!(picture.contains_rect(label), "{at:?}: {label:?}");
+        }
+        // Away from the edges it sits where it always did, up and right of the cursor.
+        let middle = Pos2::new(300.0, 200.0);
+        assert_eq!(
+            readout_pos(middle, size, picture),
+            middle + Vec2::new(14.0, -24.0)
+        );
+    }
 }

@@ -30,19 +30,21 @@ const MODES: [(&str, &str, GizmoMode); 3] = [
 ];
 
 /// Shows the toolbar in the picture's corner (below the pass badge); changes `mode`.
-/// `camera_view` is whether the viewport looks through the scene camera.
+/// `camera_view` is whether the viewport looks through the scene camera. Returns the
+/// action asked for and the rectangle the buttons cover (where a press belongs to them,
+/// not to a light marker or handle under them).
 pub fn gizmo_modes_ui(
     ui: &mut egui::Ui,
     picture: Rect,
     mode: &mut GizmoMode,
     camera_view: bool,
-) -> Option<ToolbarAction> {
+) -> (Option<ToolbarAction>, Option<Rect>) {
     let rect = Rect::from_min_size(
         picture.left_top() + Vec2::new(8.0, 34.0),
         Vec2::new(520.0_f32.min(picture.width() - 16.0), 28.0),
     );
     if !picture.contains_rect(rect) {
-        return None;
+        return (None, None);
     }
     let mut action = None;
     let mut child = ui.new_child(
@@ -50,7 +52,7 @@ pub fn gizmo_modes_ui(
             .max_rect(rect)
             .layout(Layout::left_to_right(egui::Align::Center)),
     );
-    egui::Frame::new()
+    let frame = egui::Frame::new()
         .fill(Color32::from_black_alpha(170))
         .corner_radius(CornerRadius::same(4))
         .inner_margin(3)
@@ -96,5 +98,5 @@ pub fn gizmo_modes_ui(
                 action = Some(ToolbarAction::SetSceneCamera);
             }
         });
-    action
+    (action, Some(frame.response.rect))
 }

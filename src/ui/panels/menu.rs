@@ -1,14 +1,19 @@
 //! The menu bar: File, Edit, Help.
 
-use egui::{Button, Ui};
+use egui::{Button, RichText, Ui};
 
 use crate::ui::commands::{Command, SceneEdit};
+use crate::ui::document::recent::RecentFiles;
 use crate::ui::shortcuts::shortcut_text;
 
 /// What the menus need to know to enable their entries.
 pub struct MenuState<'a> {
     /// Recently used files, most recent first.
-    pub recent: &'a [std::path::PathBuf],
+    pub recent: &'a RecentFiles,
+    /// Whether file dialogs are the in-app ones.
+    pub in_app_dialogs: bool,
+    /// Whether this desktop can show native file dialogs at all.
+    pub native_dialogs: bool,
     /// Whether Undo would do something.
     pub can_undo: bool,
     /// Whether Redo would do something.
@@ -61,22 +66,7 @@ fn file_menu_ui(ui: &mut Ui, state: &MenuState<'_>, commands: &mut Vec<Command>)
     entry_ui(ui, "New", "New scene", true, Command::New, commands);
     entry_ui(ui, "Open…", "Open…", true, Command::OpenDialog, commands);
     ui.menu_button("Open Recent", |ui| {
-        if state.recent.is_empty() {
-            ui.weak("No recent files");
-        }
-        for path in state.recent {
-            let name = path.file_name().map_or_else(
-                || path.display().to_string(),
-                |n| n.to_string_lossy().into_owned(),
-            );
-            if ui
-                .button(name)
-                .on_hover_text(path.display().to_string())
-                .clicked()
-            {
-                commands.push(Command::Open(path.clone()));
-            }
-        }
+        recent_ui(ui, state.recent, commands);
     });
     ui.separator();
     entry_ui(ui, "Save", "Save", true, Command::Save, commands);
@@ -105,8 +95,62 @@ fn file_menu_ui(ui: &mut Ui, state: &MenuState<'_>, commands: &mut Vec<Command>)
         Command::ShowExport,
         commands,
     );
+    entry_ui(
+        ui,
+        "Compare with Image…",
+        "",
+        true,
+        Command::ShowCompare,
+        commands,
+    );
+    ui.separator();
+    let mut in_app = state.in_app_dialogs;
+    let hover = if state.native_dialogs {
+        "Use raylab's own file dialog instead of the desktop's"
+    } else {
+        "This desktop shows no native file dialog (no xdg portal, no zenity): raylab's own is used"
+    };
+    if ui
+        .add_enabled(
+            state.native_dialogs,
+            egui::Checkbox::new(&mut in_app, "Built-in file dialog"),
+        )
+        .on_hover_text(hover)
+        .on_disabled_hover_text(hover)
+        .changed()
+    {
+        commands.push(Command::SetPreferInAppFileDialog(in_app));
+    }
     ui.separator();
     entry_ui(ui, "Quit", "", true, Command::Quit, commands);
+}
+
+/// Open Recent's entries; one that failed to open last time is marked and still opens.
+fn recent_ui(ui: &mut Ui, recent: &RecentFiles, commands: &mut Vec<Command>) {
+    if recent.paths().is_empty() {
+        ui.weak("No recent files");
+    }
+    for path in recent.paths() {
+        let name = path.file_name().map_or_else(
+            || path.display().to_string(),
+            |n| n.to_string_lossy().into_owned(),
+        );
+        let failed = recent.has_failed(path);
+        let (text, hover) = if failed {
+            (
+                RichText::new(format!("{name} (could not open)")).weak(),
+                format!(
+                    "{}\nThe last try to open it failed; click to try again",
+                    path.display()
+                ),
+            )
+        } else {
+            (RichText::new(name), path.display().to_string())
+        };
+        if ui.button(text).on_hover_text(hover).clicked() {
+            commands.push(Command::Open(path.clone()));
+        }
+    }
 }
 
 fn edit_menu_ui(ui: &mut Ui, state: &MenuState<'_>, commands: &mut Vec<Command>) {

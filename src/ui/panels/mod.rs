@@ -1,7 +1,8 @@
-//! The panels around the viewport: the menu bar, the outliner, the inspector and the
-//! status bar, each with one `*_ui` entry point that pushes commands.
+//! The panels around the viewport: the menu bar, the error and warning banners, the
+//! outliner, the inspector and the status bar, each with one `*_ui` entry point that pushes commands.
 
 pub mod inspector;
 pub mod menu;
+pub mod notices;
 pub mod outliner;
 pub mod status_bar;

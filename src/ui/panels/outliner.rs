@@ -1,29 +1,42 @@
 //! The outliner: camera, render settings, objects, materials and lights as a list to
-//! select from, with add, duplicate, delete and rename.
+//! select from, with add, duplicate, delete and rename; a hide toggle on each object and
+//! mute and solo toggles on each light (editor state, not scene edits).
 
-use egui::{RichText, Ui};
+use egui::{Align, Layout, RichText, Ui};
 
 use crate::scene::{Light, Scene, Shape};
+use crate::trace::Isolation;
 use crate::ui::commands::{Command, LightKind, SceneEdit, Selection};
+use crate::ui::viewport::isolation::IsolationToggle;
+
+/// Least width of one isolation toggle at the end of a row.
+const TOGGLE_WIDTH: f32 = 22.0;
+
+/// The hide toggle's text.
+const HIDE_ICON: &str = "H";
 
 /// Shows the outliner.
-pub fn outliner_ui(ui: &mut Ui, scene: &Scene, selection: &Selection, commands: &mut Vec<Command>) {
+pub fn outliner_ui(
+    ui: &mut Ui,
+    scene: &Scene,
+    selection: &Selection,
+    isolation: &Isolation,
+    commands: &mut Vec<Command>,
+) {
     egui::ScrollArea::vertical()
         .auto_shrink([false, false])
         .show(ui, |ui| {
             section_ui(ui, "Scene", None, |ui| {
                 item_ui(
                     ui,
-                    "Camera",
-                    "◉",
+                    &Row::plain("Camera", "◉"),
                     selection == &Selection::Camera,
                     Selection::Camera,
                     commands,
                 );
                 item_ui(
                     ui,
-                    "Render settings",
-                    "≡",
+                    &Row::plain("Render settings", "≡"),
                     selection == &Selection::Render,
                     Selection::Render,
                     commands,
@@ -32,15 +45,37 @@ pub fn outliner_ui(ui: &mut Ui, scene: &Scene, selection: &Selection, commands: 
             section_ui(ui, "Objects", Some(scene.objects.len()), |ui| {
                 for (index, object) in scene.objects.iter().enumerate() {
                     let selected = selection == &Selection::Object(index);
-                    let response = item_ui(
+                    let shown = isolation.is_object_shown(index);
+                    let row = Row {
+                        name: &object.name,
+                        icon: shape_icon(object.shape),
+                        greyed: !shown,
+                    };
+                    row_ui(
                         ui,
-                        &object.name,
-                        shape_icon(object.shape),
-                        selected,
-                        Selection::Object(index),
                         commands,
+                        |ui, commands| {
+                            let hide = toggle_ui(
+                                ui,
+                                !shown,
+                                HIDE_ICON,
+                                &format!("hide {}", object.name),
+                            )
+                            .on_hover_text(if shown {
+                                "Hide: leave it out of the render (no shadow, no reflection)"
+                            } else {
+                                "Hidden: click to show it again"
+                            });
+                            if hide.clicked() {
+                                commands.push(Command::Isolate(IsolationToggle::Hide(index)));
+                            }
+                        },
+                        |ui, commands| {
+                            let response =
+                                item_ui(ui, &row, selected, Selection::Object(index), commands);
+                            item_menu(&response, Selection::Object(index), commands);
+                        },
                     );
-                    item_menu(&response, Selection::Object(index), commands);
                 }
                 ui.menu_button("+ Add object", |ui| {
                     for shape in Shape::ALL {
@@ -54,8 +89,8 @@ pub fn outliner_ui(ui: &mut Ui, scene: &Scene, selection: &Selection, commands: 
                 for name in scene.materials.keys() {
                     let selection_here = Selection::Material(name.clone());
                     let selected = selection == &selection_here;
-                    let response =
-                        item_ui(ui, name, "◆", selected, selection_here.clone(), commands);
+                    let row = Row::plain(name, "◆");
+                    let response = item_ui(ui, &row, selected, selection_here.clone(), commands);
                     item_menu(&response, selection_here, commands);
                 }
                 if ui.button("+ Add material").clicked() {
@@ -66,15 +101,21 @@ pub fn outliner_ui(ui: &mut Ui, scene: &Scene, selection: &Selection, commands: 
                 for (index, light) in scene.lights.iter().enumerate() {
                     let selected = selection == &Selection::Light(index);
                     let label = light_label(light, index);
-                    let response = item_ui(
+                    let row = Row {
+                        name: &label,
+                        icon: light_icon(light),
+                        greyed: !isolation.is_light_lit(index),
+                    };
+                    row_ui(
                         ui,
-                        &label,
-                        light_icon(light),
-                        selected,
-                        Selection::Light(index),
                         commands,
+                        |ui, commands| light_toggles_ui(ui, index, &label, isolation, commands),
+                        |ui, commands| {
+                            let response =
+                                item_ui(ui, &row, selected, Selection::Light(index), commands);
+                            item_menu(&response, Selection::Light(index), commands);
+                        },
                     );
-                    item_menu(&response, Selection::Light(index), commands);
                 }
                 ui.menu_button("+ Add light", |ui| {
                     for kind in LightKind::ALL {
@@ -123,26 +164,102 @@ fn section_ui(ui: &mut Ui, title: &str, count: Option<usize>, body: impl FnOnce(
         .show(ui, body);
 }
 
-/// A selectable row; its accessible name is the item's name alone.
+/// The look of a row: its name, icon and whether it is greyed (hidden, muted, not solo).
+struct Row<'a> {
+    name: &'a str,
+    icon: &'a str,
+    greyed: bool,
+}
+
+impl<'a> Row<'a> {
+    /// A row that is never greyed.
+    fn plain(name: &'a str, icon: &'a str) -> Self {
+        Self {
+            name,
+            icon,
+            greyed: false,
+        }
+    }
+}
+
+/// One line of the outliner: `toggles` at its right end (laid out first, right to left,
+/// so they always fit the panel) and `item` filling the width left of them.
+fn row_ui(
+    ui: &mut Ui,
+    commands: &mut Vec<Command>,
+    toggles: impl FnOnce(&mut Ui, &mut Vec<Command>),
+    item: impl FnOnce(&mut Ui, &mut Vec<Command>),
+) {
+    let size = egui::vec2(ui.available_width(), ui.spacing().interact_size.y);
+    ui.allocate_ui_with_layout(size, Layout::right_to_left(Align::Center), |ui| {
+        toggles(ui, commands);
+        ui.with_layout(Layout::left_to_right(Align::Center), |ui| {
+            item(ui, commands)
+        });
+    });
+}
+
+/// A selectable row as wide as the space left; its accessible name is the item's name
+/// alone.
 fn item_ui(
     ui: &mut Ui,
-    name: &str,
-    icon: &str,
+    row: &Row,
     selected: bool,
     target: Selection,
     commands: &mut Vec<Command>,
 ) -> egui::Response {
-    let text = format!("{icon}  {name}");
+    let text = format!("{}  {}", row.icon, row.name);
+    let text = if row.greyed {
+        RichText::new(text).weak().italics()
+    } else {
+        RichText::new(text)
+    };
+    let width = ui.available_width().max(40.0);
     let response = ui
-        .add(
-            egui::Button::selectable(selected, text)
-                .min_size(egui::vec2(ui.available_width(), 0.0)),
-        )
-        .accessible_name(name);
+        .add(egui::Button::selectable(selected, text).min_size(egui::vec2(width, 0.0)))
+        .accessible_name(row.name);
     if response.clicked() && !selected {
         commands.push(Command::Select(target));
     }
     response
+}
+
+/// A small on/off toggle at the end of a row, named for screen readers and tests.
+fn toggle_ui(ui: &mut Ui, on: bool, text: &str, name: &str) -> egui::Response {
+    ui.add(egui::Button::selectable(on, text).min_size(egui::vec2(TOGGLE_WIDTH, 0.0)))
+        .accessible_name(name)
+}
+
+/// A light's mute and solo toggles, for a right-to-left layout; Ctrl- or Shift-click on
+/// solo adds to the solo lights.
+fn light_toggles_ui(
+    ui: &mut Ui,
+    index: usize,
+    label: &str,
+    isolation: &Isolation,
+    commands: &mut Vec<Command>,
+) {
+    // Laid out right to left: solo is the rightmost, mute left of it.
+    let solo = isolation.solo_lights.contains(&index);
+    let clicked = toggle_ui(ui, solo, "S", &format!("solo {label}"))
+        .on_hover_text(
+            "Solo: render as if this were the only light (Ctrl- or Shift-click: several)",
+        )
+        .clicked();
+    if clicked {
+        let add = ui.input(|i| i.modifiers.command || i.modifiers.shift);
+        commands.push(Command::Isolate(IsolationToggle::Solo {
+            light: index,
+            add,
+        }));
+    }
+    let muted = isolation.muted_lights.contains(&index);
+    if toggle_ui(ui, muted, "M", &format!("mute {label}"))
+        .on_hover_text("Mute: render without this light")
+        .clicked()
+    {
+        commands.push(Command::Isolate(IsolationToggle::Mute(index)));
+    }
 }
 
 /// Right-click menu of an item: rename (objects, materials), duplicate, delete.

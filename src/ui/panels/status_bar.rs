@@ -1,4 +1,5 @@
-//! The status bar: scene file, counts, the preview's pass and render time, errors.
+//! The status bar: scene file, counts, the preview's pass and render time, errors
+//! (autosave's first: while it fails, unsaved work is not protected).
 
 use egui::{Color32, RichText, Ui};
 
@@ -19,8 +20,10 @@ pub struct StatusInfo<'a> {
     pub frame: Option<ShownFrame>,
     /// Fraction of the pass being rendered.
     pub progress: Option<f64>,
-    /// The latest error, if any.
+    /// The preview's error, if any.
     pub error: Option<&'a str>,
+    /// Why the last autosave failed, while it keeps failing (unsaved work is at risk).
+    pub autosave_error: Option<&'a str>,
     /// The latest message (e.g. "Saved"), if any.
     pub message: Option<&'a str>,
 }
@@ -59,8 +62,13 @@ pub fn status_bar_ui(ui: &mut Ui, info: &StatusInfo<'_>) {
             );
         }
         ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
-            if let Some(error) = info.error {
-                ui.label(RichText::new(error).color(Color32::from_rgb(255, 120, 110)));
+            let red = Color32::from_rgb(255, 120, 110);
+            if let Some(error) = info.autosave_error {
+                ui.label(RichText::new(error).color(red)).on_hover_text(
+                    "Unsaved changes are not protected against a crash until autosave works",
+                );
+            } else if let Some(error) = info.error {
+                ui.label(RichText::new(error).color(red));
             } else if let Some(message) = info.message {
                 ui.label(RichText::new(message).color(Color32::from_rgb(140, 200, 140)));
             }

@@ -6,7 +6,7 @@
 
 use egui::{MouseWheelUnit, Pos2, Vec2};
 
-use crate::gizmo::navigate::{frame, orbit, pan, zoom};
+use crate::gizmo::navigate::{frame_in_scene, orbit, pan, zoom};
 use crate::gizmo::view::bounding_sphere;
 use crate::scene::{Camera, Light, Scene};
 use crate::ui::commands::{Command, Selection};
@@ -122,7 +122,12 @@ pub fn frame_selection(
         && centre.is_finite()
         && radius.is_finite()
     {
-        push_view(&frame(&view.shown, centre, radius), commands);
+        // Framed from the shown camera, with the eye kept out of the scene's solids.
+        let seen_from = Scene {
+            camera: view.shown.clone(),
+            ..scene.clone()
+        };
+        push_view(&frame_in_scene(&seen_from, centre, radius), commands);
     }
 }
 
@@ -132,5 +137,48 @@ fn push_view(camera: &Camera, commands: &mut Vec<Command>) {
     let view = ViewCamera::free(camera);
     if view.is_usable() {
         commands.push(Command::SetView(view));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use glam::DVec3;
+
+    use super::*;
+    use crate::scene::{Object, Shape, Transform, Trs};
+
+    #[test]
+    fn frame_selection_keeps_the_eye_out_of_a_solid_where_plain_framing_would_put_it() {
+        let mut scene = crate::scene::examples::default_scene();
+        let selection = Selection::Object(1);
+        let picture = egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(800.0, 600.0));
+        let view = ViewMapping::new(&scene.camera, picture);
+        let (centre, radius) = selection_sphere(&scene, &selection, &view).unwrap();
+        // A box around the eye that framing along the current view direction would give.
+        let blocked_eye = crate::gizmo::navigate::frame(&scene.camera, centre, radius).position;
+        let half_size = 0.5 * (blocked_eye - centre).length();
+        scene.objects.push(Object {
+            name: "wall".into(),
+            shape: Shape::Cube,
+            transform: Transform::Trs(Trs {
+                translate: blocked_eye,
+                rotate_deg: DVec3::ZERO,
+                scale: DVec3::splat(half_size),
+            }),
+            material: scene.objects[0].material.clone(),
+        });
+        let mut commands = Vec::new();
+        let view = ViewMapping::new(&scene.camera, picture);
+        frame_selection(&scene, &selection, &view, &mut commands);
+        let [Command::SetView(moved)] = commands.as_slice() else {
+            panic!("one view move, got {commands:?}");
+        };
+        let camera = moved.as_scene_camera(&scene.camera);
+        assert!(
+            (camera.look_at - centre).length() < 1e-9,
+            "aimed at the selection"
+        );
+        let inside_wall = (camera.position - blocked_eye).abs().max_element() < half_size;
+        assert!(!inside_wall, "eye {} is inside the box", camera.position);
     }
 }

@@ -1,6 +1,6 @@
-//! The live convergence plot: for the current preview generation, how much each pass
-//! still changed the picture (RMSE against the pass before it), against render time
-//! since the edit. Falls towards zero as the image settles.
+//! The live convergence plot: for the preview generation on screen, the estimated
+//! remaining error of each anti-aliasing pass against render time since the edit. The
+//! worker computes the points as it renders; this file only draws them.
 
 use egui::{Color32, RichText};
 use egui_plot::{Line, Plot, PlotPoints, Points};
@@ -9,16 +9,22 @@ use crate::preview::{ConvergenceCurve, Pass};
 use crate::ui::commands::Command;
 use crate::ui::viewport::preview_settings::PreviewSettings;
 
-/// What the plot shows, in words (the window says it; a tooltip repeats it).
-pub const CONVERGENCE_EXPLANATION: &str = "Change from the previous pass: RMSE between each \
-     pass and the one before it (values clamped to [0, 1], coarse passes enlarged \
-     nearest-neighbour), against the render time spent since the last edit. It measures \
-     how much the picture still changes, not the error against a converged reference.";
+/// The plot's title.
+pub const CONVERGENCE_TITLE: &str = "Estimated remaining error";
 
-/// Shows the convergence window; closing it turns the setting off.
+/// What the plot shows, in words (the window says it; a tooltip repeats it).
+pub const CONVERGENCE_EXPLANATION: &str = "An estimate, not a measurement: for each \
+     anti-aliasing pass, the RMSE between the picture and the converged one (values \
+     clamped to [0, 1]), estimated from the difference between the mean of each pixel's \
+     first half of samples and the mean of all of them, against the render time spent \
+     since the last edit. Passes of one sample per pixel have no estimate. `raylab bench` \
+     checks the estimate against the true error.";
+
+/// Shows the convergence window for the curve of `generation`; closing it turns the
+/// setting off.
 pub fn convergence_plot_ui(
     ctx: &egui::Context,
-    curve: &ConvergenceCurve,
+    curve: Option<(u64, &ConvergenceCurve)>,
     settings: &PreviewSettings,
     commands: &mut Vec<Command>,
 ) {
@@ -39,37 +45,37 @@ pub fn convergence_plot_ui(
     }
 }
 
-fn curve_ui(ui: &mut egui::Ui, curve: &ConvergenceCurve) {
-    ui.label(RichText::new("Change from previous pass").strong())
+fn curve_ui(ui: &mut egui::Ui, curve: Option<(u64, &ConvergenceCurve)>) {
+    ui.label(RichText::new(CONVERGENCE_TITLE).strong())
         .on_hover_text(CONVERGENCE_EXPLANATION);
     let points: Vec<[f64; 2]> = curve
-        .points()
+        .map(|(_, c)| c.points())
+        .unwrap_or_default()
         .iter()
-        .map(|p| [p.render_time.as_secs_f64() * 1e3, p.change])
+        .map(|p| [p.render_time.as_secs_f64() * 1e3, p.estimated_rmse])
         .collect();
-    match (curve.generation(), curve.points().last()) {
-        (Some(generation), Some(last)) => {
+    match curve.map(|(generation, c)| (generation, c.points().last())) {
+        Some((generation, Some(last))) => {
             ui.weak(format!(
-                "edit {generation} · {} passes compared · last: {} at {:.0} ms, RMSE {:.5}",
-                points.len(),
+                "edit {generation} · {} · estimated RMSE {:.5} after {:.0} ms",
                 pass_text(last.pass),
+                last.estimated_rmse,
                 last.render_time.as_secs_f64() * 1e3,
-                last.change
             ));
         }
         _ => {
-            ui.weak("waiting for a second pass of this edit");
+            ui.weak("no estimate yet: the first comes with the first anti-aliasing pass");
         }
     }
     let accent = crate::ui::style::ACCENT;
     Plot::new("convergence")
         .x_axis_label("render time since the edit (ms)")
-        .y_axis_label("RMSE vs previous pass")
+        .y_axis_label("estimated RMSE (remaining)")
         .include_y(0.0)
         .include_x(0.0)
         .allow_scroll(false)
         .show(ui, |plot| {
-            plot.line(Line::new("change", PlotPoints::from(points.clone())).color(accent));
+            plot.line(Line::new("estimate", PlotPoints::from(points.clone())).color(accent));
             plot.points(
                 Points::new("passes", PlotPoints::from(points))
                     .radius(3.0)
@@ -80,11 +86,10 @@ fn curve_ui(ui: &mut egui::Ui, curve: &ConvergenceCurve) {
         .on_hover_text(CONVERGENCE_EXPLANATION);
 }
 
-/// "1/4", "1 spp", "8/16 spp".
+/// "8/16 spp" (only anti-aliasing passes have estimates).
 fn pass_text(pass: Pass) -> String {
     match pass {
         Pass::Coarse { divider } => format!("1/{divider}"),
-        Pass::Full { target: 1, .. } => "1 spp".to_owned(),
         Pass::Full { samples, target } => format!("{samples}/{target} spp"),
     }
 }

@@ -11,7 +11,7 @@ use glam::DVec3;
 use super::pixel_inspector::inspected_pixel;
 use crate::preview::{Probe, WorldCache};
 use crate::scene::Scene;
-use crate::trace::{PinholeCamera, Ray};
+use crate::trace::{Isolation, PinholeCamera, Ray};
 use crate::ui::commands::{Command, Selection};
 
 /// What a click asks for.
@@ -56,15 +56,17 @@ impl PickLink {
         }
     }
 
-    /// Casts `request`'s ray into `scene` in a job.
-    pub fn ask(&mut self, scene: &Scene, request: PickRequest) {
+    /// Casts `request`'s ray into `scene` without what `isolation` leaves out (a hidden
+    /// object cannot be picked), in a job.
+    pub fn ask(&mut self, scene: &Scene, isolation: &Isolation, request: PickRequest) {
         let ray = request.ray;
         let tag = self.probe.ask(
             Arc::new(scene.clone()),
+            isolation.clone(),
             Box::new(move |world| {
                 let hit = world.intersect(&ray, f64::INFINITY);
                 PickAnswer {
-                    object: hit.map(|h| h.object),
+                    object: hit.map(|h| world.scene_object(h.object)),
                     point: hit.map(|h| h.p),
                 }
             }),

@@ -10,9 +10,12 @@ use super::pixel_inspector::{PixelAnchor, PixelInspection};
 use super::preview_link::PreviewLink;
 use super::preview_settings::PreviewSettings;
 use super::ray_paths::{RayPathSettings, ray_path_controls_ui, ray_paths_ui, screen_segments};
-use super::toolbar::{TOOLBAR_HEIGHT, toolbar_ui};
+use super::full_picture_marker::full_picture_marker_ui;
+use super::isolation::isolation_note;
+use super::toolbar::toolbar_ui;
 use super::view_camera::{ViewCamera, free_render_size};
 use crate::scene::Scene;
+use crate::trace::Isolation;
 use crate::ui::commands::{Command, Selection};
 use crate::ui::gizmo::projection::ViewMapping;
 
@@ -40,6 +43,8 @@ pub struct ViewportInput<'a> {
     pub selection: &'a Selection,
     /// The toolbar's settings.
     pub settings: &'a PreviewSettings,
+    /// Lights muted or solo, objects hidden.
+    pub isolation: &'a Isolation,
     /// The view camera (or camera view).
     pub view: &'a ViewCamera,
     /// What the ray-path overlay draws.
@@ -68,20 +73,25 @@ pub fn viewport_ui(
     let scene = input.scene;
     let full = ui.available_rect_before_wrap();
     let header = Rect::from_min_size(full.min, Vec2::new(full.width(), HEADER_HEIGHT));
-    let bar = Rect::from_min_size(
-        header.left_bottom(),
-        Vec2::new(full.width(), TOOLBAR_HEIGHT),
-    );
-    let outer = Rect::from_min_max(Pos2::new(full.min.x, bar.max.y), full.max);
-    let region = outer.shrink(16.0);
-    let free_size = free_render_size(region.width(), region.height(), ui.ctx().pixels_per_point());
-    let shown = input.view.shown(&scene.camera, free_size);
-    header_ui(ui, header, scene, &shown, input.view.through_scene_camera);
     let non_finite = input
         .preview
         .and_then(PreviewLink::frame)
         .map(|f| f.non_finite_samples);
-    toolbar_ui(ui, bar, input.settings, non_finite, commands);
+    let isolated = isolation_note(input.isolation, scene);
+    let bar_height = toolbar_ui(
+        ui,
+        header.left_bottom(),
+        full.width(),
+        input.settings,
+        non_finite,
+        isolated.as_deref(),
+        commands,
+    );
+    let outer = Rect::from_min_max(Pos2::new(full.min.x, header.max.y + bar_height), full.max);
+    let region = outer.shrink(16.0);
+    let free_size = free_render_size(region.width(), region.height(), ui.ctx().pixels_per_point());
+    let shown = input.view.shown(&scene.camera, free_size);
+    header_ui(ui, header, scene, &shown, input.view.through_scene_camera);
     ui.painter()
         .rect_filled(outer, CornerRadius::ZERO, Color32::from_gray(14));
     let aspect = shown.width as f32 / shown.height.max(1) as f32;
@@ -95,6 +105,7 @@ pub fn viewport_ui(
         pass_badge(&painter, picture, preview);
     }
     selection_marker(&painter, &view, scene, input.selection);
+    full_picture_marker_ui(ui, picture, &input.settings.not_full_picture_reasons());
     if response.hovered() {
         ui.ctx().set_cursor_icon(egui::CursorIcon::Crosshair);
     }
@@ -105,6 +116,7 @@ pub fn viewport_ui(
         scene,
         input.selection,
         input.settings.inspect,
+        input.isolation,
         commands,
     );
     let segments = screen_segments(

@@ -1,17 +1,17 @@
 //! The UI side of the preview worker: submits the scene when it or the toolbar's render
-//! settings changed (at most once per frame), takes the published frames (every pass
-//! feeds the convergence curve, the newest is shown) and keeps the texture alive, with
-//! the NaN guard's overlay when it is on.
+//! settings changed (at most once per frame), takes the newest published frame of the
+//! newest submitted generation (it carries its convergence curve, computed by the
+//! worker) and keeps the texture alive, with the NaN guard's overlay when it is on.
 
 use std::time::Duration;
 
 use egui::{ColorImage, TextureHandle, TextureOptions};
 
 use crate::preview::{
-    ConvergenceCurve, Frame, MAX_PREVIEW_LONG_SIDE, Pass, PreviewRequest, PreviewWorker,
+    ConvergenceCurve, Frame, MAX_PREVIEW_LONG_SIDE, Pass, PreviewRequest, PreviewWorker, Published,
 };
 use crate::scene::Scene;
-use crate::trace::RenderOptions;
+use crate::trace::{Isolation, RenderOptions};
 use crate::ui::viewport::preview_settings::PreviewSettings;
 use crate::ui::viewport::toolbar::NAN_COLOUR;
 
@@ -26,7 +26,7 @@ pub struct ShownFrame {
     pub elapsed: Duration,
     /// Rays per second in the pass.
     pub rays_per_second: f64,
-    /// Nothing sharper will follow for this generation.
+    /// Nothing sharper will follow for this generation, and no newer edit is waiting.
     pub is_final: bool,
 }
 
@@ -44,7 +44,6 @@ pub struct PreviewLink {
     frame: Option<Frame>,
     shown: Option<ShownFrame>,
     error: Option<String>,
-    convergence: ConvergenceCurve,
 }
 
 impl PreviewLink {
@@ -62,24 +61,26 @@ impl PreviewLink {
             frame: None,
             shown: None,
             error: None,
-            convergence: ConvergenceCurve::default(),
         }
     }
 
-    /// Sends `scene` with the toolbar's switches and view to the worker if either differs
-    /// from what was last sent.
-    pub fn sync(&mut self, scene: &Scene, settings: &PreviewSettings) {
+    /// Sends `scene` with the toolbar's switches and view and the isolation switches to
+    /// the worker if any of them differs from what was last sent.
+    pub fn sync(&mut self, scene: &Scene, settings: &PreviewSettings, isolation: &Isolation) {
         let options = RenderOptions {
             switches: settings.switches,
             view: settings.view,
+            isolation: isolation.clone(),
             ..PreviewRequest::capped_options(scene, MAX_PREVIEW_LONG_SIDE)
         };
-        if self.submitted.as_ref() == Some(scene) && self.submitted_options == Some(options) {
+        if self.submitted.as_ref() == Some(scene)
+            && self.submitted_options.as_ref() == Some(&options)
+        {
             return;
         }
         self.generation += 1;
         self.submitted = Some(scene.clone());
-        self.submitted_options = Some(options);
+        self.submitted_options = Some(options.clone());
         self.worker.submit(PreviewRequest {
             generation: self.generation,
             scene: std::sync::Arc::new(scene.clone()),
@@ -87,17 +88,10 @@ impl PreviewLink {
         });
     }
 
-    /// Takes the published frames (or error): each feeds the convergence curve, the
-    /// newest goes into the texture, painted with the NaN guard's overlay if `nan_guard`.
+    /// Takes the newest published frame (or error) of the newest submitted generation
+    /// into the texture, painted with the NaN guard's overlay if `nan_guard`.
     pub fn poll(&mut self, ctx: &egui::Context, nan_guard: bool) {
-        let mut newest = None;
-        for message in self.worker.drain() {
-            if let Ok(frame) = &message.result {
-                self.convergence.add(message.generation, frame);
-            }
-            newest = Some(message);
-        }
-        let Some(message) = newest else {
+        let Some(message) = self.worker.latest().filter(|m| self.is_newest(m)) else {
             if nan_guard != self.texture_guarded
                 && let Some(frame) = self.frame.take()
             {
@@ -124,6 +118,12 @@ impl PreviewLink {
         }
     }
 
+    /// Whether `message` answers the last request sent (the worker already drops older
+    /// ones at a submit; this keeps the link honest on its own).
+    fn is_newest(&self, message: &Published) -> bool {
+        message.generation == self.generation
+    }
+
     /// Puts `frame` into the texture.
     fn upload(&mut self, ctx: &egui::Context, frame: &Frame, nan_guard: bool) {
         let size = [frame.image.width as usize, frame.image.height as usize];
@@ -148,7 +148,7 @@ impl PreviewLink {
     /// The options of the last request sent to the worker.
     #[must_use]
     pub fn submitted_options(&self) -> Option<RenderOptions> {
-        self.submitted_options
+        self.submitted_options.clone()
     }
 
     /// The generation of the last request sent.
@@ -157,10 +157,11 @@ impl PreviewLink {
         self.generation
     }
 
-    /// The convergence curve of the newest generation shown.
+    /// The convergence curve of the frame on screen, with its generation.
     #[must_use]
-    pub fn convergence(&self) -> &ConvergenceCurve {
-        &self.convergence
+    pub fn convergence(&self) -> Option<(u64, &ConvergenceCurve)> {
+        let shown = self.shown?;
+        Some((shown.generation, &self.frame.as_ref()?.convergence))
     }
 
     /// The newest frame's texture.
@@ -169,10 +170,14 @@ impl PreviewLink {
         self.texture.as_ref()
     }
 
-    /// About the frame on screen.
+    /// About the frame on screen; it is final only while no newer edit is waiting for
+    /// its first frame.
     #[must_use]
     pub fn shown(&self) -> Option<ShownFrame> {
-        self.shown
+        self.shown.map(|s| ShownFrame {
+            is_final: s.is_final && s.generation == self.generation,
+            ..s
+        })
     }
 
     /// Why the current scene cannot be rendered, if it cannot.
@@ -232,6 +237,8 @@ mod tests {
             is_final: true,
             non_finite_samples: 2,
             non_finite_pixels: vec![1, 5],
+            estimated_rmse: None,
+            convergence: ConvergenceCurve::default(),
         };
         let plain = frame_rgba(&frame, false);
         assert!(plain.chunks(4).all(|p| p == [128, 128, 128, 255]));

@@ -100,6 +100,27 @@ impl PreviewSettings {
     pub fn is_modified(&self) -> bool {
         self.switches != TermSwitches::ALL_ON || self.view != View::Beauty
     }
+
+    /// Why the preview is not the full picture, one short phrase each ("diffuse off",
+    /// "solo specular", "depth view"); empty when it is the full picture.
+    #[must_use]
+    pub fn not_full_picture_reasons(&self) -> Vec<String> {
+        let mut reasons: Vec<String> = Term::ALL
+            .into_iter()
+            .filter(|t| !self.switches.is_on(*t))
+            .map(|t| format!("{} off", t.name()))
+            .collect();
+        if let Some(term) = self.switches.solo {
+            reasons.push(format!("solo {}", term.name()));
+        }
+        if self.view != View::Beauty {
+            reasons.push(format!(
+                "{} view",
+                crate::ui::viewport::toolbar::view_label(self.view)
+            ));
+        }
+        reasons
+    }
 }
 
 #[cfg(test)]
@@ -129,5 +150,14 @@ mod tests {
         );
         assert_eq!(PreviewSettings::load(None), PreviewSettings::default());
         assert!(loaded.is_modified() && !PreviewSettings::default().is_modified());
+        assert_eq!(
+            loaded.not_full_picture_reasons(),
+            ["diffuse off", "solo specular", "depth view"]
+        );
+        assert!(
+            PreviewSettings::default()
+                .not_full_picture_reasons()
+                .is_empty()
+        );
     }
 }

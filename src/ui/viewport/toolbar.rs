@@ -1,64 +1,100 @@
 //! The toolbar over the viewport: the five term switches, a solo choice, the view picker,
-//! the NaN guard, the pixel inspector's mode and the convergence plot. It edits editor
+//! the NaN guard, the pixel inspector's mode and the convergence plot, wrapped onto as
+//! many rows as the viewport's width needs. It edits editor
 //! state ([`PreviewSettings`]), not the scene: nothing here is an undo step.
 
-use egui::{Align, Color32, CornerRadius, Layout, Rect, RichText, Stroke, UiBuilder};
+use egui::{Align, Color32, CornerRadius, Layout, Pos2, Rect, RichText, Shape, Stroke, UiBuilder};
 
 use crate::trace::{Term, View};
 use crate::ui::commands::Command;
+use crate::ui::viewport::isolation::IsolationToggle;
 use crate::ui::viewport::preview_settings::PreviewSettings;
 
-/// Height of the toolbar strip: two rows (terms; view and tools).
-pub const TOOLBAR_HEIGHT: f32 = 50.0;
+/// Height of one row of the toolbar; a narrow viewport wraps it onto more rows.
+pub const TOOLBAR_ROW_HEIGHT: f32 = 24.0;
 
 /// The guard's loud colour for pixels with a non-finite sample.
 pub const NAN_COLOUR: Color32 = Color32::from_rgb(255, 0, 255);
 
-/// Shows the toolbar in `rect`; pushes [`Command::SetPreviewSettings`] on a change.
-/// `non_finite` is the guard count of the frame on screen, if there is one.
+/// Shows the toolbar across `width` from `top_left`, wrapping onto as many rows as the
+/// width needs so every control stays reachable; pushes [`Command::SetPreviewSettings`]
+/// on a change. `non_finite` is the guard count of the frame on screen, if there is one;
+/// `isolated` says what is muted, solo or hidden, if anything is.
+/// Returns the strip's height.
 pub fn toolbar_ui(
     ui: &mut egui::Ui,
-    rect: Rect,
+    top_left: Pos2,
+    width: f32,
     settings: &PreviewSettings,
     non_finite: Option<u64>,
+    isolated: Option<&str>,
     commands: &mut Vec<Command>,
-) {
-    let painter = ui.painter_at(rect);
-    painter.rect_filled(rect, CornerRadius::ZERO, Color32::from_gray(20));
-    painter.hline(
+) -> f32 {
+    // The background goes under the controls, but its height is known only after them.
+    let background = ui.painter().add(Shape::Noop);
+    let margin = egui::vec2(8.0, 3.0);
+    // One row high, as `horizontal_wrapped` starts: further rows grow it downward.
+    let room = Rect::from_min_size(
+        top_left + margin,
+        egui::vec2(width - 2.0 * margin.x, TOOLBAR_ROW_HEIGHT),
+    );
+    let mut edited = *settings;
+    let builder = UiBuilder::new()
+        .max_rect(room)
+        .layout(Layout::left_to_right(Align::Center).with_main_wrap(true));
+    let used = ui
+        .scope_builder(builder, |ui| {
+            ui.spacing_mut().item_spacing = egui::vec2(4.0, 4.0);
+            terms_ui(ui, &mut edited);
+            if let Some(note) = isolated {
+                ui.separator();
+                isolation_marker_ui(ui, note, commands);
+            }
+            ui.separator();
+            view_ui(ui, &mut edited);
+            ui.separator();
+            guard_ui(ui, &mut edited, non_finite);
+            ui.separator();
+            ui.toggle_value(&mut edited.inspect, "Inspect")
+                .on_hover_text(
+                    "Click a pixel to see every number behind it (or hold Alt and click)",
+                );
+            ui.toggle_value(&mut edited.show_convergence, "Convergence")
+                .on_hover_text("Plot how much each preview pass still changes the picture");
+        })
+        .response
+        .rect;
+    let rect = Rect::from_min_max(
+        top_left,
+        Pos2::new(top_left.x + width, used.max.y + margin.y),
+    );
+    ui.painter().set(
+        background,
+        Shape::rect_filled(rect, CornerRadius::ZERO, Color32::from_gray(20)),
+    );
+    ui.painter().hline(
         rect.x_range(),
         rect.max.y - 0.5,
         Stroke::new(1.0, Color32::from_gray(40)),
     );
-    let mut edited = *settings;
-    let builder = UiBuilder::new()
-        .max_rect(rect.shrink2(egui::vec2(8.0, 3.0)))
-        .layout(Layout::top_down(Align::Min));
-    ui.scope_builder(builder, |ui| {
-        ui.set_clip_rect(rect);
-        // A narrow viewport scrolls the toolbar sideways rather than hiding its end.
-        egui::ScrollArea::horizontal()
-            .id_salt("toolbar")
-            .show(ui, |ui| {
-                ui.spacing_mut().item_spacing = egui::vec2(4.0, 2.0);
-                ui.horizontal(|ui| terms_ui(ui, &mut edited));
-                ui.horizontal(|ui| {
-                    view_ui(ui, &mut edited);
-                    ui.separator();
-                    guard_ui(ui, &mut edited, non_finite);
-                    ui.separator();
-                    ui.toggle_value(&mut edited.inspect, "Inspect")
-                        .on_hover_text(
-                            "Click a pixel to see every number behind it (or hold Alt and click)",
-                        );
-                    ui.toggle_value(&mut edited.show_convergence, "Convergence")
-                        .on_hover_text("Plot how much each preview pass still changes the picture");
-                });
-            });
-    });
     if edited != *settings {
         commands.push(Command::SetPreviewSettings(edited));
     }
+    rect.height()
+}
+
+/// Not the full picture: a button back to everything, then what is isolated (the button
+/// first, so a long note never pushes it out of view).
+fn isolation_marker_ui(ui: &mut egui::Ui, note: &str, commands: &mut Vec<Command>) {
+    if ui
+        .small_button("show all")
+        .on_hover_text("Unmute, unsolo and unhide everything")
+        .clicked()
+    {
+        commands.push(Command::Isolate(IsolationToggle::ShowAll));
+    }
+    ui.label(RichText::new(format!("◐ {note}")).color(crate::ui::style::ACCENT))
+        .on_hover_text("Lights muted or solo and objects hidden: not the full picture");
 }
 
 /// The NaN guard toggle and, when on, the count of the frame on screen.

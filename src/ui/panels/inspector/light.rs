@@ -4,6 +4,7 @@ use egui::Ui;
 use glam::DVec3;
 
 use super::fields::{colour_row_ui, number_row_ui, vec3_row_ui};
+use super::limits::{Limits, SPOT_ANGLE_DEG};
 use super::{grid_ui, heading_ui};
 use crate::scene::Light;
 use crate::ui::commands::{Command, SceneEdit};
@@ -16,7 +17,7 @@ pub(super) fn light_ui(ui: &mut Ui, index: usize, light: &Light, commands: &mut 
         Light::Point { .. } | Light::Spot { .. } => (0.02, 0.1),
         Light::Ambient { .. } | Light::Directional { .. } => (0.01, 0.01),
     };
-    let any = f64::NEG_INFINITY..=f64::INFINITY;
+    let any = Limits::ANY;
     grid_ui(ui, "light", |ui| {
         let (colour, intensity) = match &mut edited {
             Light::Ambient { colour, intensity } => (colour, intensity),
@@ -25,7 +26,7 @@ pub(super) fn light_ui(ui: &mut Ui, index: usize, light: &Light, commands: &mut 
                 colour,
                 intensity,
             } => {
-                vec3_row_ui(ui, "position", position, placement_speed, any.clone());
+                vec3_row_ui(ui, "position", position, placement_speed, any);
                 (colour, intensity)
             }
             Light::Directional {
@@ -33,7 +34,7 @@ pub(super) fn light_ui(ui: &mut Ui, index: usize, light: &Light, commands: &mut 
                 colour,
                 intensity,
             } => {
-                vec3_row_ui(ui, "direction", direction, 0.01, any.clone());
+                vec3_row_ui(ui, "direction", direction, 0.01, any);
                 (colour, intensity)
             }
             Light::Spot {
@@ -43,9 +44,9 @@ pub(super) fn light_ui(ui: &mut Ui, index: usize, light: &Light, commands: &mut 
                 colour,
                 intensity,
             } => {
-                vec3_row_ui(ui, "position", position, placement_speed, any.clone());
-                vec3_row_ui(ui, "direction", direction, 0.01, any.clone());
-                number_row_ui(ui, "angle", angle_deg, 0.2, 0.1..=90.0);
+                vec3_row_ui(ui, "position", position, placement_speed, any);
+                vec3_row_ui(ui, "direction", direction, 0.01, any);
+                number_row_ui(ui, "angle", angle_deg, 0.2, SPOT_ANGLE_DEG);
                 (colour, intensity)
             }
         };
@@ -59,5 +60,5 @@ pub(super) fn light_ui(ui: &mut Ui, index: usize, light: &Light, commands: &mut 
 /// Colour and intensity, which every light kind has.
 fn strength_rows_ui(ui: &mut Ui, colour: &mut DVec3, intensity: &mut f64, speed: f64) {
     colour_row_ui(ui, "colour", colour);
-    number_row_ui(ui, "intensity", intensity, speed, 0.0..=f64::INFINITY);
+    number_row_ui(ui, "intensity", intensity, speed, Limits::NON_NEGATIVE);
 }

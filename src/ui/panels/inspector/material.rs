@@ -3,6 +3,7 @@
 use egui::Ui;
 
 use super::fields::{colour_row_ui, number_row_ui};
+use super::limits::SHININESS;
 use super::{grid_ui, heading_ui};
 use crate::scene::*;
 use crate::ui::commands::{Command, SceneEdit};
@@ -56,12 +57,6 @@ pub(super) fn material_rows_ui(ui: &mut Ui, material: &mut Material) {
     colour_row_ui(ui, "ambient", &mut material.ambient);
     colour_row_ui(ui, "diffuse", &mut material.diffuse);
     colour_row_ui(ui, "specular", &mut material.specular);
-    number_row_ui(
-        ui,
-        "shininess",
-        &mut material.shininess,
-        0.5,
-        1e-3..=10_000.0,
-    );
+    number_row_ui(ui, "shininess", &mut material.shininess, 0.5, SHININESS);
     colour_row_ui(ui, "mirror", &mut material.mirror);
 }

@@ -4,6 +4,7 @@
 mod camera;
 mod fields;
 mod light;
+mod limits;
 mod material;
 mod object;
 mod render_settings;

@@ -5,6 +5,7 @@ use egui::Ui;
 use glam::DVec3;
 
 use super::fields::vec3_row_ui;
+use super::limits::Limits;
 use super::material::material_rows_ui;
 use super::{grid_ui, heading_ui};
 use crate::scene::*;
@@ -87,15 +88,9 @@ pub(super) fn transform_ui(ui: &mut Ui, transform: &mut Transform) {
     match transform {
         Transform::Trs(trs) => {
             grid_ui(ui, "trs", |ui| {
-                vec3_row_ui(
-                    ui,
-                    "translate",
-                    &mut trs.translate,
-                    0.01,
-                    f64::NEG_INFINITY..=f64::INFINITY,
-                );
-                vec3_row_ui(ui, "rotate", &mut trs.rotate_deg, 0.5, -360.0..=360.0);
-                vec3_row_ui(ui, "scale", &mut trs.scale, 0.01, 1e-4..=f64::INFINITY);
+                vec3_row_ui(ui, "translate", &mut trs.translate, 0.01, Limits::ANY);
+                vec3_row_ui(ui, "rotate", &mut trs.rotate_deg, 0.5, Limits::ANY);
+                vec3_row_ui(ui, "scale", &mut trs.scale, 0.01, Limits::NONZERO);
             });
         }
         Transform::Matrix(rows) => {

@@ -2,21 +2,25 @@
 
 use egui::Ui;
 
-use super::fields::{colour_row_ui, number_row_ui};
+use super::fields::{colour_row_ui, whole_number_row_ui};
+use super::limits::{MAX_DEPTH, MAX_SAMPLES_PER_PIXEL};
 use super::{grid_ui, heading_ui};
 use crate::scene::*;
 use crate::ui::commands::{Command, SceneEdit};
-
-/// The deepest mirror recursion the scene validation accepts.
-const MAX_DEPTH: u32 = 64;
 
 pub(super) fn render_ui(ui: &mut Ui, render: &RenderSettings, commands: &mut Vec<Command>) {
     heading_ui(ui, "RENDER", "Render settings");
     let mut edited = render.clone();
     grid_ui(ui, "render", |ui| {
-        number_row_ui(ui, "max depth", &mut edited.max_depth, 0.1, 0..=MAX_DEPTH);
+        whole_number_row_ui(ui, "max depth", &mut edited.max_depth, 0.1, 0..=MAX_DEPTH);
         colour_row_ui(ui, "background", &mut edited.background);
-        number_row_ui(ui, "samples", &mut edited.samples_per_pixel, 0.2, 1..=1024);
+        whole_number_row_ui(
+            ui,
+            "samples",
+            &mut edited.samples_per_pixel,
+            0.2,
+            1..=MAX_SAMPLES_PER_PIXEL,
+        );
     });
     ui.weak(
         "max depth: mirror bounces. samples: anti-aliasing samples per pixel; \

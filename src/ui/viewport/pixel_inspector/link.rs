@@ -1,6 +1,6 @@
 //! The pixel inspector's tracing, off the UI thread: the inspected pixel, its row or
 //! column and the pinned pixels are traced in a probe job whenever the scene, the
-//! switches or the pixels change (at most one job at a time, the newest state next), and
+//! switches, the isolation switches or the pixels change (at most one job at a time, the newest state next), and
 //! the newest answer is kept for the window and the ray-path overlay.
 
 use std::sync::Arc;
@@ -8,19 +8,20 @@ use std::sync::Arc;
 use super::PixelInspection;
 use crate::preview::{Probe, WorldCache};
 use crate::scene::Scene;
-use crate::trace::TermSwitches;
+use crate::trace::{Isolation, TermSwitches};
 
 /// What a question or an answer is about.
 #[derive(Clone, Debug, PartialEq)]
 struct About {
     scene: Arc<Scene>,
     switches: TermSwitches,
+    isolation: Isolation,
     pixels: Vec<(u32, u32)>,
 }
 
 impl About {
-    fn is(&self, scene: &Scene, switches: TermSwitches, pixels: &[(u32, u32)]) -> bool {
-        self.switches == switches && self.pixels == pixels && *self.scene == *scene
+    fn is(&self, scene: &Scene, switches: TermSwitches, isolation: &Isolation) -> bool {
+        self.switches == switches && self.isolation == *isolation && *self.scene == *scene
     }
 }
 
@@ -44,9 +45,15 @@ impl InspectionLink {
         }
     }
 
-    /// Asks for `pixels` of `scene` with `switches`, unless that is what the newest
-    /// question was about. No pixels: forget everything.
-    pub fn sync(&mut self, scene: &Scene, switches: TermSwitches, pixels: Vec<(u32, u32)>) {
+    /// Asks for `pixels` of `scene` with `switches` and `isolation`, unless that is what
+    /// the newest question was about. No pixels: forget everything.
+    pub fn sync(
+        &mut self,
+        scene: &Scene,
+        switches: TermSwitches,
+        isolation: &Isolation,
+        pixels: Vec<(u32, u32)>,
+    ) {
         if pixels.is_empty() {
             self.asked.clear();
             self.answer = None;
@@ -57,7 +64,7 @@ impl InspectionLink {
             .last()
             .map(|(_, about)| about)
             .or(self.answer.as_ref().map(|(about, _)| about));
-        if newest.is_some_and(|about| about.is(scene, switches, &pixels)) {
+        if newest.is_some_and(|about| about.is(scene, switches, isolation) && about.pixels == pixels) {
             return;
         }
         // The scene snapshot is shared with the last question when only pixels changed.
@@ -68,11 +75,13 @@ impl InspectionLink {
         let about = About {
             scene: Arc::clone(&snapshot),
             switches,
+            isolation: isolation.clone(),
             pixels: pixels.clone(),
         };
         let job_scene = Arc::clone(&snapshot);
         let tag = self.probe.ask(
             snapshot,
+            isolation.clone(),
             Box::new(move |world| {
                 pixels
                     .iter()
@@ -101,6 +110,7 @@ impl InspectionLink {
                     .map(|p| PixelInspection {
                         pixel: *p,
                         switches: about.switches,
+                        isolation: about.isolation.clone(),
                         result: Err(error.clone()),
                     })
                     .collect(),
@@ -121,13 +131,13 @@ impl InspectionLink {
         self.answer.as_ref().map_or(&[], |(_, all)| all.as_slice())
     }
 
-    /// Whether the newest answer describes `scene` with `switches` (else it is shown
-    /// while a newer one is traced).
+    /// Whether the newest answer describes `scene` with `switches` and `isolation` (else
+    /// it is shown while a newer one is traced).
     #[must_use]
-    pub fn is_current(&self, scene: &Scene, switches: TermSwitches) -> bool {
+    pub fn is_current(&self, scene: &Scene, switches: TermSwitches, isolation: &Isolation) -> bool {
         self.answer
             .as_ref()
-            .is_some_and(|(about, _)| about.switches == switches && *about.scene == *scene)
+            .is_some_and(|(about, _)| about.is(scene, switches, isolation))
     }
 
     /// Whether a job is running or waiting.

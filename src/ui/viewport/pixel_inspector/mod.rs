@@ -1,21 +1,25 @@
 //! The pixel inspector: every number behind one pixel, for the ray through its centre,
 //! as the tracer's own shading code recorded it ([`try_inspect_pixel`]). The numbers are
 //! the tracer's [`PixelReport`] itself; this model only adds the names of the objects,
-//! materials and lights its indices point at, so the window lays out text. The tracing
-//! runs off the UI thread ([`link`]).
+//! materials and lights its indices point at, and of the lights and objects the
+//! isolation switches leave out (shown as such, not as missing), so the window lays out
+//! text. The tracing runs off the UI thread ([`link`]).
 
+mod compared;
 pub mod link;
 mod window;
 
 use crate::scene::{Light, Scene};
 use crate::trace::{
-    LightRecord, PixelReport, RenderOptions, TermSwitches, View, World, try_inspect_pixel,
+    Isolation, LightRecord, PixelReport, RenderOptions, TermSwitches, View, World,
+    try_inspect_pixel,
 };
 use crate::ui::panels::outliner::light_label;
 
+pub use compared::{OTHER_VALUE_LABEL, RAYLAB_VALUE_LABEL, compared_rows};
 pub use window::{
     FINAL_COLOUR_LABEL, InspectorView, PixelAnchor, inspector_window_id, pixel_inspector_ui,
-    switches_text,
+    isolation_lines, switches_text,
 };
 
 /// One pixel inspected in one scene with one set of switches.
@@ -25,6 +29,8 @@ pub struct PixelInspection {
     pub pixel: (u32, u32),
     /// The switches it was traced with.
     pub switches: TermSwitches,
+    /// The lights and objects left out when it was traced.
+    pub isolation: Isolation,
     /// The tracer's record with names resolved, or why the pixel cannot be traced.
     pub result: Result<InspectedPixel, String>,
 }
@@ -36,6 +42,10 @@ pub struct InspectedPixel {
     pub report: PixelReport,
     /// Names for each of `report.bounces`, same order.
     pub bounces: Vec<InspectedBounce>,
+    /// The lights that do not shine (muted, or not solo while others are), by label.
+    pub lights_off: Vec<String>,
+    /// The objects left out, by name.
+    pub hidden_objects: Vec<String>,
 }
 
 /// The names behind one ray of the chain.
@@ -73,21 +83,24 @@ pub struct InspectedLight {
 }
 
 impl PixelInspection {
-    /// Traces pixel `pixel` of `scene` (compiled as `world`) at its own resolution with
-    /// `switches`. Runs off the UI thread, in [`link::InspectionLink`]'s jobs.
+    /// Traces pixel `pixel` of `scene` (compiled as `world`, with `world.isolation`) at
+    /// its own resolution with `switches`. Runs off the UI thread, in
+    /// [`link::InspectionLink`]'s jobs.
     #[must_use]
     pub fn traced(world: &World, scene: &Scene, switches: TermSwitches, pixel: (u32, u32)) -> Self {
         let options = RenderOptions {
             switches,
             view: View::Beauty,
+            isolation: world.isolation.clone(),
             ..RenderOptions::from_scene(scene)
         };
         let result = try_inspect_pixel(world, &options, pixel.0, pixel.1)
-            .map(|report| resolve(world, scene, report))
+            .map(|report| resolve(scene, &world.isolation, report))
             .map_err(|e| e.to_string());
         Self {
             pixel,
             switches,
+            isolation: world.isolation.clone(),
             result,
         }
     }
@@ -109,10 +122,13 @@ pub fn inspected_pixel(scene: &Scene, image_point: glam::DVec2) -> Option<(u32, 
     })
 }
 
-/// Names for the indices of a report.
-fn resolve(world: &World, scene: &Scene, report: PixelReport) -> InspectedPixel {
+/// Outcome text of a light the isolation switches turn off.
+pub const LIGHT_OFF_OUTCOME: &str = "off (muted or not solo)";
+
+/// Names for the (scene) indices of a report, and for what `isolation` leaves out.
+fn resolve(scene: &Scene, isolation: &Isolation, report: PixelReport) -> InspectedPixel {
     let object_name = |i: usize| {
-        world
+        scene
             .objects
             .get(i)
             .map_or_else(|| format!("object {i}"), |o| o.name.clone())
@@ -134,6 +150,15 @@ fn resolve(world: &World, scene: &Scene, report: PixelReport) -> InspectedPixel 
                 .enumerate()
                 .filter_map(|(index, light)| {
                     let label = light_label(light, index);
+                    if !isolation.is_light_lit(index) {
+                        return Some(InspectedLight {
+                            scene_index: index,
+                            label,
+                            outcome: LIGHT_OFF_OUTCOME.to_owned(),
+                            adds_light: false,
+                            record: None,
+                        });
+                    }
                     if matches!(light, Light::Ambient { .. }) {
                         return Some(InspectedLight {
                             scene_index: index,
@@ -156,18 +181,29 @@ fn resolve(world: &World, scene: &Scene, report: PixelReport) -> InspectedPixel 
             InspectedBounce {
                 hit: Some(InspectedHit {
                     object: object_name(hit.object),
-                    material: world
+                    material: scene
                         .objects
                         .get(hit.object)
-                        .and_then(|o| world.material_names.get(o.material))
-                        .cloned()
+                        .map(|o| o.material.clone())
                         .unwrap_or_default(),
                 }),
                 lights,
             }
         })
         .collect();
-    InspectedPixel { report, bounces }
+    InspectedPixel {
+        report,
+        bounces,
+        lights_off: (0..scene.lights.len())
+            .filter(|&i| !isolation.is_light_lit(i))
+            .map(|i| light_label(&scene.lights[i], i))
+            .collect(),
+        hidden_objects: isolation
+            .hidden_objects
+            .iter()
+            .map(|&i| object_name(i))
+            .collect(),
+    }
 }
 
 #[cfg(test)]

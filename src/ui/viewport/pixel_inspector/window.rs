@@ -65,6 +65,8 @@ pub struct InspectorView<'a> {
     pub ray_paths: &'a RayPathSettings,
     /// Where the pixel is on screen, if it is.
     pub anchor: Option<PixelAnchor>,
+    /// Both pictures' values at the pixel, while a comparison is shown.
+    pub compared: Option<crate::compare::PixelValues>,
 }
 
 /// The inspector window's id (its area's, in egui's memory).
@@ -145,6 +147,10 @@ fn contents_ui(ui: &mut egui::Ui, view: &InspectorView, commands: &mut Vec<Comma
         switches_text(inspection.switches)
     ));
     ui.separator();
+    if let Some(values) = &view.compared {
+        super::compared::compared_ui(ui, values);
+        ui.separator();
+    }
     match &inspection.result {
         Ok(pixel) => pixel_ui(ui, pixel),
         Err(error) => {
@@ -154,6 +160,9 @@ fn contents_ui(ui: &mut egui::Ui, view: &InspectorView, commands: &mut Vec<Comma
 }
 
 fn pixel_ui(ui: &mut egui::Ui, pixel: &InspectedPixel) {
+    for line in isolation_lines(pixel) {
+        ui.label(RichText::new(line).color(crate::ui::style::ACCENT));
+    }
     let report = &pixel.report;
     egui::Grid::new("final colour")
         .num_columns(2)
@@ -260,6 +269,26 @@ fn light_ui(ui: &mut egui::Ui, light: &InspectedLight, depth: u32) {
             number_row_ui(ui, "diffuse", colour_text(record.diffuse));
             number_row_ui(ui, "specular", colour_text(record.specular));
         });
+}
+
+/// What the isolation switches leave out of every bounce, one line each:
+/// "off (muted or not solo): Point light 2" and "hidden (rays pass through): red ball".
+#[must_use]
+pub fn isolation_lines(pixel: &InspectedPixel) -> Vec<String> {
+    let mut lines = Vec::new();
+    if !pixel.lights_off.is_empty() {
+        lines.push(format!(
+            "off (muted or not solo): {}",
+            pixel.lights_off.join(", ")
+        ));
+    }
+    if !pixel.hidden_objects.is_empty() {
+        lines.push(format!(
+            "hidden (rays pass through): {}",
+            pixel.hidden_objects.join(", ")
+        ));
+    }
+    lines
 }
 
 /// One grid row: a label and a number in monospace.

@@ -1,0 +1,215 @@
+//! One generation's plan, rendered pass by pass as the preview worker and the benchmark
+//! run it: the coarse passes, the one-sample pass, then anti-aliasing samples added to one
+//! set of sums sample by sample in index order, exactly as [`crate::trace::render`] sums
+//! them, so the final frame is bit-identical to a direct render. Each anti-aliasing pass
+//! comes with its estimated remaining error, from the mean of its first half of samples
+//! (the previous pass's picture; the first pass is rendered in two halves for this).
+
+use std::sync::Arc;
+use std::time::Instant;
+
+use super::convergence::{ConvergenceCurve, estimated_rmse};
+use super::frame::Frame;
+use super::plan::{Pass, plan_passes};
+use crate::trace::{Image, RayCounts, RenderOptions, RenderProgress, SampleSums, World};
+use crate::trace::{render_samples, render_samples_into};
+
+/// Renders the passes of `target`'s plan in order, handing each finished one to
+/// `publish`. Before each pass `start_pass` gives the progress to render it with, or
+/// `None` to stop; a pass cancelled through its progress also ends the plan.
+pub fn render_plan(
+    world: &World,
+    target: &RenderOptions,
+    start_pass: &mut dyn FnMut() -> Option<Arc<RenderProgress>>,
+    publish: &mut dyn FnMut(Frame),
+) {
+    let passes = plan_passes(target);
+    let mut accumulated = None;
+    let mut curve = ConvergenceCurve::default();
+    for (index, &pass) in passes.iter().enumerate() {
+        let Some(progress) = start_pass() else {
+            return;
+        };
+        let started = Instant::now();
+        let Some(rendered) = render_pass(world, target, pass, &mut accumulated, &progress) else {
+            return;
+        };
+        let elapsed = started.elapsed();
+        curve.add(pass, elapsed, rendered.estimated_rmse);
+        publish(Frame {
+            image: rendered.image,
+            pass,
+            elapsed,
+            rays: rendered.rays,
+            is_final: index + 1 == passes.len(),
+            non_finite_samples: rendered.non_finite_samples,
+            non_finite_pixels: rendered.non_finite_pixels,
+            estimated_rmse: rendered.estimated_rmse,
+            convergence: curve.clone(),
+        });
+    }
+}
+
+/// Anti-aliasing samples summed so far at full resolution, and the picture they made.
+struct Accumulated {
+    sums: SampleSums,
+    samples: u32,
+    image: Image,
+}
+
+/// What one pass made.
+struct Rendered {
+    image: Image,
+    /// Rays of this pass alone.
+    rays: RayCounts,
+    non_finite_samples: u64,
+    non_finite_pixels: Vec<u32>,
+    estimated_rmse: Option<f64>,
+}
+
+impl Rendered {
+    fn new(sums: &SampleSums, image: Image, rays: RayCounts, estimate: Option<f64>) -> Self {
+        Self {
+            image,
+            rays,
+            non_finite_samples: sums.non_finite,
+            non_finite_pixels: sums.non_finite_pixels.clone(),
+            estimated_rmse: estimate,
+        }
+    }
+}
+
+/// Renders one pass; anti-aliasing passes continue the sums in `accumulated`. `None` if
+/// cancelled.
+fn render_pass(
+    world: &World,
+    target: &RenderOptions,
+    pass: Pass,
+    accumulated: &mut Option<Accumulated>,
+    progress: &RenderProgress,
+) -> Option<Rendered> {
+    match pass {
+        Pass::Coarse { .. } | Pass::Full { target: 1, .. } => {
+            let (width, height) = pass.size(target.width, target.height);
+            let options = RenderOptions {
+                width,
+                height,
+                samples_per_pixel: 1,
+                ..target.clone()
+            };
+            let sums = render_samples(world, &options, 0..1, progress)?;
+            Some(Rendered::new(&sums, sums.average(1), sums.rays, None))
+        }
+        Pass::Full {
+            samples,
+            target: count,
+        } => {
+            let options = RenderOptions {
+                samples_per_pixel: count,
+                ..target.clone()
+            };
+            let mut rays = RayCounts::default();
+            if accumulated.is_none() {
+                // The first half on its own, so that this pass has one to compare with.
+                let mut sums = SampleSums::zero(options.width, options.height);
+                let half = (samples / 2).max(1);
+                rays = render_samples_into(world, &options, 0..half, &mut sums, progress)?;
+                let image = sums.average(half);
+                *accumulated = Some(Accumulated {
+                    sums,
+                    samples: half,
+                    image,
+                });
+            }
+            let state = accumulated.as_mut()?;
+            let more = render_samples_into(
+                world,
+                &options,
+                state.samples..samples,
+                &mut state.sums,
+                progress,
+            )?;
+            rays.add(&more);
+            let image = state.sums.average(samples);
+            let estimate = estimated_rmse(&state.image, state.samples, &image, samples);
+            state.samples = samples;
+            state.image = image.clone();
+            Some(Rendered::new(&state.sums, image, rays, Some(estimate)))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::trace::{TermSwitches, View, render};
+
+    #[test]
+    fn every_sampled_pass_is_the_direct_render_at_its_count_with_an_estimate() {
+        let mut scene = crate::scene::examples::default_scene();
+        scene.camera.width = 48;
+        scene.camera.height = 32;
+        let world = World::new(&scene).unwrap();
+        let target = RenderOptions {
+            width: 48,
+            height: 32,
+            samples_per_pixel: 16,
+            switches: TermSwitches::ALL_ON,
+            view: View::Beauty,
+            isolation: crate::trace::Isolation::NONE,
+        };
+        let mut frames = Vec::new();
+        render_plan(
+            &world,
+            &target,
+            &mut || Some(Arc::new(RenderProgress::default())),
+            &mut |frame| frames.push(frame),
+        );
+        let passes: Vec<Pass> = frames.iter().map(|f| f.pass).collect();
+        assert_eq!(passes, plan_passes(&target));
+        for frame in &frames {
+            let Pass::Full { samples, .. } = frame.pass else {
+                unreachable!("48 x 32 has no coarse pass")
+            };
+            // The 4-sample pass of a 16-sample target is the 4-sample image itself.
+            let options = RenderOptions {
+                samples_per_pixel: samples,
+                ..target.clone()
+            };
+            let (direct, _) = render(&world, &options, &RenderProgress::default()).unwrap();
+            assert_eq!(frame.image.pixels, direct.pixels, "{:?}", frame.pass);
+            assert_eq!(frame.estimated_rmse.is_some(), samples > 1);
+            assert!(frame.estimated_rmse.is_none_or(|e| e > 0.0 && e < 0.5));
+        }
+        let last = frames.last().unwrap();
+        assert!(last.is_final);
+        assert_eq!(last.convergence.points().len(), 3, "4, 8 and 16 samples");
+    }
+
+    #[test]
+    fn a_pass_stopped_by_its_progress_ends_the_plan() {
+        let scene = crate::scene::examples::default_scene();
+        let world = World::new(&scene).unwrap();
+        let target = RenderOptions {
+            width: 32,
+            height: 32,
+            ..RenderOptions::from_scene(&scene)
+        };
+        let mut published = 0;
+        let mut started = 0;
+        render_plan(
+            &world,
+            &target,
+            &mut || {
+                started += 1;
+                let progress = RenderProgress::default();
+                if started == 2 {
+                    progress.cancel();
+                }
+                Some(Arc::new(progress))
+            },
+            &mut |_| published += 1,
+        );
+        assert_eq!((started, published), (2, 1));
+    }
+}

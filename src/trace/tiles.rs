@@ -1,0 +1,247 @@
+//! The frame cut into 16 x 16 tiles, traced in parallel with rayon. Inside a tile the
+//! samples go in batches, one sample for every pixel of the tile at a time, and the
+//! cancel flag is checked before each batch: a cancelled render stops within one batch per
+//! tile whatever the sample count. The guard that keeps non-finite samples out of the
+//! sums lives here too.
+
+use std::ops::Range;
+use std::sync::atomic::Ordering;
+
+use glam::DVec3;
+use rayon::prelude::*;
+
+use super::render::{RenderProgress, SampleSums};
+use super::shade::RayCounts;
+
+/// Side of a square tile in pixels: small enough to balance two cores, big enough that
+/// per-tile overhead is noise.
+pub const TILE_SIZE: u32 = 16;
+
+/// The colour of sample `index` of pixel `(px, py)`, unguarded (it may be non-finite),
+/// adding the rays it cast to the tally.
+pub trait SampleColour: Fn(u32, u32, u32, &mut RayCounts) -> DVec3 + Sync {}
+
+impl<F: Fn(u32, u32, u32, &mut RayCounts) -> DVec3 + Sync> SampleColour for F {}
+
+/// A rectangle of the image, in pixels.
+#[derive(Clone, Copy, Debug)]
+struct TileRect {
+    x0: u32,
+    y0: u32,
+    w: u32,
+    h: u32,
+}
+
+/// One finished tile: the pixels' sums in row-major order within the tile.
+struct Tile {
+    rect: TileRect,
+    sums: Vec<DVec3>,
+    rays: RayCounts,
+    non_finite: u64,
+    /// Image-wide row-major indices of the pixels with a non-finite sample, ascending.
+    non_finite_pixels: Vec<u32>,
+}
+
+/// Continues `sums` with the samples `samples` of every pixel, each colour from
+/// `sample`. Each pixel adds its samples in index order whatever the batching, so the
+/// numbers do not depend on how a range is split. Returns the rays of this call (also
+/// added to `sums.rays`), or `None` if cancelled, leaving `sums` untouched.
+pub(super) fn render_tiles(
+    sums: &mut SampleSums,
+    samples: Range<u32>,
+    progress: &RenderProgress,
+    sample: &impl SampleColour,
+) -> Option<RayCounts> {
+    let (width, height) = (sums.width, sums.height);
+    let tiles_x = width.div_ceil(TILE_SIZE);
+    let tile_count = tiles_x * height.div_ceil(TILE_SIZE);
+    let batches = tile_count as usize * samples.len();
+    progress.batches_total.store(batches, Ordering::Relaxed);
+    progress.batches_done.store(0, Ordering::Relaxed);
+
+    let before: &SampleSums = sums;
+    let tiles: Vec<Option<Tile>> = (0..tile_count)
+        .into_par_iter()
+        .map(|index| {
+            let (x0, y0) = ((index % tiles_x) * TILE_SIZE, (index / tiles_x) * TILE_SIZE);
+            let rect = TileRect {
+                x0,
+                y0,
+                w: TILE_SIZE.min(width - x0),
+                h: TILE_SIZE.min(height - y0),
+            };
+            render_tile(rect, before, samples.clone(), progress, sample)
+        })
+        .collect();
+    let tiles: Vec<Tile> = tiles.into_iter().collect::<Option<_>>()?;
+
+    let mut rays = RayCounts::default();
+    let mut new_pixels = Vec::new();
+    for tile in tiles {
+        rays.add(&tile.rays);
+        sums.non_finite += tile.non_finite;
+        new_pixels.extend(tile.non_finite_pixels);
+        let rect = tile.rect;
+        for (row, chunk) in tile.sums.chunks(rect.w as usize).enumerate() {
+            let start = (rect.y0 as usize + row) * width as usize + rect.x0 as usize;
+            sums.sums[start..start + chunk.len()].copy_from_slice(chunk);
+        }
+    }
+    sums.rays.add(&rays);
+    if !new_pixels.is_empty() {
+        sums.non_finite_pixels.extend(new_pixels);
+        sums.non_finite_pixels.sort_unstable();
+        sums.non_finite_pixels.dedup();
+    }
+    Some(rays)
+}
+
+/// Traces one tile batch by batch, each pixel's sum continuing from `before`; `None` as
+/// soon as a batch finds the render cancelled.
+fn render_tile(
+    rect: TileRect,
+    before: &SampleSums,
+    samples: Range<u32>,
+    progress: &RenderProgress,
+    sample: &impl SampleColour,
+) -> Option<Tile> {
+    let image_width = before.width;
+    let pixels: Vec<(u32, u32)> = (rect.y0..rect.y0 + rect.h)
+        .flat_map(|py| (rect.x0..rect.x0 + rect.w).map(move |px| (px, py)))
+        .collect();
+    let mut sums: Vec<DVec3> = pixels
+        .iter()
+        .map(|&(px, py)| before.sums[(py * image_width + px) as usize])
+        .collect();
+    let mut finite = vec![true; pixels.len()];
+    let mut rays = RayCounts::default();
+    let mut non_finite = 0;
+    for index in samples {
+        if progress.is_cancelled() {
+            return None;
+        }
+        for ((&(px, py), sum), finite) in pixels.iter().zip(&mut sums).zip(&mut finite) {
+            let colour = sample(px, py, index, &mut rays);
+            // The guard: NaN or infinity never reaches a pixel; it is counted instead.
+            if colour.is_finite() {
+                *sum += colour;
+            } else {
+                non_finite += 1;
+                *finite = false;
+            }
+        }
+        progress.batches_done.fetch_add(1, Ordering::Relaxed);
+    }
+    let non_finite_pixels = pixels
+        .iter()
+        .zip(&finite)
+        .filter(|(_, finite)| !**finite)
+        .map(|(&(px, py), _)| py * image_width + px)
+        .collect();
+    Some(Tile {
+        rect,
+        sums,
+        rays,
+        non_finite,
+        non_finite_pixels,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use std::sync::atomic::AtomicU64;
+
+    use super::*;
+
+    /// A sample colour that depends on the pixel and index only; counts its calls and
+    /// cancels `progress` on call number `cancel_at` (counting from 1).
+    fn cancelling(
+        calls: &AtomicU64,
+        cancel_at: u64,
+        progress: &RenderProgress,
+    ) -> impl Fn(u32, u32, u32, &mut RayCounts) -> DVec3 + Sync {
+        move |px, py, index, _| {
+            if calls.fetch_add(1, Ordering::SeqCst) + 1 == cancel_at {
+                progress.cancel();
+            }
+            DVec3::new(f64::from(px), f64::from(py), f64::from(index))
+        }
+    }
+
+    #[test]
+    fn a_cancel_inside_a_tile_stops_it_at_the_end_of_that_batch() {
+        // One 16 x 16 tile on one thread, 64 samples a pixel; the 300th sample (inside
+        // the second batch) cancels. Exactly two batches are traced, not all 64.
+        let progress = RenderProgress::default();
+        let calls = AtomicU64::new(0);
+        let cancel_at = 300;
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .build()
+            .unwrap();
+        let mut sums = SampleSums::zero(16, 16);
+        let sample = cancelling(&calls, cancel_at, &progress);
+        let outcome = pool.install(|| render_tiles(&mut sums, 0..64, &progress, &sample));
+        assert!(outcome.is_none());
+        let batch = u64::from(TILE_SIZE * TILE_SIZE);
+        assert_eq!(calls.load(Ordering::SeqCst), 2 * batch);
+        assert!(
+            sums.sums.iter().all(|s| *s == DVec3::ZERO),
+            "a cancelled render leaves the sums untouched"
+        );
+    }
+
+    #[test]
+    fn after_a_cancel_each_running_tile_traces_at_most_one_more_batch() {
+        // 96 x 64 pixels (24 tiles) at 1024 samples on 2 threads: a cancel after the
+        // 1000th sample lets at most one batch per tile in flight finish.
+        let threads = 2;
+        let progress = RenderProgress::default();
+        let calls = AtomicU64::new(0);
+        let cancel_at = 1000;
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        let mut sums = SampleSums::zero(96, 64);
+        let sample = cancelling(&calls, cancel_at, &progress);
+        let outcome = pool.install(|| render_tiles(&mut sums, 0..1024, &progress, &sample));
+        assert!(outcome.is_none());
+        let after = calls.load(Ordering::SeqCst) - cancel_at;
+        let batch = u64::from(TILE_SIZE * TILE_SIZE);
+        assert!(
+            after <= threads as u64 * batch,
+            "{after} samples traced after the cancel"
+        );
+    }
+
+    #[test]
+    fn a_non_finite_sample_is_counted_listed_and_kept_out_of_the_sum() {
+        // 20 x 18 pixels (four tiles, one partial); sample 2 of pixel (17, 3) is NaN and
+        // sample 0 of pixel (4, 16) is infinite.
+        let progress = RenderProgress::default();
+        let mut sums = SampleSums::zero(20, 18);
+        let sample = |px: u32, py: u32, index: u32, rays: &mut RayCounts| {
+            rays.primary += 1;
+            match (px, py, index) {
+                (17, 3, 2) => DVec3::new(0.5, f64::NAN, 0.5),
+                (4, 16, 0) => DVec3::splat(f64::INFINITY),
+                _ => DVec3::splat(0.25),
+            }
+        };
+        render_tiles(&mut sums, 0..2, &progress, &sample).unwrap();
+        render_tiles(&mut sums, 2..4, &progress, &sample).unwrap();
+        assert_eq!(sums.non_finite, 2);
+        assert_eq!(sums.non_finite_pixels, vec![3 * 20 + 17, 16 * 20 + 4]);
+        assert_eq!(sums.rays.primary, 20 * 18 * 4);
+        assert_eq!(
+            sums.sums[3 * 20 + 17],
+            DVec3::splat(0.75),
+            "three samples kept"
+        );
+        assert_eq!(sums.sums[16 * 20 + 4], DVec3::splat(0.75));
+        assert_eq!(sums.sums[0], DVec3::splat(1.0));
+        assert!(sums.sums.iter().all(|s| s.is_finite()));
+        assert_eq!(progress.fraction(), 1.0);
+    }
+}

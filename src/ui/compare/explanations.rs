@@ -1,0 +1,127 @@
+//! The list of explanations under the compared pictures: one row per explanation,
+//! largest share first. Clicking a row highlights its pixels and selects its object (or
+//! its light) in the outliner and inspector; clicking it again clears the highlight.
+
+use egui::{Color32, RichText};
+
+use crate::compare::{Comparison, Explanation, PSNR_IDENTICAL_DB};
+use crate::scene::Scene;
+use crate::ui::commands::{Command, Selection};
+use crate::ui::panels::outliner::light_label;
+
+use super::session::CompareSession;
+
+/// The row's text (also its accessible name), with the light named as the outliner
+/// names it: "1. 50.0% diffuse · Point light 2 · 'red ball'".
+#[must_use]
+pub fn explanation_label(index: usize, e: &Explanation, scene: &Scene) -> String {
+    let mut text = format!("{}. {:.1}% {}", index + 1, 100.0 * e.share, e.term.name());
+    if let Some(light) = e.light {
+        let name = scene
+            .lights
+            .get(light)
+            .map_or_else(|| format!("light {light}"), |l| light_label(l, light));
+        text.push_str(&format!(" · {name}"));
+    }
+    if let Some(object) = &e.object_name {
+        text.push_str(&format!(" · '{object}'"));
+    }
+    text
+}
+
+/// What clicking an explanation selects in `scene`: its object, else its light; nothing
+/// when it names neither, or when the scene no longer has them where it had them.
+#[must_use]
+pub fn explanation_selection(e: &Explanation, scene: &Scene) -> Option<Selection> {
+    if let Some(object) = e.object {
+        let same = scene.objects.get(object).map(|o| &o.name) == e.object_name.as_ref();
+        return same.then_some(Selection::Object(object));
+    }
+    e.light
+        .filter(|&l| l < scene.lights.len())
+        .map(Selection::Light)
+}
+
+/// The summary line and the rows; pushes a selection when a row is clicked.
+pub fn explanations_ui(
+    ui: &mut egui::Ui,
+    session: &mut CompareSession,
+    scene: &Scene,
+    commands: &mut Vec<Command>,
+) {
+    let Some(compared) = session.compared() else {
+        return;
+    };
+    let c = &compared.comparison;
+    summary_ui(ui, c);
+    let mut clicked = None;
+    egui::ScrollArea::vertical()
+        .auto_shrink([false, true])
+        .show(ui, |ui| {
+            for (i, e) in c.explanations.iter().enumerate() {
+                let selected = session.highlighted() == Some(i);
+                let label = explanation_label(i, e, scene);
+                let response = ui
+                    .selectable_label(selected, RichText::new(&label).strong())
+                    .on_hover_text("Highlight its pixels and select its object or light");
+                if response.clicked() {
+                    clicked = Some(i);
+                }
+                ui.horizontal_wrapped(|ui| {
+                    ui.add_space(14.0);
+                    ui.weak(format!(
+                        "{} Factor {:.2}, {} pixels, {}, sure: {} ({:.2}).",
+                        e.summary,
+                        e.factor,
+                        e.pixels.len(),
+                        e.cause.name(),
+                        e.sureness(),
+                        e.confidence
+                    ));
+                });
+                ui.add_space(4.0);
+            }
+        });
+    if let Some(i) = clicked {
+        if session.highlighted() == Some(i) {
+            session.highlight(None);
+        } else {
+            session.highlight(Some(i));
+            let selection = session
+                .comparison()
+                .and_then(|c| c.explanations.get(i))
+                .and_then(|e| explanation_selection(e, scene));
+            if let Some(selection) = selection {
+                commands.push(Command::Select(selection));
+            }
+        }
+    }
+}
+
+/// PSNR, encoding and what is left unexplained.
+fn summary_ui(ui: &mut egui::Ui, c: &Comparison) {
+    let psnr = if c.psnr_db >= PSNR_IDENTICAL_DB {
+        "identical".to_owned()
+    } else {
+        format!("PSNR {:.2} dB", c.psnr_db)
+    };
+    ui.horizontal_wrapped(|ui| {
+        ui.label(RichText::new(psnr).strong());
+        ui.weak(format!(
+            "· other image read as {} · unexplained {:.1}% · raylab at {} spp",
+            c.encoding.name(),
+            100.0 * c.unexplained_share,
+            c.samples_per_pixel
+        ));
+    });
+    if c.explanations.is_empty() {
+        ui.label(
+            RichText::new(if c.psnr_db >= PSNR_IDENTICAL_DB {
+                "The pictures are identical."
+            } else {
+                "No explanation: the pictures agree within 8-bit rounding."
+            })
+            .color(Color32::from_rgb(140, 200, 140)),
+        );
+    }
+}

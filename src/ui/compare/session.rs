@@ -1,0 +1,213 @@
+//! The state of a comparison in the editor: the job that runs it off the UI thread, its
+//! outcome (the comparison, or an error for the user), and how it is being looked at.
+
+use std::path::{Path, PathBuf};
+
+use crate::compare::{CompareError, CompareOptions, Comparison, OtherImage, PixelValues, compare};
+use crate::preview::BackgroundJob;
+use crate::scene::Scene;
+
+use super::mode::{CompareMode, Side};
+use super::textures::CompareTextures;
+use super::view::ZoomView;
+
+/// A comparison that ran: what was compared and what was found.
+pub struct Compared {
+    /// The comparison's result.
+    pub comparison: Comparison,
+    /// The other picture's file.
+    pub path: PathBuf,
+    /// The scene as it was compared (to notice later edits).
+    pub scene: Scene,
+    /// Its pictures on the GPU, made when first shown.
+    pub textures: Option<CompareTextures>,
+}
+
+/// A running comparison.
+struct Running {
+    job: BackgroundJob<Result<Comparison, String>>,
+    path: PathBuf,
+    scene: Scene,
+}
+
+/// Everything the editor keeps about comparing with another image.
+#[derive(Default)]
+pub struct CompareSession {
+    /// Whether the Compare with Image window is open.
+    pub window_open: bool,
+    /// The path in the window's field.
+    pub path_text: String,
+    /// How the pictures are shown.
+    pub mode: CompareMode,
+    /// Zoom and pan, shared by both pictures.
+    pub view: ZoomView,
+    /// Where the swipe line is, 0 (left) to 1 (right) across the picture.
+    pub swipe: f32,
+    /// Which picture the flip mode shows.
+    pub flip_side: Side,
+    /// Whether the flip mode flips by itself.
+    pub auto_flip: bool,
+    running: Option<Running>,
+    compared: Option<Compared>,
+    error: Option<String>,
+    highlighted: Option<usize>,
+}
+
+impl CompareSession {
+    /// Opens the window where a file is chosen.
+    pub fn show_window(&mut self) {
+        self.window_open = true;
+    }
+
+    /// Starts comparing `scene` with the picture at `path` on a thread of its own (a
+    /// running comparison is cancelled). The window opens to show progress and errors.
+    pub fn start(&mut self, scene: &Scene, path: &Path, ctx: &egui::Context) {
+        self.running = None;
+        self.error = None;
+        self.window_open = true;
+        self.path_text = path.display().to_string();
+        let (thread_scene, thread_path, repaint) = (scene.clone(), path.to_owned(), ctx.clone());
+        let job = BackgroundJob::spawn(
+            "comparison",
+            move |progress| {
+                let other = match OtherImage::load(&thread_path) {
+                    Ok(other) => other,
+                    Err(error) => return Some(Err(error.to_string())),
+                };
+                match compare(&thread_scene, &other, &CompareOptions::default(), progress) {
+                    Ok(comparison) => Some(Ok(comparison)),
+                    Err(CompareError::Cancelled) => None,
+                    Err(error) => Some(Err(error.to_string())),
+                }
+            },
+            move || repaint.request_repaint(),
+        );
+        match job {
+            Ok(job) => {
+                self.running = Some(Running {
+                    job,
+                    path: path.to_owned(),
+                    scene: scene.clone(),
+                });
+            }
+            Err(error) => self.error = Some(error),
+        }
+    }
+
+    /// Takes the outcome of a finished job: the comparison is shown, an error is kept
+    /// for the window (which stays open to show it).
+    pub fn poll(&mut self) {
+        let Some(outcome) = self.running.as_ref().and_then(|r| r.job.try_result()) else {
+            return;
+        };
+        let Some(running) = self.running.take() else {
+            return;
+        };
+        match outcome.and_then(|result| result) {
+            Ok(comparison) => {
+                self.compared = Some(Compared {
+                    comparison,
+                    path: running.path,
+                    scene: running.scene,
+                    textures: None,
+                });
+                self.highlighted = None;
+                self.view = ZoomView::default();
+                self.swipe = 0.5;
+                self.window_open = false;
+            }
+            Err(error) => {
+                self.error = Some(format!("Cannot compare: {error}"));
+                self.window_open = true;
+            }
+        }
+    }
+
+    /// Asks the running comparison to stop (its end is reported as an error).
+    pub fn cancel(&self) {
+        if let Some(running) = &self.running {
+            running.job.cancel();
+        }
+    }
+
+    /// Fraction done of the running comparison, `None` when none runs.
+    #[must_use]
+    pub fn progress(&self) -> Option<f64> {
+        self.running.as_ref().map(|r| r.job.fraction())
+    }
+
+    /// Whether a comparison is running.
+    #[must_use]
+    pub fn is_running(&self) -> bool {
+        self.running.is_some()
+    }
+
+    /// Why the last comparison could not be made.
+    #[must_use]
+    pub fn error(&self) -> Option<&str> {
+        self.error.as_deref()
+    }
+
+    /// The comparison being shown.
+    #[must_use]
+    pub fn compared(&self) -> Option<&Compared> {
+        self.compared.as_ref()
+    }
+
+    /// The comparison being shown, to make its textures.
+    pub fn compared_mut(&mut self) -> Option<&mut Compared> {
+        self.compared.as_mut()
+    }
+
+    /// The comparison's result, when one is shown.
+    #[must_use]
+    pub fn comparison(&self) -> Option<&Comparison> {
+        self.compared.as_ref().map(|c| &c.comparison)
+    }
+
+    /// Whether the viewport shows the comparison instead of the live preview.
+    #[must_use]
+    pub fn is_showing(&self) -> bool {
+        self.compared.is_some()
+    }
+
+    /// Back to the live preview.
+    pub fn close(&mut self) {
+        self.compared = None;
+        self.highlighted = None;
+    }
+
+    /// The explanation whose pixels are highlighted.
+    #[must_use]
+    pub fn highlighted(&self) -> Option<usize> {
+        self.highlighted
+    }
+
+    /// Highlights explanation `index` (`None`: nothing).
+    pub fn highlight(&mut self, index: Option<usize>) {
+        let count = self.comparison().map_or(0, |c| c.explanations.len());
+        self.highlighted = index.filter(|&i| i < count);
+    }
+
+    /// The highlighted explanation's pixels (row-major indices), empty when none.
+    #[must_use]
+    pub fn highlighted_pixels(&self) -> &[u32] {
+        match (self.comparison(), self.highlighted) {
+            (Some(c), Some(i)) => c.explanations.get(i).map_or(&[], |e| &e.pixels),
+            _ => &[],
+        }
+    }
+
+    /// Both pictures' values at `pixel`, when a comparison is shown and holds it.
+    #[must_use]
+    pub fn pixel_values(&self, pixel: (u32, u32)) -> Option<PixelValues> {
+        let c = self.comparison()?;
+        (pixel.0 < c.width && pixel.1 < c.height).then(|| c.pixel(pixel.0, pixel.1))
+    }
+
+    /// Whether `scene` differs from the scene that was compared.
+    #[must_use]
+    pub fn is_stale(&self, scene: &Scene) -> bool {
+        self.compared.as_ref().is_some_and(|c| c.scene != *scene)
+    }
+}

@@ -1,0 +1,257 @@
+//! File > Compare with Image under egui_kittest: a comparison opened from a path runs in
+//! the background and replaces the viewport; each mode shows; clicking an explanation
+//! highlights its pixels and selects its object; the pixel inspector shows both values;
+//! a wrong-size picture and a dropped PNG.
+
+mod editor_harness;
+
+use std::path::{Path, PathBuf};
+
+use egui::{Key, Modifiers, Pos2, Vec2};
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use raylab::compare::ExplainedTerm;
+use raylab::scene::{Scene, load_scene};
+use raylab::trace::{RenderOptions, RenderProgress, World, render};
+use raylab::ui::compare::{
+    COMPARE_PATH_LABEL, COMPARE_PICTURE_LABEL, CompareMode, ZoomView, explanation_label,
+    picture_frames,
+};
+use raylab::ui::viewport::pixel_inspector::{OTHER_VALUE_LABEL, RAYLAB_VALUE_LABEL, compared_rows};
+use raylab::ui::{EditorApp, EditorOptions, Selection};
+
+use editor_harness::{click_at, drop_file, editor_harness, temp_dir};
+
+const LAB: &str = "tests/compare/lab.ron";
+
+fn lab() -> Scene {
+    load_scene(Path::new(LAB)).unwrap()
+}
+
+/// The lab scene rendered by raylab with the red ball's diffuse colour halved, as PNG.
+fn halved_ball_png(dir: &Path) -> PathBuf {
+    let mut scene = lab();
+    let ball = scene.objects.iter().find(|o| o.name == "red ball").unwrap();
+    let material = scene.materials.get_mut(&ball.material.clone()).unwrap();
+    material.diffuse *= 0.5;
+    let world = World::new(&scene).unwrap();
+    let (image, _) = render(
+        &world,
+        &RenderOptions::from_scene(&scene),
+        &RenderProgress::default(),
+    )
+    .unwrap();
+    let path = dir.join("theirs.png");
+    std::fs::write(&path, image.png_bytes()).unwrap();
+    path
+}
+
+fn harness() -> Harness<'static, EditorApp> {
+    editor_harness(
+        EditorOptions {
+            scene: Some(PathBuf::from(LAB)),
+            ..EditorOptions::default()
+        },
+        Vec2::new(1280.0, 860.0),
+        64,
+    )
+}
+
+/// File > Compare with Image…, the path typed, Compare; then waits for the job.
+fn compare_through_the_window(harness: &mut Harness<'_, EditorApp>, path: &Path) {
+    harness.get_by_label("File").click();
+    harness.run();
+    harness.get_by_label("Compare with Image…").click();
+    harness.run();
+    harness.get_by_label(COMPARE_PATH_LABEL).focus();
+    harness.run();
+    harness.key_combination_modifiers(Modifiers::COMMAND, &[Key::A]);
+    harness
+        .get_by_label(COMPARE_PATH_LABEL)
+        .type_text(&path.display().to_string());
+    harness.run();
+    harness.get_by_label("Compare").click();
+    harness.run();
+    wait_for_comparison(harness);
+}
+
+fn wait_for_comparison(harness: &mut Harness<'_, EditorApp>) {
+    for _ in 0..3000 {
+        harness.step();
+        if !harness.state().compare().is_running() {
+            harness.run();
+            return;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
+    panic!("the comparison did not finish");
+}
+
+/// The screen point over the centre of image pixel `p` in the first frame.
+fn screen_of_pixel(harness: &Harness<'_, EditorApp>, mode: CompareMode, p: u32) -> Pos2 {
+    let c = harness.state().compare().comparison().unwrap();
+    let (x, y) = (p % c.width, p / c.width);
+    let label = format!("{COMPARE_PICTURE_LABEL}: {}", mode.label());
+    let outer = harness.get_by_label(&label).rect();
+    let frame = picture_frames(mode, outer, c.width as f32 / c.height as f32)[0];
+    let pos = Pos2::new(
+        frame.min.x + (x as f32 + 0.5) / c.width as f32 * frame.width(),
+        frame.min.y + (y as f32 + 0.5) / c.height as f32 * frame.height(),
+    );
+    assert_eq!(
+        ZoomView::default().pixel_at(frame, pos, c.width, c.height),
+        Some((x, y))
+    );
+    pos
+}
+
+#[test]
+fn a_comparison_from_a_path_shows_every_mode_and_its_explanations_select_and_highlight() {
+    let dir = temp_dir("compare");
+    let theirs = halved_ball_png(&dir);
+    let mut harness = harness();
+    compare_through_the_window(&mut harness, &theirs);
+    let app = harness.state();
+    assert!(
+        app.compare().error().is_none(),
+        "{:?}",
+        app.compare().error()
+    );
+    let c = app
+        .compare()
+        .comparison()
+        .expect("the comparison is shown")
+        .clone();
+    let ball = app
+        .scene()
+        .objects
+        .iter()
+        .position(|o| o.name == "red ball")
+        .unwrap();
+    let top = &c.explanations[0];
+    assert_eq!((top.term, top.object), (ExplainedTerm::Diffuse, Some(ball)));
+
+    // The view replaces the viewport; each mode button switches to its picture.
+    for mode in CompareMode::ALL {
+        harness.get_by_label(mode.label()).click();
+        harness.run();
+        assert_eq!(harness.state().compare().mode, mode);
+        harness.get_by_label(&format!("{COMPARE_PICTURE_LABEL}: {}", mode.label()));
+    }
+    // Flip shows the other picture, and back.
+    harness.get_by_label("Flip to other image").click();
+    harness.run();
+    harness.get_by_label("Flip to raylab").click();
+    harness.run();
+
+    // Clicking the top explanation selects the ball and highlights its pixels.
+    assert!(harness.state().compare().highlighted_pixels().is_empty());
+    let scene = harness.state().scene().clone();
+    harness
+        .get_by_label(&explanation_label(0, top, &scene))
+        .click();
+    harness.run();
+    let app = harness.state();
+    assert_eq!(app.selection(), &Selection::Object(ball));
+    assert_eq!(app.compare().highlighted(), Some(0));
+    assert_eq!(app.compare().highlighted_pixels(), top.pixels.as_slice());
+    // Clicking it again clears the highlight.
+    harness
+        .get_by_label(&explanation_label(0, top, &scene))
+        .click();
+    harness.run();
+    assert!(harness.state().compare().highlighted_pixels().is_empty());
+
+    // Scrolling over the picture zooms about the pointer.
+    let pos = screen_of_pixel(&harness, CompareMode::Flip, top.pixels[0]);
+    harness.event(egui::Event::PointerMoved(pos));
+    harness.event(egui::Event::MouseWheel {
+        unit: egui::MouseWheelUnit::Point,
+        delta: Vec2::new(0.0, 400.0),
+        modifiers: Modifiers::NONE,
+        phase: egui::TouchPhase::Move,
+        source: egui::MouseWheelSource::Unknown,
+    });
+    for _ in 0..30 {
+        harness.step();
+    }
+    assert!(
+        harness.state().compare().view.zoom > 2.0,
+        "{:?}",
+        harness.state().compare().view
+    );
+
+    // Close comparison: the live viewport is back.
+    harness.get_by_label("Close comparison").click();
+    harness.run();
+    assert!(!harness.state().compare().is_showing());
+    harness.get_by_label(raylab::ui::VIEWPORT_LABEL);
+}
+
+#[test]
+fn clicking_a_compared_pixel_shows_both_pictures_values_in_the_inspector() {
+    let dir = temp_dir("compare-inspect");
+    let theirs = halved_ball_png(&dir);
+    let mut harness = harness();
+    compare_through_the_window(&mut harness, &theirs);
+    let c = harness.state().compare().comparison().unwrap().clone();
+    let p = c.explanations[0].pixels[c.explanations[0].pixels.len() / 2];
+    let pos = screen_of_pixel(&harness, CompareMode::Swipe, p);
+    click_at(&mut harness, pos);
+    let (x, y) = (p % c.width, p / c.width);
+    let inspection = harness.state().inspection().expect("the inspector opened");
+    assert_eq!(inspection.pixel, (x, y));
+    let values = c.pixel(x, y);
+    assert_ne!(
+        values.raylab_rgb, values.other_rgb,
+        "a pixel of the halved ball"
+    );
+    // The inspector's rows show the comparison's bytes at that pixel, raylab's and the
+    // other picture's, and the explanation that covers it.
+    let rows = compared_rows(&values);
+    let shown = |label: &str| {
+        let (_, text) = rows.iter().find(|(l, _)| *l == label).unwrap();
+        harness.get_by_label(&format!("{label}: {text}"));
+        text.clone()
+    };
+    let raylab_text = shown(RAYLAB_VALUE_LABEL);
+    assert!(
+        raylab_text.starts_with(&format!("{:?}", values.raylab_rgb)),
+        "{raylab_text}"
+    );
+    let other_text = shown(OTHER_VALUE_LABEL);
+    assert!(
+        other_text.starts_with(&format!("{:?}", values.other_rgb)),
+        "{other_text}"
+    );
+    assert!(shown("explained by").split(", ").any(|n| n == "1"));
+}
+
+#[test]
+fn a_wrong_size_picture_is_a_clear_error_and_a_dropped_png_compares() {
+    let dir = temp_dir("compare-errors");
+    let small = dir.join("small.png");
+    image::RgbImage::new(10, 7).save(&small).unwrap();
+    let mut harness = harness();
+    compare_through_the_window(&mut harness, &small);
+    let error = harness
+        .state()
+        .compare()
+        .error()
+        .expect("an error")
+        .to_owned();
+    assert!(
+        error.contains("10x7") && error.contains("120x90"),
+        "{error}"
+    );
+    harness.get_by_label_contains("10x7");
+    assert!(!harness.state().compare().is_showing());
+
+    // Dropping a PNG on the window compares with it.
+    let theirs = halved_ball_png(&dir);
+    drop_file(&mut harness, &theirs);
+    wait_for_comparison(&mut harness);
+    assert!(harness.state().compare().error().is_none());
+    let compared = harness.state().compare().compared().expect("shown");
+    assert_eq!(compared.path, theirs);
+}

@@ -1,0 +1,167 @@
+//! The in-app file dialog, as a person on a desktop without a native one (no xdg portal,
+//! no zenity) meets it: Save As of an untitled scene writes the file, the unsaved-changes
+//! question offers Save, Open and Export's Browse go through the same dialog, and a
+//! cancelled dialog does nothing.
+
+mod editor_harness;
+
+use std::path::Path;
+
+use editor_harness::{close_window, harness_with_file_dialog, temp_dir};
+use egui::{Key, Modifiers};
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use raylab::scene::{Shape, load_scene};
+use raylab::ui::files::{new_scene, save_scene_to};
+use raylab::ui::{Command, DialogPurpose, EditorApp, EditorOptions, NativeDialogs, SceneEdit};
+
+/// The editor on a desktop with no native file dialog; dialogs open in `dir`.
+fn harness_in(dir: &Path) -> Harness<'static, EditorApp> {
+    harness_with_file_dialog(EditorOptions {
+        native_dialogs: NativeDialogs::Unavailable,
+        dialog_folder: Some(dir.to_owned()),
+        ..EditorOptions::default()
+    })
+}
+
+/// An untitled scene with one unsaved edit.
+fn untitled_and_edited(harness: &mut Harness<'_, EditorApp>) {
+    harness.state_mut().push(Command::New);
+    harness.run();
+    harness
+        .state_mut()
+        .push(Command::Edit(SceneEdit::AddObject(Shape::Sphere)));
+    harness.run();
+    assert!(harness.state().is_dirty());
+    assert_eq!(harness.state().path(), None);
+}
+
+/// The dialog's file name field, holding the suggested name (its text run holds it too).
+fn file_name_field<'h>(harness: &'h Harness<'_, EditorApp>) -> egui_kittest::Node<'h> {
+    harness.get_by(|node| {
+        node.role() == egui::accesskit::Role::TextInput
+            && node.value().as_deref() == Some("untitled.ron")
+    })
+}
+
+fn menu(harness: &mut Harness<'_, EditorApp>, entry: &str) {
+    harness.get_by_label("File").click();
+    harness.run();
+    harness.get_by_label(entry).click();
+    harness.run();
+}
+
+#[test]
+fn save_as_of_an_untitled_scene_without_native_dialogs_writes_the_file() {
+    let dir = temp_dir("dialog-save-as");
+    let mut harness = harness_in(&dir);
+    assert!(harness.state().file_dialogs().uses_in_app());
+    untitled_and_edited(&mut harness);
+    menu(&mut harness, "Save As…");
+    assert_eq!(
+        harness.state().file_dialogs().open_purpose(),
+        Some(DialogPurpose::SaveSceneAs)
+    );
+    // The name is suggested; the user types another one, without the extension.
+    file_name_field(&harness).focus();
+    harness.run();
+    harness.key_combination_modifiers(Modifiers::COMMAND, &[Key::A]);
+    file_name_field(&harness).type_text("my scene");
+    harness.run();
+    harness.get_by_label("Save").click();
+    harness.run();
+
+    let path = dir.join("my scene.ron");
+    assert_eq!(&load_scene(&path).unwrap(), harness.state().scene());
+    assert_eq!(harness.state().path(), Some(path.as_path()));
+    assert!(!harness.state().is_dirty());
+    assert_eq!(harness.state().title(), "my scene.ron — raylab");
+    assert_eq!(harness.state().file_dialogs().open_purpose(), None);
+}
+
+#[test]
+fn save_in_the_quit_question_saves_an_untitled_scene_then_quits() {
+    let dir = temp_dir("dialog-quit-save");
+    let mut harness = harness_in(&dir);
+    untitled_and_edited(&mut harness);
+    close_window(&mut harness);
+    harness.get_by_label("Save").click();
+    harness.run();
+    // No file yet: the dialog asks for one; the window closes once it is written.
+    assert!(!harness.state().is_closing());
+    harness.get_by_label("Save").click();
+    harness.run();
+    let path = dir.join("untitled.ron");
+    assert_eq!(&load_scene(&path).unwrap(), harness.state().scene());
+    assert!(harness.state().is_closing());
+}
+
+#[test]
+fn a_cancelled_save_dialog_cancels_the_quit() {
+    let dir = temp_dir("dialog-quit-cancel");
+    let mut harness = harness_in(&dir);
+    untitled_and_edited(&mut harness);
+    close_window(&mut harness);
+    harness.get_by_label("Save").click();
+    harness.run();
+    harness.get_by_label("Cancel").click();
+    harness.run();
+    assert!(!harness.state().is_closing());
+    assert!(harness.state().is_dirty());
+    assert_eq!(harness.state().error(), None);
+    assert!(
+        std::fs::read_dir(&dir).unwrap().next().is_none(),
+        "nothing written"
+    );
+}
+
+#[test]
+fn discard_in_the_new_question_drops_the_changes() {
+    let dir = temp_dir("dialog-new-discard");
+    let mut harness = harness_in(&dir);
+    harness
+        .state_mut()
+        .push(Command::Edit(SceneEdit::AddObject(Shape::Cube)));
+    harness.run();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::N);
+    harness.run();
+    harness.get_by_label("Save");
+    harness.get_by_label("Discard").click();
+    harness.run();
+    assert_eq!(harness.state().scene(), &new_scene());
+}
+
+#[test]
+fn open_and_export_browse_use_the_in_app_dialog() {
+    let dir = temp_dir("dialog-open");
+    let mut scene = new_scene();
+    scene.camera.fov_deg = 61.0;
+    save_scene_to(&scene, &dir.join("other.ron")).unwrap();
+    let mut harness = harness_in(&dir);
+    menu(&mut harness, "Open…");
+    harness.get_by_label_contains("other.ron").click();
+    harness.run();
+    harness.get_by_label("Open").click();
+    harness.run();
+    assert_eq!(harness.state().scene(), &scene);
+    assert_eq!(
+        harness.state().path(),
+        Some(dir.join("other.ron").as_path())
+    );
+
+    harness.state_mut().push(Command::ShowExport);
+    harness.run();
+    harness.get_by_label("Browse…").click();
+    harness.run();
+    assert_eq!(
+        harness.state().file_dialogs().open_purpose(),
+        Some(DialogPurpose::ExportPng)
+    );
+    harness.get_by_label("Save").click();
+    harness.run();
+    let expected = dir.join("other.png");
+    assert_eq!(
+        harness.state().export().path,
+        expected.display().to_string()
+    );
+}

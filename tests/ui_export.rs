@@ -1,0 +1,198 @@
+//! Export PNG through the editor, with no window: the file is written in the
+//! background, a failed write keeps the render, a running export can be cancelled.
+
+mod editor_harness;
+
+use std::path::Path;
+
+use editor_harness::{harness, step_until, temp_dir};
+use egui::{Key, Modifiers};
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use raylab::ui::{Command, EditorApp};
+
+#[test]
+fn export_writes_a_png_and_keeps_the_render_when_the_file_cannot_be_written() {
+    let dir = temp_dir("export");
+    let mut harness = harness();
+    harness.state_mut().push(Command::ShowExport);
+    harness.run();
+    harness
+        .get_by_label("export width")
+        .set_value_accesskit(64.0);
+    harness
+        .get_by_label("export height")
+        .set_value_accesskit(48.0);
+    harness
+        .get_by_label("export samples")
+        .set_value_accesskit(2.0);
+    harness.run();
+
+    let bad = dir.join("missing").join("out.png");
+    set_export_path(&mut harness, &bad);
+    harness.get_by_label("Render and save").click();
+    harness.run_ok();
+    step_until(&mut harness, "the export", |app| !app.export().is_running());
+    let status = harness.state().export().status.clone().unwrap();
+    assert!(
+        status.as_ref().is_err_and(|e| e.contains("cannot write")),
+        "{status:?}"
+    );
+    let kept = harness
+        .state()
+        .export()
+        .kept_image()
+        .expect("the render is kept");
+    assert_eq!((kept.width, kept.height), (64, 48));
+
+    let good = dir.join("out.png");
+    set_export_path(&mut harness, &good);
+    harness.get_by_label("Save kept render").click();
+    harness.run_ok();
+    step_until(&mut harness, "the write", |app| !app.export().is_running());
+    let png = image::open(&good).expect("a PNG was written");
+    assert_eq!((png.width(), png.height()), (64, 48));
+    assert!(harness.state().export().kept_image().is_none());
+}
+
+fn set_export_path(harness: &mut Harness<'_, EditorApp>, path: &Path) {
+    harness.get_by_label("export path").focus();
+    harness.run();
+    harness.key_combination_modifiers(Modifiers::COMMAND, &[Key::A]);
+    harness
+        .get_by_label("export path")
+        .type_text(&path.display().to_string());
+    harness.run();
+}
+
+#[test]
+fn a_running_export_can_be_cancelled_and_writes_nothing() {
+    let dir = temp_dir("export-cancel");
+    let path = dir.join("big.png");
+    let mut harness = harness();
+    harness.state_mut().push(Command::ShowExport);
+    harness.run();
+    // Far too much work to finish before the click below.
+    harness
+        .get_by_label("export width")
+        .set_value_accesskit(4000.0);
+    harness
+        .get_by_label("export height")
+        .set_value_accesskit(3000.0);
+    harness
+        .get_by_label("export samples")
+        .set_value_accesskit(4096.0);
+    harness.run();
+    set_export_path(&mut harness, &path);
+    harness.get_by_label("Render and save").click();
+    harness.run_ok();
+    assert!(harness.state().export().is_running());
+    harness.get_by_label("Cancel").click();
+    harness.run_ok();
+    step_until(&mut harness, "the cancel", |app| !app.export().is_running());
+    let status = harness.state().export().status.clone();
+    assert_eq!(status, Some(Err("export cancelled".to_owned())));
+    assert!(!path.exists());
+}
+
+/// The export window at `width` x `height` with one sample, writing to `path`.
+fn export_window_at(harness: &mut Harness<'_, EditorApp>, width: u32, height: u32, path: &Path) {
+    harness.state_mut().push(Command::ShowExport);
+    harness.run();
+    harness
+        .get_by_label("export width")
+        .set_value_accesskit(f64::from(width));
+    harness.run();
+    harness.get_by_label("keep aspect").click();
+    harness.run();
+    harness
+        .get_by_label("export height")
+        .set_value_accesskit(f64::from(height));
+    harness
+        .get_by_label("export samples")
+        .set_value_accesskit(1.0);
+    harness.run();
+    set_export_path(harness, path);
+}
+
+#[test]
+fn the_window_stays_put_when_its_status_line_appears() {
+    let dir = temp_dir("export-still");
+    let mut harness = harness();
+    export_window_at(&mut harness, 32, 24, &dir.join("missing").join("out.png"));
+    let button = harness.get_by_label("Render and save").rect();
+    let field = harness.get_by_label("export path").rect();
+    harness.get_by_label("Render and save").click();
+    harness.run_ok();
+    step_until(&mut harness, "the export", |app| !app.export().is_running());
+    assert!(
+        harness
+            .state()
+            .export()
+            .status
+            .as_ref()
+            .is_some_and(Result::is_err)
+    );
+    assert_eq!(harness.get_by_label("Render and save").rect(), button);
+    assert_eq!(harness.get_by_label("export path").rect(), field);
+}
+
+#[test]
+fn width_and_height_keep_the_aspect_ratio_until_unlinked() {
+    let mut harness = harness();
+    harness.state_mut().push(Command::ShowExport);
+    harness.run();
+    harness
+        .get_by_label("export width")
+        .set_value_accesskit(200.0);
+    harness.run();
+    let size = |h: &Harness<'_, EditorApp>| {
+        let o = h.state().export().settings.clone().unwrap();
+        (o.width, o.height)
+    };
+    assert_eq!(size(&harness), (200, 150), "the default scene is 4:3");
+    harness.get_by_label("keep aspect").click();
+    harness.run();
+    harness
+        .get_by_label("export height")
+        .set_value_accesskit(100.0);
+    harness.run();
+    assert_eq!(size(&harness), (200, 100));
+}
+
+#[test]
+fn as_the_viewport_shows_it_exports_the_switches_and_view_on_screen() {
+    use raylab::trace::{RenderOptions, RenderProgress, Term, View, World, render};
+    let dir = temp_dir("export-shown");
+    let path = dir.join("shown.png");
+    let mut harness = harness();
+    let mut shown = *harness.state().preview_settings();
+    shown.switches.set(Term::Diffuse, false);
+    shown.view = View::Depth;
+    harness.state_mut().push(Command::SetPreviewSettings(shown));
+    export_window_at(&mut harness, 40, 30, &path);
+    harness.get_by_label("as the viewport shows it").click();
+    harness.run();
+    harness.get_by_label("Render and save").click();
+    harness.run_ok();
+    step_until(&mut harness, "the export", |app| !app.export().is_running());
+
+    let scene = harness.state().scene().clone();
+    let options = RenderOptions {
+        width: 40,
+        height: 30,
+        samples_per_pixel: 1,
+        switches: shown.switches,
+        view: shown.view,
+        isolation: raylab::trace::Isolation::NONE,
+    };
+    let world = World::new(&scene).unwrap();
+    let (expected, _) = render(&world, &options, &RenderProgress::default()).unwrap();
+    let expected = image::load_from_memory(&expected.png_bytes()).unwrap();
+    let written = image::open(&path).expect("the export was written");
+    assert_eq!(
+        written.to_rgb8(),
+        expected.to_rgb8(),
+        "what `raylab render --view depth` gives"
+    );
+}

@@ -1,0 +1,284 @@
+//! Files through the editor, with no window: open (and its errors), save, save as, new,
+//! dropped files, the close question, legacy import, recent files. Dialogs pick a path
+//! and call what these commands call; the in-app dialog is driven in ui_dialogs.rs.
+
+mod editor_harness;
+
+use editor_harness::{close_window, drop_file, harness, select_red_ball, temp_dir};
+use egui::{Key, Modifiers};
+use egui_kittest::kittest::Queryable;
+use raylab::scene::load_scene;
+use raylab::ui::files::{default_scene, new_scene, open_scene, save_scene_to};
+use raylab::ui::{Command, SceneEdit};
+
+#[test]
+fn a_file_that_fails_to_load_shows_its_line_and_keeps_the_scene() {
+    let dir = temp_dir("broken");
+    let path = dir.join("broken.ron");
+    std::fs::write(
+        &path,
+        "Scene(\n    objects: [\n        (shape: Blob, material: \"x\"),\n    ],\n)\n",
+    )
+    .unwrap();
+    let mut harness = harness();
+    select_red_ball(&mut harness);
+    harness
+        .get_by_label("translate x")
+        .set_value_accesskit(1.25);
+    harness.run();
+    let edited = harness.state().scene().clone();
+
+    harness.state_mut().push(Command::Open(path.clone()));
+    harness.run();
+    // Unsaved changes: the editor asks first.
+    harness.get_by_label("Discard").click();
+    harness.run();
+
+    assert_eq!(
+        harness.state().scene(),
+        &edited,
+        "the open scene is untouched"
+    );
+    assert_eq!(harness.state().path(), None);
+    let error = harness
+        .state()
+        .error()
+        .expect("the error is shown")
+        .to_owned();
+    assert!(error.contains("line 3"), "{error}");
+    harness.get_by_label_contains("line 3, column");
+    harness.get_by_label("Dismiss").click();
+    harness.run();
+    assert!(harness.state().error().is_none());
+}
+
+#[test]
+fn save_then_open_round_trips_and_clears_the_unsaved_marker() {
+    let dir = temp_dir("save");
+    let path = dir.join("edited.ron");
+    let mut harness = harness();
+    harness.state_mut().push(Command::Edit(SceneEdit::AddObject(
+        raylab::scene::Shape::Cylinder,
+    )));
+    harness.run();
+    assert!(harness.state().is_dirty());
+
+    harness.state_mut().push(Command::SaveAs(path.clone()));
+    harness.run();
+    assert!(!harness.state().is_dirty());
+    assert_eq!(harness.state().path(), Some(path.as_path()));
+    assert_eq!(harness.state().title(), "edited.ron — raylab");
+    assert_eq!(&load_scene(&path).unwrap(), harness.state().scene());
+    assert_eq!(&open_scene(&path).unwrap(), harness.state().scene());
+    assert_eq!(
+        harness.state().recent().paths()[0],
+        std::fs::canonicalize(&path).unwrap()
+    );
+
+    let saved = harness.state().scene().clone();
+    let mut other = self::harness();
+    other.state_mut().push(Command::Open(path.clone()));
+    other.run();
+    assert_eq!(other.state().scene(), &saved);
+    assert_eq!(other.state().title(), "edited.ron — raylab");
+}
+
+#[test]
+fn saving_into_a_missing_folder_shows_the_error_and_stays_unsaved() {
+    let dir = temp_dir("unwritable");
+    let path = dir.join("no such folder").join("scene.ron");
+    let mut harness = harness();
+    harness.state_mut().push(Command::Edit(SceneEdit::AddLight(
+        raylab::ui::LightKind::Point,
+    )));
+    harness.run();
+    harness.state_mut().push(Command::SaveAs(path.clone()));
+    harness.run();
+    let error = harness
+        .state()
+        .error()
+        .expect("the error is shown")
+        .to_owned();
+    assert!(error.contains("cannot write"), "{error}");
+    harness.get_by_label_contains("cannot write");
+    assert!(harness.state().is_dirty());
+    assert_eq!(harness.state().path(), None);
+    assert!(save_scene_to(harness.state().scene(), &path).is_err());
+    assert!(!path.exists());
+}
+
+#[test]
+fn new_asks_before_dropping_changes() {
+    let mut harness = harness();
+    select_red_ball(&mut harness);
+    harness.get_by_label("translate y").set_value_accesskit(3.0);
+    harness.run();
+    let edited = harness.state().scene().clone();
+
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::N);
+    harness.run();
+    harness.get_by_label("Cancel").click();
+    harness.run();
+    assert_eq!(harness.state().scene(), &edited);
+
+    harness.get_by_label("File").click();
+    harness.run();
+    harness.get_by_label("New").click();
+    harness.run();
+    harness.get_by_label("Discard").click();
+    harness.run();
+    assert_eq!(harness.state().scene(), &new_scene());
+    assert_eq!(harness.state().title(), "untitled — raylab");
+}
+
+#[test]
+fn dropping_a_ron_file_opens_it_and_other_files_are_refused() {
+    let dir = temp_dir("drop");
+    let path = dir.join("dropped.ron");
+    let mut scene = new_scene();
+    scene.camera.fov_deg = 50.0;
+    save_scene_to(&scene, &path).unwrap();
+    let mut harness = harness();
+
+    // (A .png or .ppm is compared with: tests/ui_compare.rs.)
+    drop_file(&mut harness, &dir.join("notes.txt"));
+    assert!(harness.state().error().unwrap().contains(".ron"));
+    assert_eq!(harness.state().scene(), &default_scene());
+
+    drop_file(&mut harness, &path);
+    assert_eq!(harness.state().scene(), &scene);
+    assert_eq!(harness.state().path(), Some(path.as_path()));
+}
+
+#[test]
+fn closing_the_window_with_unsaved_changes_asks_first() {
+    let mut harness = harness();
+    harness.state_mut().push(Command::Edit(SceneEdit::AddObject(
+        raylab::scene::Shape::Cube,
+    )));
+    harness.run();
+    close_window(&mut harness);
+    assert_eq!(
+        harness.state().pending_discard(),
+        Some(&raylab::ui::DiscardAction::Quit)
+    );
+    harness.get_by_label("Cancel").click();
+    harness.run();
+    assert_eq!(harness.state().pending_discard(), None);
+    assert_eq!(
+        harness.state().scene().objects.len(),
+        7,
+        "nothing was dropped"
+    );
+
+    // Without unsaved changes the window closes without asking.
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    harness.run();
+    assert!(!harness.state().is_dirty());
+    close_window(&mut harness);
+    assert_eq!(harness.state().pending_discard(), None);
+}
+
+#[test]
+fn import_legacy_goes_through_the_adapter_and_keeps_the_scene_on_failure() {
+    let dir = temp_dir("legacy");
+    let path = dir.join("old.txt");
+    std::fs::write(&path, "this is not a legacy scene\n").unwrap();
+    let mut harness = harness();
+    harness
+        .state_mut()
+        .push(Command::ImportLegacy(path.clone()));
+    harness.run();
+    let expected = raylab::ui::files::import_legacy(&path);
+    match expected {
+        Ok((scene, _)) => assert_eq!(harness.state().scene(), &scene),
+        Err(error) => {
+            assert_eq!(harness.state().scene(), &default_scene());
+            let shown = harness.state().error().expect("the error is shown");
+            assert!(shown.contains(&error), "{shown}");
+        }
+    }
+}
+
+#[test]
+fn import_legacy_replaces_the_scene_with_the_imported_one() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/legacy/full.txt");
+    let imported = raylab::scene::legacy::import_legacy_file(&path).unwrap();
+    let mut harness = harness();
+    harness.state_mut().push(Command::ImportLegacy(path));
+    harness.run();
+    assert_eq!(harness.state().scene(), &imported.scene);
+    // full.txt has an octahedron, which the importer skips with a warning: it is shown
+    // as a warning, in its own banner, not as a failure.
+    assert!(!imported.warnings.is_empty());
+    assert_eq!(harness.state().error(), None, "a warning is not an error");
+    let shown = harness.state().warning().expect("the warnings are shown");
+    assert!(shown.contains("Octahedron"), "{shown}");
+    harness.get_by_label_contains("Octahedron");
+    harness.get_by_label("Dismiss warning").click();
+    harness.run();
+    assert_eq!(harness.state().warning(), None);
+}
+
+#[test]
+fn ctrl_s_saves_to_the_open_file_and_recent_files_reopen_it() {
+    let dir = temp_dir("ctrl-s");
+    let path = dir.join("scene.ron");
+    save_scene_to(&default_scene(), &path).unwrap();
+    let mut harness = harness();
+    harness.state_mut().push(Command::Open(path.clone()));
+    harness.run();
+    select_red_ball(&mut harness);
+    harness.get_by_label("scale x").set_value_accesskit(1.5);
+    harness.run();
+    assert!(harness.state().is_dirty());
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::S);
+    harness.run();
+    assert!(!harness.state().is_dirty());
+    assert_eq!(&load_scene(&path).unwrap(), harness.state().scene());
+
+    // File > New, then File > Open Recent > scene.ron brings it back.
+    harness.state_mut().push(Command::New);
+    harness.run();
+    assert_eq!(harness.state().scene(), &new_scene());
+    harness.get_by_label("File").click();
+    harness.run();
+    harness.get_by_label("Open Recent").click();
+    harness.run();
+    harness.get_by_label("scene.ron").click();
+    harness.run();
+    assert_eq!(&load_scene(&path).unwrap(), harness.state().scene());
+}
+
+#[test]
+fn a_recent_file_that_fails_to_open_stays_in_the_list_marked() {
+    let dir = temp_dir("recent-gone");
+    let path = dir.join("away.ron");
+    save_scene_to(&default_scene(), &path).unwrap();
+    let mut harness = harness();
+    harness.state_mut().push(Command::Open(path.clone()));
+    harness.run();
+    let listed = std::fs::canonicalize(&path).unwrap();
+    // The file goes away (an unplugged drive, a share that is down) and the open fails.
+    std::fs::remove_file(&path).unwrap();
+    harness.state_mut().push(Command::Open(path.clone()));
+    harness.run();
+    assert!(harness.state().error().is_some(), "the failure is shown");
+    assert_eq!(
+        harness.state().recent().paths(),
+        std::slice::from_ref(&listed)
+    );
+    assert!(harness.state().recent().has_failed(&listed));
+    harness.get_by_label("File").click();
+    harness.run();
+    harness.get_by_label("Open Recent").click();
+    harness.run();
+    harness.get_by_label("away.ron (could not open)");
+
+    // Back again: it opens from the list and loses its mark.
+    save_scene_to(&new_scene(), &path).unwrap();
+    harness.get_by_label("away.ron (could not open)").click();
+    harness.run();
+    assert_eq!(harness.state().scene(), &new_scene());
+    assert!(!harness.state().recent().has_failed(&listed));
+}

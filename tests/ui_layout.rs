@@ -1,0 +1,157 @@
+//! The editor's layout as a person meets it: in an 800x500 window every toolbar control
+//! is on screen between the side panels; a preview that is not the full picture says so;
+//! a light marker under the gizmo mode buttons does not take their presses.
+
+mod editor_harness;
+
+use editor_harness::{editor_harness, harness};
+use egui::{Event, Modifiers, PointerButton, Pos2, Rect, Vec2};
+use egui_kittest::Harness;
+use egui_kittest::kittest::{NodeT, Queryable};
+use glam::DVec2;
+use raylab::scene::Light;
+use raylab::trace::{PinholeCamera, Term, View};
+use raylab::ui::{
+    Command, EditorApp, EditorOptions, NOT_FULL_PICTURE, SceneEdit, Selection, VIEWPORT_LABEL,
+};
+
+/// Every control of the term toolbar and of the gizmo mode buttons.
+const TOOLBAR_CONTROLS: [&str; 14] = [
+    "ambient",
+    "diffuse",
+    "specular",
+    "shadows",
+    "reflection",
+    "solo",
+    "view",
+    "NaN guard",
+    "Inspect",
+    "Convergence",
+    "Move",
+    "Rotate",
+    "Scale",
+    "Frame",
+];
+
+#[test]
+fn at_800_by_500_every_toolbar_control_is_on_screen_between_the_panels() {
+    let size = Vec2::new(800.0, 500.0);
+    let harness = editor_harness(EditorOptions::default(), size, 64);
+    let left = harness.get_by_label("Camera").rect().max.x;
+    let right = harness.get_by_label("INSPECTOR").rect().min.x;
+    assert!(
+        right - left > 300.0,
+        "the side panels leave the viewport room"
+    );
+    let rects: Vec<(&str, Rect)> = TOOLBAR_CONTROLS
+        .iter()
+        .map(|label| (*label, harness.get_by_label(label).rect()))
+        .collect();
+    for (label, rect) in &rects {
+        assert!(
+            rect.min.x >= left && rect.max.x <= right && rect.max.y <= size.y,
+            "{label} at {rect:?} is outside the viewport {left}..{right}"
+        );
+    }
+    for (i, (a, ra)) in rects.iter().enumerate() {
+        for (b, rb) in &rects[i + 1..] {
+            assert!(!ra.intersects(*rb), "{a} {ra:?} overlaps {b} {rb:?}");
+        }
+    }
+}
+
+#[test]
+fn a_preview_that_is_not_the_full_picture_says_so_and_why() {
+    let mut harness = harness();
+    assert!(harness.query_by_label_contains(NOT_FULL_PICTURE).is_none());
+    let mut settings = *harness.state().preview_settings();
+    settings.switches.set(Term::Diffuse, false);
+    settings.view = View::Depth;
+    harness
+        .state_mut()
+        .push(Command::SetPreviewSettings(settings));
+    harness.run();
+    let marker = harness.get_by_label_contains(NOT_FULL_PICTURE);
+    // A label's text is its accessible value (kittest matches either).
+    let node = marker.accesskit_node();
+    let text = format!(
+        "{} {}",
+        node.label().unwrap_or_default(),
+        node.value().unwrap_or_default()
+    );
+    assert!(
+        text.contains("diffuse off") && text.contains("depth view"),
+        "{text}"
+    );
+    let picture = harness.get_by_label(VIEWPORT_LABEL).rect();
+    assert!(picture.contains_rect(marker.rect()), "over the picture");
+}
+
+/// Presses at `from`, moves to `to` in steps and releases, as a hand would.
+fn drag(harness: &mut Harness<'_, EditorApp>, from: Pos2, to: Pos2) {
+    let button = |pos, pressed| Event::PointerButton {
+        pos,
+        button: PointerButton::Primary,
+        pressed,
+        modifiers: Modifiers::NONE,
+    };
+    harness.event(Event::PointerMoved(from));
+    harness.event(button(from, true));
+    harness.step();
+    for i in 1..=8 {
+        harness.event(Event::PointerMoved(from + (to - from) * (i as f32 / 8.0)));
+        harness.step();
+    }
+    harness.event(button(to, false));
+    harness.run();
+}
+
+#[test]
+fn a_light_marker_under_the_gizmo_buttons_does_not_take_their_presses() {
+    let mut harness = harness();
+    let picture = harness.get_by_label(VIEWPORT_LABEL).rect();
+    let rotate = harness.get_by_label("Rotate").rect().center();
+    // Put the point light where it is drawn right under the Rotate button.
+    let scene = harness.state().scene().clone();
+    let (w, h) = (scene.camera.width, scene.camera.height);
+    let image_point = DVec2::new(
+        f64::from((rotate.x - picture.min.x) / picture.width()) * f64::from(w),
+        f64::from((rotate.y - picture.min.y) / picture.height()) * f64::from(h),
+    );
+    let ray = PinholeCamera::new(&scene.camera, w, h).ray(image_point);
+    let index = scene
+        .lights
+        .iter()
+        .position(|l| matches!(l, Light::Point { .. }))
+        .expect("the default scene has a point light");
+    let Light::Point {
+        colour, intensity, ..
+    } = scene.lights[index]
+    else {
+        unreachable!()
+    };
+    let light = Light::Point {
+        position: ray.at(6.0),
+        colour,
+        intensity,
+    };
+    harness
+        .state_mut()
+        .push(Command::Edit(SceneEdit::SetLight(index, light)));
+    harness.run();
+    let placed = harness.state().scene().clone();
+
+    harness.get_by_label("Rotate").click();
+    harness.run();
+    assert_eq!(
+        harness.state().selection(),
+        &Selection::None,
+        "no light picked"
+    );
+    drag(&mut harness, rotate, rotate + Vec2::new(60.0, 25.0));
+    assert_eq!(
+        harness.state().scene(),
+        &placed,
+        "a press on the button neither drags the light nor orbits the camera"
+    );
+}
