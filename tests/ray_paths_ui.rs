@@ -12,8 +12,8 @@ use raylab::trace::RayKind;
 use raylab::ui::EditorApp;
 use raylab::ui::viewport::ray_paths::{MAX_SPAN_PIXELS, RaySpan, ScreenSegment};
 use view_harness::{
-    click, harness, move_inspector_away, object_on_screen, orbit, press, scene_pixel, segments,
-    toggle,
+    click, harness, move_inspector_away, object_on_screen, orbit, picture, press, scene_pixel,
+    segments, toggle,
 };
 
 /// Inspects the pixel over scene object `index` (in camera view); returns the pixel.
@@ -76,16 +76,39 @@ fn a_pin_keeps_a_pixels_rays_and_row_mode_traces_the_row() {
     assert!(!harness.state().scene().objects.is_empty() && !harness.state().is_dirty());
 }
 
-/// A point `along` the longest drawn segment of `kind` of the inspected pixel (0 at its
-/// start, 1 at its end), so a long ray's point on the picture can be chosen.
-fn point_on(harness: &Harness<'_, EditorApp>, kind: SegmentKind, along: f32) -> egui::Pos2 {
+/// Which end of a segment a point is measured from.
+#[derive(Clone, Copy)]
+enum End {
+    Start,
+    Finish,
+}
+
+/// A point `pixels` screen points from one end of the longest drawn segment of `kind` of
+/// the inspected pixel, checked to be on the picture (a shadow ray to a sun ends far off
+/// screen, and a camera ray may start off it, so a fraction of the length would miss).
+fn point_on(
+    harness: &Harness<'_, EditorApp>,
+    kind: SegmentKind,
+    end: End,
+    pixels: f32,
+) -> egui::Pos2 {
     let all = segments(harness);
     let segment = all
         .iter()
         .filter(|s| s.inspected && s.segment.kind == kind)
         .max_by(|a, b| a.from.distance(a.to).total_cmp(&b.from.distance(b.to)))
         .unwrap_or_else(|| panic!("no {kind:?} drawn"));
-    segment.from + (segment.to - segment.from) * along
+    let (from, to) = match end {
+        End::Start => (segment.from, segment.to),
+        End::Finish => (segment.to, segment.from),
+    };
+    let point = from + (to - from).normalized() * pixels;
+    assert!(
+        picture(harness).contains(point),
+        "{point:?} is off the picture {:?}",
+        picture(harness)
+    );
+    point
 }
 
 fn hover(harness: &mut Harness<'_, EditorApp>, pos: egui::Pos2) {
@@ -102,7 +125,12 @@ fn hovering_a_segment_shows_its_numbers_and_each_kind_can_be_hidden() {
     assert!(!harness.state().view_camera().through_scene_camera);
 
     // Near its hit: the camera ray starts at the scene camera, maybe off the picture.
-    let primary = point_on(&harness, SegmentKind::Ray(RayKind::Primary), 0.85);
+    let primary = point_on(
+        &harness,
+        SegmentKind::Ray(RayKind::Primary),
+        End::Finish,
+        60.0,
+    );
     hover(&mut harness, primary);
     let (x, y) = ball;
     harness.get_by_label(&format!("primary ray · pixel ({x}, {y}) · depth 0"));
@@ -111,7 +139,12 @@ fn hovering_a_segment_shows_its_numbers_and_each_kind_can_be_hidden() {
     let origin = format!("origin ({:.4}, {:.4}, {:.4})", camera.x, camera.y, camera.z);
     harness.get_by_label(&origin);
 
-    let shadow = point_on(&harness, SegmentKind::Ray(RayKind::Shadow), 0.3);
+    let shadow = point_on(
+        &harness,
+        SegmentKind::Ray(RayKind::Shadow),
+        End::Start,
+        100.0,
+    );
     hover(&mut harness, shadow);
     harness.get_by_label_contains("shadow ray · pixel");
     harness.get_by_label_contains("towards");

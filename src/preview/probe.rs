@@ -158,16 +158,27 @@ mod tests {
         let cache = Arc::new(WorldCache::default());
         let mut probe: Probe<usize> = Probe::new(Arc::clone(&cache), Arc::new(|| {}));
         let scene = Arc::new(crate::scene::examples::default_scene());
-        let tag = probe.ask(Arc::clone(&scene), Isolation::NONE, Box::new(|world| world.objects.len()));
+        let tag = probe.ask(
+            Arc::clone(&scene),
+            Isolation::NONE,
+            Box::new(|world| world.objects.len()),
+        );
         assert_eq!(wait(&mut probe), (tag, Ok(scene.objects.len())));
         assert!(!probe.is_busy());
         let first = cache.world(&scene, &Isolation::NONE).unwrap();
         let copy = Arc::new((*scene).clone());
-        assert!(Arc::ptr_eq(&first, &cache.world(&copy, &Isolation::NONE).unwrap()), "kept");
+        assert!(
+            Arc::ptr_eq(&first, &cache.world(&copy, &Isolation::NONE).unwrap()),
+            "kept"
+        );
 
         let mut broken = (*scene).clone();
         broken.objects[0].material = "no such material".to_owned();
-        let tag = probe.ask(Arc::new(broken), Isolation::NONE, Box::new(|world| world.objects.len()));
+        let tag = probe.ask(
+            Arc::new(broken),
+            Isolation::NONE,
+            Box::new(|world| world.objects.len()),
+        );
         let (answered, result) = wait(&mut probe);
         assert_eq!(answered, tag);
         assert!(result.unwrap_err().contains("no such material"));

@@ -190,10 +190,24 @@ pub fn toggle(harness: &mut Harness<'_, EditorApp>, label: &str) {
     wait_for_probes(harness);
 }
 
-/// Drags the pixel inspector window by its title to the screen's bottom-left corner,
-/// off the picture.
+/// Drags the pixel inspector window by its title to the screen's bottom-right corner,
+/// over the side panel, clear of the ray-path controls along the picture's bottom-left
+/// (a window over them would take their clicks).
 pub fn move_inspector_away(harness: &mut Harness<'_, EditorApp>) {
     // The window's node spans the whole window: its title bar is along the top.
-    let title = harness.get_by_label("Pixel inspector").rect().center_top() + Vec2::new(0.0, 12.0);
-    drag(harness, title, Pos2::new(60.0, 790.0), Modifiers::NONE);
+    let window = harness.get_by_label("Pixel inspector").rect();
+    let title = window.center_top() + Vec2::new(0.0, 12.0);
+    let screen = harness.ctx.content_rect();
+    let to = Pos2::new(screen.max.x - window.width() / 2.0, screen.max.y - 10.0);
+    drag(harness, title, to, Modifiers::NONE);
+    let window = harness.get_by_label("Pixel inspector").rect();
+    for control in ["primary rays", "shadow rays", "reflection rays", "normals"] {
+        let button = harness
+            .get_by_role_and_label(egui::Role::Button, control)
+            .rect();
+        assert!(
+            !window.intersects(button),
+            "the inspector {window:?} still covers {control:?} at {button:?}"
+        );
+    }
 }

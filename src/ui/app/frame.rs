@@ -64,11 +64,8 @@ impl EditorApp {
                 &self.isolation,
             );
         }
-        self.looking.sync_inspections(
-            &self.scene,
-            self.preview_settings.switches,
-            &self.isolation,
-        );
+        self.looking
+            .sync_inspections(&self.scene, self.preview_settings.switches, &self.isolation);
         if self.looking.is_busy() {
             // Frames keep coming until the probe answers (it also wakes the window).
             ctx.request_repaint();

@@ -6,10 +6,10 @@
 pub mod camera_navigation;
 mod clicks;
 pub mod convergence_plot;
-mod marks;
 pub mod full_picture_marker;
 pub mod isolation;
 pub mod isolation_memory;
+mod marks;
 pub mod pick_link;
 pub mod picture;
 pub mod pixel_inspector;

@@ -64,7 +64,9 @@ impl InspectionLink {
             .last()
             .map(|(_, about)| about)
             .or(self.answer.as_ref().map(|(about, _)| about));
-        if newest.is_some_and(|about| about.is(scene, switches, isolation) && about.pixels == pixels) {
+        if newest
+            .is_some_and(|about| about.is(scene, switches, isolation) && about.pixels == pixels)
+        {
             return;
         }
         // The scene snapshot is shared with the last question when only pixels changed.
