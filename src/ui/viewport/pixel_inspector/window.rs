@@ -111,7 +111,9 @@ pub fn pixel_inspector_ui(ctx: &egui::Context, view: &InspectorView, commands: &
 
 /// The wheel over the window but outside the scroll area (its title bar) scrolls too.
 fn scroll_from_anywhere(ui: &mut egui::Ui, window_rect: Option<Rect>) {
-    let over_window = window_rect.is_some_and(|r| ui.rect_contains_pointer(r));
+    // Through the context: `Ui::rect_contains_pointer` clips to the scroll area, which
+    // would leave the title bar out.
+    let over_window = window_rect.is_some_and(|r| ui.ctx().rect_contains_pointer(ui.layer_id(), r));
     let over_area = ui.rect_contains_pointer(ui.clip_rect());
     let delta = ui.input(|i| i.smooth_scroll_delta);
     if over_window && !over_area && delta != Vec2::ZERO {
