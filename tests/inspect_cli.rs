@@ -197,3 +197,64 @@ fn the_tree_tells_the_same_story_and_a_pixel_outside_is_a_clear_error() {
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("X,Y"));
 }
+
+#[test]
+fn the_isolation_flags_leave_out_what_they_name_and_say_so() {
+    let scene = mirror_scene();
+    let path = scene_file("isolated.ron", &scene);
+    let file = path.to_str().unwrap();
+    let run = |extra: &[&str]| {
+        let mut args = vec!["inspect", file, "--pixel", "16,16", "--json"];
+        args.extend_from_slice(extra);
+        let out = raylab(&args);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        serde_json::from_slice::<Value>(&out.stdout).unwrap()
+    };
+
+    // Hidden, the target neither blocks the shadow ray nor meets the mirror's bounce.
+    let hidden = run(&["--hide", "target"]);
+    assert_eq!(hidden["hidden_objects"], serde_json::json!(["target"]));
+    let rays = hidden["rays"].as_array().unwrap();
+    let shadow = rays.iter().find(|r| r["kind"] == "shadow").unwrap();
+    assert_eq!(shadow["blocked_by"], Value::Null);
+    let bounce = rays.iter().find(|r| r["kind"] == "reflection").unwrap();
+    assert_eq!(bounce["hit"], Value::Null, "the bounce runs off");
+    // The same pixel as a render with the same switches.
+    let isolation = raylab::trace::Isolation {
+        hidden_objects: [scene
+            .objects
+            .iter()
+            .position(|o| o.name == "target")
+            .unwrap()]
+        .into(),
+        ..raylab::trace::Isolation::NONE
+    };
+    let world = World::isolated(&scene, &isolation).unwrap();
+    let options = RenderOptions {
+        isolation,
+        ..RenderOptions::from_scene(&scene)
+    };
+    let (image, _) = render(&world, &options, &RenderProgress::default()).unwrap();
+    assert_eq!(vec3(&hidden["unclamped"]).as_vec3(), image.get(16, 16));
+
+    // Muted, the point light casts no shadow ray and is named as off.
+    let muted = run(&["--mute-light", "1"]);
+    assert_eq!(muted["lights_off"], serde_json::json!([1]));
+    let rays = muted["rays"].as_array().unwrap();
+    assert!(rays.iter().all(|r| r["light"] != 1), "{rays:?}");
+    let out = raylab(&["inspect", file, "--pixel", "16,16", "--mute-light", "1"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("off (muted or not solo): Point light 2")
+            && text.contains("  Point light 2: off (muted or not solo)"),
+        "{text}"
+    );
+
+    let out = raylab(&["inspect", file, "--pixel", "16,16", "--mute-light", "9"]);
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("there is no light 9"));
+}

@@ -1,6 +1,8 @@
 //! `raylab inspect SCENE --pixel X,Y [--json]`: every ray behind one pixel's centre
 //! sample, from the tracer's own recorder (the record the editor's pixel inspector and
-//! ray-path overlay show), as a readable tree or as JSON with fixed fields.
+//! ray-path overlay show), as a readable tree or as JSON with fixed fields. It takes
+//! `raylab render`'s isolation flags: muted lights and hidden objects are left out of the
+//! trace and named as such in the output.
 
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -9,10 +11,11 @@ use clap::Args;
 use glam::DVec3;
 use serde::Serialize;
 
+use super::isolation::IsolationArgs;
 use crate::scene::{Scene, load_scene};
 use crate::trace::{
-    PixelReport, RayKind, RenderOptions, Term, TermSwitches, TracedRay, View, World, switches_text,
-    traced_rays, try_inspect_pixel,
+    Isolation, PixelReport, RayKind, RenderOptions, Term, TermSwitches, TracedRay, View, World,
+    switches_text, traced_rays, try_inspect_pixel,
 };
 
 /// Arguments of `raylab inspect`.
@@ -29,6 +32,9 @@ pub struct InspectArgs {
     /// The term switches the pixel is traced with.
     #[command(flatten)]
     pub terms: TermArgs,
+    /// Lights muted or solo, objects hidden.
+    #[command(flatten)]
+    pub isolation: IsolationArgs,
 }
 
 /// The term switches, as `raylab render` takes them.
@@ -76,22 +82,26 @@ pub fn run(args: &InspectArgs) -> Result<(), String> {
 /// What `raylab inspect` prints for `scene`.
 ///
 /// # Errors
-/// The scene's validation message, or a pixel outside the image.
+/// The scene's validation message, an isolation flag naming a light or object the scene
+/// does not have, or a pixel outside the image.
 pub fn inspect_text(scene: &Scene, args: &InspectArgs) -> Result<String, String> {
-    let world = World::new(scene).map_err(|e| e.to_string())?;
+    let isolation = args.isolation.isolation(scene)?;
+    let world = World::isolated(scene, &isolation).map_err(|e| e.to_string())?;
     let options = RenderOptions {
         switches: args.terms.switches(),
         view: View::Beauty,
+        isolation,
         ..RenderOptions::from_scene(scene)
     };
     let (x, y) = args.pixel;
     let report = try_inspect_pixel(&world, &options, x, y).map_err(|e| e.to_string())?;
     if args.json {
-        let json = serde_json::to_string_pretty(&JsonReport::new(&world, &report))
-            .map_err(|e| format!("cannot write JSON: {e}"))?;
+        let json =
+            serde_json::to_string_pretty(&JsonReport::new(scene, &options.isolation, &report))
+                .map_err(|e| format!("cannot write JSON: {e}"))?;
         Ok(json + "\n")
     } else {
-        Ok(tree_text(&world, scene, &options, &report))
+        Ok(tree_text(scene, &options, &report))
     }
 }
 
@@ -103,6 +113,10 @@ struct JsonReport {
     unclamped: [f64; 3],
     rays: Vec<JsonRay>,
     lights: Vec<JsonLight>,
+    /// Indices of the lights the isolation flags switch off (muted, or not solo).
+    lights_off: Vec<usize>,
+    /// Names of the objects the isolation flags leave out.
+    hidden_objects: Vec<String>,
 }
 
 #[derive(Serialize)]
@@ -137,8 +151,8 @@ struct JsonLight {
 }
 
 impl JsonReport {
-    fn new(world: &World, report: &PixelReport) -> Self {
-        let name = |i: usize| object_name(world, i);
+    fn new(scene: &Scene, isolation: &Isolation, report: &PixelReport) -> Self {
+        let name = |i: usize| object_name(scene, i);
         let rays = traced_rays(report)
             .iter()
             .map(|ray| JsonRay {
@@ -180,12 +194,26 @@ impl JsonReport {
             unclamped: report.unclamped.to_array(),
             rays,
             lights,
+            lights_off: lights_off(scene, isolation),
+            hidden_objects: isolation
+                .hidden_objects
+                .iter()
+                .map(|&i| object_name(scene, i))
+                .collect(),
         }
     }
 }
 
-fn object_name(world: &World, index: usize) -> String {
-    world
+/// The scene's indices of the lights `isolation` switches off.
+fn lights_off(scene: &Scene, isolation: &Isolation) -> Vec<usize> {
+    (0..scene.lights.len())
+        .filter(|&i| !isolation.is_light_lit(i))
+        .collect()
+}
+
+/// The name of the scene's object `index` (the record's indices are the scene's).
+fn object_name(scene: &Scene, index: usize) -> String {
+    scene
         .objects
         .get(index)
         .map_or_else(|| format!("object {index}"), |o| o.name.clone())
@@ -193,13 +221,9 @@ fn object_name(world: &World, index: usize) -> String {
 
 /// The readable tree: the camera ray, then for each hit its terms, its lights with their
 /// shadow rays, and its mirror bounce, indented by depth.
-fn tree_text(
-    world: &World,
-    scene: &Scene,
-    options: &RenderOptions,
-    report: &PixelReport,
-) -> String {
-    let name = |i: usize| object_name(world, i);
+fn tree_text(scene: &Scene, options: &RenderOptions, report: &PixelReport) -> String {
+    let name = |i: usize| object_name(scene, i);
+    let off = lights_off(scene, &options.isolation);
     let light_name = |i: usize| {
         scene.lights.get(i).map_or_else(
             || format!("light {}", i + 1),
@@ -221,6 +245,19 @@ fn tree_text(
         v(report.clamped),
         v(report.unclamped)
     );
+    if !off.is_empty() {
+        let names: Vec<String> = off.iter().map(|&i| light_name(i)).collect();
+        let _ = writeln!(out, "off (muted or not solo): {}", names.join(", "));
+    }
+    if !options.isolation.hidden_objects.is_empty() {
+        let names: Vec<String> = options
+            .isolation
+            .hidden_objects
+            .iter()
+            .map(|&i| name(i))
+            .collect();
+        let _ = writeln!(out, "hidden (rays pass through): {}", names.join(", "));
+    }
     let rays = traced_rays(report);
     for bounce in &report.bounces {
         let pad = "  ".repeat(bounce.depth as usize);
@@ -261,6 +298,9 @@ fn tree_text(
             if let Some(ray) = shadow {
                 let _ = writeln!(out, "{pad}    shadow ray {}", shadow_end(ray, &name));
             }
+        }
+        for &light in &off {
+            let _ = writeln!(out, "{pad}  {}: off (muted or not solo)", light_name(light));
         }
         if let Some((km, reflected)) = bounce.reflection {
             let _ = writeln!(
