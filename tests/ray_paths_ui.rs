@@ -180,4 +180,22 @@ fn hovering_a_segment_shows_its_numbers_and_each_kind_can_be_hidden() {
         camera,
         "looking is not editing"
     );
+
+    // A muted light's absence is said on the hover card, as in the inspector window.
+    toggle(&mut harness, "primary rays");
+    press(&mut harness, "mute Point light 2");
+    let off = "off (muted or not solo): Point light 2";
+    assert_eq!(
+        harness.query_all_by_label(off).count(),
+        1,
+        "the window's line"
+    );
+    let primary = point_on(
+        &harness,
+        SegmentKind::Ray(RayKind::Primary),
+        End::Finish,
+        60.0,
+    );
+    hover(&mut harness, primary);
+    assert_eq!(harness.query_all_by_label(off).count(), 2, "and the card's");
 }

@@ -16,7 +16,7 @@ use crate::trace::{LightOutcome, LightSkip, RayKind, traced_rays};
 use crate::ui::gizmo::hit::dvec;
 use crate::ui::gizmo::projection::ViewMapping;
 use crate::ui::panels::outliner::light_label;
-use crate::ui::viewport::pixel_inspector::PixelInspection;
+use crate::ui::viewport::pixel_inspector::{PixelInspection, isolation_lines};
 
 /// How close (points) the pointer must be to a segment to show its numbers.
 const HOVER_PX: f64 = 6.0;
@@ -233,7 +233,9 @@ pub fn short_reason(outcome: LightOutcome) -> &'static str {
     }
 }
 
-/// The numbers of a hovered segment, as the pixel inspector shows them.
+/// The numbers of a hovered segment, as the pixel inspector shows them, and what the
+/// isolation switches left out of its pixel (muted lights cast no ray, hidden objects
+/// are not met: said, so that their absence is not taken for the tracer's).
 fn hover_lines(s: &ScreenSegment, scene: &Scene, inspections: &[PixelInspection]) -> Vec<String> {
     let object = |i: usize| scene.objects.get(i).map_or("?", |o| o.name.as_str());
     let light = |i: usize| {
@@ -244,11 +246,11 @@ fn hover_lines(s: &ScreenSegment, scene: &Scene, inspections: &[PixelInspection]
     };
     let (x, y) = s.pixel;
     let head = format!("pixel ({x}, {y}) · depth {}", s.segment.depth);
-    let report = inspections
+    let pixel = inspections
         .iter()
         .find(|i| i.pixel == s.pixel)
-        .and_then(|i| i.result.as_ref().ok())
-        .map(|p| &p.report);
+        .and_then(|i| i.result.as_ref().ok());
+    let report = pixel.map(|p| &p.report);
     let mut lines = Vec::new();
     match s.segment.kind {
         SegmentKind::Ray(kind) => {
@@ -295,6 +297,7 @@ fn hover_lines(s: &ScreenSegment, scene: &Scene, inspections: &[PixelInspection]
             ));
         }
     }
+    lines.extend(pixel.map(isolation_lines).unwrap_or_default());
     lines
 }
 
