@@ -29,7 +29,7 @@ fn raylab(args: &[&str]) -> Output {
         .unwrap()
 }
 
-fn inspect_json(path: &PathBuf, pixel: &str) -> Value {
+fn inspect_json(path: &std::path::Path, pixel: &str) -> Value {
     let out = raylab(&[
         "inspect",
         path.to_str().unwrap(),

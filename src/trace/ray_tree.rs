@@ -120,7 +120,7 @@ pub fn traced_rays(report: &PixelReport) -> Vec<TracedRay> {
                 origin: shadow.ray.origin,
                 direction: shadow.ray.dir / length,
                 t: blocker.map(|hit| hit.t * length),
-                t_max: shadow.t_max.is_finite().then(|| shadow.t_max * length),
+                t_max: shadow.t_max.is_finite().then_some(shadow.t_max * length),
                 hit: blocker.map(RayHit::of),
                 light: Some(light.scene_index),
                 blocked_by: shadow.blocked_by,

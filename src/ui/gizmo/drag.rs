@@ -55,6 +55,19 @@ fn to_dvec(p: Pos2) -> DVec2 {
     DVec2::new(f64::from(p.x), f64::from(p.y))
 }
 
+/// What the gizmos are drawn for.
+#[derive(Clone, Copy)]
+pub struct GizmoInput<'a> {
+    /// The scene.
+    pub scene: &'a Scene,
+    /// The selection.
+    pub selection: &'a Selection,
+    /// Lights muted or solo (their markers are dimmed), objects hidden.
+    pub isolation: &'a Isolation,
+    /// Inspect mode: only navigation, no handle.
+    pub navigate_only: bool,
+}
+
 /// Draws the gizmos over the picture (projected through `view`, the camera the viewport
 /// shows) and handles their input and camera navigation. Returns whether a click was
 /// taken (a light or camera marker, a handle), so the viewport does not also pick an
@@ -64,12 +77,15 @@ pub fn gizmo_ui(
     ui: &mut egui::Ui,
     response: &Response,
     view: &ViewMapping,
-    scene: &Scene,
-    selection: &Selection,
-    navigate_only: bool,
-    isolation: &Isolation,
+    input: GizmoInput,
     commands: &mut Vec<Command>,
 ) -> bool {
+    let GizmoInput {
+        scene,
+        selection,
+        isolation,
+        navigate_only,
+    } = input;
     let picture = *view.screen_from_image.to();
     let ctx = ui.ctx().clone();
     let id = Id::unique("raylab gizmo");

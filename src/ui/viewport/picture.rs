@@ -17,6 +17,7 @@ use super::view_camera::{ViewCamera, free_render_size};
 use crate::scene::Scene;
 use crate::trace::Isolation;
 use crate::ui::commands::{Command, Selection};
+use crate::ui::gizmo::drag::GizmoInput;
 use crate::ui::gizmo::projection::ViewMapping;
 
 /// Accessible name of the picture, for tests and screen readers.
@@ -113,10 +114,12 @@ pub fn viewport_ui(
         ui,
         &response,
         &view,
-        scene,
-        input.selection,
-        input.settings.inspect,
-        input.isolation,
+        GizmoInput {
+            scene,
+            selection: input.selection,
+            isolation: input.isolation,
+            navigate_only: input.settings.inspect,
+        },
         commands,
     );
     let segments = screen_segments(
