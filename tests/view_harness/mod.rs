@@ -3,8 +3,12 @@
 //! camera the viewport shows, and drags.
 #![allow(dead_code)]
 
+#[path = "../editor_harness/mod.rs"]
+mod editor_harness;
+
+pub use editor_harness::step_until;
+
 use std::path::PathBuf;
-use std::time::{Duration, Instant};
 
 use egui::{Event, Modifiers, PointerButton, Pos2, Rect, Vec2};
 use egui_kittest::Harness;
@@ -56,21 +60,6 @@ pub fn harness_on(path: PathBuf, preview: bool, memory: ViewMemory) -> Harness<'
 /// The editor on a fresh copy of `small_scene`.
 pub fn harness(name: &str, preview: bool) -> Harness<'static, EditorApp> {
     harness_on(scene_file(name), preview, ViewMemory::default())
-}
-
-/// Steps until `done` holds, sleeping between steps (bounded).
-pub fn step_until(
-    harness: &mut Harness<'_, EditorApp>,
-    what: &str,
-    done: impl Fn(&EditorApp) -> bool,
-) {
-    let deadline = Instant::now() + Duration::from_secs(120);
-    while !done(harness.state()) {
-        assert!(Instant::now() < deadline, "timed out waiting for {what}");
-        std::thread::sleep(Duration::from_millis(5));
-        harness.step();
-    }
-    harness.run_ok();
 }
 
 /// Waits until picks and inspections are answered.
