@@ -34,7 +34,7 @@ impl RayKind {
 /// Where a ray met a surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RayHit {
-    /// Index of the object.
+    /// The scene index of the object.
     pub object: usize,
     /// The point.
     pub point: DVec3,
@@ -74,7 +74,7 @@ pub struct TracedRay {
     pub hit: Option<RayHit>,
     /// For a shadow ray, the index of its light in the scene's light list.
     pub light: Option<usize>,
-    /// For a shadow ray, the object that blocked it.
+    /// For a shadow ray, the scene index of the object that blocked it.
     pub blocked_by: Option<usize>,
 }
 

@@ -18,7 +18,8 @@ pub struct ShadowRay {
     /// infinity.
     pub t_max: f64,
     /// The object found in the way, if any (the first one the search met, which need not
-    /// be the nearest).
+    /// be the nearest): the world's index inside the shader, the scene's in the records
+    /// recorders are handed.
     pub blocked_by: Option<usize>,
 }
 
