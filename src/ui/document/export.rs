@@ -372,31 +372,13 @@ mod tests {
             muted_lights: [0].into(),
             ..Isolation::NONE
         };
-        let options = state.options(
-            &scene,
-            ViewportLook {
-                settings: &shown,
-                isolation: &muted,
-            },
-        );
-        assert_eq!(
-            options.isolation, muted,
-            "the mute goes with the viewport's look"
-        );
+        let look = ViewportLook {
+            settings: &shown,
+            isolation: &muted,
+        };
+        assert_eq!(state.options(&scene, look).isolation, muted, "as shown");
         state.as_shown = false;
-        assert_eq!(
-            state
-                .options(
-                    &scene,
-                    ViewportLook {
-                        settings: &shown,
-                        isolation: &muted
-                    }
-                )
-                .isolation,
-            Isolation::NONE,
-            "the full picture mutes nothing"
-        );
+        assert_eq!(state.options(&scene, look).isolation, Isolation::NONE);
         assert_eq!(options.width, scene.camera.width);
     }
 }
