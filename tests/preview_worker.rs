@@ -1,74 +1,14 @@
 //! The preview worker: generations, pass order, cancellation, staleness, the bounded
 //! outbox, errors. No test here asserts a time; latencies are measured by `raylab bench`.
 
+mod worker_harness;
+
 use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
-use raylab::cli::RenderArgs;
-use raylab::preview::{OUTBOX_CAPACITY, Pass, PreviewRequest, PreviewWorker, Published};
-use raylab::scene::{Scene, parse_scene};
-use raylab::trace::{
-    Image, RenderOptions, RenderProgress, SampleSums, Term, View, World, render, render_samples,
-    render_samples_into,
-};
-
-/// Generous: the machine may be busy with other builds.
-const WAIT: Duration = Duration::from_secs(60);
-
-fn default_scene() -> Scene {
-    parse_scene(include_str!("../scenes/default.ron")).expect("default scene loads")
-}
-
-fn small_scene(width: u32, height: u32, samples: u32) -> Scene {
-    let mut scene = default_scene();
-    scene.camera.width = width;
-    scene.camera.height = height;
-    scene.render.samples_per_pixel = samples;
-    scene
-}
-
-fn worker_with_counter() -> (PreviewWorker, Arc<AtomicUsize>) {
-    let wakes = Arc::new(AtomicUsize::new(0));
-    let counter = Arc::clone(&wakes);
-    let worker = PreviewWorker::spawn(Box::new(move || {
-        counter.fetch_add(1, Ordering::SeqCst);
-    }));
-    (worker, wakes)
-}
-
-/// Waits (up to [`WAIT`]) until `done` holds.
-fn wait_for(mut done: impl FnMut() -> bool) {
-    let started = Instant::now();
-    while !done() {
-        assert!(started.elapsed() < WAIT, "gave up waiting");
-        std::thread::sleep(Duration::from_millis(2));
-    }
-}
-
-fn next(worker: &mut PreviewWorker) -> Published {
-    worker
-        .recv_timeout(WAIT)
-        .expect("the worker publishes within the wait")
-}
-
-/// Receives messages until the final frame of `generation`; returns all of them.
-fn until_final(worker: &mut PreviewWorker, generation: u64) -> Vec<Published> {
-    let deadline = Instant::now() + WAIT;
-    let mut seen = Vec::new();
-    while Instant::now() < deadline {
-        let Some(message) = worker.recv_timeout(Duration::from_millis(200)) else {
-            continue;
-        };
-        let done =
-            message.generation == generation && message.result.as_ref().is_ok_and(|f| f.is_final);
-        seen.push(message);
-        if done {
-            return seen;
-        }
-    }
-    panic!("no final frame of generation {generation} within {WAIT:?}");
-}
+use raylab::preview::{OUTBOX_CAPACITY, Pass, PreviewRequest, PreviewWorker};
+use worker_harness::{WAIT, next, small_scene, until_final, wait_for, worker_with_counter};
 
 #[test]
 fn passes_arrive_coarse_first_then_full_then_samples() {
@@ -303,96 +243,6 @@ fn an_invalid_scene_publishes_its_error() {
     assert_eq!(message.generation, 7);
     let error = message.result.expect_err("the scene is invalid");
     assert!(error.contains("no such material"), "{error}");
-}
-
-/// Render options as `raylab render` builds them from its arguments.
-fn cli_options(scene: &Scene, off: &[Term], solo: Option<Term>, view: View) -> RenderOptions {
-    let args = RenderArgs {
-        scene: "scene.ron".into(),
-        output: "out.png".into(),
-        width: None,
-        height: None,
-        spp: None,
-        off: off.to_vec(),
-        solo,
-        view,
-        isolation: Default::default(),
-    };
-    args.options(scene).unwrap()
-}
-
-/// Whether two images are equal pixel for pixel (exact f32 equality).
-fn identical(a: &Image, b: &Image) -> bool {
-    a.width == b.width && a.height == b.height && a.pixels == b.pixels
-}
-
-#[test]
-fn the_final_frame_is_bit_identical_to_the_cli_render_for_the_same_switches() {
-    let (mut worker, _) = worker_with_counter();
-    let scene = small_scene(160, 120, 16);
-    let world = World::new(&scene).unwrap();
-    let cases: [(&[Term], Option<Term>, View); 5] = [
-        (&[], None, View::Beauty),
-        (&[Term::Diffuse], None, View::Beauty),
-        (&[Term::Shadows], Some(Term::Specular), View::Beauty),
-        (&[], Some(Term::Reflection), View::Beauty),
-        (&[Term::Ambient], None, View::Normal),
-    ];
-    for (generation, (off, solo, view)) in (1..).zip(cases) {
-        let options = cli_options(&scene, off, solo, view);
-        let mut request = PreviewRequest::for_scene(generation, scene.clone());
-        request.options = options.clone();
-        worker.submit(request);
-        let messages = until_final(&mut worker, generation);
-        let last = messages.last().unwrap().result.as_ref().unwrap();
-        assert_eq!(
-            last.pass,
-            Pass::Full {
-                samples: 16,
-                target: 16
-            }
-        );
-        let (direct, _) = render(&world, &options, &RenderProgress::default()).unwrap();
-        assert!(
-            identical(&last.image, &direct),
-            "off {off:?} solo {solo:?} view {view}: the preview differs from the CLI"
-        );
-        assert_eq!(last.non_finite_samples, 0);
-    }
-}
-
-#[test]
-fn a_one_sample_scene_ends_on_the_cli_image_too() {
-    let (mut worker, _) = worker_with_counter();
-    let scene = small_scene(200, 100, 1);
-    let options = cli_options(&scene, &[Term::Specular], None, View::ShadowMask);
-    let mut request = PreviewRequest::for_scene(1, scene.clone());
-    request.options = options.clone();
-    worker.submit(request);
-    let messages = until_final(&mut worker, 1);
-    let last = messages.last().unwrap().result.as_ref().unwrap();
-    let world = World::new(&scene).unwrap();
-    let (direct, _) = render(&world, &options, &RenderProgress::default()).unwrap();
-    assert!(identical(&last.image, &direct));
-}
-
-#[test]
-fn samples_added_in_batches_sum_exactly_as_in_one_go() {
-    let scene = small_scene(48, 32, 8);
-    let world = World::new(&scene).unwrap();
-    let options = RenderOptions::from_scene(&scene);
-    let progress = RenderProgress::default();
-    let at_once = render_samples(&world, &options, 0..8, &progress).unwrap();
-    let mut batched = SampleSums::zero(48, 32);
-    let mut rays = 0;
-    for batch in [0..1, 1..4, 4..8] {
-        rays += render_samples_into(&world, &options, batch, &mut batched, &progress)
-            .unwrap()
-            .total();
-    }
-    assert_eq!(batched.sums, at_once.sums);
-    assert_eq!(batched.rays, at_once.rays);
-    assert_eq!(rays, at_once.rays.total());
 }
 
 #[test]

@@ -165,3 +165,29 @@ fn open_and_export_browse_use_the_in_app_dialog() {
         expected.display().to_string()
     );
 }
+
+#[test]
+fn compare_with_images_browse_uses_the_in_app_dialog_and_fills_the_path() {
+    let dir = temp_dir("dialog-compare");
+    image::RgbImage::new(4, 3)
+        .save(dir.join("theirs.png"))
+        .unwrap();
+    let mut harness = harness_in(&dir);
+    harness.state_mut().push(Command::ShowCompare);
+    harness.run();
+    harness.get_by_label("Browse…").click();
+    harness.run();
+    assert_eq!(
+        harness.state().file_dialogs().open_purpose(),
+        Some(DialogPurpose::CompareImage),
+        "never a blocking native call that may show nothing"
+    );
+    harness.get_by_label_contains("theirs.png").click();
+    harness.run();
+    harness.get_by_label("Open").click();
+    harness.run();
+    assert_eq!(
+        harness.state().compare().path_text,
+        dir.join("theirs.png").display().to_string()
+    );
+}

@@ -161,8 +161,8 @@ fn width_and_height_keep_the_aspect_ratio_until_unlinked() {
 }
 
 #[test]
-fn as_the_viewport_shows_it_exports_the_switches_and_view_on_screen() {
-    use raylab::trace::{RenderOptions, RenderProgress, Term, View, World, render};
+fn as_the_viewport_shows_it_exports_the_switches_view_and_hidden_objects_on_screen() {
+    use raylab::trace::{Isolation, RenderOptions, RenderProgress, Term, View, World, render};
     let dir = temp_dir("export-shown");
     let path = dir.join("shown.png");
     let mut harness = harness();
@@ -170,6 +170,9 @@ fn as_the_viewport_shows_it_exports_the_switches_and_view_on_screen() {
     shown.switches.set(Term::Diffuse, false);
     shown.view = View::Depth;
     harness.state_mut().push(Command::SetPreviewSettings(shown));
+    harness
+        .state_mut()
+        .push(Command::Isolate(raylab::ui::IsolationToggle::Hide(0)));
     export_window_at(&mut harness, 40, 30, &path);
     harness.get_by_label("as the viewport shows it").click();
     harness.run();
@@ -184,15 +187,31 @@ fn as_the_viewport_shows_it_exports_the_switches_and_view_on_screen() {
         samples_per_pixel: 1,
         switches: shown.switches,
         view: shown.view,
-        isolation: raylab::trace::Isolation::NONE,
+        isolation: Isolation {
+            hidden_objects: [0].into(),
+            ..Isolation::NONE
+        },
     };
-    let world = World::new(&scene).unwrap();
+    let world = World::isolated(&scene, &options.isolation).unwrap();
     let (expected, _) = render(&world, &options, &RenderProgress::default()).unwrap();
     let expected = image::load_from_memory(&expected.png_bytes()).unwrap();
+    let whole = World::new(&scene).unwrap();
+    let every_object = RenderOptions {
+        isolation: Isolation::NONE,
+        ..options.clone()
+    };
+    let (with_all, _) = render(&whole, &every_object, &RenderProgress::default()).unwrap();
+    assert_ne!(
+        image::load_from_memory(&with_all.png_bytes())
+            .unwrap()
+            .to_rgb8(),
+        expected.to_rgb8(),
+        "hiding the object changes the picture"
+    );
     let written = image::open(&path).expect("the export was written");
     assert_eq!(
         written.to_rgb8(),
         expected.to_rgb8(),
-        "what `raylab render --view depth` gives"
+        "what `raylab render --view depth --hide` gives"
     );
 }

@@ -175,7 +175,7 @@ pub fn render_samples_into(
     let count = options.samples_per_pixel;
     let sample = |px: u32, py: u32, index: u32, rays: &mut RayCounts| {
         let offset = sample_in_pixel(px, py, index, count);
-        trace_colour(&tracer, &camera, px, py, offset, rays)
+        trace_colour(&tracer, &camera, film_point(px, py, offset), rays)
     };
     render_tiles(sums, samples, progress, &sample)
 }
@@ -204,20 +204,23 @@ pub fn trace_sample(
     offset: DVec2,
     rays: &mut RayCounts,
 ) -> Option<DVec3> {
-    let colour = trace_colour(tracer, camera, px, py, offset, rays);
+    let colour = trace_colour(tracer, camera, film_point(px, py, offset), rays);
     colour.is_finite().then_some(colour)
 }
 
-/// The unguarded colour of one camera sample (it may be non-finite).
+/// The film point of the sample at `offset` within pixel `(px, py)`.
+#[inline]
+fn film_point(px: u32, py: u32, offset: DVec2) -> DVec2 {
+    DVec2::new(f64::from(px), f64::from(py)) + offset
+}
+
+/// The unguarded colour of the camera ray through film point `point` (may be non-finite).
 #[inline]
 fn trace_colour(
     tracer: &Tracer,
     camera: &PinholeCamera,
-    px: u32,
-    py: u32,
-    offset: DVec2,
+    point: DVec2,
     rays: &mut RayCounts,
 ) -> DVec3 {
-    let point = DVec2::new(f64::from(px), f64::from(py)) + offset;
     tracer.trace_primary(&camera.ray(point), rays, &mut NoRecorder)
 }

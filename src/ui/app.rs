@@ -17,6 +17,7 @@ use crate::ui::document::files;
 use crate::ui::document::native_dialogs::{NativeDialogs, native_dialogs_available};
 use crate::ui::document::recent::RecentFiles;
 use crate::ui::screenshot::ScreenshotHook;
+use crate::ui::stored::Stored;
 use crate::ui::viewport::isolation::keep_in_range;
 use crate::ui::viewport::isolation_memory::IsolationMemory;
 use crate::ui::viewport::pixel_inspector::PixelInspection;

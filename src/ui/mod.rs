@@ -10,12 +10,15 @@ pub mod gizmo;
 pub mod panels;
 mod screenshot;
 mod shortcuts;
+pub mod stored;
 mod style;
 #[cfg(test)]
 mod test_storage;
 pub mod viewport;
 
 use std::path::PathBuf;
+
+use stored::Stored;
 
 pub use app::{EditorApp, EditorOptions};
 pub use commands::{Command, LightKind, SceneEdit, Selection};

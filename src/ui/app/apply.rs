@@ -94,6 +94,7 @@ impl EditorApp {
             }
             Command::ShowHelp => self.show_help = !self.show_help,
             Command::BrowseExportPath => self.request_dialog(DialogPurpose::ExportPng, ctx),
+            Command::BrowseCompareImage => self.request_dialog(DialogPurpose::CompareImage, ctx),
             Command::SetPreferInAppFileDialog(prefer) => self.file_dialogs.prefer_in_app = prefer,
             Command::DismissError => self.error = None,
             Command::DismissWarning => self.warning = None,

@@ -134,6 +134,7 @@ impl EditorApp {
             DialogPurpose::ExportPng => {
                 self.export.path = files::with_png_extension(path).display().to_string();
             }
+            DialogPurpose::CompareImage => self.compare.path_text = path.display().to_string(),
         }
     }
 

@@ -4,6 +4,7 @@
 use crate::ui::commands::{Command, Selection};
 use crate::ui::compare::{compare_view_ui, compare_window, is_compare_image};
 use crate::ui::document::confirm::{DiscardAction, discard_modal};
+use crate::ui::document::export::ViewportLook;
 use crate::ui::document::export_window::export_window;
 use crate::ui::document::files;
 use crate::ui::panels::inspector::inspector_ui;
@@ -230,7 +231,10 @@ impl EditorApp {
             ctx,
             &mut self.export,
             &self.scene,
-            &self.preview_settings,
+            ViewportLook {
+                settings: &self.preview_settings,
+                isolation: &self.isolation,
+            },
             &mut self.commands,
         );
         compare_window(ctx, &mut self.compare, &mut self.commands);

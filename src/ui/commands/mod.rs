@@ -107,6 +107,8 @@ pub enum Command {
     Quit,
     /// Pick the Export PNG file with a file dialog.
     BrowseExportPath,
+    /// Show a file dialog for the picture to compare with.
+    BrowseCompareImage,
     /// Use the in-app file dialog even where a native one can be shown (editor setting).
     SetPreferInAppFileDialog(bool),
     /// Hide the error area.

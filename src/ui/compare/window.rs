@@ -61,17 +61,11 @@ fn window_ui(ui: &mut egui::Ui, session: &mut CompareSession, commands: &mut Vec
         ui.horizontal(|ui| {
             ui.add(egui::TextEdit::singleline(&mut session.path_text).desired_width(280.0))
                 .accessible_name(COMPARE_PATH_LABEL);
-            if ui.button("Browse…").clicked()
-                && let Some(path) = rfd::FileDialog::new()
-                    .set_title("Compare with image")
-                    .add_filter("image", &["png", "ppm"])
-                    .pick_file()
-            {
-                session.path_text = path.display().to_string();
+            if ui.button("Browse…").clicked() {
+                commands.push(Command::BrowseCompareImage);
             }
         });
     });
-    ui.weak("Type the path if no file dialog appears.");
     ui.add_space(6.0);
     if let Some(progress) = session.progress() {
         ui.horizontal(|ui| {

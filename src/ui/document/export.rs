@@ -10,9 +10,19 @@ use std::time::{Duration, Instant};
 
 use crate::preview::BackgroundJob;
 use crate::scene::{MAX_IMAGE_SIDE, Scene};
-use crate::trace::{Image, RenderOptions, World, render};
+use crate::trace::{Image, Isolation, RenderOptions, World, render};
 use crate::ui::document::files::write_png;
 use crate::ui::viewport::preview_settings::PreviewSettings;
+
+/// What the viewport shows: its term switches and view, and the mute, solo and hide
+/// switches; "as the viewport shows it" exports with all of them.
+#[derive(Clone, Copy, Debug)]
+pub struct ViewportLook<'a> {
+    /// The toolbar's switches and view.
+    pub settings: &'a PreviewSettings,
+    /// The isolation switches.
+    pub isolation: &'a Isolation,
+}
 
 /// Peak bytes an export needs per pixel: the sample sums (f64 RGB) and the tiles they are
 /// gathered from, the averaged image (f32 RGB), and the 8-bit rows and encoded PNG.
@@ -93,13 +103,16 @@ impl ExportState {
     /// What the export renders: the window's size and samples, with the full picture's
     /// switches, or the viewport's when `as_shown`.
     #[must_use]
-    pub fn options(&self, scene: &Scene, shown: &PreviewSettings) -> RenderOptions {
+    pub fn options(&self, scene: &Scene, shown: ViewportLook<'_>) -> RenderOptions {
         let sized = self
             .settings
             .clone()
             .unwrap_or_else(|| RenderOptions::from_scene(scene));
         let looks = if self.as_shown {
-            shown.render_options(scene)
+            RenderOptions {
+                isolation: shown.isolation.clone(),
+                ..shown.settings.render_options(scene)
+            }
         } else {
             RenderOptions::from_scene(scene)
         };
@@ -120,7 +133,7 @@ impl ExportState {
     pub fn start(
         &mut self,
         scene: &Scene,
-        shown: &PreviewSettings,
+        shown: ViewportLook<'_>,
         path: &Path,
         ctx: &egui::Context,
     ) -> Result<(), String> {
@@ -130,7 +143,8 @@ impl ExportState {
         let options = self.options(scene, shown);
         let budget = self.memory_budget.or_else(available_memory_bytes);
         check_export_memory(options.width, options.height, budget)?;
-        let world = World::new(scene).map_err(|e| format!("cannot render this scene: {e}"))?;
+        let world = World::isolated(scene, &options.isolation)
+            .map_err(|e| format!("cannot render this scene: {e}"))?;
         let target = path.to_owned();
         let ctx = ctx.clone();
         let job = BackgroundJob::spawn(
@@ -285,6 +299,15 @@ pub fn available_memory_bytes() -> Option<u64> {
 mod tests {
     use super::*;
 
+    static FULL_PICTURE: Isolation = Isolation::NONE;
+
+    fn look(settings: &PreviewSettings) -> ViewportLook<'_> {
+        ViewportLook {
+            settings,
+            isolation: &FULL_PICTURE,
+        }
+    }
+
     #[test]
     fn an_export_too_large_for_memory_is_refused_before_it_starts() {
         assert!(check_export_memory(800, 600, Some(1 << 30)).is_ok());
@@ -305,7 +328,7 @@ mod tests {
         let ctx = egui::Context::default();
         let shown = PreviewSettings::default();
         let error = state
-            .start(&scene, &shown, Path::new("never.png"), &ctx)
+            .start(&scene, look(&shown), Path::new("never.png"), &ctx)
             .unwrap_err();
         assert!(error.contains("memory"), "{error}");
         assert!(!state.is_running(), "nothing started");
@@ -336,15 +359,26 @@ mod tests {
         let mut state = ExportState::default();
         state.show(&scene, None);
         assert_eq!(
-            state.options(&scene, &shown).view,
+            state.options(&scene, look(&shown)).view,
             crate::trace::View::Beauty
         );
         state.as_shown = true;
-        let options = state.options(&scene, &shown);
+        let options = state.options(&scene, look(&shown));
         assert_eq!(
             (options.switches, options.view),
             (shown.switches, shown.view)
         );
+        let muted = Isolation {
+            muted_lights: [0].into(),
+            ..Isolation::NONE
+        };
+        let look = ViewportLook {
+            settings: &shown,
+            isolation: &muted,
+        };
+        assert_eq!(state.options(&scene, look).isolation, muted, "as shown");
+        state.as_shown = false;
+        assert_eq!(state.options(&scene, look).isolation, Isolation::NONE);
         assert_eq!(options.width, scene.camera.width);
     }
 }

@@ -10,9 +10,9 @@ use egui::{DragValue, RichText, Ui};
 
 use crate::scene::{MAX_IMAGE_SIDE, Scene};
 use crate::ui::commands::Command;
-use crate::ui::document::export::ExportState;
+use crate::ui::document::export::{ExportState, ViewportLook};
 use crate::ui::document::files::with_png_extension;
-use crate::ui::viewport::preview_settings::PreviewSettings;
+use crate::ui::viewport::isolation::isolation_note;
 
 /// The window's width, used to place it centred when it first opens.
 const WIDTH: f32 = 380.0;
@@ -25,7 +25,7 @@ pub fn export_window(
     ctx: &egui::Context,
     state: &mut ExportState,
     scene: &Scene,
-    shown: &PreviewSettings,
+    shown: ViewportLook<'_>,
     commands: &mut Vec<Command>,
 ) {
     let mut open = state.open;
@@ -49,7 +49,7 @@ fn export_ui(
     ui: &mut Ui,
     state: &mut ExportState,
     scene: &Scene,
-    shown: &PreviewSettings,
+    shown: ViewportLook<'_>,
     commands: &mut Vec<Command>,
 ) {
     let running = state.is_running();
@@ -60,7 +60,7 @@ fn export_ui(
             .show(ui, |ui| {
                 size_rows_ui(ui, state, scene);
                 ui.label("Picture");
-                picture_choice_ui(ui, state, shown);
+                picture_choice_ui(ui, state, scene, shown);
                 ui.end_row();
                 ui.label("File");
                 ui.horizontal(|ui| {
@@ -131,8 +131,9 @@ fn size_rows_ui(ui: &mut Ui, state: &mut ExportState, scene: &Scene) {
 }
 
 /// Full picture, or the viewport's switches and view.
-fn picture_choice_ui(ui: &mut Ui, state: &mut ExportState, shown: &PreviewSettings) {
-    let reasons = shown.not_full_picture_reasons();
+fn picture_choice_ui(ui: &mut Ui, state: &mut ExportState, scene: &Scene, shown: ViewportLook<'_>) {
+    let mut reasons = shown.settings.not_full_picture_reasons();
+    reasons.extend(isolation_note(shown.isolation, scene));
     let hover = if reasons.is_empty() {
         "The viewport shows the full picture: both choices give the same image".to_owned()
     } else {
@@ -143,7 +144,7 @@ fn picture_choice_ui(ui: &mut Ui, state: &mut ExportState, shown: &PreviewSettin
 }
 
 /// Render and save / Save kept render, or the progress bar and Cancel.
-fn actions_ui(ui: &mut Ui, state: &mut ExportState, scene: &Scene, shown: &PreviewSettings) {
+fn actions_ui(ui: &mut Ui, state: &mut ExportState, scene: &Scene, shown: ViewportLook<'_>) {
     if let Some(progress) = state.progress() {
         ui.horizontal(|ui| {
             if state.is_rendering() {

@@ -24,6 +24,8 @@ pub enum DialogPurpose {
     ImportLegacy,
     /// Export PNG > Browse…
     ExportPng,
+    /// Compare with Image > Browse… (a PNG or PPM).
+    CompareImage,
 }
 
 impl DialogPurpose {
@@ -35,6 +37,7 @@ impl DialogPurpose {
             DialogPurpose::SaveSceneAs => "Save scene as",
             DialogPurpose::ImportLegacy => "Import legacy scene",
             DialogPurpose::ExportPng => "Export PNG to",
+            DialogPurpose::CompareImage => "Compare with image",
         }
     }
 
@@ -49,7 +52,7 @@ impl DialogPurpose {
         match self {
             DialogPurpose::OpenScene | DialogPurpose::SaveSceneAs => Some(("raylab scene", "ron")),
             DialogPurpose::ExportPng => Some(("PNG image", "png")),
-            DialogPurpose::ImportLegacy => None,
+            DialogPurpose::ImportLegacy | DialogPurpose::CompareImage => None,
         }
     }
 }

@@ -3,10 +3,9 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::ui::stored::Stored;
 use serde::{Deserialize, Serialize};
 
-/// Storage key of the list.
-const KEY: &str = "raylab.recent_files";
 /// How many files are remembered.
 pub const MAX_RECENT: usize = 10;
 
@@ -20,20 +19,11 @@ pub struct RecentFiles {
     failed: Vec<PathBuf>,
 }
 
+impl Stored for RecentFiles {
+    const KEY: &'static str = "raylab.recent_files";
+}
+
 impl RecentFiles {
-    /// The list saved by an earlier run, or an empty one.
-    #[must_use]
-    pub fn load(storage: Option<&dyn eframe::Storage>) -> Self {
-        storage
-            .and_then(|s| eframe::get_value(s, KEY))
-            .unwrap_or_default()
-    }
-
-    /// Writes the list to storage.
-    pub fn save(&self, storage: &mut dyn eframe::Storage) {
-        eframe::set_value(storage, KEY, self);
-    }
-
     /// Moves (or adds) `path` to the front: it opened or was saved, so it is no longer
     /// marked as failed.
     pub fn push(&mut self, path: &Path) {

@@ -216,7 +216,11 @@ fn item_ui(
     };
     let width = ui.available_width().max(40.0);
     let response = ui
-        .add(egui::Button::selectable(selected, text).min_size(egui::vec2(width, 0.0)))
+        // The growing atom after the text keeps the name at the left of the wide button.
+        .add(
+            egui::Button::selectable(selected, (text, egui::Atom::grow()))
+                .min_size(egui::vec2(width, 0.0)),
+        )
         .accessible_name(row.name);
     if response.clicked() && !selected {
         commands.push(Command::Select(target));

@@ -8,9 +8,7 @@ use std::path::Path;
 use serde::{Deserialize, Serialize};
 
 use crate::trace::Isolation;
-
-/// Storage key of the memory.
-const KEY: &str = "raylab.isolation";
+use crate::ui::stored::Stored;
 
 /// How many files are remembered; the least recently used is forgotten first.
 pub const MAX_REMEMBERED_FILES: usize = 64;
@@ -47,20 +45,11 @@ pub struct IsolationMemory {
     files: Vec<(String, StoredIsolation)>,
 }
 
+impl Stored for IsolationMemory {
+    const KEY: &'static str = "raylab.isolation";
+}
+
 impl IsolationMemory {
-    /// The memory saved by an earlier run, or an empty one.
-    #[must_use]
-    pub fn load(storage: Option<&dyn eframe::Storage>) -> Self {
-        storage
-            .and_then(|s| eframe::get_value(s, KEY))
-            .unwrap_or_default()
-    }
-
-    /// Writes the memory to storage.
-    pub fn save(&self, storage: &mut dyn eframe::Storage) {
-        eframe::set_value(storage, KEY, self);
-    }
-
     /// The switches last remembered for `path`; the full picture for a file not known.
     #[must_use]
     pub fn recall(&self, path: &Path) -> Isolation {
