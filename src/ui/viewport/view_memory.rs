@@ -7,9 +7,8 @@ use std::path::Path;
 use serde::{Deserialize, Serialize};
 
 use super::view_camera::ViewCamera;
+use crate::ui::stored::Stored;
 
-/// Storage key of the remembered views.
-const KEY: &str = "raylab.view_cameras";
 /// How many files' views are kept; the least recently stored go first.
 const MAX_FILES: usize = 64;
 
@@ -20,20 +19,11 @@ pub struct ViewMemory {
     counter: u64,
 }
 
+impl Stored for ViewMemory {
+    const KEY: &'static str = "raylab.view_cameras";
+}
+
 impl ViewMemory {
-    /// The views saved by an earlier run, or none.
-    #[must_use]
-    pub fn load(storage: Option<&dyn eframe::Storage>) -> Self {
-        storage
-            .and_then(|s| eframe::get_value::<ViewMemory>(s, KEY))
-            .unwrap_or_default()
-    }
-
-    /// Writes the views to storage.
-    pub fn save(&self, storage: &mut dyn eframe::Storage) {
-        eframe::set_value(storage, KEY, self);
-    }
-
     /// The view last remembered for `path`, if it is usable.
     #[must_use]
     pub fn get(&self, path: &Path) -> Option<&ViewCamera> {
