@@ -8,6 +8,7 @@ use glam::DVec3;
 
 use crate::scene::{Material, Shape};
 use crate::trace::SurfacePoint;
+pub use crate::trace::phong::{LocalLight, phong_power};
 use crate::trace::world::WorldObject;
 
 /// A wrong shading normal.
@@ -276,19 +277,6 @@ impl Part {
     }
 }
 
-/// One light at one point, as the local terms need it.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LocalLight {
-    /// The shading normal (facing the ray).
-    pub n: DVec3,
-    /// Unit vector to the light.
-    pub to_light: DVec3,
-    /// Unit vector to the viewer (minus the ray direction).
-    pub view: DVec3,
-    /// L_l(p).
-    pub strength: DVec3,
-}
-
 /// The diffuse and specular terms of the contract for a visible light with normal `n`
 /// (zero where n.l <= 0).
 #[must_use]
@@ -297,24 +285,8 @@ pub fn local_terms(material: &Material, light: &LocalLight) -> (DVec3, DVec3) {
     if n_dot_l <= 0.0 {
         return (DVec3::ZERO, DVec3::ZERO);
     }
-    let diffuse = material.diffuse * light.strength * n_dot_l;
-    let r = 2.0 * n_dot_l * light.n - light.to_light;
-    let r_dot_v = r.dot(light.view).max(0.0);
-    let specular = if r_dot_v > 0.0 {
-        material.specular * light.strength * phong_power(r_dot_v, material.shininess)
-    } else {
-        DVec3::ZERO
-    };
-    (diffuse, specular)
-}
-
-/// `x^s` as the tracer computes it: whole exponents by `powi`.
-#[inline]
-#[must_use]
-pub fn phong_power(x: f64, s: f64) -> f64 {
-    if s.fract() == 0.0 && s <= 1024.0 {
-        x.powi(s as i32)
-    } else {
-        x.powf(s)
-    }
+    (
+        light.diffuse(material.diffuse, n_dot_l),
+        light.specular(material.specular, material.shininess, n_dot_l),
+    )
 }

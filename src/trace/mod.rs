@@ -10,6 +10,7 @@ pub mod image;
 pub mod inspect;
 pub mod isolation;
 pub mod lights;
+pub mod phong;
 pub mod quadratic;
 pub mod ray;
 pub mod ray_tree;

@@ -17,6 +17,7 @@ use glam::DVec3;
 use smallvec::SmallVec;
 
 use super::depth_view::DepthRange;
+use super::phong::LocalLight;
 use super::ray::Ray;
 use super::record::{LightSkip, ShadowRay, SkippedLight, unsampled_reason};
 use super::spawn::{spawn_ray, spawn_ray_to};
@@ -315,18 +316,18 @@ impl<'w> Tracer<'w> {
                         });
                     }
                     if record.blocked_by.is_none() {
+                        let local = LocalLight {
+                            n: hit.n,
+                            to_light: sample.to_light,
+                            view: view_dir,
+                            strength: sample.radiance,
+                        };
                         if terms.diffuse {
-                            record.diffuse = material.diffuse * sample.radiance * n_dot_l;
+                            record.diffuse = local.diffuse(material.diffuse, n_dot_l);
                         }
                         if terms.specular {
-                            // r = reflection of the light direction about n; max before power.
-                            let r = 2.0 * n_dot_l * hit.n - sample.to_light;
-                            let r_dot_v = r.dot(view_dir).max(0.0);
-                            if r_dot_v > 0.0 {
-                                record.specular = material.specular
-                                    * sample.radiance
-                                    * phong_power(r_dot_v, material.shininess);
-                            }
+                            record.specular =
+                                local.specular(material.specular, material.shininess, n_dot_l);
                         }
                         colour += record.diffuse + record.specular;
                     }
@@ -404,16 +405,6 @@ impl<'w> Tracer<'w> {
         } else {
             f64::from(visible) / f64::from(reaching)
         }
-    }
-}
-
-/// `x^s` for the Phong lobe; whole exponents (the usual case) by repeated squaring.
-#[inline]
-fn phong_power(x: f64, s: f64) -> f64 {
-    if s.fract() == 0.0 && s <= 1024.0 {
-        x.powi(s as i32)
-    } else {
-        x.powf(s)
     }
 }
 

@@ -1,0 +1,88 @@
+//! The contract's local terms for one light at one point: Lambert's diffuse term and the
+//! Phong lobe. The shader and the compare module's models of other tracers share them,
+//! so a model of a bug differs from the tracer only where the bug does.
+
+use glam::DVec3;
+
+/// One light at one point, as the local terms need it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LocalLight {
+    /// The shading normal (facing the ray).
+    pub n: DVec3,
+    /// Unit vector to the light.
+    pub to_light: DVec3,
+    /// Unit vector to the viewer (minus the ray direction).
+    pub view: DVec3,
+    /// L_l(p).
+    pub strength: DVec3,
+}
+
+impl LocalLight {
+    /// `kd * L * n.l`, for a light with `n_dot_l = n.l > 0`.
+    #[inline]
+    #[must_use]
+    pub fn diffuse(&self, kd: DVec3, n_dot_l: f64) -> DVec3 {
+        kd * self.strength * n_dot_l
+    }
+
+    /// `ks * L * max(0, r.v)^s`, with r the light direction reflected about n (max before
+    /// the power), for a light with `n_dot_l = n.l > 0`.
+    #[inline]
+    #[must_use]
+    pub fn specular(&self, ks: DVec3, shininess: f64, n_dot_l: f64) -> DVec3 {
+        let r = 2.0 * n_dot_l * self.n - self.to_light;
+        let r_dot_v = r.dot(self.view).max(0.0);
+        if r_dot_v > 0.0 {
+            ks * self.strength * phong_power(r_dot_v, shininess)
+        } else {
+            DVec3::ZERO
+        }
+    }
+}
+
+/// `x^s` for the Phong lobe; whole exponents (the usual case) by repeated squaring.
+#[inline]
+#[must_use]
+pub fn phong_power(x: f64, s: f64) -> f64 {
+    if s.fract() == 0.0 && s <= 1024.0 {
+        x.powi(s as i32)
+    } else {
+        x.powf(s)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_mirror_aligned_viewer_sees_the_whole_lobe_and_shininess_zero_is_a_step() {
+        let light = LocalLight {
+            n: DVec3::Z,
+            to_light: DVec3::Z,
+            view: DVec3::Z,
+            strength: DVec3::splat(2.0),
+        };
+        assert_eq!(light.diffuse(DVec3::splat(0.5), 1.0), DVec3::ONE);
+        assert_eq!(light.specular(DVec3::ONE, 50.0, 1.0), DVec3::splat(2.0));
+        let grazing = LocalLight {
+            view: DVec3::new(1.0, 0.0, 0.0),
+            ..light
+        };
+        assert_eq!(
+            grazing.specular(DVec3::ONE, 0.0, 1.0),
+            DVec3::ZERO,
+            "r.v = 0"
+        );
+        let tilted = LocalLight {
+            view: DVec3::new(0.6, 0.0, 0.8),
+            ..light
+        };
+        assert_eq!(
+            tilted.specular(DVec3::ONE, 0.0, 1.0),
+            DVec3::splat(2.0),
+            "x^0 = 1"
+        );
+        assert!((phong_power(0.8, 2.5) - 0.8f64.powf(2.5)).abs() < 1e-15);
+    }
+}
