@@ -17,38 +17,14 @@ use glam::DVec3;
 use smallvec::SmallVec;
 
 use super::depth_view::DepthRange;
+pub use super::object_id::object_id_colour;
 use super::phong::LocalLight;
 use super::ray::Ray;
+pub use super::ray_counts::RayCounts;
 use super::record::{LightSkip, ShadowRay, SkippedLight, unsampled_reason};
 use super::spawn::{spawn_ray, spawn_ray_to};
 use super::terms::{ActiveTerms, Term, TermSwitches, View};
 use super::world::{SurfacePoint, World};
-
-/// Rays cast, by kind.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct RayCounts {
-    /// Camera rays.
-    pub primary: u64,
-    /// Shadow rays.
-    pub shadow: u64,
-    /// Mirror rays.
-    pub reflection: u64,
-}
-
-impl RayCounts {
-    /// All rays.
-    #[must_use]
-    pub fn total(&self) -> u64 {
-        self.primary + self.shadow + self.reflection
-    }
-
-    /// Adds another tally to this one.
-    pub fn add(&mut self, other: &RayCounts) {
-        self.primary += other.primary;
-        self.shadow += other.shadow;
-        self.reflection += other.reflection;
-    }
-}
 
 /// One light's part in shading a point, as the inspector shows it.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -406,20 +382,4 @@ impl<'w> Tracer<'w> {
             f64::from(visible) / f64::from(reaching)
         }
     }
-}
-
-/// A distinct, saturated colour for an object index (golden-ratio hue steps).
-#[must_use]
-pub fn object_id_colour(index: usize) -> DVec3 {
-    let hue = (index as f64 * 0.618_033_988_749_895 + 0.1).fract() * 6.0;
-    let x = 1.0 - (hue % 2.0 - 1.0).abs();
-    let (r, g, b) = match hue as u32 {
-        0 => (1.0, x, 0.0),
-        1 => (x, 1.0, 0.0),
-        2 => (0.0, 1.0, x),
-        3 => (0.0, x, 1.0),
-        4 => (x, 0.0, 1.0),
-        _ => (1.0, 0.0, x),
-    };
-    DVec3::new(r, g, b) * 0.85 + 0.15
 }
