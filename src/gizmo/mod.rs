@@ -45,6 +45,19 @@ pub fn ray_plane(ray: &Ray, point: DVec3, normal: DVec3) -> Option<DVec3> {
     (t > 0.0).then(|| ray.at(t))
 }
 
+/// The tests' camera: 400x300, 40 degrees, looking from `position` at (0, 1, 0).
+#[cfg(test)]
+pub(crate) fn test_camera(position: glam::DVec3) -> crate::scene::Camera {
+    crate::scene::Camera {
+        position,
+        look_at: glam::DVec3::new(0.0, 1.0, 0.0),
+        up: glam::DVec3::Y,
+        fov_deg: 40.0,
+        width: 400,
+        height: 300,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

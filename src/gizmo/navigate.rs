@@ -165,14 +165,7 @@ mod tests {
     use glam::DVec2;
 
     fn camera() -> Camera {
-        Camera {
-            position: DVec3::new(0.0, 2.0, 8.0),
-            look_at: DVec3::new(0.0, 1.0, 0.0),
-            up: DVec3::Y,
-            fov_deg: 40.0,
-            width: 400,
-            height: 300,
-        }
+        crate::gizmo::test_camera(DVec3::new(0.0, 2.0, 8.0))
     }
 
     #[test]
