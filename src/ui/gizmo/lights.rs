@@ -39,7 +39,12 @@ pub(super) fn light_elements(
             ..
         } => {
             if selected {
-                cone_wireframe(out, view, position, direction, angle_deg);
+                let cone = SpotCone {
+                    position,
+                    direction,
+                    angle_deg,
+                };
+                cone_wireframe(out, view, cone);
             } else if let (Some(p), Some(q)) = (
                 view.project(position),
                 view.project(
@@ -155,14 +160,24 @@ fn light_colour(light: &Light) -> Color32 {
     Color32::from_rgb(channel(c.x), channel(c.y), channel(c.z))
 }
 
+/// A spotlight's cone in world space: apex, axis and half-angle.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct SpotCone {
+    /// The apex: the light's position.
+    pub position: DVec3,
+    /// The axis (not necessarily unit length).
+    pub direction: DVec3,
+    /// The half-angle in degrees.
+    pub angle_deg: f64,
+}
+
 /// The cone of a selected spotlight: rim circle, silhouette and axis.
-fn cone_wireframe(
-    out: &mut Vec<Element>,
-    view: &ViewMapping,
-    position: DVec3,
-    direction: DVec3,
-    angle_deg: f64,
-) {
+fn cone_wireframe(out: &mut Vec<Element>, view: &ViewMapping, cone: SpotCone) {
+    let SpotCone {
+        position,
+        direction,
+        angle_deg,
+    } = cone;
     let length = view.cone_length();
     let rim: Option<Vec<Pos2>> = rim_points(position, direction, angle_deg, length, 64)
         .into_iter()
@@ -182,7 +197,7 @@ fn cone_wireframe(
         });
     }
     for side in [1.0, -1.0] {
-        if let Some(edge) = rim_edge(view, position, direction, angle_deg, side) {
+        if let Some(edge) = rim_edge(view, cone, side) {
             line(out, apex, edge, CONE_COLOUR, None);
         }
     }
@@ -192,37 +207,25 @@ fn cone_wireframe(
 }
 
 /// The tip and rim handles of a selected spotlight, drawn over everything else.
-pub(super) fn spot_handles(
-    out: &mut Vec<Element>,
-    view: &ViewMapping,
-    position: DVec3,
-    direction: DVec3,
-    angle_deg: f64,
-) {
+pub(super) fn spot_handles(out: &mut Vec<Element>, view: &ViewMapping, cone: SpotCone) {
     let length = view.cone_length();
-    if let Some(rim) = rim_edge(view, position, direction, angle_deg, 1.0) {
+    if let Some(rim) = rim_edge(view, cone, 1.0) {
         dot(out, rim, 6.5, CONE_COLOUR, Some(HandleId::SpotRim));
     }
-    if let Some(tip) = view.project(tip_point(position, direction, length)) {
+    if let Some(tip) = view.project(tip_point(cone.position, cone.direction, length)) {
         dot(out, tip, 6.5, CONE_COLOUR, Some(HandleId::SpotTip));
     }
 }
 
 /// Where the cone's silhouette edge meets the rim on screen, on the side `side` (1 or -1)
 /// of the rim handle's radial direction.
-fn rim_edge(
-    view: &ViewMapping,
-    position: DVec3,
-    direction: DVec3,
-    angle_deg: f64,
-    side: f64,
-) -> Option<Pos2> {
-    let radial = rim_radial(direction, position - view.eye()) * side;
+fn rim_edge(view: &ViewMapping, cone: SpotCone, side: f64) -> Option<Pos2> {
+    let radial = rim_radial(cone.direction, cone.position - view.eye()) * side;
     view.project(rim_handle(
-        position,
-        direction,
+        cone.position,
+        cone.direction,
         radial,
-        angle_deg,
+        cone.angle_deg,
         view.cone_length(),
     ))
 }

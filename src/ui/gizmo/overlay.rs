@@ -7,7 +7,7 @@ use egui::{Color32, Pos2, Vec2};
 use glam::DVec3;
 
 use super::camera::{camera_elements, shows_scene_camera};
-use super::lights::{light_elements, spot_handles};
+use super::lights::{SpotCone, light_elements, spot_handles};
 use super::projection::ViewMapping;
 use crate::gizmo::transform_drag::{TranslateHandle, euler_ring_axes, world_axis};
 use crate::gizmo::view::object_axes;
@@ -101,7 +101,12 @@ pub fn gizmo_elements(
                 ..
             }) = scene.lights.get(*index)
             {
-                spot_handles(&mut out, view, *position, *direction, *angle_deg);
+                let cone = SpotCone {
+                    position: *position,
+                    direction: *direction,
+                    angle_deg: *angle_deg,
+                };
+                spot_handles(&mut out, view, cone);
             }
         }
         Selection::Camera if shows_scene_camera(view, &scene.camera) => {
