@@ -178,24 +178,13 @@ fn a_middle_drag_pans_even_over_a_handle() {
     let length = ARROW_POINTS * world_per_point(&harness, origin);
     let from = screen(&harness, origin + DVec3::X * length * 0.7);
     let to = from + Vec2::new(-30.0, 25.0);
-    harness.event(Event::PointerMoved(from));
-    harness.event(Event::PointerButton {
-        pos: from,
-        button: PointerButton::Middle,
-        pressed: true,
-        modifiers: Modifiers::NONE,
-    });
-    harness.step();
-    for i in 1..=6 {
-        harness.event(Event::PointerMoved(from + (to - from) * (i as f32 / 6.0)));
-        harness.step();
-    }
-    harness.event(Event::PointerButton {
-        pos: to,
-        button: PointerButton::Middle,
-        pressed: false,
-        modifiers: Modifiers::NONE,
-    });
+    editor_harness::press_drag_release(
+        &mut harness,
+        PointerButton::Middle,
+        (from, to),
+        Modifiers::NONE,
+        6,
+    );
     harness.run();
     assert_eq!(
         harness.state().scene(),

@@ -4,8 +4,8 @@
 
 mod editor_harness;
 
-use editor_harness::{editor_harness, harness};
-use egui::{Event, Modifiers, PointerButton, Pos2, Rect, Vec2};
+use editor_harness::{editor_harness, harness, press_drag_release};
+use egui::{Modifiers, PointerButton, Pos2, Rect, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
 use glam::DVec2;
@@ -89,20 +89,13 @@ fn a_preview_that_is_not_the_full_picture_says_so_and_why() {
 
 /// Presses at `from`, moves to `to` in steps and releases, as a hand would.
 fn drag(harness: &mut Harness<'_, EditorApp>, from: Pos2, to: Pos2) {
-    let button = |pos, pressed| Event::PointerButton {
-        pos,
-        button: PointerButton::Primary,
-        pressed,
-        modifiers: Modifiers::NONE,
-    };
-    harness.event(Event::PointerMoved(from));
-    harness.event(button(from, true));
-    harness.step();
-    for i in 1..=8 {
-        harness.event(Event::PointerMoved(from + (to - from) * (i as f32 / 8.0)));
-        harness.step();
-    }
-    harness.event(button(to, false));
+    press_drag_release(
+        harness,
+        PointerButton::Primary,
+        (from, to),
+        Modifiers::NONE,
+        8,
+    );
     harness.run();
 }
 

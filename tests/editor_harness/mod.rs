@@ -130,3 +130,36 @@ pub fn drop_file(harness: &mut Harness<'_, EditorApp>, path: &Path) {
         .push(std::sync::Arc::new(DroppedPath(path.to_owned())));
     harness.run();
 }
+
+/// A `button` drag from `from` to `to` in `steps` small moves with `modifiers` held, as a
+/// hand would; the caller runs the frames that follow.
+pub fn press_drag_release(
+    harness: &mut Harness<'_, EditorApp>,
+    button: PointerButton,
+    (from, to): (Pos2, Pos2),
+    modifiers: Modifiers,
+    steps: u32,
+) {
+    harness.event(Event::ModifiersChanged(modifiers));
+    harness.event(Event::PointerMoved(from));
+    harness.event(Event::PointerButton {
+        pos: from,
+        button,
+        pressed: true,
+        modifiers,
+    });
+    harness.step();
+    for i in 1..=steps {
+        harness.event(Event::PointerMoved(
+            from + (to - from) * (i as f32 / steps as f32),
+        ));
+        harness.step();
+    }
+    harness.event(Event::PointerButton {
+        pos: to,
+        button,
+        pressed: false,
+        modifiers,
+    });
+    harness.event(Event::ModifiersChanged(Modifiers::NONE));
+}

@@ -3,7 +3,7 @@
 #![allow(dead_code)]
 
 use crate::editor_harness::editor_harness;
-use egui::{Event, Key, Modifiers, PointerButton, Pos2, Rect, Vec2};
+use egui::{Key, Modifiers, PointerButton, Pos2, Rect, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use glam::DVec3;
@@ -58,26 +58,13 @@ pub fn trs(scene: &Scene, index: usize) -> Trs {
 
 /// A primary-button drag from `from` to `to` in small steps, as a hand would.
 pub fn drag(harness: &mut Harness<'_, EditorApp>, from: Pos2, to: Pos2, modifiers: Modifiers) {
-    harness.event(Event::ModifiersChanged(modifiers));
-    harness.event(Event::PointerMoved(from));
-    harness.event(Event::PointerButton {
-        pos: from,
-        button: PointerButton::Primary,
-        pressed: true,
+    crate::editor_harness::press_drag_release(
+        harness,
+        PointerButton::Primary,
+        (from, to),
         modifiers,
-    });
-    harness.step();
-    for i in 1..=10 {
-        harness.event(Event::PointerMoved(from + (to - from) * (i as f32 / 10.0)));
-        harness.step();
-    }
-    harness.event(Event::PointerButton {
-        pos: to,
-        button: PointerButton::Primary,
-        pressed: false,
-        modifiers,
-    });
-    harness.event(Event::ModifiersChanged(Modifiers::NONE));
+        10,
+    );
     harness.run();
 }
 

@@ -134,26 +134,7 @@ pub fn click(harness: &mut Harness<'_, EditorApp>, pos: Pos2, modifiers: Modifie
 
 /// A primary-button drag from `from` to `to` in small steps, as a hand would.
 pub fn drag(harness: &mut Harness<'_, EditorApp>, from: Pos2, to: Pos2, modifiers: Modifiers) {
-    harness.event(Event::ModifiersChanged(modifiers));
-    harness.event(Event::PointerMoved(from));
-    harness.event(Event::PointerButton {
-        pos: from,
-        button: PointerButton::Primary,
-        pressed: true,
-        modifiers,
-    });
-    harness.step();
-    for i in 1..=10 {
-        harness.event(Event::PointerMoved(from + (to - from) * (i as f32 / 10.0)));
-        harness.step();
-    }
-    harness.event(Event::PointerButton {
-        pos: to,
-        button: PointerButton::Primary,
-        pressed: false,
-        modifiers,
-    });
-    harness.event(Event::ModifiersChanged(Modifiers::NONE));
+    editor_harness::press_drag_release(harness, PointerButton::Primary, (from, to), modifiers, 10);
     harness.run_ok();
 }
 
