@@ -18,8 +18,8 @@ use crate::ui::panels::outliner::light_label;
 
 pub use compared::{OTHER_VALUE_LABEL, RAYLAB_VALUE_LABEL, compared_rows};
 pub use window::{
-    FINAL_COLOUR_LABEL, InspectorView, PixelAnchor, inspector_window_id, isolation_lines,
-    pixel_inspector_ui, switches_text,
+    FINAL_COLOUR_LABEL, InspectorView, MAX_WIDTH, PixelAnchor, inspector_window_id,
+    isolation_lines, pixel_inspector_ui, switches_text,
 };
 
 /// One pixel inspected in one scene with one set of switches.

@@ -17,6 +17,8 @@ pub const FINAL_COLOUR_LABEL: &str = "final colour";
 /// The window's width and height, in points.
 const WIDTH: f32 = 400.0;
 const HEIGHT: f32 = 460.0;
+/// The widest the user can make it; every line of the report fits in [`WIDTH`].
+pub const MAX_WIDTH: f32 = WIDTH * 1.5;
 /// Space between the inspected pixel and the window.
 const GAP: f32 = 28.0;
 
@@ -33,22 +35,22 @@ pub struct PixelAnchor {
 }
 
 impl PixelAnchor {
-    /// The window's top-left corner: right of the pixel when it fits in the viewport,
-    /// else left of it when that fits, else on the side with more room, never over the
-    /// pixel while the screen has room beside it.
-    fn window_pos(&self) -> Pos2 {
+    /// The top-left corner of a window of `size`: right of the pixel when it fits in
+    /// the viewport, else left of it when that fits, else on the side with more room,
+    /// never over the pixel while the screen has room beside it.
+    fn window_pos(&self, size: Vec2) -> Pos2 {
         let right = self.pos.x + GAP;
-        let left = self.pos.x - GAP - WIDTH;
-        let x = if right + WIDTH <= self.viewport.max.x {
+        let left = self.pos.x - GAP - size.x;
+        let x = if right + size.x <= self.viewport.max.x {
             right
         } else if left >= self.viewport.min.x {
             left
         } else if self.screen.max.x - self.pos.x >= self.pos.x - self.screen.min.x {
-            right.min(self.screen.max.x - WIDTH)
+            right.min(self.screen.max.x - size.x)
         } else {
             left.max(self.screen.min.x)
         };
-        let y = (self.pos.y - 80.0).min(self.screen.max.y - HEIGHT);
+        let y = (self.pos.y - 80.0).min(self.screen.max.y - size.y);
         Pos2::new(x, y.max(self.screen.min.y))
     }
 }
@@ -83,13 +85,19 @@ pub fn pixel_inspector_ui(ctx: &egui::Context, view: &InspectorView, commands: &
         .id(id)
         .default_size([WIDTH, HEIGHT])
         // Wide content lines must not widen it over the pixel it sits beside.
-        .max_width(WIDTH * 1.5)
+        .max_width(MAX_WIDTH)
         .resizable(true);
     // A new pixel: the window moves beside it (and stays where the user puts it after).
     if placed_for != Some(view.pixel)
         && let Some(anchor) = view.anchor
     {
-        window = window.current_pos(anchor.window_pos());
+        // The size it has now (the user may have resized it), else the one it opens at.
+        let size = ctx
+            .memory(|m| m.area_rect(id))
+            .map_or(Vec2::new(WIDTH, HEIGHT), |r| r.size());
+        let pos = anchor.window_pos(size);
+        window = window.current_pos(pos);
+        move_open_window(ctx, id, pos);
         ctx.data_mut(|d| d.insert_temp(id.with("placed"), view.pixel));
     }
     let window_rect = ctx.memory(|m| m.area_rect(id));
@@ -106,6 +114,19 @@ pub fn pixel_inspector_ui(ctx: &egui::Context, view: &InspectorView, commands: &
     });
     if !open {
         commands.push(Command::InspectPixel(None));
+    }
+}
+
+/// Moves an already open window's area to `pos`. `current_pos` alone only places a window
+/// that opens: egui 0.37's title-bar drag mode puts back the position the area had before
+/// the pass, so an open window would stay where it was.
+fn move_open_window(ctx: &egui::Context, id: Id, pos: Pos2) {
+    if let Some(mut state) = egui::AreaState::load(ctx, id) {
+        state.set_left_top_pos(pos);
+        ctx.memory_mut(|m| {
+            m.areas_mut()
+                .set_state(egui::LayerId::new(egui::Order::Middle, id), state);
+        });
     }
 }
 
@@ -226,17 +247,20 @@ fn bounce_ui(ui: &mut egui::Ui, bounce: &BounceReport, names: &InspectedBounce) 
     egui::Grid::new(("result", bounce.depth))
         .num_columns(2)
         .show(ui, |ui| {
-            ui.label("reflection");
+            // One colour per row: all three on one line would widen the window over
+            // the pixel it sits beside.
             match bounce.reflection {
-                Some((km, reflected)) => ui.monospace(format!(
-                    "km {} × {} = {}",
-                    colour_text(km),
-                    colour_text(reflected),
-                    colour_text(km * reflected)
-                )),
-                None => ui.weak("no mirror ray"),
-            };
-            ui.end_row();
+                Some((km, reflected)) => {
+                    number_row_ui(ui, "mirror km", colour_text(km));
+                    number_row_ui(ui, "reflected", colour_text(reflected));
+                    number_row_ui(ui, "km × reflected", colour_text(km * reflected));
+                }
+                None => {
+                    ui.label("reflection");
+                    ui.weak("no mirror ray");
+                    ui.end_row();
+                }
+            }
             number_row_ui(ui, "colour", colour_text(bounce.colour));
         });
 }
@@ -339,17 +363,18 @@ mod tests {
     fn the_window_sits_beside_the_pixel_on_the_side_with_room() {
         let viewport = Rect::from_min_size(Pos2::new(200.0, 80.0), Vec2::new(800.0, 600.0));
         let screen = Rect::from_min_size(Pos2::ZERO, Vec2::new(1280.0, 800.0));
+        let size = Vec2::new(WIDTH, HEIGHT);
         let at = |x: f32| PixelAnchor {
             pos: Pos2::new(x, 300.0),
             viewport,
             screen,
         };
         assert!(
-            at(300.0).window_pos().x > 300.0,
+            at(300.0).window_pos(size).x > 300.0,
             "right of a pixel on the left"
         );
         assert!(
-            at(900.0).window_pos().x + WIDTH < 900.0,
+            at(900.0).window_pos(size).x + WIDTH < 900.0,
             "left of a pixel on the right"
         );
         // In the middle of a viewport too narrow for either side: over a side panel.
@@ -359,7 +384,7 @@ mod tests {
             ..at(600.0)
         };
         for anchor in [at(300.0), at(900.0), middle] {
-            let window = Rect::from_min_size(anchor.window_pos(), Vec2::new(WIDTH, HEIGHT));
+            let window = Rect::from_min_size(anchor.window_pos(size), size);
             assert!(
                 !window.contains(anchor.pos),
                 "not over the pixel: {window:?}"
