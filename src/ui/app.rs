@@ -14,7 +14,7 @@ use crate::ui::document::confirm::DiscardAction;
 use crate::ui::document::export::ExportState;
 use crate::ui::document::file_dialog::FileDialogs;
 use crate::ui::document::files;
-use crate::ui::document::native_dialogs::{NativeDialogs, native_dialogs_available};
+use crate::ui::document::native_dialogs::NativeDialogs;
 use crate::ui::document::recent::RecentFiles;
 use crate::ui::screenshot::ScreenshotHook;
 use crate::ui::stored::Stored;
@@ -117,13 +117,7 @@ impl EditorApp {
             recent,
             pending: None,
             after_save: None,
-            file_dialogs: FileDialogs::new(
-                match options.native_dialogs {
-                    NativeDialogs::Detect => native_dialogs_available(),
-                    NativeDialogs::Unavailable => false,
-                },
-                options.dialog_folder,
-            ),
+            file_dialogs: FileDialogs::new(options.native_dialogs.resolve(), options.dialog_folder),
             error: None,
             warning: None,
             message: None,

@@ -24,7 +24,9 @@ pub use app::{EditorApp, EditorOptions};
 pub use commands::{Command, LightKind, SceneEdit, Selection};
 pub use document::confirm::DiscardAction;
 pub use document::export::ExportState;
-pub use document::file_dialog::{DialogPurpose, FileDialogs};
+pub use document::file_dialog::{
+    DialogPurpose, DialogRequest, FileDialogs, NativeDialog, PathFuture,
+};
 pub use document::native_dialogs::NativeDialogs;
 pub use document::{files, recent};
 pub use gizmo::toolbar::{CAMERA_VIEW_LABEL, SET_CAMERA_LABEL};

@@ -7,6 +7,7 @@
 use std::future::Future;
 use std::path::{Path, PathBuf};
 use std::pin::Pin;
+use std::sync::Arc;
 
 use crate::preview::BackgroundJob;
 
@@ -74,9 +75,27 @@ enum OpenDialog {
     InApp(Box<egui_file::FileDialog>),
 }
 
+/// What a native dialog is asked for.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct DialogRequest {
+    /// What it is for (its title, filter, open or save).
+    pub purpose: DialogPurpose,
+    /// The folder it opens in.
+    pub folder: PathBuf,
+    /// The file name it suggests for a save.
+    pub file_name: String,
+}
+
+/// The answer of a native dialog, waited for off the UI thread.
+pub type PathFuture = Pin<Box<dyn Future<Output = Option<PathBuf>> + Send>>;
+
+/// Opens a native dialog (on the UI thread, as some desktops need) and returns the
+/// future of its answer.
+pub type NativeDialog = Arc<dyn Fn(&DialogRequest) -> PathFuture + Send + Sync>;
+
 /// The editor's file dialogs: at most one open at a time.
 pub struct FileDialogs {
-    native_available: bool,
+    native: Option<NativeDialog>,
     /// The user's setting: use the in-app dialog even where a native one exists.
     pub prefer_in_app: bool,
     /// Where a dialog opens when the scene has no folder of its own.
@@ -85,12 +104,12 @@ pub struct FileDialogs {
 }
 
 impl FileDialogs {
-    /// Dialogs for a desktop that can (`native_available`) or cannot show native ones;
-    /// `start_folder` is where they open by default (the working folder otherwise).
+    /// Dialogs for a desktop with this `native` dialog (or none); `start_folder` is
+    /// where they open by default (the working folder otherwise).
     #[must_use]
-    pub fn new(native_available: bool, start_folder: Option<PathBuf>) -> Self {
+    pub fn new(native: Option<NativeDialog>, start_folder: Option<PathBuf>) -> Self {
         Self {
-            native_available,
+            native,
             prefer_in_app: false,
             start_folder,
             open: None,
@@ -113,13 +132,13 @@ impl FileDialogs {
     /// Whether a native dialog can be shown on this desktop.
     #[must_use]
     pub fn native_available(&self) -> bool {
-        self.native_available
+        self.native.is_some()
     }
 
     /// Whether the next dialog is the in-app one.
     #[must_use]
     pub fn uses_in_app(&self) -> bool {
-        self.prefer_in_app || !self.native_available
+        self.prefer_in_app || self.native.is_none()
     }
 
     /// The purpose of the dialog on screen, if one is.
@@ -151,10 +170,16 @@ impl FileDialogs {
             .or_else(|| self.start_folder.clone())
             .or_else(|| std::env::current_dir().ok())
             .unwrap_or_default();
-        let dialog = if self.uses_in_app() {
-            OpenDialog::InApp(Box::new(in_app_dialog(purpose, folder, file_name, ctx)))
-        } else {
-            OpenDialog::Native(native_dialog(purpose, &folder, file_name, ctx)?)
+        let dialog = match &self.native {
+            Some(native) if !self.prefer_in_app => {
+                let request = DialogRequest {
+                    purpose,
+                    folder,
+                    file_name: file_name.to_owned(),
+                };
+                OpenDialog::Native(wait_off_the_ui_thread(native(&request), ctx)?)
+            }
+            _ => OpenDialog::InApp(Box::new(in_app_dialog(purpose, folder, file_name, ctx))),
         };
         self.open = Some((purpose, dialog));
         Ok(())
@@ -219,30 +244,35 @@ fn in_app_dialog(
     dialog
 }
 
-type PathFuture = Pin<Box<dyn Future<Output = Option<rfd::FileHandle>> + Send>>;
-
-/// A native dialog waited for on its own thread; the window is repainted when it ends.
-fn native_dialog(
-    purpose: DialogPurpose,
-    folder: &Path,
-    file_name: &str,
-    ctx: &egui::Context,
-) -> Result<BackgroundJob<Option<PathBuf>>, String> {
+/// The desktop's dialog through rfd's async API.
+#[must_use]
+pub fn rfd_dialog(request: &DialogRequest) -> PathFuture {
+    let purpose = request.purpose;
     let mut dialog = rfd::AsyncFileDialog::new()
         .set_title(purpose.title())
-        .set_directory(folder);
+        .set_directory(&request.folder);
     if let Some((name, extension)) = purpose.filter() {
         dialog = dialog.add_filter(name, &[extension]);
     }
-    let future: PathFuture = if purpose.is_save() {
-        Box::pin(dialog.set_file_name(file_name).save_file())
+    if purpose.is_save() {
+        let answer = dialog.set_file_name(&request.file_name).save_file();
+        Box::pin(async move { answer.await.map(|file| file.path().to_owned()) })
     } else {
-        Box::pin(dialog.pick_file())
-    };
+        let answer = dialog.pick_file();
+        Box::pin(async move { answer.await.map(|file| file.path().to_owned()) })
+    }
+}
+
+/// Waits for a native dialog's answer on a thread of its own, so the window keeps
+/// drawing; the window is repainted when it ends.
+fn wait_off_the_ui_thread(
+    answer: PathFuture,
+    ctx: &egui::Context,
+) -> Result<BackgroundJob<Option<PathBuf>>, String> {
     let ctx = ctx.clone();
     BackgroundJob::spawn(
         "file dialog",
-        move |_| Some(pollster::block_on(future).map(|file| file.path().to_owned())),
+        move |_| Some(pollster::block_on(answer)),
         move || ctx.request_repaint(),
     )
 }

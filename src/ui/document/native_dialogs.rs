@@ -5,15 +5,44 @@
 
 use std::ffi::OsStr;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use super::file_dialog::{NativeDialog, rfd_dialog};
 
 /// Whether the editor may use native file dialogs.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Default)]
 pub enum NativeDialogs {
     /// Look at the desktop when the editor starts.
     #[default]
     Detect,
     /// Never: always the in-app dialog (as on a desktop without portal or zenity).
     Unavailable,
+    /// This stand-in for the desktop's dialog (tests use one that answers when told).
+    Given(NativeDialog),
+}
+
+impl std::fmt::Debug for NativeDialogs {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            NativeDialogs::Detect => "Detect",
+            NativeDialogs::Unavailable => "Unavailable",
+            NativeDialogs::Given(_) => "Given",
+        })
+    }
+}
+
+impl NativeDialogs {
+    /// The native dialog to use, if there is one on this desktop.
+    #[must_use]
+    pub fn resolve(&self) -> Option<NativeDialog> {
+        match self {
+            NativeDialogs::Detect => {
+                native_dialogs_available().then(|| Arc::new(rfd_dialog) as NativeDialog)
+            }
+            NativeDialogs::Unavailable => None,
+            NativeDialogs::Given(dialog) => Some(dialog.clone()),
+        }
+    }
 }
 
 /// Whether a native file dialog can be shown on this desktop.
