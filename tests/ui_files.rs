@@ -208,6 +208,8 @@ fn import_legacy_replaces_the_scene_with_the_imported_one() {
     harness.state_mut().push(Command::ImportLegacy(path));
     harness.run();
     assert_eq!(harness.state().scene(), &imported.scene);
+    // The status line names the imported file, not the last file saved.
+    harness.get_by_label_contains("full.txt (not saved yet)");
     // full.txt has an octahedron, which the importer skips with a warning: it is shown
     // as a warning, in its own banner, not as a failure.
     assert!(!imported.warnings.is_empty());

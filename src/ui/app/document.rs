@@ -162,6 +162,8 @@ impl EditorApp {
                 self.unnamed = "imported scene";
                 // An imported scene has no file yet: everything is unsaved.
                 self.saved = files::new_scene();
+                // Not the last file saved or opened: this one, which has no file yet.
+                self.message = Some(format!("Imported {} (not saved yet)", path.display()));
                 if !warnings.is_empty() {
                     self.warning = Some(format!("Imported with warnings: {}", warnings.join("; ")));
                 }
