@@ -45,6 +45,22 @@ impl WorldObject {
             None => self.bounds.hit_by(ray, inv_dir, t_max),
         }
     }
+
+    /// The closest hit of a world ray with `t` in (0, t_max), in object space.
+    #[inline(always)]
+    fn hit(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> Option<ShapeHit> {
+        if !self.may_be_hit(ray, inv_dir, t_max) {
+            return None;
+        }
+        shapes::intersect(self.shape, &ray.transformed(&self.object_from_world), t_max)
+    }
+
+    /// Whether a world ray meets the object with `t` in (0, t_max).
+    #[inline(always)]
+    fn blocks(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> bool {
+        self.may_be_hit(ray, inv_dir, t_max)
+            && shapes::occluded(self.shape, &ray.transformed(&self.object_from_world), t_max)
+    }
 }
 
 /// A point on a surface where a ray hit, in world space.
@@ -191,31 +207,36 @@ impl World {
     #[must_use]
     pub fn intersect(&self, ray: &Ray, t_max: f64) -> Option<SurfacePoint> {
         let inv_dir = ray.dir.recip();
-        let mut closest: Option<(usize, ShapeHit)> = None;
-        let mut test = |index: usize, t_limit: f64| -> Option<f64> {
-            let object = &self.objects[index];
-            if !object.may_be_hit(ray, inv_dir, t_limit) {
-                return None;
-            }
-            let ray_in_object = ray.transformed(&object.object_from_world);
-            let hit = shapes::intersect(object.shape, &ray_in_object, t_limit)?;
-            closest = Some((index, hit));
-            Some(hit.t)
-        };
-        match &self.bvh {
-            Some(bvh) => bvh.traverse(ray, inv_dir, t_max, |index, t_limit| {
-                Ok(test(index, t_limit))
-            }),
-            None => {
-                let mut t_limit = t_max;
-                for index in 0..self.objects.len() {
-                    if let Some(t) = test(index, t_limit) {
-                        t_limit = t;
+        let closest = match &self.bvh {
+            Some(bvh) => {
+                let mut closest: Option<(usize, ShapeHit)> = None;
+                bvh.traverse(ray, inv_dir, t_max, |index, t_limit| {
+                    let hit = self.objects[index].hit(ray, inv_dir, t_limit);
+                    if let Some(hit) = hit {
+                        closest = Some((index, hit));
                     }
-                }
+                    Ok(hit.map(|hit| hit.t))
+                });
+                closest
+            }
+            None => self.closest_in_list(ray, inv_dir, t_max),
+        };
+        closest.map(|(index, hit)| self.surface_point(index, ray, &hit))
+    }
+
+    /// The flat list's closest hit: every object in scene order, each later one tested
+    /// only up to the nearest hit so far (so a tie keeps the earlier object).
+    #[inline]
+    fn closest_in_list(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> Option<(usize, ShapeHit)> {
+        let mut closest = None;
+        let mut t_limit = t_max;
+        for (index, object) in self.objects.iter().enumerate() {
+            if let Some(hit) = object.hit(ray, inv_dir, t_limit) {
+                t_limit = hit.t;
+                closest = Some((index, hit));
             }
         }
-        closest.map(|(index, hit)| self.surface_point(index, ray, &hit))
+        closest
     }
 
     /// Where the ray meets object `index` first with `t` in (0, t_max), if it does: for
@@ -239,16 +260,8 @@ impl World {
     #[must_use]
     pub fn occluder_except(&self, ray: &Ray, t_max: f64, except: Option<usize>) -> Option<usize> {
         let inv_dir = ray.dir.recip();
-        let blocks = |index: usize| {
-            let object = &self.objects[index];
-            Some(index) != except
-                && object.may_be_hit(ray, inv_dir, t_max)
-                && shapes::occluded(
-                    object.shape,
-                    &ray.transformed(&object.object_from_world),
-                    t_max,
-                )
-        };
+        let blocks =
+            |index: usize| Some(index) != except && self.objects[index].blocks(ray, inv_dir, t_max);
         match &self.bvh {
             Some(bvh) => {
                 let mut found = None;
@@ -262,8 +275,25 @@ impl World {
                 });
                 found
             }
-            None => (0..self.objects.len()).find(|&index| blocks(index)),
+            None => self.first_blocker_in_list(ray, inv_dir, t_max, except),
         }
+    }
+
+    /// The flat list's first object, in scene order, that blocks the ray.
+    #[inline]
+    fn first_blocker_in_list(
+        &self,
+        ray: &Ray,
+        inv_dir: DVec3,
+        t_max: f64,
+        except: Option<usize>,
+    ) -> Option<usize> {
+        for (index, object) in self.objects.iter().enumerate() {
+            if Some(index) != except && object.blocks(ray, inv_dir, t_max) {
+                return Some(index);
+            }
+        }
+        None
     }
 
     /// World-space details of an object-space hit.
