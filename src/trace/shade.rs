@@ -18,6 +18,7 @@ use smallvec::SmallVec;
 
 use super::depth_view::DepthRange;
 pub use super::object_id::object_id_colour;
+use super::object_set::ObjectSet;
 use super::phong::LocalLight;
 use super::ray::Ray;
 pub use super::ray_counts::RayCounts;
@@ -142,28 +143,40 @@ impl<'w> Tracer<'w> {
         counts: &mut RayCounts,
         recorder: &mut R,
     ) -> DVec3 {
+        self.trace_primary_among(ray, ObjectSet::ALL, counts, recorder)
+    }
+
+    /// As [`Self::trace_primary`] for a camera ray that can hit only objects of `among`
+    /// (see [`super::primary_cull`]); the same colour whenever that is so.
+    pub fn trace_primary_among<R: Recorder>(
+        &self,
+        ray: &Ray,
+        among: ObjectSet,
+        counts: &mut RayCounts,
+        recorder: &mut R,
+    ) -> DVec3 {
         counts.primary += 1;
         match self.view {
-            View::Beauty => self.radiance(ray, counts, recorder),
+            View::Beauty => self.radiance(ray, among, counts, recorder),
             View::Normal => self
                 .world
-                .intersect(ray, f64::INFINITY)
+                .intersect_among(ray, f64::INFINITY, among)
                 .map_or(DVec3::ZERO, |hit| hit.n * 0.5 + 0.5),
             View::Depth => self
                 .world
-                .intersect(ray, f64::INFINITY)
+                .intersect_among(ray, f64::INFINITY, among)
                 .map_or(DVec3::ZERO, |hit| {
                     DVec3::splat(self.depth_range.map_or(1.0, |range| range.grey(hit.t)))
                 }),
             View::ObjectId => self
                 .world
-                .intersect(ray, f64::INFINITY)
+                .intersect_among(ray, f64::INFINITY, among)
                 .map_or(DVec3::ZERO, |hit| {
                     object_id_colour(self.world.scene_object(hit.object))
                 }),
             View::ShadowMask => self
                 .world
-                .intersect(ray, f64::INFINITY)
+                .intersect_among(ray, f64::INFINITY, among)
                 .map_or(DVec3::ZERO, |hit| {
                     DVec3::splat(self.shadow_mask(&hit, counts))
                 }),
@@ -177,8 +190,15 @@ impl<'w> Tracer<'w> {
     /// from the deepest ray as `colour(d) = local(d) + km(d) * colour(d + 1)`. That is the
     /// same arithmetic, and the same recorder calls in the same order, as the recursive
     /// form (a ray's `reflection` and `result` after everything deeper).
-    fn radiance(&self, ray: &Ray, counts: &mut RayCounts, recorder: &mut impl Recorder) -> DVec3 {
-        let (camera_bounce, mirror_ray) = self.shade(ray, 0, &self.primary, counts, recorder);
+    fn radiance(
+        &self,
+        ray: &Ray,
+        among: ObjectSet,
+        counts: &mut RayCounts,
+        recorder: &mut impl Recorder,
+    ) -> DVec3 {
+        let (camera_bounce, mirror_ray) =
+            self.shade(ray, among, 0, &self.primary, counts, recorder);
         // Most camera rays meet no mirror: no chain to keep.
         let Some(mut ray) = mirror_ray else {
             recorder.result(0, camera_bounce.local);
@@ -188,7 +208,14 @@ impl<'w> Tracer<'w> {
         chain.push(camera_bounce);
         loop {
             let depth = chain.len() as u32;
-            let (bounce, mirror_ray) = self.shade(&ray, depth, &self.secondary, counts, recorder);
+            let (bounce, mirror_ray) = self.shade(
+                &ray,
+                ObjectSet::ALL,
+                depth,
+                &self.secondary,
+                counts,
+                recorder,
+            );
             chain.push(bounce);
             match mirror_ray {
                 Some(next) => ray = next,
@@ -218,12 +245,13 @@ impl<'w> Tracer<'w> {
     fn shade<R: Recorder>(
         &self,
         ray: &Ray,
+        among: ObjectSet,
         depth: u32,
         terms: &ActiveTerms,
         counts: &mut RayCounts,
         recorder: &mut R,
     ) -> (Bounce, Option<Ray>) {
-        let Some(hit) = self.world.intersect(ray, f64::INFINITY) else {
+        let Some(hit) = self.world.intersect_among(ray, f64::INFINITY, among) else {
             let background = if terms.background {
                 self.world.background
             } else {

@@ -6,6 +6,7 @@ use glam::{DAffine3, DMat3, DVec3};
 use super::bounds::{Aabb, BoundingSphere};
 use super::bvh::Bvh;
 use super::lights::WorldLight;
+use super::object_set::ObjectSet;
 use super::ray::Ray;
 use super::shapes::{self, ShapeHit, gamma};
 use super::terms::Isolation;
@@ -206,11 +207,22 @@ impl World {
     /// The closest hit along a world ray with `t` in (0, t_max).
     #[must_use]
     pub fn intersect(&self, ray: &Ray, t_max: f64) -> Option<SurfacePoint> {
+        self.intersect_among(ray, t_max, ObjectSet::ALL)
+    }
+
+    /// As [`World::intersect`], testing only the objects of `among`: a culling step's
+    /// answer that the others cannot be hit. The same hit, bit for bit, as testing all of
+    /// them whenever that is so (a tie still goes to the earlier object).
+    #[must_use]
+    pub fn intersect_among(&self, ray: &Ray, t_max: f64, among: ObjectSet) -> Option<SurfacePoint> {
         let inv_dir = ray.dir.recip();
         let closest = match &self.bvh {
             Some(bvh) => {
                 let mut closest: Option<(usize, ShapeHit)> = None;
                 bvh.traverse(ray, inv_dir, t_max, |index, t_limit| {
+                    if !among.contains(index) {
+                        return Ok(None);
+                    }
                     let hit = self.objects[index].hit(ray, inv_dir, t_limit);
                     if let Some(hit) = hit {
                         closest = Some((index, hit));
@@ -219,19 +231,25 @@ impl World {
                 });
                 closest
             }
-            None => self.closest_in_list(ray, inv_dir, t_max),
+            None => self.closest_in_list(ray, inv_dir, t_max, among),
         };
         closest.map(|(index, hit)| self.surface_point(index, ray, &hit))
     }
 
-    /// The flat list's closest hit: every object in scene order, each later one tested
-    /// only up to the nearest hit so far (so a tie keeps the earlier object).
+    /// The flat list's closest hit: the objects of `among` in scene order, each later one
+    /// tested only up to the nearest hit so far (so a tie keeps the earlier object).
     #[inline]
-    fn closest_in_list(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> Option<(usize, ShapeHit)> {
+    fn closest_in_list(
+        &self,
+        ray: &Ray,
+        inv_dir: DVec3,
+        t_max: f64,
+        among: ObjectSet,
+    ) -> Option<(usize, ShapeHit)> {
         let mut closest = None;
         let mut t_limit = t_max;
-        for (index, object) in self.objects.iter().enumerate() {
-            if let Some(hit) = object.hit(ray, inv_dir, t_limit) {
+        for index in among.members_below(self.objects.len()) {
+            if let Some(hit) = self.objects[index].hit(ray, inv_dir, t_limit) {
                 t_limit = hit.t;
                 closest = Some((index, hit));
             }
