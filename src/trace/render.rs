@@ -9,10 +9,10 @@ use glam::{DVec2, DVec3, Vec3};
 use super::camera::PinholeCamera;
 use super::image::Image;
 use super::isolation::assert_compiled_for;
-use super::primary_cull::PrimaryCull;
 use super::sampling::sample_in_pixel;
 use super::shade::{NoRecorder, RayCounts, Tracer};
 use super::terms::{Isolation, TermSwitches, View};
+use super::tile_cull::TileCull;
 use super::tiles::render_tiles;
 use super::world::World;
 use crate::scene::Scene;
@@ -174,7 +174,7 @@ pub fn render_samples_into(
     let camera = PinholeCamera::new(&world.camera, width, height);
     let tracer = Tracer::new(world, options.switches, options.view);
     let count = options.samples_per_pixel;
-    let cull = PrimaryCull::new(world, &camera, width, height);
+    let cull = TileCull::new(world, &camera, width, height);
     let sample = |px: u32, py: u32, index: u32, rays: &mut RayCounts| {
         let point = film_point(px, py, sample_in_pixel(px, py, index, count));
         let ray = camera.ray(point);

@@ -25,6 +25,7 @@ pub use super::ray_counts::RayCounts;
 use super::record::{LightSkip, ShadowRay, SkippedLight, unsampled_reason};
 use super::spawn::{spawn_ray, spawn_ray_to};
 use super::terms::{ActiveTerms, Term, TermSwitches, View};
+use super::tile_cull::Candidates;
 use super::world::{SurfacePoint, World};
 
 /// One light's part in shading a point, as the inspector shows it.
@@ -143,15 +144,16 @@ impl<'w> Tracer<'w> {
         counts: &mut RayCounts,
         recorder: &mut R,
     ) -> DVec3 {
-        self.trace_primary_among(ray, ObjectSet::ALL, counts, recorder)
+        self.trace_primary_among(ray, Candidates::ALL, counts, recorder)
     }
 
-    /// As [`Self::trace_primary`] for a camera ray that can hit only objects of `among`
-    /// (see [`super::primary_cull`]); the same colour whenever that is so.
+    /// As [`Self::trace_primary`] for a camera ray that can meet only the objects
+    /// `among` names, at the camera hit and with its shadow rays (see
+    /// [`super::tile_cull`]); the same colour whenever that is so.
     pub fn trace_primary_among<R: Recorder>(
         &self,
         ray: &Ray,
-        among: ObjectSet,
+        among: Candidates,
         counts: &mut RayCounts,
         recorder: &mut R,
     ) -> DVec3 {
@@ -160,25 +162,25 @@ impl<'w> Tracer<'w> {
             View::Beauty => self.radiance(ray, among, counts, recorder),
             View::Normal => self
                 .world
-                .intersect_among(ray, f64::INFINITY, among)
+                .intersect_among(ray, f64::INFINITY, among.camera)
                 .map_or(DVec3::ZERO, |hit| hit.n * 0.5 + 0.5),
             View::Depth => self
                 .world
-                .intersect_among(ray, f64::INFINITY, among)
+                .intersect_among(ray, f64::INFINITY, among.camera)
                 .map_or(DVec3::ZERO, |hit| {
                     DVec3::splat(self.depth_range.map_or(1.0, |range| range.grey(hit.t)))
                 }),
             View::ObjectId => self
                 .world
-                .intersect_among(ray, f64::INFINITY, among)
+                .intersect_among(ray, f64::INFINITY, among.camera)
                 .map_or(DVec3::ZERO, |hit| {
                     object_id_colour(self.world.scene_object(hit.object))
                 }),
             View::ShadowMask => self
                 .world
-                .intersect_among(ray, f64::INFINITY, among)
+                .intersect_among(ray, f64::INFINITY, among.camera)
                 .map_or(DVec3::ZERO, |hit| {
-                    DVec3::splat(self.shadow_mask(&hit, counts))
+                    DVec3::splat(self.shadow_mask(&hit, among, counts))
                 }),
         }
     }
@@ -193,7 +195,7 @@ impl<'w> Tracer<'w> {
     fn radiance(
         &self,
         ray: &Ray,
-        among: ObjectSet,
+        among: Candidates,
         counts: &mut RayCounts,
         recorder: &mut impl Recorder,
     ) -> DVec3 {
@@ -210,7 +212,7 @@ impl<'w> Tracer<'w> {
             let depth = chain.len() as u32;
             let (bounce, mirror_ray) = self.shade(
                 &ray,
-                ObjectSet::ALL,
+                Candidates::ALL,
                 depth,
                 &self.secondary,
                 counts,
@@ -245,13 +247,13 @@ impl<'w> Tracer<'w> {
     fn shade<R: Recorder>(
         &self,
         ray: &Ray,
-        among: ObjectSet,
+        among: Candidates,
         depth: u32,
         terms: &ActiveTerms,
         counts: &mut RayCounts,
         recorder: &mut R,
     ) -> (Bounce, Option<Ray>) {
-        let Some(hit) = self.world.intersect_among(ray, f64::INFINITY, among) else {
+        let Some(hit) = self.world.intersect_among(ray, f64::INFINITY, among.camera) else {
             let background = if terms.background {
                 self.world.background
             } else {
@@ -309,7 +311,8 @@ impl<'w> Tracer<'w> {
                 };
                 if n_dot_l > 0.0 {
                     if terms.shadows {
-                        let shadow_ray = self.shadow_ray(&hit, &sample, counts);
+                        let blockers = among.shadow(index);
+                        let shadow_ray = self.shadow_ray(&hit, &sample, blockers, counts);
                         record.shadow_ray_cast = true;
                         // The recorders see the scene's index of the blocker.
                         let blocked_by = shadow_ray.blocked_by.map(|i| world.scene_object(i));
@@ -368,6 +371,7 @@ impl<'w> Tracer<'w> {
         &self,
         hit: &SurfacePoint,
         sample: &super::lights::LightSample,
+        blockers: ObjectSet,
         counts: &mut RayCounts,
     ) -> ShadowRay {
         counts.shadow += 1;
@@ -383,16 +387,18 @@ impl<'w> Tracer<'w> {
         ShadowRay {
             ray,
             t_max,
-            blocked_by: self.world.occluder_except(&ray, t_max, except),
+            blocked_by: self
+                .world
+                .occluder_except_among(&ray, t_max, except, blockers),
         }
     }
 
     /// Fraction of the lights that reach `hit` (in front, inside any spot cone) whose
     /// shadow ray is clear; 0 where no light reaches.
-    fn shadow_mask(&self, hit: &SurfacePoint, counts: &mut RayCounts) -> f64 {
+    fn shadow_mask(&self, hit: &SurfacePoint, among: Candidates, counts: &mut RayCounts) -> f64 {
         let mut reaching = 0u32;
         let mut visible = 0u32;
-        for light in &self.world.lights {
+        for (index, light) in self.world.lights.iter().enumerate() {
             let Some(sample) = light.sample(hit.p) else {
                 continue;
             };
@@ -400,7 +406,12 @@ impl<'w> Tracer<'w> {
                 continue;
             }
             reaching += 1;
-            if !self.primary.shadows || self.shadow_ray(hit, &sample, counts).blocked_by.is_none() {
+            if !self.primary.shadows
+                || self
+                    .shadow_ray(hit, &sample, among.shadow(index), counts)
+                    .blocked_by
+                    .is_none()
+            {
                 visible += 1;
             }
         }

@@ -277,9 +277,26 @@ impl World {
     /// on its outer side (or leaving a plane) cannot meet that surface again.
     #[must_use]
     pub fn occluder_except(&self, ray: &Ray, t_max: f64, except: Option<usize>) -> Option<usize> {
+        self.occluder_except_among(ray, t_max, except, ObjectSet::ALL)
+    }
+
+    /// As [`World::occluder_except`], testing only the objects of `among`: a culling
+    /// step's answer that the others cannot block this ray. The same answer as testing
+    /// all of them whenever that is so (the first blocker in scene order).
+    #[must_use]
+    pub fn occluder_except_among(
+        &self,
+        ray: &Ray,
+        t_max: f64,
+        except: Option<usize>,
+        among: ObjectSet,
+    ) -> Option<usize> {
         let inv_dir = ray.dir.recip();
-        let blocks =
-            |index: usize| Some(index) != except && self.objects[index].blocks(ray, inv_dir, t_max);
+        let blocks = |index: usize| {
+            Some(index) != except
+                && among.contains(index)
+                && self.objects[index].blocks(ray, inv_dir, t_max)
+        };
         match &self.bvh {
             Some(bvh) => {
                 let mut found = None;
@@ -293,11 +310,11 @@ impl World {
                 });
                 found
             }
-            None => self.first_blocker_in_list(ray, inv_dir, t_max, except),
+            None => self.first_blocker_in_list(ray, inv_dir, t_max, except, among),
         }
     }
 
-    /// The flat list's first object, in scene order, that blocks the ray.
+    /// The flat list's first object of `among`, in scene order, that blocks the ray.
     #[inline]
     fn first_blocker_in_list(
         &self,
@@ -305,13 +322,11 @@ impl World {
         inv_dir: DVec3,
         t_max: f64,
         except: Option<usize>,
+        among: ObjectSet,
     ) -> Option<usize> {
-        for (index, object) in self.objects.iter().enumerate() {
-            if Some(index) != except && object.blocks(ray, inv_dir, t_max) {
-                return Some(index);
-            }
-        }
-        None
+        among
+            .members_below(self.objects.len())
+            .find(|&index| Some(index) != except && self.objects[index].blocks(ray, inv_dir, t_max))
     }
 
     /// World-space details of an object-space hit.
