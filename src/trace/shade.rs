@@ -18,7 +18,6 @@ use smallvec::SmallVec;
 
 use super::depth_view::DepthRange;
 pub use super::object_id::object_id_colour;
-use super::object_set::ObjectSet;
 use super::phong::LocalLight;
 use super::ray::Ray;
 pub use super::ray_counts::RayCounts;
@@ -147,9 +146,8 @@ impl<'w> Tracer<'w> {
         self.trace_primary_among(ray, Candidates::ALL, counts, recorder)
     }
 
-    /// As [`Self::trace_primary`] for a camera ray that can meet only the objects
-    /// `among` names, at the camera hit and with its shadow rays (see
-    /// [`super::tile_cull`]); the same colour whenever that is so.
+    /// As [`Self::trace_primary`] for a camera ray that can meet only what `among` names
+    /// (see [`super::tile_cull`]); the same colour whenever that is so.
     pub fn trace_primary_among<R: Recorder>(
         &self,
         ray: &Ray,
@@ -158,30 +156,19 @@ impl<'w> Tracer<'w> {
         recorder: &mut R,
     ) -> DVec3 {
         counts.primary += 1;
+        let camera_hit = || self.world.intersect_among(ray, f64::INFINITY, among.camera);
         match self.view {
             View::Beauty => self.radiance(ray, among, counts, recorder),
-            View::Normal => self
-                .world
-                .intersect_among(ray, f64::INFINITY, among.camera)
-                .map_or(DVec3::ZERO, |hit| hit.n * 0.5 + 0.5),
-            View::Depth => self
-                .world
-                .intersect_among(ray, f64::INFINITY, among.camera)
-                .map_or(DVec3::ZERO, |hit| {
-                    DVec3::splat(self.depth_range.map_or(1.0, |range| range.grey(hit.t)))
-                }),
-            View::ObjectId => self
-                .world
-                .intersect_among(ray, f64::INFINITY, among.camera)
-                .map_or(DVec3::ZERO, |hit| {
-                    object_id_colour(self.world.scene_object(hit.object))
-                }),
-            View::ShadowMask => self
-                .world
-                .intersect_among(ray, f64::INFINITY, among.camera)
-                .map_or(DVec3::ZERO, |hit| {
-                    DVec3::splat(self.shadow_mask(&hit, among, counts))
-                }),
+            View::Normal => camera_hit().map_or(DVec3::ZERO, |hit| hit.n * 0.5 + 0.5),
+            View::Depth => camera_hit().map_or(DVec3::ZERO, |hit| {
+                DVec3::splat(self.depth_range.map_or(1.0, |range| range.grey(hit.t)))
+            }),
+            View::ObjectId => camera_hit().map_or(DVec3::ZERO, |hit| {
+                object_id_colour(self.world.scene_object(hit.object))
+            }),
+            View::ShadowMask => camera_hit().map_or(DVec3::ZERO, |hit| {
+                DVec3::splat(self.shadow_mask(&hit, among, counts))
+            }),
         }
     }
 
@@ -208,16 +195,11 @@ impl<'w> Tracer<'w> {
         };
         let mut chain: SmallVec<[Bounce; INLINE_BOUNCES]> = SmallVec::new();
         chain.push(camera_bounce);
+        let everything = Candidates::ALL;
         loop {
             let depth = chain.len() as u32;
-            let (bounce, mirror_ray) = self.shade(
-                &ray,
-                Candidates::ALL,
-                depth,
-                &self.secondary,
-                counts,
-                recorder,
-            );
+            let (bounce, mirror_ray) =
+                self.shade(&ray, everything, depth, &self.secondary, counts, recorder);
             chain.push(bounce);
             match mirror_ray {
                 Some(next) => ray = next,
@@ -311,8 +293,8 @@ impl<'w> Tracer<'w> {
                 };
                 if n_dot_l > 0.0 {
                     if terms.shadows {
-                        let blockers = among.shadow(index);
-                        let shadow_ray = self.shadow_ray(&hit, &sample, blockers, counts);
+                        let shadow_ray =
+                            self.shadow_ray(&hit, &sample, among.shadow(index), counts);
                         record.shadow_ray_cast = true;
                         // The recorders see the scene's index of the blocker.
                         let blocked_by = shadow_ray.blocked_by.map(|i| world.scene_object(i));
@@ -371,7 +353,7 @@ impl<'w> Tracer<'w> {
         &self,
         hit: &SurfacePoint,
         sample: &super::lights::LightSample,
-        blockers: ObjectSet,
+        blockers: super::object_set::ObjectSet,
         counts: &mut RayCounts,
     ) -> ShadowRay {
         counts.shadow += 1;
@@ -384,12 +366,13 @@ impl<'w> Tracer<'w> {
             Some(position) => spawn_ray_to(hit, position),
             None => (spawn_ray(hit, sample.to_light), f64::INFINITY),
         };
+        let blocked_by = self
+            .world
+            .occluder_except_among(&ray, t_max, except, blockers);
         ShadowRay {
             ray,
             t_max,
-            blocked_by: self
-                .world
-                .occluder_except_among(&ray, t_max, except, blockers),
+            blocked_by,
         }
     }
 
