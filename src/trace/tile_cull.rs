@@ -193,8 +193,8 @@ fn tile_set(quad: &[DVec3; 4], forward: DVec3, boxes: &[EyeBox]) -> ObjectSet {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::Transform;
     use crate::scene::examples::default_scene;
+    use crate::scene::{Light, Transform};
     use crate::trace::spawn::{spawn_ray, spawn_ray_to};
 
     /// Every camera ray of a render gets bit for bit the hit it gets from all objects,
@@ -268,6 +268,70 @@ mod tests {
             }
             let world = World::new(&scene).unwrap();
             assert_culling_is_exact(&world, 64, 48);
+        }
+    }
+
+    /// A tiny deterministic generator, so a failing scene can be found again.
+    struct Lcg(u64);
+
+    impl Lcg {
+        fn unit(&mut self) -> f64 {
+            self.0 = self
+                .0
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1);
+            (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        }
+        fn range(&mut self, lo: f64, hi: f64) -> f64 {
+            lo + (hi - lo) * self.unit()
+        }
+        fn vec(&mut self, lo: f64, hi: f64) -> DVec3 {
+            DVec3::new(self.range(lo, hi), self.range(lo, hi), self.range(lo, hi))
+        }
+    }
+
+    #[test]
+    fn culling_stays_exact_on_random_scenes() {
+        // The default scene's shapes, materials and light kinds, placed at random: up
+        // to twelve objects turned and stretched any way, the camera and the lights
+        // anywhere around them (inside objects too).
+        let mut rng = Lcg(18);
+        for _ in 0..24 {
+            let mut scene = default_scene();
+            let shapes = scene.objects.clone();
+            let count = 1 + (rng.unit() * 12.0) as usize;
+            scene.objects = (0..count)
+                .map(|k| {
+                    let mut object = shapes[k % shapes.len()].clone();
+                    object.transform = Transform::Trs(crate::scene::Trs {
+                        translate: rng.vec(-4.0, 4.0),
+                        rotate_deg: rng.vec(-180.0, 180.0),
+                        scale: DVec3::from_array([0; 3].map(|_| 10f64.powf(rng.range(-1.5, 0.7)))),
+                    });
+                    object
+                })
+                .collect();
+            scene.camera.position = rng.vec(-9.0, 9.0);
+            scene.camera.look_at = rng.vec(-1.0, 1.0);
+            for light in &mut scene.lights {
+                match light {
+                    Light::Point { position, .. } => *position = rng.vec(-6.0, 6.0),
+                    Light::Spot {
+                        position,
+                        direction,
+                        ..
+                    } => {
+                        *position = rng.vec(-6.0, 6.0);
+                        *direction = -*position + rng.vec(-1.0, 1.0);
+                    }
+                    Light::Directional { direction, .. } => {
+                        *direction = rng.vec(-1.0, 1.0) - DVec3::new(0.0, 1.5, 0.0);
+                    }
+                    Light::Ambient { .. } => {}
+                }
+            }
+            let world = World::new(&scene).unwrap();
+            assert_culling_is_exact(&world, 40, 30);
         }
     }
 
