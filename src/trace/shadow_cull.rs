@@ -85,21 +85,32 @@ pub(super) fn tile_hit_box(
             near = near.max(s0);
             far = far.min(s1);
         }
-        if !(near <= far) {
-            continue;
+        if near > far {
+            continue; // no ray of the tile meets this box
         }
-        // The pyramid between those depths is the hull of its eight corners.
-        let mut frustum_lo = DVec3::INFINITY;
-        let mut frustum_hi = DVec3::NEG_INFINITY;
-        for s in [near, far] {
-            for corner in quad {
-                let p = eye + s * *corner;
-                frustum_lo = frustum_lo.min(p);
-                frustum_hi = frustum_hi.max(p);
+        let (mut clipped_lo, mut clipped_hi) = (object.min(), object.max());
+        // (A NaN depth keeps the whole box.)
+        if near <= far {
+            // The pyramid between those depths is the hull of its eight corners.
+            let (near, far) = (
+                near * (1.0 - RELATIVE_MARGIN),
+                far * (1.0 + RELATIVE_MARGIN),
+            );
+            let mut frustum_lo = DVec3::INFINITY;
+            let mut frustum_hi = DVec3::NEG_INFINITY;
+            for s in [near, far] {
+                for corner in quad {
+                    let p = eye + s * *corner;
+                    frustum_lo = frustum_lo.min(p);
+                    frustum_hi = frustum_hi.max(p);
+                }
             }
+            let reach = (frustum_hi - frustum_lo).max_element()
+                + frustum_hi.abs().max(frustum_lo.abs()).max_element();
+            let margin = DVec3::splat(RELATIVE_MARGIN * reach);
+            clipped_lo = clipped_lo.max(frustum_lo - margin);
+            clipped_hi = clipped_hi.min(frustum_hi + margin);
         }
-        let clipped_lo = frustum_lo.max(object.min());
-        let clipped_hi = frustum_hi.min(object.max());
         if clipped_lo.cmple(clipped_hi).all() {
             lo = lo.min(clipped_lo);
             hi = hi.max(clipped_hi);
