@@ -42,10 +42,30 @@ impl PinholeCamera {
     /// `t` is the distance from the eye.
     #[must_use]
     pub fn ray(&self, image_point: DVec2) -> Ray {
+        Ray::new(self.position, self.film_direction(image_point).normalize())
+    }
+
+    /// The direction through image point `(x, y)` before it is normalised: affine in
+    /// the image point, so the rays through a rectangle of the image lie in the pyramid
+    /// spanned by its corners' film directions.
+    #[must_use]
+    #[inline]
+    pub fn film_direction(&self, image_point: DVec2) -> DVec3 {
         let ndc_x = 2.0 * image_point.x / self.width - 1.0;
         let ndc_y = 1.0 - 2.0 * image_point.y / self.height;
-        let dir = self.forward + ndc_x * self.right_half + ndc_y * self.up_half;
-        Ray::new(self.position, dir.normalize())
+        self.forward + ndc_x * self.right_half + ndc_y * self.up_half
+    }
+
+    /// Where every camera ray starts.
+    #[must_use]
+    pub fn position(&self) -> DVec3 {
+        self.position
+    }
+
+    /// Unit view direction (the ray through the image centre).
+    #[must_use]
+    pub fn forward(&self) -> DVec3 {
+        self.forward
     }
 
     /// Where a world point lands in the image, in pixels; `None` behind the eye.

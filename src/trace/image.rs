@@ -48,11 +48,10 @@ impl Image {
     /// # Errors
     /// The encoder's error (only on I/O problems of the writer).
     pub fn write_png(&self, writer: impl std::io::Write) -> image::ImageResult<()> {
-        let rgb: Vec<u8> = self
-            .pixels
-            .iter()
-            .flat_map(|p| p.to_array().map(encode_linear))
-            .collect();
+        let mut rgb = Vec::with_capacity(self.pixels.len() * 3);
+        for p in &self.pixels {
+            rgb.extend_from_slice(&p.to_array().map(encode_linear));
+        }
         image::codecs::png::PngEncoder::new(writer).write_image(
             &rgb,
             self.width,
@@ -71,12 +70,45 @@ impl Image {
     }
 }
 
-/// One channel: clamp to [0, 1], then round(255 c).
+/// One channel: clamp to [0, 1], then round(255 c) (halves away from zero).
+///
+/// Rounds as `floor(x + 0.5)` in f64, where the sum is exact (x has 24 significant bits),
+/// so it equals `f32::round` for every x in [0, 255] without the libm call that baseline
+/// x86-64 makes of it (a third of the PNG encoding time).
 #[must_use]
+#[inline]
 pub fn encode_linear(c: f32) -> u8 {
     if c.is_finite() {
-        (c.clamp(0.0, 1.0) * 255.0).round() as u8
+        (f64::from(c.clamp(0.0, 1.0) * 255.0) + 0.5) as u8
     } else {
         0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::encode_linear;
+
+    #[test]
+    fn encoding_rounds_exactly_like_f32_round_next_to_every_half() {
+        // The thousand f32 either side of each c with 255 c = k + 1/2, where a rounding
+        // shortcut such as (x + 0.5) in f32 goes wrong, and a sweep of [0, 1].
+        let mut checked = 0;
+        for k in 0..255 {
+            let centre = ((k as f32 + 0.5) / 255.0).to_bits();
+            for bits in centre - 1000..=centre + 1000 {
+                let c = f32::from_bits(bits);
+                assert_eq!(encode_linear(c), (c * 255.0).round() as u8, "c = {c:e}");
+                checked += 1;
+            }
+        }
+        for i in 0..=100_000 {
+            let c = i as f32 / 100_000.0;
+            assert_eq!(encode_linear(c), (c * 255.0).round() as u8, "c = {c:e}");
+        }
+        assert_eq!(checked, 255 * 2001);
+        assert_eq!(encode_linear(-1.0), 0);
+        assert_eq!(encode_linear(2.0), 255);
+        assert_eq!(encode_linear(f32::NAN), 0);
     }
 }

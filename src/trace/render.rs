@@ -12,6 +12,7 @@ use super::isolation::assert_compiled_for;
 use super::sampling::sample_in_pixel;
 use super::shade::{NoRecorder, RayCounts, Tracer};
 use super::terms::{Isolation, TermSwitches, View};
+use super::tile_cull::TileCull;
 use super::tiles::render_tiles;
 use super::world::World;
 use crate::scene::Scene;
@@ -173,9 +174,11 @@ pub fn render_samples_into(
     let camera = PinholeCamera::new(&world.camera, width, height);
     let tracer = Tracer::new(world, options.switches, options.view);
     let count = options.samples_per_pixel;
+    let cull = TileCull::new(world, &camera, width, height);
     let sample = |px: u32, py: u32, index: u32, rays: &mut RayCounts| {
-        let offset = sample_in_pixel(px, py, index, count);
-        trace_colour(&tracer, &camera, film_point(px, py, offset), rays)
+        let point = film_point(px, py, sample_in_pixel(px, py, index, count));
+        let ray = camera.ray(point);
+        tracer.trace_primary_among(&ray, cull.candidates(point), rays, &mut NoRecorder)
     };
     render_tiles(sums, samples, progress, &sample)
 }

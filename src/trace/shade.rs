@@ -24,6 +24,7 @@ pub use super::ray_counts::RayCounts;
 use super::record::{LightSkip, ShadowRay, SkippedLight, unsampled_reason};
 use super::spawn::{spawn_ray, spawn_ray_to};
 use super::terms::{ActiveTerms, Term, TermSwitches, View};
+use super::tile_cull::Candidates;
 use super::world::{SurfacePoint, World};
 
 /// One light's part in shading a point, as the inspector shows it.
@@ -142,31 +143,32 @@ impl<'w> Tracer<'w> {
         counts: &mut RayCounts,
         recorder: &mut R,
     ) -> DVec3 {
+        self.trace_primary_among(ray, Candidates::ALL, counts, recorder)
+    }
+
+    /// As [`Self::trace_primary`] for a camera ray that can meet only what `among` names
+    /// (see [`super::tile_cull`]); the same colour whenever that is so.
+    pub fn trace_primary_among<R: Recorder>(
+        &self,
+        ray: &Ray,
+        among: Candidates,
+        counts: &mut RayCounts,
+        recorder: &mut R,
+    ) -> DVec3 {
         counts.primary += 1;
+        let camera_hit = || self.world.intersect_among(ray, f64::INFINITY, among.camera);
         match self.view {
-            View::Beauty => self.radiance(ray, counts, recorder),
-            View::Normal => self
-                .world
-                .intersect(ray, f64::INFINITY)
-                .map_or(DVec3::ZERO, |hit| hit.n * 0.5 + 0.5),
-            View::Depth => self
-                .world
-                .intersect(ray, f64::INFINITY)
-                .map_or(DVec3::ZERO, |hit| {
-                    DVec3::splat(self.depth_range.map_or(1.0, |range| range.grey(hit.t)))
-                }),
-            View::ObjectId => self
-                .world
-                .intersect(ray, f64::INFINITY)
-                .map_or(DVec3::ZERO, |hit| {
-                    object_id_colour(self.world.scene_object(hit.object))
-                }),
-            View::ShadowMask => self
-                .world
-                .intersect(ray, f64::INFINITY)
-                .map_or(DVec3::ZERO, |hit| {
-                    DVec3::splat(self.shadow_mask(&hit, counts))
-                }),
+            View::Beauty => self.radiance(ray, among, counts, recorder),
+            View::Normal => camera_hit().map_or(DVec3::ZERO, |hit| hit.n * 0.5 + 0.5),
+            View::Depth => camera_hit().map_or(DVec3::ZERO, |hit| {
+                DVec3::splat(self.depth_range.map_or(1.0, |range| range.grey(hit.t)))
+            }),
+            View::ObjectId => camera_hit().map_or(DVec3::ZERO, |hit| {
+                object_id_colour(self.world.scene_object(hit.object))
+            }),
+            View::ShadowMask => camera_hit().map_or(DVec3::ZERO, |hit| {
+                DVec3::splat(self.shadow_mask(&hit, among, counts))
+            }),
         }
     }
 
@@ -177,8 +179,15 @@ impl<'w> Tracer<'w> {
     /// from the deepest ray as `colour(d) = local(d) + km(d) * colour(d + 1)`. That is the
     /// same arithmetic, and the same recorder calls in the same order, as the recursive
     /// form (a ray's `reflection` and `result` after everything deeper).
-    fn radiance(&self, ray: &Ray, counts: &mut RayCounts, recorder: &mut impl Recorder) -> DVec3 {
-        let (camera_bounce, mirror_ray) = self.shade(ray, 0, &self.primary, counts, recorder);
+    fn radiance(
+        &self,
+        ray: &Ray,
+        among: Candidates,
+        counts: &mut RayCounts,
+        recorder: &mut impl Recorder,
+    ) -> DVec3 {
+        let (camera_bounce, mirror_ray) =
+            self.shade(ray, among, 0, &self.primary, counts, recorder);
         // Most camera rays meet no mirror: no chain to keep.
         let Some(mut ray) = mirror_ray else {
             recorder.result(0, camera_bounce.local);
@@ -186,9 +195,11 @@ impl<'w> Tracer<'w> {
         };
         let mut chain: SmallVec<[Bounce; INLINE_BOUNCES]> = SmallVec::new();
         chain.push(camera_bounce);
+        let everything = Candidates::ALL;
         loop {
             let depth = chain.len() as u32;
-            let (bounce, mirror_ray) = self.shade(&ray, depth, &self.secondary, counts, recorder);
+            let (bounce, mirror_ray) =
+                self.shade(&ray, everything, depth, &self.secondary, counts, recorder);
             chain.push(bounce);
             match mirror_ray {
                 Some(next) => ray = next,
@@ -218,12 +229,13 @@ impl<'w> Tracer<'w> {
     fn shade<R: Recorder>(
         &self,
         ray: &Ray,
+        among: Candidates,
         depth: u32,
         terms: &ActiveTerms,
         counts: &mut RayCounts,
         recorder: &mut R,
     ) -> (Bounce, Option<Ray>) {
-        let Some(hit) = self.world.intersect(ray, f64::INFINITY) else {
+        let Some(hit) = self.world.intersect_among(ray, f64::INFINITY, among.camera) else {
             let background = if terms.background {
                 self.world.background
             } else {
@@ -281,7 +293,8 @@ impl<'w> Tracer<'w> {
                 };
                 if n_dot_l > 0.0 {
                     if terms.shadows {
-                        let shadow_ray = self.shadow_ray(&hit, &sample, counts);
+                        let shadow_ray =
+                            self.shadow_ray(&hit, &sample, among.shadow(index), counts);
                         record.shadow_ray_cast = true;
                         // The recorders see the scene's index of the blocker.
                         let blocked_by = shadow_ray.blocked_by.map(|i| world.scene_object(i));
@@ -340,6 +353,7 @@ impl<'w> Tracer<'w> {
         &self,
         hit: &SurfacePoint,
         sample: &super::lights::LightSample,
+        blockers: super::object_set::ObjectSet,
         counts: &mut RayCounts,
     ) -> ShadowRay {
         counts.shadow += 1;
@@ -352,19 +366,22 @@ impl<'w> Tracer<'w> {
             Some(position) => spawn_ray_to(hit, position),
             None => (spawn_ray(hit, sample.to_light), f64::INFINITY),
         };
+        let blocked_by = self
+            .world
+            .occluder_except_among(&ray, t_max, except, blockers);
         ShadowRay {
             ray,
             t_max,
-            blocked_by: self.world.occluder_except(&ray, t_max, except),
+            blocked_by,
         }
     }
 
     /// Fraction of the lights that reach `hit` (in front, inside any spot cone) whose
     /// shadow ray is clear; 0 where no light reaches.
-    fn shadow_mask(&self, hit: &SurfacePoint, counts: &mut RayCounts) -> f64 {
+    fn shadow_mask(&self, hit: &SurfacePoint, among: Candidates, counts: &mut RayCounts) -> f64 {
         let mut reaching = 0u32;
         let mut visible = 0u32;
-        for light in &self.world.lights {
+        for (index, light) in self.world.lights.iter().enumerate() {
             let Some(sample) = light.sample(hit.p) else {
                 continue;
             };
@@ -372,7 +389,12 @@ impl<'w> Tracer<'w> {
                 continue;
             }
             reaching += 1;
-            if !self.primary.shadows || self.shadow_ray(hit, &sample, counts).blocked_by.is_none() {
+            if !self.primary.shadows
+                || self
+                    .shadow_ray(hit, &sample, among.shadow(index), counts)
+                    .blocked_by
+                    .is_none()
+            {
                 visible += 1;
             }
         }

@@ -6,6 +6,7 @@ use glam::{DAffine3, DMat3, DVec3};
 use super::bounds::{Aabb, BoundingSphere};
 use super::bvh::Bvh;
 use super::lights::WorldLight;
+use super::object_set::ObjectSet;
 use super::ray::Ray;
 use super::shapes::{self, ShapeHit, gamma};
 use super::terms::Isolation;
@@ -44,6 +45,22 @@ impl WorldObject {
             Some(sphere) => sphere.hit_by(ray, t_max),
             None => self.bounds.hit_by(ray, inv_dir, t_max),
         }
+    }
+
+    /// The closest hit of a world ray with `t` in (0, t_max), in object space.
+    #[inline(always)]
+    fn hit(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> Option<ShapeHit> {
+        if !self.may_be_hit(ray, inv_dir, t_max) {
+            return None;
+        }
+        shapes::intersect(self.shape, &ray.transformed(&self.object_from_world), t_max)
+    }
+
+    /// Whether a world ray meets the object with `t` in (0, t_max).
+    #[inline(always)]
+    fn blocks(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> bool {
+        self.may_be_hit(ray, inv_dir, t_max)
+            && shapes::occluded(self.shape, &ray.transformed(&self.object_from_world), t_max)
     }
 }
 
@@ -190,32 +207,54 @@ impl World {
     /// The closest hit along a world ray with `t` in (0, t_max).
     #[must_use]
     pub fn intersect(&self, ray: &Ray, t_max: f64) -> Option<SurfacePoint> {
+        self.intersect_among(ray, t_max, ObjectSet::ALL)
+    }
+
+    /// As [`World::intersect`], testing only the objects of `among`: a culling step's
+    /// answer that the others cannot be hit. The same hit, bit for bit, as testing all of
+    /// them whenever that is so (a tie still goes to the earlier object).
+    #[must_use]
+    pub fn intersect_among(&self, ray: &Ray, t_max: f64, among: ObjectSet) -> Option<SurfacePoint> {
         let inv_dir = ray.dir.recip();
-        let mut closest: Option<(usize, ShapeHit)> = None;
-        let mut test = |index: usize, t_limit: f64| -> Option<f64> {
-            let object = &self.objects[index];
-            if !object.may_be_hit(ray, inv_dir, t_limit) {
-                return None;
-            }
-            let ray_in_object = ray.transformed(&object.object_from_world);
-            let hit = shapes::intersect(object.shape, &ray_in_object, t_limit)?;
-            closest = Some((index, hit));
-            Some(hit.t)
-        };
-        match &self.bvh {
-            Some(bvh) => bvh.traverse(ray, inv_dir, t_max, |index, t_limit| {
-                Ok(test(index, t_limit))
-            }),
-            None => {
-                let mut t_limit = t_max;
-                for index in 0..self.objects.len() {
-                    if let Some(t) = test(index, t_limit) {
-                        t_limit = t;
+        let closest = match &self.bvh {
+            Some(bvh) => {
+                let mut closest: Option<(usize, ShapeHit)> = None;
+                bvh.traverse(ray, inv_dir, t_max, |index, t_limit| {
+                    if !among.contains(index) {
+                        return Ok(None);
                     }
-                }
+                    let hit = self.objects[index].hit(ray, inv_dir, t_limit);
+                    if let Some(hit) = hit {
+                        closest = Some((index, hit));
+                    }
+                    Ok(hit.map(|hit| hit.t))
+                });
+                closest
+            }
+            None => self.closest_in_list(ray, inv_dir, t_max, among),
+        };
+        closest.map(|(index, hit)| self.surface_point(index, ray, &hit))
+    }
+
+    /// The flat list's closest hit: the objects of `among` in scene order, each later one
+    /// tested only up to the nearest hit so far (so a tie keeps the earlier object).
+    #[inline]
+    fn closest_in_list(
+        &self,
+        ray: &Ray,
+        inv_dir: DVec3,
+        t_max: f64,
+        among: ObjectSet,
+    ) -> Option<(usize, ShapeHit)> {
+        let mut closest = None;
+        let mut t_limit = t_max;
+        for index in among.members_below(self.objects.len()) {
+            if let Some(hit) = self.objects[index].hit(ray, inv_dir, t_limit) {
+                t_limit = hit.t;
+                closest = Some((index, hit));
             }
         }
-        closest.map(|(index, hit)| self.surface_point(index, ray, &hit))
+        closest
     }
 
     /// Where the ray meets object `index` first with `t` in (0, t_max), if it does: for
@@ -238,16 +277,25 @@ impl World {
     /// on its outer side (or leaving a plane) cannot meet that surface again.
     #[must_use]
     pub fn occluder_except(&self, ray: &Ray, t_max: f64, except: Option<usize>) -> Option<usize> {
+        self.occluder_except_among(ray, t_max, except, ObjectSet::ALL)
+    }
+
+    /// As [`World::occluder_except`], testing only the objects of `among`: a culling
+    /// step's answer that the others cannot block this ray. The same answer as testing
+    /// all of them whenever that is so (the first blocker in scene order).
+    #[must_use]
+    pub fn occluder_except_among(
+        &self,
+        ray: &Ray,
+        t_max: f64,
+        except: Option<usize>,
+        among: ObjectSet,
+    ) -> Option<usize> {
         let inv_dir = ray.dir.recip();
         let blocks = |index: usize| {
-            let object = &self.objects[index];
             Some(index) != except
-                && object.may_be_hit(ray, inv_dir, t_max)
-                && shapes::occluded(
-                    object.shape,
-                    &ray.transformed(&object.object_from_world),
-                    t_max,
-                )
+                && among.contains(index)
+                && self.objects[index].blocks(ray, inv_dir, t_max)
         };
         match &self.bvh {
             Some(bvh) => {
@@ -262,8 +310,23 @@ impl World {
                 });
                 found
             }
-            None => (0..self.objects.len()).find(|&index| blocks(index)),
+            None => self.first_blocker_in_list(ray, inv_dir, t_max, except, among),
         }
+    }
+
+    /// The flat list's first object of `among`, in scene order, that blocks the ray.
+    #[inline]
+    fn first_blocker_in_list(
+        &self,
+        ray: &Ray,
+        inv_dir: DVec3,
+        t_max: f64,
+        except: Option<usize>,
+        among: ObjectSet,
+    ) -> Option<usize> {
+        among
+            .members_below(self.objects.len())
+            .find(|&index| Some(index) != except && self.objects[index].blocks(ray, inv_dir, t_max))
     }
 
     /// World-space details of an object-space hit.
