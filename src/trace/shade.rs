@@ -21,60 +21,12 @@ pub use super::object_id::object_id_colour;
 use super::phong::LocalLight;
 use super::ray::Ray;
 pub use super::ray_counts::RayCounts;
+use super::ray_source::{LiveRays, RaySource, ShadowQuery};
+pub use super::record::{LightRecord, NoRecorder, Recorder};
 use super::record::{LightSkip, ShadowRay, SkippedLight, unsampled_reason};
 use super::spawn::{spawn_ray, spawn_ray_to};
 use super::terms::{ActiveTerms, Term, TermSwitches, View};
 use super::world::{SurfacePoint, World};
-
-/// One light's part in shading a point, as the inspector shows it.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LightRecord {
-    /// Index of the light in the scene's light list.
-    pub scene_index: usize,
-    /// L_l(p): the light's strength arriving at the point, before visibility.
-    pub strength: DVec3,
-    /// n.l (may be negative: the light is behind the surface).
-    pub n_dot_l: f64,
-    /// The scene index of the object that blocked the shadow ray, if one did.
-    pub blocked_by: Option<usize>,
-    /// Whether a shadow ray was cast at all.
-    pub shadow_ray_cast: bool,
-    /// The shadow ray, when one was cast.
-    pub shadow_ray: Option<ShadowRay>,
-    /// The diffuse contribution added.
-    pub diffuse: DVec3,
-    /// The specular contribution added.
-    pub specular: DVec3,
-}
-
-/// Receives the numbers behind one traced ray. Every method has an empty default, so the
-/// renderer's [`NoRecorder`] costs nothing.
-pub trait Recorder {
-    /// Whether the recorder wants the calls at all: the shader does the extra work of
-    /// accounting for skipped lights only when it does.
-    const ACTIVE: bool = true;
-    /// A ray at `depth` (0 = primary) hit `hit`.
-    fn hit(&mut self, _depth: u32, _ray: &Ray, _hit: &SurfacePoint) {}
-    /// A ray at `depth` hit nothing and returns `background`.
-    fn miss(&mut self, _depth: u32, _ray: &Ray, _background: DVec3) {}
-    /// The ambient term at `depth`.
-    fn ambient(&mut self, _depth: u32, _colour: DVec3) {}
-    /// A light at a point at `depth` that can reach it (in front of the surface or not).
-    fn light(&mut self, _depth: u32, _record: &LightRecord) {}
-    /// A light passed over at a point at `depth`, and why.
-    fn skipped_light(&mut self, _depth: u32, _skipped: &SkippedLight) {}
-    /// The mirror term at `depth`: `km * reflected` was added.
-    fn reflection(&mut self, _depth: u32, _km: DVec3, _reflected: DVec3) {}
-    /// The colour returned for the ray at `depth`.
-    fn result(&mut self, _depth: u32, _colour: DVec3) {}
-}
-
-/// A recorder that records nothing.
-pub struct NoRecorder;
-
-impl Recorder for NoRecorder {
-    const ACTIVE: bool = false;
-}
 
 /// What one ray of the mirror chain contributes: its own colour (ambient, diffuse and
 /// specular at a hit, the background at a miss) and the weight of the colour its mirror
@@ -93,6 +45,13 @@ impl Bounce {
             km: DVec3::ZERO,
         }
     }
+}
+
+/// Which light a shadow ray goes to, from the hit at which depth of the mirror chain.
+#[derive(Clone, Copy, Debug)]
+struct LightAt {
+    depth: u32,
+    index: usize,
 }
 
 /// Mirror chains up to this long stay on the stack; longer ones spill to the heap.
@@ -142,31 +101,31 @@ impl<'w> Tracer<'w> {
         counts: &mut RayCounts,
         recorder: &mut R,
     ) -> DVec3 {
+        self.trace_primary_from(ray, &mut LiveRays, counts, recorder)
+    }
+
+    /// As [`Self::trace_primary`], each ray answered by `rays` (the world itself, or a
+    /// cache of rays traced before: the shading arithmetic is the same).
+    pub fn trace_primary_from<S: RaySource, R: Recorder>(
+        &self,
+        ray: &Ray,
+        rays: &mut S,
+        counts: &mut RayCounts,
+        recorder: &mut R,
+    ) -> DVec3 {
         counts.primary += 1;
+        if self.view == View::Beauty {
+            return self.radiance(ray, rays, counts, recorder);
+        }
+        let Some(hit) = rays.closest_hit(self.world, 0, ray) else {
+            return DVec3::ZERO;
+        };
         match self.view {
-            View::Beauty => self.radiance(ray, counts, recorder),
-            View::Normal => self
-                .world
-                .intersect(ray, f64::INFINITY)
-                .map_or(DVec3::ZERO, |hit| hit.n * 0.5 + 0.5),
-            View::Depth => self
-                .world
-                .intersect(ray, f64::INFINITY)
-                .map_or(DVec3::ZERO, |hit| {
-                    DVec3::splat(self.depth_range.map_or(1.0, |range| range.grey(hit.t)))
-                }),
-            View::ObjectId => self
-                .world
-                .intersect(ray, f64::INFINITY)
-                .map_or(DVec3::ZERO, |hit| {
-                    object_id_colour(self.world.scene_object(hit.object))
-                }),
-            View::ShadowMask => self
-                .world
-                .intersect(ray, f64::INFINITY)
-                .map_or(DVec3::ZERO, |hit| {
-                    DVec3::splat(self.shadow_mask(&hit, counts))
-                }),
+            View::Normal => hit.n * 0.5 + 0.5,
+            View::Depth => DVec3::splat(self.depth_range.map_or(1.0, |range| range.grey(hit.t))),
+            View::ObjectId => object_id_colour(self.world.scene_object(hit.object)),
+            View::ShadowMask => DVec3::splat(self.shadow_mask(&hit, rays, counts)),
+            View::Beauty => unreachable!("handled above"),
         }
     }
 
@@ -177,8 +136,14 @@ impl<'w> Tracer<'w> {
     /// from the deepest ray as `colour(d) = local(d) + km(d) * colour(d + 1)`. That is the
     /// same arithmetic, and the same recorder calls in the same order, as the recursive
     /// form (a ray's `reflection` and `result` after everything deeper).
-    fn radiance(&self, ray: &Ray, counts: &mut RayCounts, recorder: &mut impl Recorder) -> DVec3 {
-        let (camera_bounce, mirror_ray) = self.shade(ray, 0, &self.primary, counts, recorder);
+    fn radiance(
+        &self,
+        ray: &Ray,
+        rays: &mut impl RaySource,
+        counts: &mut RayCounts,
+        recorder: &mut impl Recorder,
+    ) -> DVec3 {
+        let (camera_bounce, mirror_ray) = self.shade(ray, 0, &self.primary, rays, counts, recorder);
         // Most camera rays meet no mirror: no chain to keep.
         let Some(mut ray) = mirror_ray else {
             recorder.result(0, camera_bounce.local);
@@ -188,7 +153,8 @@ impl<'w> Tracer<'w> {
         chain.push(camera_bounce);
         loop {
             let depth = chain.len() as u32;
-            let (bounce, mirror_ray) = self.shade(&ray, depth, &self.secondary, counts, recorder);
+            let (bounce, mirror_ray) =
+                self.shade(&ray, depth, &self.secondary, rays, counts, recorder);
             chain.push(bounce);
             match mirror_ray {
                 Some(next) => ray = next,
@@ -220,10 +186,11 @@ impl<'w> Tracer<'w> {
         ray: &Ray,
         depth: u32,
         terms: &ActiveTerms,
+        rays: &mut impl RaySource,
         counts: &mut RayCounts,
         recorder: &mut R,
     ) -> (Bounce, Option<Ray>) {
-        let Some(hit) = self.world.intersect(ray, f64::INFINITY) else {
+        let Some(hit) = rays.closest_hit(self.world, depth, ray) else {
             let background = if terms.background {
                 self.world.background
             } else {
@@ -281,7 +248,8 @@ impl<'w> Tracer<'w> {
                 };
                 if n_dot_l > 0.0 {
                     if terms.shadows {
-                        let shadow_ray = self.shadow_ray(&hit, &sample, counts);
+                        let to = LightAt { depth, index };
+                        let shadow_ray = self.shadow_ray(&hit, &sample, to, rays, counts);
                         record.shadow_ray_cast = true;
                         // The recorders see the scene's index of the blocker.
                         let blocked_by = shadow_ray.blocked_by.map(|i| world.scene_object(i));
@@ -335,11 +303,14 @@ impl<'w> Tracer<'w> {
         (Bounce::local(colour), None)
     }
 
-    /// Casts the shadow ray from `hit` to a light: the ray and the blocking object, if any.
+    /// Casts the shadow ray from `hit` (at `to.depth`) to light `to.index`: the ray and
+    /// the blocking object, if any.
     fn shadow_ray(
         &self,
         hit: &SurfacePoint,
         sample: &super::lights::LightSample,
+        to: LightAt,
+        rays: &mut impl RaySource,
         counts: &mut RayCounts,
     ) -> ShadowRay {
         counts.shadow += 1;
@@ -352,19 +323,31 @@ impl<'w> Tracer<'w> {
             Some(position) => spawn_ray_to(hit, position),
             None => (spawn_ray(hit, sample.to_light), f64::INFINITY),
         };
+        let query = ShadowQuery {
+            depth: to.depth,
+            light: to.index,
+            ray: &ray,
+            t_max,
+            except,
+        };
         ShadowRay {
             ray,
             t_max,
-            blocked_by: self.world.occluder_except(&ray, t_max, except),
+            blocked_by: rays.occluder(self.world, &query),
         }
     }
 
     /// Fraction of the lights that reach `hit` (in front, inside any spot cone) whose
     /// shadow ray is clear; 0 where no light reaches.
-    fn shadow_mask(&self, hit: &SurfacePoint, counts: &mut RayCounts) -> f64 {
+    fn shadow_mask(
+        &self,
+        hit: &SurfacePoint,
+        rays: &mut impl RaySource,
+        counts: &mut RayCounts,
+    ) -> f64 {
         let mut reaching = 0u32;
         let mut visible = 0u32;
-        for light in &self.world.lights {
+        for (index, light) in self.world.lights.iter().enumerate() {
             let Some(sample) = light.sample(hit.p) else {
                 continue;
             };
@@ -372,7 +355,13 @@ impl<'w> Tracer<'w> {
                 continue;
             }
             reaching += 1;
-            if !self.primary.shadows || self.shadow_ray(hit, &sample, counts).blocked_by.is_none() {
+            let to = LightAt { depth: 0, index };
+            if !self.primary.shadows
+                || self
+                    .shadow_ray(hit, &sample, to, rays, counts)
+                    .blocked_by
+                    .is_none()
+            {
                 visible += 1;
             }
         }

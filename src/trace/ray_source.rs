@@ -1,0 +1,50 @@
+//! Where the shader's rays get their answers. The shader ([`super::shade::Tracer`]) asks
+//! a [`RaySource`] for the closest hit of each ray of a mirror chain and for the object
+//! blocking each shadow ray; [`LiveRays`] asks the world (the only place the shader's rays
+//! meet [`World::intersect`] and [`World::occluder_except`]), and the hit cache of
+//! [`super::reshade`] answers from rays it traced before. Both feed the one lighting model,
+//! so a re-shaded pixel is the same arithmetic as a traced one.
+
+use super::ray::Ray;
+use super::world::{SurfacePoint, World};
+
+/// A shadow ray the shader needs the answer to.
+#[derive(Clone, Copy, Debug)]
+pub struct ShadowQuery<'r> {
+    /// Depth of the hit it leaves from in the pixel's mirror chain (0 = the camera ray's).
+    pub depth: u32,
+    /// Index of the light in [`World::lights`].
+    pub light: usize,
+    /// The shadow ray, from the hit's offset origin.
+    pub ray: &'r Ray,
+    /// How far it looks.
+    pub t_max: f64,
+    /// The object it cannot meet (the one it leaves on its outer side), if any.
+    pub except: Option<usize>,
+}
+
+/// Answers the shader's ray queries for one pixel sample, in the order the shader asks:
+/// depth 0, then each mirror bounce, a hit's shadow rays before the next bounce.
+pub trait RaySource {
+    /// The closest hit of `ray`, the ray at `depth` of the mirror chain.
+    fn closest_hit(&mut self, world: &World, depth: u32, ray: &Ray) -> Option<SurfacePoint>;
+
+    /// The world index of an object blocking the shadow ray, if any.
+    fn occluder(&mut self, world: &World, query: &ShadowQuery) -> Option<usize>;
+}
+
+/// Traces every ray in the world.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct LiveRays;
+
+impl RaySource for LiveRays {
+    #[inline]
+    fn closest_hit(&mut self, world: &World, _depth: u32, ray: &Ray) -> Option<SurfacePoint> {
+        world.intersect(ray, f64::INFINITY)
+    }
+
+    #[inline]
+    fn occluder(&mut self, world: &World, query: &ShadowQuery) -> Option<usize> {
+        world.occluder_except(query.ray, query.t_max, query.except)
+    }
+}
