@@ -26,6 +26,6 @@ pub use plan::{
     COARSE_MAX_DIVIDER, COARSE_MIN_LONG_SIDE, Pass, coarse_divider, coarse_dividers, plan_passes,
 };
 pub use probe::{Probe, ProbeWork, WorldCache};
-pub use progressive::render_plan;
+pub use progressive::{render_plan, render_plan_cached};
 pub use request::{MAX_PREVIEW_LONG_SIDE, PreviewRequest};
 pub use worker::{OUTBOX_CAPACITY, PreviewWorker, Waker};

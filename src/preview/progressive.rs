@@ -4,6 +4,11 @@
 //! them, so the final frame is bit-identical to a direct render. Each anti-aliasing pass
 //! comes with its estimated remaining error, from the mean of its first half of samples
 //! (the previous pass's picture; the first pass is rendered in two halves for this).
+//!
+//! With a [`HitCache`] the one-sample pass keeps every ray it traced, and a later plan
+//! whose world the cache can serve (an edit that moved no object and not the camera)
+//! skips the coarse passes: its one-sample pass re-shades the cached hits, tracing only
+//! the rays the cache lacks, and is the first frame published.
 
 use std::sync::Arc;
 use std::time::Instant;
@@ -11,6 +16,7 @@ use std::time::Instant;
 use super::convergence::{ConvergenceCurve, estimated_rmse};
 use super::frame::Frame;
 use super::plan::{Pass, plan_passes};
+use crate::trace::{HitCache, MAX_CACHED_PIXELS, render_one_sample_cached};
 use crate::trace::{Image, RayCounts, RenderOptions, RenderProgress, SampleSums, World};
 use crate::trace::{render_samples, render_samples_into};
 
@@ -23,7 +29,27 @@ pub fn render_plan(
     start_pass: &mut dyn FnMut() -> Option<Arc<RenderProgress>>,
     publish: &mut dyn FnMut(Frame),
 ) {
-    let passes = plan_passes(target);
+    render_plan_cached(world, target, &mut None, start_pass, publish);
+}
+
+/// As [`render_plan`], with the rays of the last one-sample pass in `cache`: a plan the
+/// cache can serve starts at the one-sample pass, re-shaded, and every one-sample pass
+/// leaves its rays there for the next plan (`None` above [`MAX_CACHED_PIXELS`]). A
+/// cancelled pass leaves `cache` as it was.
+pub fn render_plan_cached(
+    world: &World,
+    target: &RenderOptions,
+    cache: &mut Option<HitCache>,
+    start_pass: &mut dyn FnMut() -> Option<Arc<RenderProgress>>,
+    publish: &mut dyn FnMut(Frame),
+) {
+    let reshade = cache
+        .as_ref()
+        .is_some_and(|c| c.reuse(world, target.width, target.height).is_reshade());
+    let passes: Vec<Pass> = plan_passes(target)
+        .into_iter()
+        .filter(|pass| !(reshade && matches!(pass, Pass::Coarse { .. })))
+        .collect();
     let mut accumulated = None;
     let mut curve = ConvergenceCurve::default();
     for (index, &pass) in passes.iter().enumerate() {
@@ -31,7 +57,8 @@ pub fn render_plan(
             return;
         };
         let started = Instant::now();
-        let Some(rendered) = render_pass(world, target, pass, &mut accumulated, &progress) else {
+        let Some(rendered) = render_pass(world, target, pass, &mut accumulated, cache, &progress)
+        else {
             return;
         };
         let elapsed = started.elapsed();
@@ -86,10 +113,23 @@ fn render_pass(
     target: &RenderOptions,
     pass: Pass,
     accumulated: &mut Option<Accumulated>,
+    cache: &mut Option<HitCache>,
     progress: &RenderProgress,
 ) -> Option<Rendered> {
     match pass {
+        Pass::Full { target: 1, .. }
+            if target.width as usize * target.height as usize <= MAX_CACHED_PIXELS =>
+        {
+            let cached = render_one_sample_cached(world, target, cache.as_ref(), progress)?;
+            *cache = Some(cached.cache);
+            let sums = cached.sums;
+            Some(Rendered::new(&sums, sums.average(1), sums.rays, None))
+        }
         Pass::Coarse { .. } | Pass::Full { target: 1, .. } => {
+            if matches!(pass, Pass::Full { .. }) {
+                // Too large to cache: let the stale rays go.
+                *cache = None;
+            }
             let (width, height) = pass.size(target.width, target.height);
             let options = RenderOptions {
                 width,
