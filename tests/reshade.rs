@@ -272,6 +272,17 @@ fn muting_and_solo_lights_reshade_and_unmuted_lights_recast_only_their_shadows()
 }
 
 #[test]
+fn lights_added_to_a_scene_without_any_cast_all_their_shadow_rays_only() {
+    let lit = Shot::of(example("default.ron"));
+    let dark = lit.edited(|s, _| s.lights.retain(|l| matches!(l, Light::Ambient { .. })));
+    let passes = edit_chain(&dark, &[lit.clone(), dark.clone()], "lights added, removed");
+    let traced = passes[0].traced;
+    assert_eq!((traced.primary, traced.reflection), (0, 0));
+    assert_eq!(traced.shadow, lit.traced().rays.shadow);
+    assert_eq!(passes[1].traced, NOTHING, "lights removed again");
+}
+
+#[test]
 fn geometry_camera_size_and_hidden_objects_retrace_everything() {
     let base = Shot::of(example("default.ron"));
     let moved_object = base.edited(|s, _| {

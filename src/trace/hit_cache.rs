@@ -16,6 +16,8 @@
 //!   again, and so is every ray the new scene needs that the cache lacks (a mirror made
 //!   shiny, a deeper `max_depth`, a light in front of a surface that was behind it).
 
+use std::sync::Arc;
+
 use glam::{DAffine3, DVec3};
 
 use super::lights::WorldLight;
@@ -97,19 +99,16 @@ pub(super) fn decode_blocker(code: u32) -> Option<usize> {
     (code != CLEAR).then_some(code as usize)
 }
 
-/// The cached rays of one tile's pixels, row-major within the tile.
+/// The mirror chains of one tile's pixels, row-major within the tile.
 #[derive(Clone, Debug, Default)]
-pub(super) struct TileHits {
+pub(super) struct Chains {
     /// End of each pixel's chain in `hits` (a chain starts where the one before ends).
     pub chain_ends: Vec<u32>,
     /// Every chain's entries, depth 0 first.
     pub hits: Vec<CachedHit>,
-    /// Per entry of `hits`, one code per light of the cache (`NOT_CAST`, `CLEAR` or the
-    /// blocker's world index).
-    pub visibility: Vec<u32>,
 }
 
-impl TileHits {
+impl Chains {
     /// The range of `hits` holding pixel `pixel`'s chain.
     pub fn chain(&self, pixel: usize) -> std::ops::Range<usize> {
         let start = pixel
@@ -117,6 +116,17 @@ impl TileHits {
             .map_or(0, |p| self.chain_ends[p] as usize);
         start..self.chain_ends[pixel] as usize
     }
+}
+
+/// The cached rays of one tile. Both parts are shared with the cache before when an edit
+/// left them as they were (most edits add no ray), so a re-shade copies nothing.
+#[derive(Clone, Debug)]
+pub(super) struct TileHits {
+    /// The pixels' mirror chains.
+    pub chains: Arc<Chains>,
+    /// Per entry of `chains.hits`, one code per light of the cache (`NOT_CAST`, `CLEAR`
+    /// or the blocker's world index).
+    pub visibility: Arc<Vec<u32>>,
 }
 
 /// What a traced ray's answer depends on besides the light: the image size, the camera
@@ -264,17 +274,17 @@ impl HitCache {
     /// Rays held (closest hits and misses; shadow answers not counted).
     #[must_use]
     pub fn ray_count(&self) -> usize {
-        self.tiles.iter().map(|t| t.hits.len()).sum()
+        self.tiles.iter().map(|t| t.chains.hits.len()).sum()
     }
 
-    /// Approximate memory held, in bytes.
+    /// Approximate memory held, in bytes (parts shared with another cache included).
     #[must_use]
     pub fn bytes(&self) -> usize {
         self.tiles
             .iter()
             .map(|t| {
-                t.hits.capacity() * size_of::<CachedHit>()
-                    + (t.visibility.capacity() + t.chain_ends.capacity()) * size_of::<u32>()
+                t.chains.hits.capacity() * size_of::<CachedHit>()
+                    + (t.visibility.capacity() + t.chains.chain_ends.capacity()) * size_of::<u32>()
             })
             .sum()
     }

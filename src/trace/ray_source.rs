@@ -10,13 +10,9 @@ use super::world::{SurfacePoint, World};
 
 /// A shadow ray the shader needs the answer to.
 #[derive(Clone, Copy, Debug)]
-pub struct ShadowQuery<'r> {
-    /// Depth of the hit it leaves from in the pixel's mirror chain (0 = the camera ray's).
-    pub depth: u32,
-    /// Index of the light in [`World::lights`].
-    pub light: usize,
+pub struct ShadowQuery {
     /// The shadow ray, from the hit's offset origin.
-    pub ray: &'r Ray,
+    pub ray: Ray,
     /// How far it looks.
     pub t_max: f64,
     /// The object it cannot meet (the one it leaves on its outer side), if any.
@@ -29,8 +25,16 @@ pub trait RaySource {
     /// The closest hit of `ray`, the ray at `depth` of the mirror chain.
     fn closest_hit(&mut self, world: &World, depth: u32, ray: &Ray) -> Option<SurfacePoint>;
 
-    /// The world index of an object blocking the shadow ray, if any.
-    fn occluder(&mut self, world: &World, query: &ShadowQuery) -> Option<usize>;
+    /// The world index of an object blocking the shadow ray from the hit at `depth` to
+    /// light `light` (an index into [`World::lights`]), if any. `query` makes the ray,
+    /// for a source that has to cast it.
+    fn occluder(
+        &mut self,
+        world: &World,
+        depth: u32,
+        light: usize,
+        query: impl FnOnce() -> ShadowQuery,
+    ) -> Option<usize>;
 }
 
 /// Traces every ray in the world.
@@ -44,7 +48,14 @@ impl RaySource for LiveRays {
     }
 
     #[inline]
-    fn occluder(&mut self, world: &World, query: &ShadowQuery) -> Option<usize> {
-        world.occluder_except(query.ray, query.t_max, query.except)
+    fn occluder(
+        &mut self,
+        world: &World,
+        _depth: u32,
+        _light: usize,
+        query: impl FnOnce() -> ShadowQuery,
+    ) -> Option<usize> {
+        let query = query();
+        world.occluder_except(&query.ray, query.t_max, query.except)
     }
 }

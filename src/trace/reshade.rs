@@ -4,13 +4,16 @@
 //! Each pixel's rays are answered by [`PixelRays`]: from the previous cache where it can
 //! serve the world ([`HitCache::reuse`]), by tracing otherwise, and every answer goes
 //! into the new cache (what the old one held and this pass did not need is carried
-//! over, so making a mirror dull and shiny again traces nothing twice). The shading is
+//! over, so making a mirror dull and shiny again traces nothing twice). A tile that
+//! gained nothing shares its rays with the cache before instead of copying them. The shading is
 //! [`Tracer`]'s own, through [`camera_sample`], so the sums are bit for bit those of
 //! [`super::render_samples`] at one sample per pixel.
 
 use super::camera::PinholeCamera;
+use std::sync::Arc;
+
 use super::hit_cache::{
-    CachedHit, HitCache, NOT_CAST, Reuse, TileHits, decode_blocker, encode_blocker,
+    CachedHit, Chains, HitCache, NOT_CAST, Reuse, TileHits, decode_blocker, encode_blocker,
 };
 use super::isolation::assert_compiled_for;
 use super::ray::Ray;
@@ -56,35 +59,17 @@ pub fn render_one_sample_cached(
     let camera = PinholeCamera::new(&world.camera, width, height);
     let tracer = Tracer::new(world, options.switches, options.view);
     let lights = world.lights.len();
-    let new_state = |index: u32, rect: TileRect| TileRays {
-        old: reuse.as_ref().map(|(cache, columns)| OldTile {
-            hits: &cache.tiles[index as usize],
-            lights: cache.light_count(),
-            kept_columns: columns,
-        }),
-        new: TileHits {
-            chain_ends: Vec::with_capacity(rect.pixel_count()),
-            ..TileHits::default()
-        },
-        lights,
-        traced: RayCounts::default(),
+    let new_state = |index: u32, rect: TileRect| match &reuse {
+        Some((cache, columns)) => {
+            TileRays::reading(&cache.tiles[index as usize], cache.light_count(), columns)
+        }
+        None => TileRays::fresh(rect.pixel_count(), lights),
     };
-    let sample = |state: &mut TileRays, px: u32, py: u32, _index: u32, rays: &mut RayCounts| {
-        let start = state.begin_pixel();
-        let mut source = PixelRays {
-            tile: &mut state.new,
-            start,
-            lights,
-            traced: &mut state.traced,
-        };
-        let colour = camera_sample(
-            &tracer,
-            &camera,
-            sample_point(px, py, 0, 1),
-            &mut source,
-            rays,
-        );
-        state.new.chain_ends.push(state.new.hits.len() as u32);
+    let sample = |tile: &mut TileRays, px: u32, py: u32, _index: u32, rays: &mut RayCounts| {
+        tile.begin_pixel();
+        let point = sample_point(px, py, 0, 1);
+        let colour = camera_sample(&tracer, &camera, point, &mut PixelRays { tile }, rays);
+        tile.end_pixel();
         colour
     };
     let mut sums = SampleSums::zero(width, height);
@@ -95,7 +80,7 @@ pub fn render_one_sample_cached(
         .into_iter()
         .map(|state| {
             traced.add(&state.traced);
-            state.new
+            state.finish()
         })
         .collect();
     Some(CachedPass {
@@ -106,85 +91,185 @@ pub fn render_one_sample_cached(
     })
 }
 
-/// The previous cache's rays of one tile, and which of its light columns still hold.
-struct OldTile<'c> {
-    hits: &'c TileHits,
-    lights: usize,
-    kept_columns: &'c [Option<usize>],
-}
-
-/// One tile's state during the pass: the old rays to read, the new ones being written.
-struct TileRays<'c> {
-    old: Option<OldTile<'c>>,
-    new: TileHits,
+/// One tile's rays during the pass. It reads the previous cache's chains in place, shared,
+/// until a pixel needs a ray the cache lacks; from then on the tile's chains are rebuilt
+/// (the pixels before copied at once, each later one as it comes). Shadow answers are
+/// written into the shared visibility on first change (copied once per tile).
+struct TileRays {
+    chains: Arc<Chains>,
+    visibility: Arc<Vec<u32>>,
+    /// The rebuilt chains and visibility, once one chain had to grow.
+    grown: Option<(Chains, Vec<u32>)>,
+    /// The pixel being shaded, row-major within the tile.
+    pixel: usize,
     lights: usize,
     traced: RayCounts,
 }
 
-impl TileRays<'_> {
-    /// Starts the next pixel (they come row-major within the tile): copies its old
-    /// chain, shadow answers of the lights that kept them, into the new cache, and
-    /// returns where the chain starts there.
-    fn begin_pixel(&mut self) -> usize {
-        let start = self.new.hits.len();
-        let pixel = self.new.chain_ends.len();
-        if let Some(old) = &self.old {
-            let chain = old.hits.chain(pixel);
-            for entry in chain {
-                self.new.hits.push(old.hits.hits[entry]);
-                let row = &old.hits.visibility[entry * old.lights..(entry + 1) * old.lights];
-                self.new.visibility.extend(
-                    old.kept_columns
-                        .iter()
-                        .map(|column| column.map_or(NOT_CAST, |c| row[c])),
-                );
-            }
+impl TileRays {
+    /// Reading `old`, traced with `old_lights` lights, for a world whose light `i` keeps
+    /// the old column `kept_columns[i]` of shadow answers (`None`: cast again).
+    fn reading(old: &TileHits, old_lights: usize, kept_columns: &[Option<usize>]) -> Self {
+        let same_lights = kept_columns.len() == old_lights
+            && kept_columns.iter().enumerate().all(|(i, c)| *c == Some(i));
+        let visibility = if same_lights {
+            Arc::clone(&old.visibility)
+        } else {
+            // Entry by entry, not chunks of the old rows: the old world may have had no
+            // light at all.
+            let remapped = (0..old.chains.hits.len()).flat_map(|entry| {
+                let row = &old.visibility[entry * old_lights..(entry + 1) * old_lights];
+                kept_columns
+                    .iter()
+                    .map(|column| column.map_or(NOT_CAST, |c| row[c]))
+            });
+            Arc::new(remapped.collect())
+        };
+        Self {
+            chains: Arc::clone(&old.chains),
+            visibility,
+            grown: None,
+            pixel: 0,
+            lights: kept_columns.len(),
+            traced: RayCounts::default(),
         }
-        debug_assert_eq!(self.new.visibility.len(), self.new.hits.len() * self.lights);
-        start
+    }
+
+    /// A tile with nothing cached, for a world with `lights` lights.
+    fn fresh(pixels: usize, lights: usize) -> Self {
+        let nothing = Chains {
+            chain_ends: vec![0; pixels],
+            hits: Vec::new(),
+        };
+        let growing = Chains {
+            chain_ends: Vec::with_capacity(pixels),
+            hits: Vec::with_capacity(pixels),
+        };
+        Self {
+            chains: Arc::new(nothing),
+            visibility: Arc::new(Vec::new()),
+            grown: Some((growing, Vec::with_capacity(pixels * lights))),
+            pixel: 0,
+            lights,
+            traced: RayCounts::default(),
+        }
+    }
+
+    /// Starts the next pixel: once rebuilding, copies its cached chain across.
+    fn begin_pixel(&mut self) {
+        if let Some((chains, visibility)) = &mut self.grown {
+            let chain = self.chains.chain(self.pixel);
+            let lights = self.lights;
+            visibility
+                .extend_from_slice(&self.visibility[chain.start * lights..chain.end * lights]);
+            chains.hits.extend_from_slice(&self.chains.hits[chain]);
+        }
+    }
+
+    /// Ends the pixel.
+    fn end_pixel(&mut self) {
+        if let Some((chains, _)) = &mut self.grown {
+            chains.chain_ends.push(chains.hits.len() as u32);
+        }
+        self.pixel += 1;
+    }
+
+    /// Where the current pixel's chain is, in the chains read or rebuilt.
+    fn chain(&self) -> std::ops::Range<usize> {
+        match &self.grown {
+            Some((chains, _)) => {
+                let start = chains.chain_ends.last().map_or(0, |&end| end as usize);
+                start..chains.hits.len()
+            }
+            None => self.chains.chain(self.pixel),
+        }
+    }
+
+    /// Starts rebuilding, copying every chain up to and including the current pixel's.
+    fn grow(&mut self) -> &mut (Chains, Vec<u32>) {
+        let (pixel, lights) = (self.pixel, self.lights);
+        let (chains, visibility) = (&self.chains, &self.visibility);
+        self.grown.get_or_insert_with(|| {
+            let end = chains.chain(pixel).end;
+            let mut hits = Vec::with_capacity(chains.hits.len() + chains.chain_ends.len() / 4);
+            hits.extend_from_slice(&chains.hits[..end]);
+            let copied = Chains {
+                chain_ends: chains.chain_ends[..pixel].to_vec(),
+                hits,
+            };
+            (copied, visibility[..end * lights].to_vec())
+        })
+    }
+
+    /// The tile's rays for the new cache.
+    fn finish(self) -> TileHits {
+        match self.grown {
+            Some((chains, visibility)) => TileHits {
+                chains: Arc::new(chains),
+                visibility: Arc::new(visibility),
+            },
+            None => TileHits {
+                chains: self.chains,
+                visibility: self.visibility,
+            },
+        }
     }
 }
 
-/// Answers one pixel's rays from its chain in the new cache, tracing (and appending)
-/// whatever the chain lacks.
+/// Answers one pixel's rays from its tile, tracing (and keeping) whatever it lacks.
 struct PixelRays<'t> {
-    tile: &'t mut TileHits,
-    /// Where the pixel's chain starts in `tile.hits`.
-    start: usize,
-    lights: usize,
-    traced: &'t mut RayCounts,
+    tile: &'t mut TileRays,
 }
 
 impl RaySource for PixelRays<'_> {
     fn closest_hit(&mut self, world: &World, depth: u32, ray: &Ray) -> Option<SurfacePoint> {
-        let entry = self.start + depth as usize;
-        if let Some(cached) = self.tile.hits.get(entry) {
-            return cached.point();
+        let chain = self.tile.chain();
+        let depth = depth as usize;
+        if depth < chain.len() {
+            let hits = match &self.tile.grown {
+                Some((chains, _)) => &chains.hits,
+                None => &self.tile.chains.hits,
+            };
+            return hits[chain.start + depth].point();
         }
         // The chain is walked depth by depth: the missing entry is the next one.
-        debug_assert_eq!(entry, self.tile.hits.len());
+        debug_assert_eq!(depth, chain.len());
         if depth == 0 {
-            self.traced.primary += 1;
+            self.tile.traced.primary += 1;
         } else {
-            self.traced.reflection += 1;
+            self.tile.traced.reflection += 1;
         }
-        let hit = LiveRays.closest_hit(world, depth, ray);
-        self.tile.hits.push(CachedHit::new(hit.as_ref()));
-        self.tile
-            .visibility
-            .extend(std::iter::repeat_n(NOT_CAST, self.lights));
+        let hit = LiveRays.closest_hit(world, depth as u32, ray);
+        let lights = self.tile.lights;
+        let (chains, visibility) = self.tile.grow();
+        chains.hits.push(CachedHit::new(hit.as_ref()));
+        visibility.extend(std::iter::repeat_n(NOT_CAST, lights));
         hit
     }
 
-    fn occluder(&mut self, world: &World, query: &ShadowQuery) -> Option<usize> {
-        let slot = (self.start + query.depth as usize) * self.lights + query.light;
-        let code = self.tile.visibility[slot];
+    fn occluder(
+        &mut self,
+        world: &World,
+        depth: u32,
+        light: usize,
+        query: impl FnOnce() -> ShadowQuery,
+    ) -> Option<usize> {
+        let slot = (self.tile.chain().start + depth as usize) * self.tile.lights + light;
+        let code = match &self.tile.grown {
+            Some((_, visibility)) => visibility[slot],
+            None => self.tile.visibility[slot],
+        };
         if code != NOT_CAST {
             return decode_blocker(code);
         }
-        self.traced.shadow += 1;
-        let blocked_by = LiveRays.occluder(world, query);
-        self.tile.visibility[slot] = encode_blocker(blocked_by);
+        self.tile.traced.shadow += 1;
+        let blocked_by = LiveRays.occluder(world, depth, light, query);
+        let code = encode_blocker(blocked_by);
+        match &mut self.tile.grown {
+            Some((_, visibility)) => visibility[slot] = code,
+            // Copied once per tile, while the cache before still holds the original.
+            None => Arc::make_mut(&mut self.tile.visibility)[slot] = code,
+        }
         blocked_by
     }
 }

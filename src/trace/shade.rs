@@ -17,6 +17,7 @@ use glam::DVec3;
 use smallvec::SmallVec;
 
 use super::depth_view::DepthRange;
+use super::lights::LightSample;
 pub use super::object_id::object_id_colour;
 use super::phong::LocalLight;
 use super::ray::Ray;
@@ -249,15 +250,20 @@ impl<'w> Tracer<'w> {
                 if n_dot_l > 0.0 {
                     if terms.shadows {
                         let to = LightAt { depth, index };
-                        let shadow_ray = self.shadow_ray(&hit, &sample, to, rays, counts);
+                        let blocker = self.shadow_blocker(&hit, &sample, to, rays, counts);
                         record.shadow_ray_cast = true;
                         // The recorders see the scene's index of the blocker.
-                        let blocked_by = shadow_ray.blocked_by.map(|i| world.scene_object(i));
+                        let blocked_by = blocker.map(|i| world.scene_object(i));
                         record.blocked_by = blocked_by;
-                        record.shadow_ray = Some(ShadowRay {
-                            blocked_by,
-                            ..shadow_ray
-                        });
+                        if R::ACTIVE {
+                            // The same ray again (spawning is deterministic), for them.
+                            let query = self.shadow_query(&hit, &sample);
+                            record.shadow_ray = Some(ShadowRay {
+                                ray: query.ray,
+                                t_max: query.t_max,
+                                blocked_by,
+                            });
+                        }
                     }
                     if record.blocked_by.is_none() {
                         let local = LocalLight {
@@ -303,17 +309,26 @@ impl<'w> Tracer<'w> {
         (Bounce::local(colour), None)
     }
 
-    /// Casts the shadow ray from `hit` (at `to.depth`) to light `to.index`: the ray and
-    /// the blocking object, if any.
-    fn shadow_ray(
+    /// The object blocking the shadow ray from `hit` (at `to.depth`) to light
+    /// `to.index`, if any. The ray itself is made only if `rays` has to cast it.
+    #[inline]
+    fn shadow_blocker(
         &self,
         hit: &SurfacePoint,
-        sample: &super::lights::LightSample,
+        sample: &LightSample,
         to: LightAt,
         rays: &mut impl RaySource,
         counts: &mut RayCounts,
-    ) -> ShadowRay {
+    ) -> Option<usize> {
         counts.shadow += 1;
+        rays.occluder(self.world, to.depth, to.index, || {
+            self.shadow_query(hit, sample)
+        })
+    }
+
+    /// The shadow ray from `hit` to the light of `sample`.
+    #[inline]
+    fn shadow_query(&self, hit: &SurfacePoint, sample: &LightSample) -> ShadowQuery {
         // Every shape is convex or flat: a shadow ray leaving a solid on its outer side,
         // or leaving a plane, cannot meet the surface it starts on.
         let leaves_outward = self.world.objects[hit.object].shape == crate::scene::Shape::Plane
@@ -323,18 +338,7 @@ impl<'w> Tracer<'w> {
             Some(position) => spawn_ray_to(hit, position),
             None => (spawn_ray(hit, sample.to_light), f64::INFINITY),
         };
-        let query = ShadowQuery {
-            depth: to.depth,
-            light: to.index,
-            ray: &ray,
-            t_max,
-            except,
-        };
-        ShadowRay {
-            ray,
-            t_max,
-            blocked_by: rays.occluder(self.world, &query),
-        }
+        ShadowQuery { ray, t_max, except }
     }
 
     /// Fraction of the lights that reach `hit` (in front, inside any spot cone) whose
@@ -358,8 +362,7 @@ impl<'w> Tracer<'w> {
             let to = LightAt { depth: 0, index };
             if !self.primary.shadows
                 || self
-                    .shadow_ray(hit, &sample, to, rays, counts)
-                    .blocked_by
+                    .shadow_blocker(hit, &sample, to, rays, counts)
                     .is_none()
             {
                 visible += 1;
