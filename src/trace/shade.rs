@@ -237,35 +237,16 @@ impl<'w> Tracer<'w> {
                     continue;
                 };
                 let n_dot_l = hit.n.dot(sample.to_light);
-                let mut record = LightRecord {
-                    scene_index: world.light_scene_index[index],
-                    strength: sample.radiance,
-                    n_dot_l,
-                    blocked_by: None,
-                    shadow_ray_cast: false,
-                    shadow_ray: None,
-                    diffuse: DVec3::ZERO,
-                    specular: DVec3::ZERO,
-                };
+                // Plain locals on the hot path; the record is built only for a recorder.
+                let (mut cast, mut blocker) = (false, None);
+                let (mut diffuse, mut specular) = (DVec3::ZERO, DVec3::ZERO);
                 if n_dot_l > 0.0 {
                     if terms.shadows {
                         let to = LightAt { depth, index };
-                        let blocker = self.shadow_blocker(&hit, &sample, to, rays, counts);
-                        record.shadow_ray_cast = true;
-                        // The recorders see the scene's index of the blocker.
-                        let blocked_by = blocker.map(|i| world.scene_object(i));
-                        record.blocked_by = blocked_by;
-                        if R::ACTIVE {
-                            // The same ray again (spawning is deterministic), for them.
-                            let query = self.shadow_query(&hit, &sample);
-                            record.shadow_ray = Some(ShadowRay {
-                                ray: query.ray,
-                                t_max: query.t_max,
-                                blocked_by,
-                            });
-                        }
+                        blocker = self.shadow_blocker(&hit, &sample, to, rays, counts);
+                        cast = true;
                     }
-                    if record.blocked_by.is_none() {
+                    if blocker.is_none() {
                         let local = LocalLight {
                             n: hit.n,
                             to_light: sample.to_light,
@@ -273,16 +254,39 @@ impl<'w> Tracer<'w> {
                             strength: sample.radiance,
                         };
                         if terms.diffuse {
-                            record.diffuse = local.diffuse(material.diffuse, n_dot_l);
+                            diffuse = local.diffuse(material.diffuse, n_dot_l);
                         }
                         if terms.specular {
-                            record.specular =
+                            specular =
                                 local.specular(material.specular, material.shininess, n_dot_l);
                         }
-                        colour += record.diffuse + record.specular;
+                        colour += diffuse + specular;
                     }
                 }
-                recorder.light(depth, &record);
+                if R::ACTIVE {
+                    // The recorders see the scene's index of the blocker, and the shadow
+                    // ray made again (spawning is deterministic).
+                    let blocked_by = blocker.map(|i| world.scene_object(i));
+                    let shadow_ray = cast.then(|| {
+                        let query = self.shadow_query(&hit, &sample);
+                        ShadowRay {
+                            ray: query.ray,
+                            t_max: query.t_max,
+                            blocked_by,
+                        }
+                    });
+                    let record = LightRecord {
+                        scene_index: world.light_scene_index[index],
+                        strength: sample.radiance,
+                        n_dot_l,
+                        blocked_by,
+                        shadow_ray_cast: cast,
+                        shadow_ray,
+                        diffuse,
+                        specular,
+                    };
+                    recorder.light(depth, &record);
+                }
             }
         } else if R::ACTIVE {
             let why = if has_local {
