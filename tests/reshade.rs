@@ -191,6 +191,23 @@ fn a_material_made_shiny_or_lit_traces_only_the_rays_it_now_needs() {
     assert_eq!(traced.shadow, more, "exactly gold's shadow rays");
 }
 
+#[test]
+fn a_material_edit_shades_only_the_pixels_whose_rays_meet_that_material() {
+    let base = Shot::of(example("default.ron"));
+    let all = 64 * 48;
+    let redder = base.edited(|s, _| {
+        s.materials.get_mut("red plastic").unwrap().diffuse.x = 0.95;
+    });
+    let passes = edit_chain(&base, &[redder, base.clone()], "red plastic and back");
+    for pass in &passes {
+        // The red ball and its reflections, not the floor, the sky or the other balls.
+        assert!(pass.shaded_pixels > 0 && pass.shaded_pixels < all / 4);
+    }
+    let switched = base.edited(|_, o| o.switches.set(Term::Ambient, false));
+    let passes = edit_chain(&base, &[switched], "ambient off");
+    assert_eq!(passes[0].shaded_pixels, all, "a switch shades every pixel");
+}
+
 /// The shadow rays `shot` casts towards scene light `light` (those of the others do not
 /// change when it is muted).
 fn shadow_rays_of(shot: &Shot, light: usize) -> u64 {

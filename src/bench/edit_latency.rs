@@ -16,7 +16,7 @@ use crate::trace::Term;
 /// Median milliseconds from an edit's submit to its first full-resolution frame.
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct EditLatency {
-    /// A material's diffuse colour changed.
+    /// The diffuse colour of the first object's material changed.
     pub material: f64,
     /// The specular term switched off or on.
     pub switch: f64,
@@ -45,7 +45,11 @@ fn apply(kind: EditKind, request: &mut PreviewRequest, flip: bool) -> Result<(),
     let sign = if flip { 1.0 } else { -1.0 };
     match kind {
         EditKind::Material => {
-            let material = scene.materials.values_mut().next().ok_or("no material")?;
+            // The first object's material (the default scene's floor, under half the
+            // picture and in every mirror): a material edit re-shades only the pixels
+            // whose rays meet it.
+            let name = scene.objects.first().ok_or("no object")?.material.clone();
+            let material = scene.materials.get_mut(&name).ok_or("no material")?;
             material.diffuse = if flip {
                 DVec3::new(0.8, 0.3, 0.2)
             } else {

@@ -21,8 +21,10 @@ use std::sync::Arc;
 use glam::{DAffine3, DVec3};
 
 use super::lights::WorldLight;
+use super::render::RenderOptions;
+use super::terms::{TermSwitches, View};
 use super::world::{SurfacePoint, World};
-use crate::scene::{Camera, Shape};
+use crate::scene::{Camera, Material, Shape};
 
 /// The largest image the preview keeps a cache for: about 100 bytes a cached ray, so
 /// 1280 x 1024 is some 150 MB with a few mirrors; larger previews re-trace every edit.
@@ -68,6 +70,11 @@ impl CachedHit {
                 flipped: false,
             },
         }
+    }
+
+    /// The world index of the object hit; `None` for a miss.
+    pub fn object(&self) -> Option<usize> {
+        (self.object != u32::MAX).then_some(self.object as usize)
     }
 
     /// The hit again, bit for bit; `None` for a miss.
@@ -118,7 +125,17 @@ impl Chains {
     }
 }
 
-/// The cached rays of one tile. Both parts are shared with the cache before when an edit
+/// A pixel's colour in the pass that filled the cache (as the shader returned it, maybe
+/// non-finite), and the rays it is made of: kept for a pixel no edit could change.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct PixelColour {
+    /// The colour.
+    pub colour: DVec3,
+    /// Primary, shadow and reflection rays behind it.
+    pub rays: [u32; 3],
+}
+
+/// The cached rays of one tile. The chains and visibility are shared with the cache before when an edit
 /// left them as they were (most edits add no ray), so a re-shade copies nothing.
 #[derive(Clone, Debug)]
 pub(super) struct TileHits {
@@ -127,6 +144,43 @@ pub(super) struct TileHits {
     /// Per entry of `chains.hits`, one code per light of the cache (`NOT_CAST`, `CLEAR`
     /// or the blocker's world index).
     pub visibility: Arc<Vec<u32>>,
+    /// Each pixel's colour, row-major within the tile.
+    pub colours: Arc<Vec<PixelColour>>,
+}
+
+/// Everything the shader reads besides the rays and the objects' materials: with all of
+/// it unchanged, a pixel whose rays meet no object with a changed material keeps its
+/// colour.
+#[derive(Clone, Debug, PartialEq)]
+struct Shading {
+    switches: TermSwitches,
+    view: View,
+    lights: Vec<WorldLight>,
+    ambient: DVec3,
+    background: DVec3,
+    max_depth: u32,
+}
+
+impl Shading {
+    fn of(world: &World, options: &RenderOptions) -> Self {
+        Self {
+            switches: options.switches,
+            view: options.view,
+            lights: world.lights.clone(),
+            ambient: world.ambient,
+            background: world.background,
+            max_depth: world.max_depth,
+        }
+    }
+}
+
+/// Each object's material, by world object index.
+fn object_materials(world: &World) -> Vec<Material> {
+    world
+        .objects
+        .iter()
+        .map(|o| world.materials[o.material].clone())
+        .collect()
 }
 
 /// What a traced ray's answer depends on besides the light: the image size, the camera
@@ -228,17 +282,42 @@ pub struct HitCache {
     /// Per light of the world it was traced in, its shadow target: the column of
     /// shadow answers serves any light with the same target, whatever its index.
     lights: Vec<ShadowTarget>,
+    /// What the cached colours were shaded with.
+    shading: Shading,
+    object_materials: Vec<Material>,
     pub(super) tiles: Vec<TileHits>,
 }
 
 impl HitCache {
-    /// A cache of `tiles` traced in `world` at `width` x `height`.
-    pub(super) fn new(world: &World, width: u32, height: u32, tiles: Vec<TileHits>) -> Self {
+    /// A cache of `tiles` traced and shaded in `world` with `options`.
+    pub(super) fn new(world: &World, options: &RenderOptions, tiles: Vec<TileHits>) -> Self {
         Self {
-            geometry: RayGeometry::of(world, width, height),
+            geometry: RayGeometry::of(world, options.width, options.height),
             lights: world.lights.iter().map(ShadowTarget::of).collect(),
+            shading: Shading::of(world, options),
+            object_materials: object_materials(world),
             tiles,
         }
+    }
+
+    /// For a world this cache can serve ([`Self::reuse`]): per object, whether its
+    /// material differs from the one the cached colours were shaded with; `None` when
+    /// anything else the shader reads changed, and every pixel must be shaded again.
+    pub(super) fn changed_objects(
+        &self,
+        world: &World,
+        options: &RenderOptions,
+    ) -> Option<Vec<bool>> {
+        if Shading::of(world, options) != self.shading {
+            return None;
+        }
+        let now = object_materials(world);
+        (now.len() == self.object_materials.len()).then(|| {
+            now.iter()
+                .zip(&self.object_materials)
+                .map(|(a, b)| a != b)
+                .collect()
+        })
     }
 
     /// Lights per cached entry (the visibility columns).

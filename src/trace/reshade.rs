@@ -13,7 +13,8 @@ use super::camera::PinholeCamera;
 use std::sync::Arc;
 
 use super::hit_cache::{
-    CachedHit, Chains, HitCache, NOT_CAST, Reuse, TileHits, decode_blocker, encode_blocker,
+    CachedHit, Chains, HitCache, NOT_CAST, PixelColour, Reuse, TileHits, decode_blocker,
+    encode_blocker,
 };
 use super::isolation::assert_compiled_for;
 use super::ray::Ray;
@@ -31,6 +32,9 @@ pub struct CachedPass {
     pub sums: SampleSums,
     /// The rays this pass actually traced (the rest came from the previous cache).
     pub traced: RayCounts,
+    /// Pixels shaded (the others kept their colour: no ray of theirs meets an object
+    /// whose material changed, and nothing else the shader reads did).
+    pub shaded_pixels: u64,
     /// Whether the previous cache served this pass.
     pub reused: bool,
     /// Every ray of this pass and those carried over, for the next edit.
@@ -59,6 +63,11 @@ pub fn render_one_sample_cached(
     let camera = PinholeCamera::new(&world.camera, width, height);
     let tracer = Tracer::new(world, options.switches, options.view);
     let lights = world.lights.len();
+    // Only materials changed (or nothing): pixels whose rays meet none of the objects
+    // whose material changed keep their colour.
+    let changed = reuse
+        .as_ref()
+        .and_then(|(cache, _)| cache.changed_objects(world, options));
     let new_state = |index: u32, rect: TileRect| match &reuse {
         Some((cache, columns)) => {
             TileRays::reading(&cache.tiles[index as usize], cache.light_count(), columns)
@@ -67,27 +76,46 @@ pub fn render_one_sample_cached(
     };
     let sample = |tile: &mut TileRays, px: u32, py: u32, _index: u32, rays: &mut RayCounts| {
         tile.begin_pixel();
-        let point = sample_point(px, py, 0, 1);
-        let colour = camera_sample(&tracer, &camera, point, &mut PixelRays { tile }, rays);
-        tile.end_pixel();
+        let kept = changed.as_deref().and_then(|c| tile.unchanged_colour(c));
+        let (colour, pixel_rays) = match kept {
+            Some(kept) => (kept.colour, kept.rays.map(u64::from)),
+            None => {
+                tile.shaded += 1;
+                let point = sample_point(px, py, 0, 1);
+                let mut own = RayCounts::default();
+                let source = &mut PixelRays { tile: &mut *tile };
+                let colour = camera_sample(&tracer, &camera, point, source, &mut own);
+                (colour, [own.primary, own.shadow, own.reflection])
+            }
+        };
+        rays.primary += pixel_rays[0];
+        rays.shadow += pixel_rays[1];
+        rays.reflection += pixel_rays[2];
+        tile.end_pixel(PixelColour {
+            colour,
+            rays: pixel_rays.map(|n| u32::try_from(n).unwrap_or(u32::MAX)),
+        });
         colour
     };
     let mut sums = SampleSums::zero(width, height);
     let (_, states) = render_tiles_with(&mut sums, 0..1, progress, new_state, &sample)?;
     debug_assert_eq!(states.len(), tile_count(width, height) as usize);
     let mut traced = RayCounts::default();
+    let mut shaded_pixels = 0;
     let tiles = states
         .into_iter()
         .map(|state| {
             traced.add(&state.traced);
+            shaded_pixels += state.shaded;
             state.finish()
         })
         .collect();
     Some(CachedPass {
         sums,
         traced,
+        shaded_pixels,
         reused: reuse.is_some(),
-        cache: HitCache::new(world, width, height, tiles),
+        cache: HitCache::new(world, options, tiles),
     })
 }
 
@@ -100,6 +128,11 @@ struct TileRays {
     visibility: Arc<Vec<u32>>,
     /// The rebuilt chains and visibility, once one chain had to grow.
     grown: Option<(Chains, Vec<u32>)>,
+    /// The pixels' colours in the cache read (none for a fresh tile), and in this pass.
+    old_colours: Option<Arc<Vec<PixelColour>>>,
+    colours: Vec<PixelColour>,
+    /// Pixels shaded so far.
+    shaded: u64,
     /// The pixel being shaded, row-major within the tile.
     pixel: usize,
     lights: usize,
@@ -129,6 +162,9 @@ impl TileRays {
             chains: Arc::clone(&old.chains),
             visibility,
             grown: None,
+            old_colours: Some(Arc::clone(&old.colours)),
+            colours: Vec::with_capacity(old.colours.len()),
+            shaded: 0,
             pixel: 0,
             lights: kept_columns.len(),
             traced: RayCounts::default(),
@@ -149,6 +185,9 @@ impl TileRays {
             chains: Arc::new(nothing),
             visibility: Arc::new(Vec::new()),
             grown: Some((growing, Vec::with_capacity(pixels * lights))),
+            old_colours: None,
+            colours: Vec::with_capacity(pixels),
+            shaded: 0,
             pixel: 0,
             lights,
             traced: RayCounts::default(),
@@ -166,11 +205,26 @@ impl TileRays {
         }
     }
 
-    /// Ends the pixel.
-    fn end_pixel(&mut self) {
+    /// The current pixel's cached colour, if none of its rays meets an object with
+    /// `changed[object]` set (and so its rays and colour are what they were).
+    fn unchanged_colour(&self, changed: &[bool]) -> Option<PixelColour> {
+        let old = self.old_colours.as_ref()?;
+        let hits = match &self.grown {
+            Some((chains, _)) => &chains.hits,
+            None => &self.chains.hits,
+        };
+        let touched = hits[self.chain()]
+            .iter()
+            .any(|hit| hit.object().is_some_and(|o| changed[o]));
+        (!touched).then(|| old[self.pixel])
+    }
+
+    /// Ends the pixel, which came out `colour`.
+    fn end_pixel(&mut self, colour: PixelColour) {
         if let Some((chains, _)) = &mut self.grown {
             chains.chain_ends.push(chains.hits.len() as u32);
         }
+        self.colours.push(colour);
         self.pixel += 1;
     }
 
@@ -207,10 +261,12 @@ impl TileRays {
             Some((chains, visibility)) => TileHits {
                 chains: Arc::new(chains),
                 visibility: Arc::new(visibility),
+                colours: Arc::new(self.colours),
             },
             None => TileHits {
                 chains: self.chains,
                 visibility: self.visibility,
+                colours: Arc::new(self.colours),
             },
         }
     }
