@@ -183,7 +183,7 @@ fn a_material_made_shiny_or_lit_traces_only_the_rays_it_now_needs() {
         gold.diffuse = DVec3::ZERO;
         gold.specular = DVec3::ZERO;
     });
-    let passes = edit_chain(&dull, &[base.clone()], "gold lit again");
+    let passes = edit_chain(&dull, std::slice::from_ref(&base), "gold lit again");
     let traced = passes[0].traced;
     assert_eq!((traced.primary, traced.reflection), (0, 0));
     let more = base.traced().rays.shadow - dull.traced().rays.shadow;
@@ -252,7 +252,7 @@ fn a_wider_spot_cone_casts_the_shadow_rays_it_now_needs() {
             }
         }
     });
-    let passes = edit_chain(&base, &[wider.clone()], "spot 22 -> 60 degrees");
+    let passes = edit_chain(&base, std::slice::from_ref(&wider), "spot 22 -> 60 degrees");
     let traced = passes[0].traced;
     assert_eq!((traced.primary, traced.reflection), (0, 0));
     assert_eq!(
