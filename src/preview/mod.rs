@@ -1,8 +1,10 @@
 //! The background preview worker: the editor sends immutable scene snapshots, each with a
 //! generation number; a worker thread renders them progressively (a coarse pass, then
 //! full resolution at one sample, then accumulated anti-aliasing samples) and publishes
-//! each finished pass as `(generation, frame)`. No egui types here: the UI passes a waker
-//! closure and polls [`PreviewWorker::latest`].
+//! each finished pass as `(generation, frame)`. An edit that moves no object and not the
+//! camera re-shades the previous one-sample pass's cached hits and starts at full
+//! resolution. No egui types here: the UI passes a waker closure and polls
+//! [`PreviewWorker::latest`].
 //!
 //! Ordering guarantee: once a submit returns, no frame of an older generation can be
 //! taken, and the running pass stops within one batch of samples per tile. A panic while

@@ -5,6 +5,9 @@
 //! taken. The outbox keeps at most [`OUTBOX_CAPACITY`] messages, dropping the oldest: a
 //! window that does not poll (minimised) does not buffer a whole plan, and since every
 //! frame carries its generation's convergence curve nothing is lost but older pictures.
+//!
+//! Between requests the thread keeps the hit cache of the last one-sample pass, so an
+//! edit that moves nothing re-shades instead of re-tracing ([`super::render_plan_cached`]).
 
 use std::collections::VecDeque;
 use std::sync::{Arc, Condvar, Mutex, MutexGuard};

@@ -26,8 +26,9 @@ use super::terms::{TermSwitches, View};
 use super::world::{SurfacePoint, World};
 use crate::scene::{Camera, Material, Shape};
 
-/// The largest image the preview keeps a cache for: about 100 bytes a cached ray, so
-/// 1280 x 1024 is some 150 MB with a few mirrors; larger previews re-trace every edit.
+/// The largest image the preview keeps a cache for: about 100 bytes a cached ray and 36
+/// a pixel, so 1280 x 1024 is some 180 MB with a few mirrors; larger previews re-trace
+/// every edit.
 pub const MAX_CACHED_PIXELS: usize = 1280 * 1024;
 
 /// A shadow ray the shader did not cast at that hit.
