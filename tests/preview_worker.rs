@@ -130,6 +130,9 @@ fn after_a_submit_the_next_frame_carries_the_new_generation() {
     until_final(&mut worker, 1);
     let mut edited = small_scene(320, 240, 1);
     edited.render.background = glam::DVec3::new(1.0, 0.0, 0.0);
+    // With the camera moved too: an edit that moves nothing re-shades, full resolution
+    // first (tests/preview_worker_reshade.rs).
+    edited.camera.fov_deg += 1.0;
     worker.submit(PreviewRequest::for_scene(2, edited));
     let message = next(&mut worker);
     assert_eq!(message.generation, 2);

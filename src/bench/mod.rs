@@ -4,6 +4,7 @@
 pub mod convergence;
 pub mod crossover;
 pub mod diff;
+pub mod edit_latency;
 pub mod plot;
 pub mod precision;
 pub mod throughput;
@@ -14,6 +15,7 @@ use serde::Serialize;
 
 pub use convergence::{CurveChecks, CurvePoint, convergence_curves, curve_checks};
 pub use crossover::{CrossoverPoint, bvh_crossover};
+pub use edit_latency::{EditLatency, edit_latency};
 pub use precision::{PrecisionCost, precision_cost};
 pub use throughput::{SceneThroughput, scene_throughput};
 
@@ -35,6 +37,10 @@ pub struct BenchReport {
     /// Edit submitted midway through the last pass to the first frame of the edit, by the
     /// scene's samples per pixel ("16", "4096"), through the preview worker.
     pub restart_latency_ms: BTreeMap<String, f64>,
+    /// Edit to first full-resolution frame by kind of edit, default scene at 800x600,
+    /// through the preview worker: material, switch and light colour edits re-shade
+    /// cached hits, a moved light re-casts its shadow rays, geometry re-traces.
+    pub edit_to_full_frame_ms: EditLatency,
     /// Per example scene.
     pub scenes: Vec<SceneThroughput>,
     /// Error against time for the default scene, per strategy.

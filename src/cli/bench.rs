@@ -7,7 +7,8 @@ use clap::Args;
 use crate::bench::convergence::ConvergencePlan;
 use crate::bench::plot::plot_curve;
 use crate::bench::{
-    BenchReport, bvh_crossover, convergence_curves, curve_checks, precision_cost, scene_throughput,
+    BenchReport, bvh_crossover, convergence_curves, curve_checks, edit_latency, precision_cost,
+    scene_throughput,
 };
 use crate::scene::examples::EXAMPLE_SCENES;
 use crate::scene::{Scene, load_scene, parse_scene};
@@ -128,6 +129,8 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
     .ok_or("the preview worker did not answer")?;
     eprintln!("restart latency: an edit midway through the last pass");
     let restart_latency_ms = restart_latency(&default_scene, if args.quick { 3 } else { 7 })?;
+    eprintln!("edit to full frame: by kind of edit, through the preview worker");
+    let edit_to_full_frame_ms = edit_latency(&default_scene, if args.quick { 5 } else { 15 })?;
     eprintln!("acceleration: flat list against BVH");
     let counts: &[usize] = if args.quick {
         &[4, 16, 64]
@@ -147,6 +150,7 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
         first_preview_ms: Some(latency.first_frame.as_secs_f64() * 1e3),
         first_full_preview_ms: Some(latency.full_resolution.as_secs_f64() * 1e3),
         restart_latency_ms,
+        edit_to_full_frame_ms,
         scenes,
         curve_checks: curve_checks(&curve),
         curve,
@@ -217,6 +221,20 @@ fn print_tables(report: &BenchReport) {
         println!(
             "edit midway through the last pass at {spp} spp (64x48) to its first frame: {ms:.2} ms"
         );
+    }
+    let e = &report.edit_to_full_frame_ms;
+    let frame = report.full_frame_1spp_ms;
+    println!();
+    println!("| edit | to first full-resolution frame (ms) | / full_frame_1spp_ms |");
+    println!("|---|---|---|");
+    for (kind, ms) in [
+        ("material", e.material),
+        ("switch", e.switch),
+        ("light colour", e.light_colour),
+        ("light move", e.light_move),
+        ("geometry", e.geometry),
+    ] {
+        println!("| {kind} | {ms:.1} | {:.2} |", ms / frame);
     }
     println!();
     println!("| strategy | spp | time (ms) | RMSE | estimated RMSE | PSNR (dB) |");

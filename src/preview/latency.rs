@@ -123,7 +123,12 @@ fn edit(scene: &Scene, generation: u64) -> PreviewRequest {
     PreviewRequest::for_scene(generation, edited)
 }
 
-fn median(mut values: Vec<Duration>) -> Duration {
+/// The middle of `values` (the upper one of an even count).
+///
+/// # Panics
+/// When `values` is empty.
+#[must_use]
+pub fn median(mut values: Vec<Duration>) -> Duration {
     values.sort();
     values[values.len() / 2]
 }

@@ -4,6 +4,12 @@
 //! them, so the final frame is bit-identical to a direct render. Each anti-aliasing pass
 //! comes with its estimated remaining error, from the mean of its first half of samples
 //! (the previous pass's picture; the first pass is rendered in two halves for this).
+//!
+//! With a [`HitCache`] the rays of the one-sample pass are kept (traced once more after
+//! the pass is shown), and a later plan whose world the cache can serve (an edit that
+//! moved no object and not the camera) skips the coarse passes: its one-sample pass
+//! re-shades the cached hits, tracing only the rays the cache lacks, and is the first
+//! frame published.
 
 use std::sync::Arc;
 use std::time::Instant;
@@ -11,6 +17,7 @@ use std::time::Instant;
 use super::convergence::{ConvergenceCurve, estimated_rmse};
 use super::frame::Frame;
 use super::plan::{Pass, plan_passes};
+use crate::trace::{HitCache, MAX_CACHED_PIXELS, render_one_sample_cached};
 use crate::trace::{Image, RayCounts, RenderOptions, RenderProgress, SampleSums, World};
 use crate::trace::{render_samples, render_samples_into};
 
@@ -23,7 +30,43 @@ pub fn render_plan(
     start_pass: &mut dyn FnMut() -> Option<Arc<RenderProgress>>,
     publish: &mut dyn FnMut(Frame),
 ) {
-    let passes = plan_passes(target);
+    run_plan(world, target, None, start_pass, publish);
+}
+
+/// As [`render_plan`], with the rays of the last one-sample pass in `cache`: a plan the
+/// cache can serve starts at the one-sample pass, re-shaded, and leaves its rays there for
+/// the next plan. Any other plan publishes its one-sample pass traced as usual and then
+/// traces it again keeping the rays, before the anti-aliasing passes: keeping them makes
+/// a pass slower (memory for every hit), and an edit that re-traces must not show its
+/// first full frame later for it. `None` above [`MAX_CACHED_PIXELS`]. A cancelled pass
+/// leaves `cache` as it was.
+pub fn render_plan_cached(
+    world: &World,
+    target: &RenderOptions,
+    cache: &mut Option<HitCache>,
+    start_pass: &mut dyn FnMut() -> Option<Arc<RenderProgress>>,
+    publish: &mut dyn FnMut(Frame),
+) {
+    run_plan(world, target, Some(cache), start_pass, publish);
+}
+
+fn run_plan(
+    world: &World,
+    target: &RenderOptions,
+    mut cache: Option<&mut Option<HitCache>>,
+    start_pass: &mut dyn FnMut() -> Option<Arc<RenderProgress>>,
+    publish: &mut dyn FnMut(Frame),
+) {
+    let cacheable = target.width as usize * target.height as usize <= MAX_CACHED_PIXELS;
+    let reshade = cacheable
+        && cache
+            .as_deref()
+            .and_then(Option::as_ref)
+            .is_some_and(|c| c.reuse(world, target.width, target.height).is_reshade());
+    let passes: Vec<Pass> = plan_passes(target)
+        .into_iter()
+        .filter(|pass| !(reshade && matches!(pass, Pass::Coarse { .. })))
+        .collect();
     let mut accumulated = None;
     let mut curve = ConvergenceCurve::default();
     for (index, &pass) in passes.iter().enumerate() {
@@ -31,7 +74,12 @@ pub fn render_plan(
             return;
         };
         let started = Instant::now();
-        let Some(rendered) = render_pass(world, target, pass, &mut accumulated, &progress) else {
+        let one_sample = matches!(pass, Pass::Full { target: 1, .. });
+        let rendered = match cache.as_deref_mut() {
+            Some(cache) if one_sample && reshade => reshade_pass(world, target, cache, &progress),
+            _ => render_pass(world, target, pass, &mut accumulated, &progress),
+        };
+        let Some(rendered) = rendered else {
             return;
         };
         let elapsed = started.elapsed();
@@ -47,7 +95,38 @@ pub fn render_plan(
             estimated_rmse: rendered.estimated_rmse,
             convergence: curve.clone(),
         });
+        if let Some(cache) = cache.as_deref_mut()
+            && one_sample
+            && !reshade
+        {
+            // The rays of the picture just shown, for the next edit (stale ones go).
+            *cache = None;
+            if cacheable {
+                let Some(progress) = start_pass() else {
+                    return;
+                };
+                let kept = render_one_sample_cached(world, target, None, &progress);
+                let Some(kept) = kept else {
+                    return;
+                };
+                *cache = Some(kept.cache);
+            }
+        }
     }
+}
+
+/// The one-sample pass re-shaded from `cache`, which then holds its rays. `None` if
+/// cancelled (`cache` as it was).
+fn reshade_pass(
+    world: &World,
+    target: &RenderOptions,
+    cache: &mut Option<HitCache>,
+    progress: &RenderProgress,
+) -> Option<Rendered> {
+    let cached = render_one_sample_cached(world, target, cache.as_ref(), progress)?;
+    *cache = Some(cached.cache);
+    let sums = cached.sums;
+    Some(Rendered::new(&sums, sums.average(1), sums.rays, None))
 }
 
 /// Anti-aliasing samples summed so far at full resolution, and the picture they made.
@@ -211,5 +290,49 @@ mod tests {
             &mut |_| published += 1,
         );
         assert_eq!((started, published), (2, 1));
+    }
+
+    #[test]
+    fn a_traced_plan_shows_its_one_sample_pass_before_keeping_its_rays() {
+        let mut scene = crate::scene::examples::default_scene();
+        (scene.camera.width, scene.camera.height) = (160, 120);
+        let world = World::new(&scene).unwrap();
+        let target = RenderOptions::from_scene(&scene);
+        let passes = plan_passes(&target);
+        let one_sample = passes
+            .iter()
+            .position(|p| matches!(p, Pass::Full { target: 1, .. }))
+            .unwrap();
+        assert!(one_sample > 0, "coarse passes first: {passes:?}");
+        // Stopped right after the one-sample pass is shown: it was published, and no
+        // rays were kept (keeping them comes after, and it was stopped).
+        let mut cache = None;
+        let (mut started, mut shown) = (0, Vec::new());
+        render_plan_cached(
+            &world,
+            &target,
+            &mut cache,
+            &mut || {
+                started += 1;
+                (started <= one_sample + 1).then(|| Arc::new(RenderProgress::default()))
+            },
+            &mut |frame| shown.push(frame.pass),
+        );
+        assert_eq!(shown, passes[..=one_sample]);
+        assert!(cache.is_none());
+        // Left to run, the plan keeps the rays, and the next plan of the same world
+        // re-shades: no coarse pass.
+        let mut shown = Vec::new();
+        let mut go = || Some(Arc::new(RenderProgress::default()));
+        render_plan_cached(&world, &target, &mut cache, &mut go, &mut |f| {
+            shown.push(f.pass);
+        });
+        assert_eq!(shown, passes);
+        assert!(cache.is_some());
+        let mut again = Vec::new();
+        render_plan_cached(&world, &target, &mut cache, &mut go, &mut |f| {
+            again.push(f.pass);
+        });
+        assert_eq!(again, passes[one_sample..]);
     }
 }

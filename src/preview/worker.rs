@@ -5,6 +5,9 @@
 //! taken. The outbox keeps at most [`OUTBOX_CAPACITY`] messages, dropping the oldest: a
 //! window that does not poll (minimised) does not buffer a whole plan, and since every
 //! frame carries its generation's convergence curve nothing is lost but older pictures.
+//!
+//! Between requests the thread keeps the hit cache of the last one-sample pass, so an
+//! edit that moves nothing re-shades instead of re-tracing ([`super::render_plan_cached`]).
 
 use std::collections::VecDeque;
 use std::sync::{Arc, Condvar, Mutex, MutexGuard};
@@ -13,9 +16,9 @@ use std::time::{Duration, Instant};
 
 use super::frame::{Frame, Published};
 use super::job::run_caught;
-use super::progressive::render_plan;
+use super::progressive::render_plan_cached;
 use super::request::PreviewRequest;
-use crate::trace::{RenderProgress, World};
+use crate::trace::{HitCache, RenderProgress, World};
 
 /// Called after every publish, from the worker thread (the editor asks for a repaint).
 pub type Waker = Box<dyn Fn() + Send + Sync>;
@@ -163,6 +166,8 @@ fn lock(mutex: &Mutex<Mailbox>) -> MutexGuard<'_, Mailbox> {
 
 /// The thread's loop: wait for a request, render it, repeat until shutdown.
 fn run(shared: &Shared, waker: &Waker) {
+    // The rays of the last one-sample pass: an edit that moves nothing re-shades them.
+    let mut cache: Option<HitCache> = None;
     while let Some(request) = next_request(shared) {
         let generation = request.generation;
         let publish = |result: Result<Frame, String>| {
@@ -174,9 +179,10 @@ fn run(shared: &Shared, waker: &Waker) {
         // request (an edit may well avoid whatever caused it).
         let outcome = run_caught("the renderer", || {
             match World::isolated(&request.scene, &request.options.isolation) {
-                Ok(world) => render_plan(
+                Ok(world) => render_plan_cached(
                     &world,
                     &request.options,
+                    &mut cache,
                     &mut || start_pass(shared),
                     &mut |frame| publish(Ok(frame)),
                 ),
@@ -185,6 +191,7 @@ fn run(shared: &Shared, waker: &Waker) {
         });
         lock(&shared.mailbox).running = None;
         if let Err(message) = outcome {
+            cache = None;
             publish(Err(message));
         }
     }

@@ -6,6 +6,7 @@ pub mod bounds;
 pub mod bvh;
 pub mod camera;
 pub mod depth_view;
+pub mod hit_cache;
 pub mod image;
 pub mod inspect;
 pub mod isolation;
@@ -16,9 +17,11 @@ pub mod phong;
 pub mod quadratic;
 pub mod ray;
 pub mod ray_counts;
+pub mod ray_source;
 pub mod ray_tree;
 pub mod record;
 pub mod render;
+pub mod reshade;
 pub mod sampling;
 pub mod shade;
 pub mod shadow_cull;
@@ -31,6 +34,7 @@ pub mod world;
 
 pub use adaptive::{AdaptiveOptions, AdaptiveRender, render_adaptive};
 pub use camera::PinholeCamera;
+pub use hit_cache::{HitCache, MAX_CACHED_PIXELS, RetraceReason, Reuse};
 pub use image::Image;
 pub use inspect::{
     BounceReport, PixelOutside, PixelReport, inspect_pixel, pick, switches_text, try_inspect_pixel,
@@ -42,6 +46,7 @@ pub use record::{LightOutcome, LightSkip, ShadowRay, SkippedLight};
 pub use render::{
     RenderOptions, RenderProgress, SampleSums, render, render_samples, render_samples_into,
 };
+pub use reshade::{CachedPass, render_one_sample_cached};
 pub use shade::{LightRecord, NoRecorder, RayCounts, Recorder, Tracer};
 pub use terms::{Isolation, Term, TermSwitches, View};
 pub use tiles::TILE_SIZE;

@@ -1,12 +1,63 @@
-//! What the shader tells its [`super::shade::Recorder`] beyond the terms it adds: the shadow
-//! rays it cast (origin, direction, how far they looked, what was in the way) and the
-//! lights it skipped, with the reason, so the inspector, the ray-path overlay and
-//! `raylab inspect` can account for every light.
+//! What the shader tells a [`Recorder`]: the hits, terms and lights of each ray
+//! ([`LightRecord`]), the shadow rays it cast (origin, direction, how far they looked,
+//! what was in the way) and the lights it skipped, with the reason, so the inspector,
+//! the ray-path overlay and `raylab inspect` can account for every light.
 
 use glam::DVec3;
 
 use super::lights::WorldLight;
 use super::ray::Ray;
+use super::world::SurfacePoint;
+
+/// One light's part in shading a point, as the inspector shows it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightRecord {
+    /// Index of the light in the scene's light list.
+    pub scene_index: usize,
+    /// L_l(p): the light's strength arriving at the point, before visibility.
+    pub strength: DVec3,
+    /// n.l (may be negative: the light is behind the surface).
+    pub n_dot_l: f64,
+    /// The scene index of the object that blocked the shadow ray, if one did.
+    pub blocked_by: Option<usize>,
+    /// Whether a shadow ray was cast at all.
+    pub shadow_ray_cast: bool,
+    /// The shadow ray, when one was cast.
+    pub shadow_ray: Option<ShadowRay>,
+    /// The diffuse contribution added.
+    pub diffuse: DVec3,
+    /// The specular contribution added.
+    pub specular: DVec3,
+}
+
+/// Receives the numbers behind one traced ray. Every method has an empty default, so the
+/// renderer's [`NoRecorder`] costs nothing.
+pub trait Recorder {
+    /// Whether the recorder wants the calls at all: the shader does the extra work of
+    /// accounting for skipped lights only when it does.
+    const ACTIVE: bool = true;
+    /// A ray at `depth` (0 = primary) hit `hit`.
+    fn hit(&mut self, _depth: u32, _ray: &Ray, _hit: &SurfacePoint) {}
+    /// A ray at `depth` hit nothing and returns `background`.
+    fn miss(&mut self, _depth: u32, _ray: &Ray, _background: DVec3) {}
+    /// The ambient term at `depth`.
+    fn ambient(&mut self, _depth: u32, _colour: DVec3) {}
+    /// A light at a point at `depth` that can reach it (in front of the surface or not).
+    fn light(&mut self, _depth: u32, _record: &LightRecord) {}
+    /// A light passed over at a point at `depth`, and why.
+    fn skipped_light(&mut self, _depth: u32, _skipped: &SkippedLight) {}
+    /// The mirror term at `depth`: `km * reflected` was added.
+    fn reflection(&mut self, _depth: u32, _km: DVec3, _reflected: DVec3) {}
+    /// The colour returned for the ray at `depth`.
+    fn result(&mut self, _depth: u32, _colour: DVec3) {}
+}
+
+/// A recorder that records nothing.
+pub struct NoRecorder;
+
+impl Recorder for NoRecorder {
+    const ACTIVE: bool = false;
+}
 
 /// A shadow ray as the shader cast it.
 #[derive(Clone, Copy, Debug, PartialEq)]

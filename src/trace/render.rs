@@ -9,6 +9,7 @@ use glam::{DVec2, DVec3, Vec3};
 use super::camera::PinholeCamera;
 use super::image::Image;
 use super::isolation::assert_compiled_for;
+use super::ray_source::{LiveRays, RaySource};
 use super::sampling::sample_in_pixel;
 use super::shade::{NoRecorder, RayCounts, Tracer};
 use super::terms::{Isolation, TermSwitches, View};
@@ -176,9 +177,14 @@ pub fn render_samples_into(
     let count = options.samples_per_pixel;
     let cull = TileCull::new(world, &camera, width, height);
     let sample = |px: u32, py: u32, index: u32, rays: &mut RayCounts| {
-        let point = film_point(px, py, sample_in_pixel(px, py, index, count));
-        let ray = camera.ray(point);
-        tracer.trace_primary_among(&ray, cull.candidates(point), rays, &mut NoRecorder)
+        let point = sample_point(px, py, index, count);
+        camera_sample(
+            &tracer,
+            &camera,
+            point,
+            &mut LiveRays::among(cull.candidates(point)),
+            rays,
+        )
     };
     render_tiles(sums, samples, progress, &sample)
 }
@@ -225,5 +231,24 @@ fn trace_colour(
     point: DVec2,
     rays: &mut RayCounts,
 ) -> DVec3 {
-    tracer.trace_primary(&camera.ray(point), rays, &mut NoRecorder)
+    camera_sample(tracer, camera, point, &mut LiveRays::all(), rays)
+}
+
+/// The unguarded colour of the camera ray through film point `point`, its rays answered
+/// by `source`: the one path from a film point to a colour, traced or re-shaded.
+#[inline]
+pub(super) fn camera_sample(
+    tracer: &Tracer,
+    camera: &PinholeCamera,
+    point: DVec2,
+    source: &mut impl RaySource,
+    rays: &mut RayCounts,
+) -> DVec3 {
+    tracer.trace_primary_from(&camera.ray(point), source, rays, &mut NoRecorder)
+}
+
+/// The film point of sample `index` of `count` within pixel `(px, py)`.
+#[inline]
+pub(super) fn sample_point(px: u32, py: u32, index: u32, count: u32) -> DVec2 {
+    film_point(px, py, sample_in_pixel(px, py, index, count))
 }

@@ -17,65 +17,17 @@ use glam::DVec3;
 use smallvec::SmallVec;
 
 use super::depth_view::DepthRange;
+use super::lights::LightSample;
 pub use super::object_id::object_id_colour;
 use super::phong::LocalLight;
 use super::ray::Ray;
 pub use super::ray_counts::RayCounts;
+use super::ray_source::{LiveRays, RaySource, ShadowQuery};
+pub use super::record::{LightRecord, NoRecorder, Recorder};
 use super::record::{LightSkip, ShadowRay, SkippedLight, unsampled_reason};
 use super::spawn::{spawn_ray, spawn_ray_to};
 use super::terms::{ActiveTerms, Term, TermSwitches, View};
-use super::tile_cull::Candidates;
 use super::world::{SurfacePoint, World};
-
-/// One light's part in shading a point, as the inspector shows it.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LightRecord {
-    /// Index of the light in the scene's light list.
-    pub scene_index: usize,
-    /// L_l(p): the light's strength arriving at the point, before visibility.
-    pub strength: DVec3,
-    /// n.l (may be negative: the light is behind the surface).
-    pub n_dot_l: f64,
-    /// The scene index of the object that blocked the shadow ray, if one did.
-    pub blocked_by: Option<usize>,
-    /// Whether a shadow ray was cast at all.
-    pub shadow_ray_cast: bool,
-    /// The shadow ray, when one was cast.
-    pub shadow_ray: Option<ShadowRay>,
-    /// The diffuse contribution added.
-    pub diffuse: DVec3,
-    /// The specular contribution added.
-    pub specular: DVec3,
-}
-
-/// Receives the numbers behind one traced ray. Every method has an empty default, so the
-/// renderer's [`NoRecorder`] costs nothing.
-pub trait Recorder {
-    /// Whether the recorder wants the calls at all: the shader does the extra work of
-    /// accounting for skipped lights only when it does.
-    const ACTIVE: bool = true;
-    /// A ray at `depth` (0 = primary) hit `hit`.
-    fn hit(&mut self, _depth: u32, _ray: &Ray, _hit: &SurfacePoint) {}
-    /// A ray at `depth` hit nothing and returns `background`.
-    fn miss(&mut self, _depth: u32, _ray: &Ray, _background: DVec3) {}
-    /// The ambient term at `depth`.
-    fn ambient(&mut self, _depth: u32, _colour: DVec3) {}
-    /// A light at a point at `depth` that can reach it (in front of the surface or not).
-    fn light(&mut self, _depth: u32, _record: &LightRecord) {}
-    /// A light passed over at a point at `depth`, and why.
-    fn skipped_light(&mut self, _depth: u32, _skipped: &SkippedLight) {}
-    /// The mirror term at `depth`: `km * reflected` was added.
-    fn reflection(&mut self, _depth: u32, _km: DVec3, _reflected: DVec3) {}
-    /// The colour returned for the ray at `depth`.
-    fn result(&mut self, _depth: u32, _colour: DVec3) {}
-}
-
-/// A recorder that records nothing.
-pub struct NoRecorder;
-
-impl Recorder for NoRecorder {
-    const ACTIVE: bool = false;
-}
 
 /// What one ray of the mirror chain contributes: its own colour (ambient, diffuse and
 /// specular at a hit, the background at a miss) and the weight of the colour its mirror
@@ -94,6 +46,13 @@ impl Bounce {
             km: DVec3::ZERO,
         }
     }
+}
+
+/// Which light a shadow ray goes to, from the hit at which depth of the mirror chain.
+#[derive(Clone, Copy, Debug)]
+struct LightAt {
+    depth: u32,
+    index: usize,
 }
 
 /// Mirror chains up to this long stay on the stack; longer ones spill to the heap.
@@ -143,32 +102,31 @@ impl<'w> Tracer<'w> {
         counts: &mut RayCounts,
         recorder: &mut R,
     ) -> DVec3 {
-        self.trace_primary_among(ray, Candidates::ALL, counts, recorder)
+        self.trace_primary_from(ray, &mut LiveRays::all(), counts, recorder)
     }
 
-    /// As [`Self::trace_primary`] for a camera ray that can meet only what `among` names
-    /// (see [`super::tile_cull`]); the same colour whenever that is so.
-    pub fn trace_primary_among<R: Recorder>(
+    /// As [`Self::trace_primary`], each ray answered by `rays` (the world itself, or a
+    /// cache of rays traced before: the shading arithmetic is the same).
+    pub fn trace_primary_from<S: RaySource, R: Recorder>(
         &self,
         ray: &Ray,
-        among: Candidates,
+        rays: &mut S,
         counts: &mut RayCounts,
         recorder: &mut R,
     ) -> DVec3 {
         counts.primary += 1;
-        let camera_hit = || self.world.intersect_among(ray, f64::INFINITY, among.camera);
+        if self.view == View::Beauty {
+            return self.radiance(ray, rays, counts, recorder);
+        }
+        let Some(hit) = rays.closest_hit(self.world, 0, ray) else {
+            return DVec3::ZERO;
+        };
         match self.view {
-            View::Beauty => self.radiance(ray, among, counts, recorder),
-            View::Normal => camera_hit().map_or(DVec3::ZERO, |hit| hit.n * 0.5 + 0.5),
-            View::Depth => camera_hit().map_or(DVec3::ZERO, |hit| {
-                DVec3::splat(self.depth_range.map_or(1.0, |range| range.grey(hit.t)))
-            }),
-            View::ObjectId => camera_hit().map_or(DVec3::ZERO, |hit| {
-                object_id_colour(self.world.scene_object(hit.object))
-            }),
-            View::ShadowMask => camera_hit().map_or(DVec3::ZERO, |hit| {
-                DVec3::splat(self.shadow_mask(&hit, among, counts))
-            }),
+            View::Normal => hit.n * 0.5 + 0.5,
+            View::Depth => DVec3::splat(self.depth_range.map_or(1.0, |range| range.grey(hit.t))),
+            View::ObjectId => object_id_colour(self.world.scene_object(hit.object)),
+            View::ShadowMask => DVec3::splat(self.shadow_mask(&hit, rays, counts)),
+            View::Beauty => unreachable!("handled above"),
         }
     }
 
@@ -182,12 +140,11 @@ impl<'w> Tracer<'w> {
     fn radiance(
         &self,
         ray: &Ray,
-        among: Candidates,
+        rays: &mut impl RaySource,
         counts: &mut RayCounts,
         recorder: &mut impl Recorder,
     ) -> DVec3 {
-        let (camera_bounce, mirror_ray) =
-            self.shade(ray, among, 0, &self.primary, counts, recorder);
+        let (camera_bounce, mirror_ray) = self.shade(ray, 0, &self.primary, rays, counts, recorder);
         // Most camera rays meet no mirror: no chain to keep.
         let Some(mut ray) = mirror_ray else {
             recorder.result(0, camera_bounce.local);
@@ -195,11 +152,10 @@ impl<'w> Tracer<'w> {
         };
         let mut chain: SmallVec<[Bounce; INLINE_BOUNCES]> = SmallVec::new();
         chain.push(camera_bounce);
-        let everything = Candidates::ALL;
         loop {
             let depth = chain.len() as u32;
             let (bounce, mirror_ray) =
-                self.shade(&ray, everything, depth, &self.secondary, counts, recorder);
+                self.shade(&ray, depth, &self.secondary, rays, counts, recorder);
             chain.push(bounce);
             match mirror_ray {
                 Some(next) => ray = next,
@@ -229,13 +185,13 @@ impl<'w> Tracer<'w> {
     fn shade<R: Recorder>(
         &self,
         ray: &Ray,
-        among: Candidates,
         depth: u32,
         terms: &ActiveTerms,
+        rays: &mut impl RaySource,
         counts: &mut RayCounts,
         recorder: &mut R,
     ) -> (Bounce, Option<Ray>) {
-        let Some(hit) = self.world.intersect_among(ray, f64::INFINITY, among.camera) else {
+        let Some(hit) = rays.closest_hit(self.world, depth, ray) else {
             let background = if terms.background {
                 self.world.background
             } else {
@@ -281,30 +237,16 @@ impl<'w> Tracer<'w> {
                     continue;
                 };
                 let n_dot_l = hit.n.dot(sample.to_light);
-                let mut record = LightRecord {
-                    scene_index: world.light_scene_index[index],
-                    strength: sample.radiance,
-                    n_dot_l,
-                    blocked_by: None,
-                    shadow_ray_cast: false,
-                    shadow_ray: None,
-                    diffuse: DVec3::ZERO,
-                    specular: DVec3::ZERO,
-                };
+                // Plain locals on the hot path; the record is built only for a recorder.
+                let (mut cast, mut blocker) = (false, None);
+                let (mut diffuse, mut specular) = (DVec3::ZERO, DVec3::ZERO);
                 if n_dot_l > 0.0 {
                     if terms.shadows {
-                        let shadow_ray =
-                            self.shadow_ray(&hit, &sample, among.shadow(index), counts);
-                        record.shadow_ray_cast = true;
-                        // The recorders see the scene's index of the blocker.
-                        let blocked_by = shadow_ray.blocked_by.map(|i| world.scene_object(i));
-                        record.blocked_by = blocked_by;
-                        record.shadow_ray = Some(ShadowRay {
-                            blocked_by,
-                            ..shadow_ray
-                        });
+                        let to = LightAt { depth, index };
+                        blocker = self.shadow_blocker(&hit, &sample, to, rays, counts);
+                        cast = true;
                     }
-                    if record.blocked_by.is_none() {
+                    if blocker.is_none() {
                         let local = LocalLight {
                             n: hit.n,
                             to_light: sample.to_light,
@@ -312,16 +254,39 @@ impl<'w> Tracer<'w> {
                             strength: sample.radiance,
                         };
                         if terms.diffuse {
-                            record.diffuse = local.diffuse(material.diffuse, n_dot_l);
+                            diffuse = local.diffuse(material.diffuse, n_dot_l);
                         }
                         if terms.specular {
-                            record.specular =
+                            specular =
                                 local.specular(material.specular, material.shininess, n_dot_l);
                         }
-                        colour += record.diffuse + record.specular;
+                        colour += diffuse + specular;
                     }
                 }
-                recorder.light(depth, &record);
+                if R::ACTIVE {
+                    // The recorders see the scene's index of the blocker, and the shadow
+                    // ray made again (spawning is deterministic).
+                    let blocked_by = blocker.map(|i| world.scene_object(i));
+                    let shadow_ray = cast.then(|| {
+                        let query = self.shadow_query(&hit, &sample);
+                        ShadowRay {
+                            ray: query.ray,
+                            t_max: query.t_max,
+                            blocked_by,
+                        }
+                    });
+                    let record = LightRecord {
+                        scene_index: world.light_scene_index[index],
+                        strength: sample.radiance,
+                        n_dot_l,
+                        blocked_by,
+                        shadow_ray_cast: cast,
+                        shadow_ray,
+                        diffuse,
+                        specular,
+                    };
+                    recorder.light(depth, &record);
+                }
             }
         } else if R::ACTIVE {
             let why = if has_local {
@@ -348,15 +313,26 @@ impl<'w> Tracer<'w> {
         (Bounce::local(colour), None)
     }
 
-    /// Casts the shadow ray from `hit` to a light: the ray and the blocking object, if any.
-    fn shadow_ray(
+    /// The object blocking the shadow ray from `hit` (at `to.depth`) to light
+    /// `to.index`, if any. The ray itself is made only if `rays` has to cast it.
+    #[inline]
+    fn shadow_blocker(
         &self,
         hit: &SurfacePoint,
-        sample: &super::lights::LightSample,
-        blockers: super::object_set::ObjectSet,
+        sample: &LightSample,
+        to: LightAt,
+        rays: &mut impl RaySource,
         counts: &mut RayCounts,
-    ) -> ShadowRay {
+    ) -> Option<usize> {
         counts.shadow += 1;
+        rays.occluder(self.world, to.depth, to.index, || {
+            self.shadow_query(hit, sample)
+        })
+    }
+
+    /// The shadow ray from `hit` to the light of `sample`.
+    #[inline]
+    fn shadow_query(&self, hit: &SurfacePoint, sample: &LightSample) -> ShadowQuery {
         // Every shape is convex or flat: a shadow ray leaving a solid on its outer side,
         // or leaving a plane, cannot meet the surface it starts on.
         let leaves_outward = self.world.objects[hit.object].shape == crate::scene::Shape::Plane
@@ -366,19 +342,17 @@ impl<'w> Tracer<'w> {
             Some(position) => spawn_ray_to(hit, position),
             None => (spawn_ray(hit, sample.to_light), f64::INFINITY),
         };
-        let blocked_by = self
-            .world
-            .occluder_except_among(&ray, t_max, except, blockers);
-        ShadowRay {
-            ray,
-            t_max,
-            blocked_by,
-        }
+        ShadowQuery { ray, t_max, except }
     }
 
     /// Fraction of the lights that reach `hit` (in front, inside any spot cone) whose
     /// shadow ray is clear; 0 where no light reaches.
-    fn shadow_mask(&self, hit: &SurfacePoint, among: Candidates, counts: &mut RayCounts) -> f64 {
+    fn shadow_mask(
+        &self,
+        hit: &SurfacePoint,
+        rays: &mut impl RaySource,
+        counts: &mut RayCounts,
+    ) -> f64 {
         let mut reaching = 0u32;
         let mut visible = 0u32;
         for (index, light) in self.world.lights.iter().enumerate() {
@@ -389,10 +363,10 @@ impl<'w> Tracer<'w> {
                 continue;
             }
             reaching += 1;
+            let to = LightAt { depth: 0, index };
             if !self.primary.shadows
                 || self
-                    .shadow_ray(hit, &sample, among.shadow(index), counts)
-                    .blocked_by
+                    .shadow_blocker(hit, &sample, to, rays, counts)
                     .is_none()
             {
                 visible += 1;

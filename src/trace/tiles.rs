@@ -25,16 +25,45 @@ impl<F: Fn(u32, u32, u32, &mut RayCounts) -> DVec3 + Sync> SampleColour for F {}
 
 /// A rectangle of the image, in pixels.
 #[derive(Clone, Copy, Debug)]
-struct TileRect {
-    x0: u32,
-    y0: u32,
-    w: u32,
-    h: u32,
+pub(super) struct TileRect {
+    /// Left column.
+    pub x0: u32,
+    /// Top row.
+    pub y0: u32,
+    /// Width.
+    pub w: u32,
+    /// Height.
+    pub h: u32,
+}
+
+impl TileRect {
+    /// Tile `index` (row-major) of an image `width` x `height`.
+    fn of(index: u32, width: u32, height: u32) -> Self {
+        let tiles_x = width.div_ceil(TILE_SIZE);
+        let (x0, y0) = ((index % tiles_x) * TILE_SIZE, (index / tiles_x) * TILE_SIZE);
+        Self {
+            x0,
+            y0,
+            w: TILE_SIZE.min(width - x0),
+            h: TILE_SIZE.min(height - y0),
+        }
+    }
+
+    /// Pixels in the tile.
+    pub fn pixel_count(self) -> usize {
+        self.w as usize * self.h as usize
+    }
+}
+
+/// Tiles of an image `width` x `height`.
+pub(super) fn tile_count(width: u32, height: u32) -> u32 {
+    width.div_ceil(TILE_SIZE) * height.div_ceil(TILE_SIZE)
 }
 
 /// One finished tile: the pixels' sums in row-major order within the tile.
-struct Tile {
+struct Tile<S> {
     rect: TileRect,
+    state: S,
     sums: Vec<DVec3>,
     rays: RayCounts,
     non_finite: u64,
@@ -52,32 +81,48 @@ pub(super) fn render_tiles(
     progress: &RenderProgress,
     sample: &impl SampleColour,
 ) -> Option<RayCounts> {
+    let sample = |_: &mut (), px, py, index, rays: &mut RayCounts| sample(px, py, index, rays);
+    render_tiles_with(sums, samples, progress, |_, _| (), &sample).map(|(rays, _)| rays)
+}
+
+/// As [`render_tiles`], each tile with a state of its own: `new_state` makes it from the
+/// tile's index (row-major, [`tile_count`] of them) and rectangle, `sample` gets it with every pixel (row-major within the tile, one
+/// batch after another), and the states come back in tile order with the rays.
+pub(super) fn render_tiles_with<S: Send>(
+    sums: &mut SampleSums,
+    samples: Range<u32>,
+    progress: &RenderProgress,
+    new_state: impl Fn(u32, TileRect) -> S + Sync,
+    sample: &(impl Fn(&mut S, u32, u32, u32, &mut RayCounts) -> DVec3 + Sync),
+) -> Option<(RayCounts, Vec<S>)> {
     let (width, height) = (sums.width, sums.height);
-    let tiles_x = width.div_ceil(TILE_SIZE);
-    let tile_count = tiles_x * height.div_ceil(TILE_SIZE);
+    let tile_count = tile_count(width, height);
     let batches = tile_count as usize * samples.len();
     progress.batches_total.store(batches, Ordering::Relaxed);
     progress.batches_done.store(0, Ordering::Relaxed);
 
     let before: &SampleSums = sums;
-    let tiles: Vec<Option<Tile>> = (0..tile_count)
+    let tiles: Vec<Option<Tile<S>>> = (0..tile_count)
         .into_par_iter()
         .map(|index| {
-            let (x0, y0) = ((index % tiles_x) * TILE_SIZE, (index / tiles_x) * TILE_SIZE);
-            let rect = TileRect {
-                x0,
-                y0,
-                w: TILE_SIZE.min(width - x0),
-                h: TILE_SIZE.min(height - y0),
-            };
-            render_tile(rect, before, samples.clone(), progress, sample)
+            let rect = TileRect::of(index, width, height);
+            render_tile(
+                rect,
+                new_state(index, rect),
+                before,
+                samples.clone(),
+                progress,
+                sample,
+            )
         })
         .collect();
-    let tiles: Vec<Tile> = tiles.into_iter().collect::<Option<_>>()?;
+    let tiles: Vec<Tile<S>> = tiles.into_iter().collect::<Option<_>>()?;
 
     let mut rays = RayCounts::default();
     let mut new_pixels = Vec::new();
+    let mut states = Vec::with_capacity(tiles.len());
     for tile in tiles {
+        states.push(tile.state);
         rays.add(&tile.rays);
         sums.non_finite += tile.non_finite;
         new_pixels.extend(tile.non_finite_pixels);
@@ -93,18 +138,19 @@ pub(super) fn render_tiles(
         sums.non_finite_pixels.sort_unstable();
         sums.non_finite_pixels.dedup();
     }
-    Some(rays)
+    Some((rays, states))
 }
 
 /// Traces one tile batch by batch, each pixel's sum continuing from `before`; `None` as
 /// soon as a batch finds the render cancelled.
-fn render_tile(
+fn render_tile<S>(
     rect: TileRect,
+    mut state: S,
     before: &SampleSums,
     samples: Range<u32>,
     progress: &RenderProgress,
-    sample: &impl SampleColour,
-) -> Option<Tile> {
+    sample: &impl Fn(&mut S, u32, u32, u32, &mut RayCounts) -> DVec3,
+) -> Option<Tile<S>> {
     let image_width = before.width;
     let pixels: Vec<(u32, u32)> = (rect.y0..rect.y0 + rect.h)
         .flat_map(|py| (rect.x0..rect.x0 + rect.w).map(move |px| (px, py)))
@@ -121,7 +167,7 @@ fn render_tile(
             return None;
         }
         for ((&(px, py), sum), finite) in pixels.iter().zip(&mut sums).zip(&mut finite) {
-            let colour = sample(px, py, index, &mut rays);
+            let colour = sample(&mut state, px, py, index, &mut rays);
             // The guard: NaN or infinity never reaches a pixel; it is counted instead.
             if colour.is_finite() {
                 *sum += colour;
@@ -140,6 +186,7 @@ fn render_tile(
         .collect();
     Some(Tile {
         rect,
+        state,
         sums,
         rays,
         non_finite,

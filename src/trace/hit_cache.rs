@@ -1,0 +1,371 @@
+//! The hit cache: every ray the one-sample full-resolution pass traced, kept so that an
+//! edit that moves nothing can be re-shaded instead of re-traced ([`super::reshade`]).
+//!
+//! Per pixel it keeps the mirror chain of the pixel-centre sample, one entry per depth
+//! traced (the closest hit, or the miss that ends the chain), and per entry and light
+//! what that light's shadow ray met: clear, a blocker, or "not cast" (the shader did not
+//! need it, e.g. the light was behind the surface or the material had no diffuse and no
+//! specular). Which rays a pixel needs depends on the materials, the switches and the
+//! view; what each traced ray found depends only on the geometry (objects, camera, size)
+//! and, for shadow rays, on where the light is. So:
+//!
+//! - the geometry changed: nothing cached is valid, re-trace ([`Reuse::Retrace`]);
+//! - otherwise every cached hit is what the ray would find again, and every cached
+//!   shadow answer too for each light whose shadow target (position, or direction for a
+//!   directional light) is bit for bit the same; the other lights' shadow rays are cast
+//!   again, and so is every ray the new scene needs that the cache lacks (a mirror made
+//!   shiny, a deeper `max_depth`, a light in front of a surface that was behind it).
+
+use std::sync::Arc;
+
+use glam::{DAffine3, DVec3};
+
+use super::lights::WorldLight;
+use super::render::RenderOptions;
+use super::terms::{TermSwitches, View};
+use super::world::{SurfacePoint, World};
+use crate::scene::{Camera, Material, Shape};
+
+/// The largest image the preview keeps a cache for: about 100 bytes a cached ray and 36
+/// a pixel, so 1280 x 1024 is some 180 MB with a few mirrors; larger previews re-trace
+/// every edit.
+pub const MAX_CACHED_PIXELS: usize = 1280 * 1024;
+
+/// A shadow ray the shader did not cast at that hit.
+pub(super) const NOT_CAST: u32 = u32::MAX;
+/// A shadow ray that met nothing.
+pub(super) const CLEAR: u32 = u32::MAX - 1;
+
+/// A hit as cached: a [`SurfacePoint`] with the shading normal kept as one bit (it is
+/// the outward normal or its exact negation), or a miss.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct CachedHit {
+    t: f64,
+    p: DVec3,
+    n_outward: DVec3,
+    p_error: DVec3,
+    /// World index of the object hit; `u32::MAX` for a miss.
+    object: u32,
+    /// Whether the shading normal is `-n_outward`.
+    flipped: bool,
+}
+
+impl CachedHit {
+    /// What the closest-hit query returned.
+    pub fn new(hit: Option<&SurfacePoint>) -> Self {
+        match hit {
+            Some(hit) => Self {
+                t: hit.t,
+                p: hit.p,
+                n_outward: hit.n_outward,
+                p_error: hit.p_error,
+                object: u32::try_from(hit.object).expect("fewer than 2^32 - 1 objects"),
+                flipped: hit.n != hit.n_outward,
+            },
+            None => Self {
+                t: 0.0,
+                p: DVec3::ZERO,
+                n_outward: DVec3::ZERO,
+                p_error: DVec3::ZERO,
+                object: u32::MAX,
+                flipped: false,
+            },
+        }
+    }
+
+    /// The world index of the object hit; `None` for a miss.
+    pub fn object(&self) -> Option<usize> {
+        (self.object != u32::MAX).then_some(self.object as usize)
+    }
+
+    /// The hit again, bit for bit; `None` for a miss.
+    pub fn point(&self) -> Option<SurfacePoint> {
+        (self.object != u32::MAX).then(|| SurfacePoint {
+            object: self.object as usize,
+            t: self.t,
+            p: self.p,
+            n_outward: self.n_outward,
+            n: if self.flipped {
+                -self.n_outward
+            } else {
+                self.n_outward
+            },
+            p_error: self.p_error,
+        })
+    }
+}
+
+/// A shadow answer as cached.
+pub(super) fn encode_blocker(blocked_by: Option<usize>) -> u32 {
+    blocked_by.map_or(CLEAR, |i| {
+        u32::try_from(i).expect("fewer than 2^32 - 2 objects")
+    })
+}
+
+/// The cached shadow answer `code` (not [`NOT_CAST`]).
+pub(super) fn decode_blocker(code: u32) -> Option<usize> {
+    (code != CLEAR).then_some(code as usize)
+}
+
+/// The mirror chains of one tile's pixels, row-major within the tile.
+#[derive(Clone, Debug, Default)]
+pub(super) struct Chains {
+    /// End of each pixel's chain in `hits` (a chain starts where the one before ends).
+    pub chain_ends: Vec<u32>,
+    /// Every chain's entries, depth 0 first.
+    pub hits: Vec<CachedHit>,
+}
+
+impl Chains {
+    /// The range of `hits` holding pixel `pixel`'s chain.
+    pub fn chain(&self, pixel: usize) -> std::ops::Range<usize> {
+        let start = pixel
+            .checked_sub(1)
+            .map_or(0, |p| self.chain_ends[p] as usize);
+        start..self.chain_ends[pixel] as usize
+    }
+}
+
+/// A pixel's colour in the pass that filled the cache (as the shader returned it, maybe
+/// non-finite), and the rays it is made of: kept for a pixel no edit could change.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct PixelColour {
+    /// The colour.
+    pub colour: DVec3,
+    /// Primary, shadow and reflection rays behind it.
+    pub rays: [u32; 3],
+}
+
+/// The cached rays of one tile. The chains and visibility are shared with the cache before when an edit
+/// left them as they were (most edits add no ray), so a re-shade copies nothing.
+#[derive(Clone, Debug)]
+pub(super) struct TileHits {
+    /// The pixels' mirror chains.
+    pub chains: Arc<Chains>,
+    /// Per entry of `chains.hits`, one code per light of the cache (`NOT_CAST`, `CLEAR`
+    /// or the blocker's world index).
+    pub visibility: Arc<Vec<u32>>,
+    /// Each pixel's colour, row-major within the tile.
+    pub colours: Arc<Vec<PixelColour>>,
+}
+
+/// Everything the shader reads besides the rays and the objects' materials: with all of
+/// it unchanged, a pixel whose rays meet no object with a changed material keeps its
+/// colour.
+#[derive(Clone, Debug, PartialEq)]
+struct Shading {
+    switches: TermSwitches,
+    view: View,
+    lights: Vec<WorldLight>,
+    ambient: DVec3,
+    background: DVec3,
+    max_depth: u32,
+}
+
+impl Shading {
+    fn of(world: &World, options: &RenderOptions) -> Self {
+        Self {
+            switches: options.switches,
+            view: options.view,
+            lights: world.lights.clone(),
+            ambient: world.ambient,
+            background: world.background,
+            max_depth: world.max_depth,
+        }
+    }
+}
+
+/// Each object's material, by world object index.
+fn object_materials(world: &World) -> Vec<Material> {
+    world
+        .objects
+        .iter()
+        .map(|o| world.materials[o.material].clone())
+        .collect()
+}
+
+/// What a traced ray's answer depends on besides the light: the image size, the camera
+/// and every object's shape and placement.
+#[derive(Clone, Debug, PartialEq)]
+struct RayGeometry {
+    width: u32,
+    height: u32,
+    camera: Camera,
+    objects: Vec<(Shape, DAffine3)>,
+    object_scene_index: Vec<usize>,
+}
+
+impl RayGeometry {
+    fn of(world: &World, width: u32, height: u32) -> Self {
+        Self {
+            width,
+            height,
+            camera: world.camera.clone(),
+            objects: world
+                .objects
+                .iter()
+                .map(|o| (o.shape, o.world_from_object))
+                .collect(),
+            object_scene_index: world.object_scene_index.clone(),
+        }
+    }
+}
+
+/// What a light's shadow rays depend on: where they go (bit for bit).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum ShadowTarget {
+    /// To a point (point and spot lights).
+    Position([u64; 3]),
+    /// Towards a light at infinity.
+    Direction([u64; 3]),
+}
+
+impl ShadowTarget {
+    fn of(light: &WorldLight) -> Self {
+        let bits = |v: DVec3| v.to_array().map(f64::to_bits);
+        match *light {
+            WorldLight::Point { position, .. } | WorldLight::Spot { position, .. } => {
+                Self::Position(bits(position))
+            }
+            WorldLight::Directional { to_light, .. } => Self::Direction(bits(to_light)),
+        }
+    }
+}
+
+/// Why a cache cannot serve a world.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RetraceReason {
+    /// Another image size.
+    Size,
+    /// The camera moved or changed its lens.
+    Camera,
+    /// An object was added, removed, hidden, shown, moved or given another shape.
+    Objects,
+}
+
+/// Whether a cache can serve a world, and how.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Reuse {
+    /// Every cached ray is stale: trace again from scratch.
+    Retrace(RetraceReason),
+    /// Re-shade from the cache.
+    Reshade {
+        /// Per light of the new world, the cache's column of shadow answers that stays
+        /// valid; `None` where that light's shadow rays must be cast again.
+        kept_columns: Vec<Option<usize>>,
+    },
+}
+
+impl Reuse {
+    /// Whether this re-shades.
+    #[must_use]
+    pub fn is_reshade(&self) -> bool {
+        matches!(self, Reuse::Reshade { .. })
+    }
+
+    /// The world light indices whose shadow rays are cast again (empty for a re-trace,
+    /// where everything is).
+    #[must_use]
+    pub fn recast_lights(&self) -> Vec<usize> {
+        match self {
+            Reuse::Retrace(_) => Vec::new(),
+            Reuse::Reshade { kept_columns } => (0..kept_columns.len())
+                .filter(|&i| kept_columns[i].is_none())
+                .collect(),
+        }
+    }
+}
+
+/// The rays of one one-sample full-resolution pass (see the module notes).
+#[derive(Clone, Debug)]
+pub struct HitCache {
+    geometry: RayGeometry,
+    /// Per light of the world it was traced in, its shadow target: the column of
+    /// shadow answers serves any light with the same target, whatever its index.
+    lights: Vec<ShadowTarget>,
+    /// What the cached colours were shaded with.
+    shading: Shading,
+    object_materials: Vec<Material>,
+    pub(super) tiles: Vec<TileHits>,
+}
+
+impl HitCache {
+    /// A cache of `tiles` traced and shaded in `world` with `options`.
+    pub(super) fn new(world: &World, options: &RenderOptions, tiles: Vec<TileHits>) -> Self {
+        Self {
+            geometry: RayGeometry::of(world, options.width, options.height),
+            lights: world.lights.iter().map(ShadowTarget::of).collect(),
+            shading: Shading::of(world, options),
+            object_materials: object_materials(world),
+            tiles,
+        }
+    }
+
+    /// For a world this cache can serve ([`Self::reuse`]): per object, whether its
+    /// material differs from the one the cached colours were shaded with; `None` when
+    /// anything else the shader reads changed, and every pixel must be shaded again.
+    pub(super) fn changed_objects(
+        &self,
+        world: &World,
+        options: &RenderOptions,
+    ) -> Option<Vec<bool>> {
+        if Shading::of(world, options) != self.shading {
+            return None;
+        }
+        let now = object_materials(world);
+        (now.len() == self.object_materials.len()).then(|| {
+            now.iter()
+                .zip(&self.object_materials)
+                .map(|(a, b)| a != b)
+                .collect()
+        })
+    }
+
+    /// Lights per cached entry (the visibility columns).
+    pub(super) fn light_count(&self) -> usize {
+        self.lights.len()
+    }
+
+    /// Whether this cache can serve `world` rendered at `width` x `height`.
+    #[must_use]
+    pub fn reuse(&self, world: &World, width: u32, height: u32) -> Reuse {
+        let now = RayGeometry::of(world, width, height);
+        let old = &self.geometry;
+        if (now.width, now.height) != (old.width, old.height) {
+            return Reuse::Retrace(RetraceReason::Size);
+        }
+        if now.camera != old.camera {
+            return Reuse::Retrace(RetraceReason::Camera);
+        }
+        if now != *old {
+            return Reuse::Retrace(RetraceReason::Objects);
+        }
+        let kept_columns = world
+            .lights
+            .iter()
+            .map(|light| {
+                let target = ShadowTarget::of(light);
+                self.lights.iter().position(|old| *old == target)
+            })
+            .collect();
+        Reuse::Reshade { kept_columns }
+    }
+
+    /// Rays held (closest hits and misses; shadow answers not counted).
+    #[must_use]
+    pub fn ray_count(&self) -> usize {
+        self.tiles.iter().map(|t| t.chains.hits.len()).sum()
+    }
+
+    /// Approximate memory held, in bytes (parts shared with another cache included).
+    #[must_use]
+    pub fn bytes(&self) -> usize {
+        self.tiles
+            .iter()
+            .map(|t| {
+                t.chains.hits.capacity() * size_of::<CachedHit>()
+                    + (t.visibility.capacity() + t.chains.chain_ends.capacity()) * size_of::<u32>()
+            })
+            .sum()
+    }
+}

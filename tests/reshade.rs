@@ -1,0 +1,349 @@
+//! Edits re-shaded from the hit cache against a full re-trace: for each kind of edit, the
+//! re-shaded one-sample pass is bit for bit the traced one, and it traced exactly the
+//! rays the edit made stale or newly needed (none for a material, switch, view or light
+//! colour edit; one light's shadow rays for that light moved; everything for geometry).
+
+use glam::DVec3;
+use raylab::scene::examples::EXAMPLE_SCENES;
+use raylab::scene::{Light, Scene, Transform, parse_scene};
+use raylab::trace::{
+    CachedPass, HitCache, Isolation, RayCounts, RenderOptions, RenderProgress, RetraceReason,
+    Reuse, SampleSums, Term, View, World, render_one_sample_cached, render_samples,
+};
+
+/// An example scene at 64 x 48.
+fn example(name: &str) -> Scene {
+    let text = EXAMPLE_SCENES.iter().find(|(n, _)| *n == name).unwrap().1;
+    let mut scene = parse_scene(text).unwrap();
+    scene.camera.width = 64;
+    scene.camera.height = 48;
+    scene
+}
+
+/// A scene and how it is rendered: the state before or after an edit.
+#[derive(Clone)]
+struct Shot {
+    scene: Scene,
+    options: RenderOptions,
+}
+
+impl Shot {
+    fn of(scene: Scene) -> Self {
+        let options = RenderOptions::from_scene(&scene);
+        Self { scene, options }
+    }
+
+    fn world(&self) -> World {
+        World::isolated(&self.scene, &self.options.isolation).unwrap()
+    }
+
+    /// The one-sample pass traced from scratch, as `raylab render` does it.
+    fn traced(&self) -> SampleSums {
+        let options = RenderOptions {
+            samples_per_pixel: 1,
+            ..self.options.clone()
+        };
+        render_samples(&self.world(), &options, 0..1, &RenderProgress::default()).unwrap()
+    }
+
+    /// The one-sample pass answered from `cache` where it can.
+    fn cached(&self, cache: Option<&HitCache>) -> CachedPass {
+        let world = self.world();
+        render_one_sample_cached(&world, &self.options, cache, &RenderProgress::default()).unwrap()
+    }
+
+    fn edited(&self, edit: impl FnOnce(&mut Scene, &mut RenderOptions)) -> Self {
+        let mut next = self.clone();
+        edit(&mut next.scene, &mut next.options);
+        next
+    }
+}
+
+/// Every sum's bits, the guard's counts and the modelled rays are the same.
+fn assert_same_pass(reshaded: &SampleSums, traced: &SampleSums, what: &str) {
+    let bits = |s: &SampleSums| -> Vec<[u64; 3]> {
+        s.sums
+            .iter()
+            .map(|v| v.to_array().map(f64::to_bits))
+            .collect()
+    };
+    assert!(bits(reshaded) == bits(traced), "{what}: pixels differ");
+    assert_eq!(reshaded.non_finite, traced.non_finite, "{what}");
+    assert_eq!(reshaded.rays, traced.rays, "{what}: rays modelled");
+}
+
+/// Renders `before` (filling a cache), then each edit in turn from the cache the one
+/// before left; checks every re-shaded pass against a full trace and returns the rays
+/// each one traced.
+fn edit_chain(before: &Shot, edits: &[Shot], what: &str) -> Vec<CachedPass> {
+    let first = before.cached(None);
+    assert_same_pass(&first.sums, &before.traced(), what);
+    assert!(!first.reused);
+    assert_eq!(
+        first.traced, first.sums.rays,
+        "{what}: no cache traces everything"
+    );
+    let mut cache = first.cache;
+    let mut passes = Vec::new();
+    for (step, shot) in edits.iter().enumerate() {
+        let pass = shot.cached(Some(&cache));
+        assert_same_pass(&pass.sums, &shot.traced(), &format!("{what}, edit {step}"));
+        cache = pass.cache.clone();
+        passes.push(pass);
+    }
+    passes
+}
+
+const NOTHING: RayCounts = RayCounts {
+    primary: 0,
+    shadow: 0,
+    reflection: 0,
+};
+
+/// Scenes with mirrors, every light kind, spots and shininess below 1.
+const SCENES: [&str; 4] = [
+    "default.ron",
+    "spotlights.ron",
+    "specular_exponents.ron",
+    "mirror_cap.ron",
+];
+
+#[test]
+fn material_switch_view_and_light_colour_edits_trace_nothing() {
+    for name in SCENES {
+        let base = Shot::of(example(name));
+        let first_material = base.scene.materials.keys().next().unwrap().clone();
+        let edits = [
+            base.edited(|s, _| {
+                let m = s.materials.get_mut(&first_material).unwrap();
+                m.diffuse = DVec3::new(0.9, 0.2, 0.1);
+                m.shininess = 0.0;
+            }),
+            base.edited(|s, _| s.materials.get_mut(&first_material).unwrap().ambient *= 3.0),
+            base.edited(|_, o| o.switches.set(Term::Specular, false)),
+            base.edited(|_, o| o.switches.set(Term::Shadows, false)),
+            base.edited(|_, o| o.switches.set(Term::Reflection, false)),
+            base.edited(|_, o| o.switches = o.switches.with_solo(Some(Term::Diffuse))),
+            base.edited(|_, o| o.switches = o.switches.with_solo(Some(Term::Shadows))),
+            base.edited(|_, o| o.switches = o.switches.with_solo(Some(Term::Reflection))),
+            base.edited(|_, o| o.view = View::Normal),
+            base.edited(|_, o| o.view = View::Depth),
+            base.edited(|_, o| o.view = View::ObjectId),
+            base.edited(|_, o| o.view = View::ShadowMask),
+            base.edited(|s, _| s.render.background = DVec3::new(0.3, 0.1, 0.0)),
+            base.edited(|s, _| s.render.max_depth = 1),
+            // Back to the base: the deeper mirror rays of max_depth 5 were kept.
+            base.clone(),
+            base.edited(|s, _| {
+                for light in &mut s.lights {
+                    match light {
+                        Light::Ambient { intensity, .. }
+                        | Light::Point { intensity, .. }
+                        | Light::Directional { intensity, .. }
+                        | Light::Spot { intensity, .. } => *intensity *= 0.5,
+                    }
+                    set_colour(light, DVec3::new(0.2, 0.9, 0.4));
+                }
+            }),
+        ];
+        for (step, pass) in edit_chain(&base, &edits, name).iter().enumerate() {
+            assert!(pass.reused, "{name}, edit {step}");
+            assert_eq!(pass.traced, NOTHING, "{name}, edit {step}");
+        }
+    }
+}
+
+fn set_colour(light: &mut Light, to: DVec3) {
+    match light {
+        Light::Ambient { colour, .. }
+        | Light::Point { colour, .. }
+        | Light::Directional { colour, .. }
+        | Light::Spot { colour, .. } => *colour = to,
+    }
+}
+
+#[test]
+fn a_material_made_shiny_or_lit_traces_only_the_rays_it_now_needs() {
+    // Red plastic has no mirror: giving it one needs mirror rays never traced (and their
+    // hits' shadow rays), but no camera ray.
+    let base = Shot::of(example("default.ron"));
+    let shiny = base.edited(|s, _| {
+        s.materials.get_mut("red plastic").unwrap().mirror = DVec3::splat(0.5);
+    });
+    let passes = edit_chain(&base, &[shiny], "mirror 0 -> 0.5");
+    let traced = passes[0].traced;
+    assert_eq!(traced.primary, 0);
+    assert!(traced.reflection > 0);
+    let more = passes[0].sums.rays.reflection - base.traced().rays.reflection;
+    assert_eq!(traced.reflection, more, "exactly the new mirror rays");
+
+    // Gold without diffuse and specular casts no shadow ray; lit again it needs them.
+    let dull = base.edited(|s, _| {
+        let gold = s.materials.get_mut("gold").unwrap();
+        gold.diffuse = DVec3::ZERO;
+        gold.specular = DVec3::ZERO;
+    });
+    let passes = edit_chain(&dull, std::slice::from_ref(&base), "gold lit again");
+    let traced = passes[0].traced;
+    assert_eq!((traced.primary, traced.reflection), (0, 0));
+    let more = base.traced().rays.shadow - dull.traced().rays.shadow;
+    assert!(more > 0);
+    assert_eq!(traced.shadow, more, "exactly gold's shadow rays");
+}
+
+#[test]
+fn a_material_edit_shades_only_the_pixels_whose_rays_meet_that_material() {
+    let base = Shot::of(example("default.ron"));
+    let all = 64 * 48;
+    let redder = base.edited(|s, _| {
+        s.materials.get_mut("red plastic").unwrap().diffuse.x = 0.95;
+    });
+    let passes = edit_chain(&base, &[redder, base.clone()], "red plastic and back");
+    for pass in &passes {
+        // The red ball and its reflections, not the floor, the sky or the other balls.
+        assert!(pass.shaded_pixels > 0 && pass.shaded_pixels < all / 4);
+    }
+    let switched = base.edited(|_, o| o.switches.set(Term::Ambient, false));
+    let passes = edit_chain(&base, &[switched], "ambient off");
+    assert_eq!(passes[0].shaded_pixels, all, "a switch shades every pixel");
+}
+
+/// The shadow rays `shot` casts towards scene light `light` (those of the others do not
+/// change when it is muted).
+fn shadow_rays_of(shot: &Shot, light: usize) -> u64 {
+    let muted = shot.edited(|_, o| {
+        o.isolation.muted_lights.insert(light);
+    });
+    shot.traced().rays.shadow - muted.traced().rays.shadow
+}
+
+#[test]
+fn moving_a_light_recasts_its_shadow_rays_and_no_other_ray() {
+    for name in ["default.ron", "spotlights.ron"] {
+        let base = Shot::of(example(name));
+        for (index, light) in base.scene.lights.iter().enumerate() {
+            if matches!(light, Light::Ambient { .. }) {
+                continue;
+            }
+            let moved = base.edited(|s, _| match &mut s.lights[index] {
+                Light::Point { position, .. } | Light::Spot { position, .. } => {
+                    *position += DVec3::new(0.3, -0.2, 0.1);
+                }
+                Light::Directional { direction, .. } => *direction += DVec3::new(0.1, 0.0, 0.2),
+                Light::Ambient { .. } => unreachable!(),
+            });
+            let what = format!("{name}, light {index} moved");
+            let passes = edit_chain(&base, std::slice::from_ref(&moved), &what);
+            let traced = passes[0].traced;
+            assert_eq!((traced.primary, traced.reflection), (0, 0), "{what}");
+            assert!(traced.shadow > 0, "{what}");
+            assert_eq!(traced.shadow, shadow_rays_of(&moved, index), "{what}");
+        }
+    }
+}
+
+#[test]
+fn a_wider_spot_cone_casts_the_shadow_rays_it_now_needs() {
+    let base = Shot::of(example("default.ron"));
+    let wider = base.edited(|s, _| {
+        for light in &mut s.lights {
+            if let Light::Spot { angle_deg, .. } = light {
+                *angle_deg = 60.0;
+            }
+        }
+    });
+    let passes = edit_chain(&base, std::slice::from_ref(&wider), "spot 22 -> 60 degrees");
+    let traced = passes[0].traced;
+    assert_eq!((traced.primary, traced.reflection), (0, 0));
+    assert_eq!(
+        traced.shadow,
+        wider.traced().rays.shadow - base.traced().rays.shadow
+    );
+}
+
+#[test]
+fn muting_and_solo_lights_reshade_and_unmuted_lights_recast_only_their_shadows() {
+    let base = Shot::of(example("default.ron"));
+    let edits = [
+        base.edited(|_, o| {
+            o.isolation.muted_lights.insert(1);
+        }),
+        // Solo the spot: the point and directional lights leave the world.
+        base.edited(|_, o| {
+            o.isolation.solo_lights.insert(3);
+        }),
+        base.clone(),
+    ];
+    let passes = edit_chain(&base, &edits, "isolation");
+    assert!(passes.iter().all(|p| p.reused));
+    assert_eq!(passes[0].traced, NOTHING, "mute");
+    assert_eq!(passes[1].traced, NOTHING, "solo");
+    // The cache keeps the lights of the world it served: the two lights back in the
+    // picture cast their shadow rays again, and nothing else does.
+    let back = passes[2].traced;
+    assert_eq!((back.primary, back.reflection), (0, 0));
+    assert_eq!(
+        back.shadow,
+        shadow_rays_of(&base, 1) + shadow_rays_of(&base, 2)
+    );
+}
+
+#[test]
+fn lights_added_to_a_scene_without_any_cast_all_their_shadow_rays_only() {
+    let lit = Shot::of(example("default.ron"));
+    let dark = lit.edited(|s, _| s.lights.retain(|l| matches!(l, Light::Ambient { .. })));
+    let passes = edit_chain(&dark, &[lit.clone(), dark.clone()], "lights added, removed");
+    let traced = passes[0].traced;
+    assert_eq!((traced.primary, traced.reflection), (0, 0));
+    assert_eq!(traced.shadow, lit.traced().rays.shadow);
+    assert_eq!(passes[1].traced, NOTHING, "lights removed again");
+}
+
+#[test]
+fn geometry_camera_size_and_hidden_objects_retrace_everything() {
+    let base = Shot::of(example("default.ron"));
+    let moved_object = base.edited(|s, _| {
+        if let Transform::Trs(trs) = &mut s.objects[1].transform {
+            trs.translate.x += 0.25;
+        }
+    });
+    let other_shape = base.edited(|s, _| s.objects[2].shape = raylab::scene::Shape::Cube);
+    let camera = base.edited(|s, _| s.camera.fov_deg += 1.0);
+    let hidden = base.edited(|_, o| {
+        o.isolation = Isolation::default();
+        o.isolation.hidden_objects.insert(2);
+    });
+    let size = base.edited(|_, o| o.width = 63);
+    let cache = base.cached(None).cache;
+    let cases = [
+        (&moved_object, RetraceReason::Objects),
+        (&other_shape, RetraceReason::Objects),
+        (&camera, RetraceReason::Camera),
+        (&hidden, RetraceReason::Objects),
+        (&size, RetraceReason::Size),
+    ];
+    for (shot, reason) in cases {
+        let reuse = cache.reuse(&shot.world(), shot.options.width, shot.options.height);
+        assert_eq!(reuse, Reuse::Retrace(reason));
+        let pass = shot.cached(Some(&cache));
+        assert!(!pass.reused, "{reason:?}");
+        assert_eq!(pass.traced, pass.sums.rays, "{reason:?}: every ray traced");
+        assert_same_pass(&pass.sums, &shot.traced(), &format!("{reason:?}"));
+    }
+    // A light moved is not a geometry edit: only its column goes.
+    let world = base.world();
+    let reuse = cache.reuse(&world, 64, 48);
+    assert_eq!(reuse.recast_lights(), Vec::<usize>::new());
+    let moved_light = base.edited(|s, _| {
+        if let Light::Point { position, .. } = &mut s.lights[1] {
+            position.y += 1.0;
+        }
+    });
+    let reuse = cache.reuse(&moved_light.world(), 64, 48);
+    assert!(reuse.is_reshade());
+    assert_eq!(
+        reuse.recast_lights(),
+        vec![0],
+        "world light 0 is scene light 1"
+    );
+}
