@@ -50,16 +50,7 @@ fn orbiting_on_empty_space_moves_the_view_and_a_click_still_picks() {
 
     // A click without a drag still picks the object under the cursor, seen from the view.
     let pos = screen(&harness, trs(&before, 3).translate);
-    harness.event(Event::PointerMoved(pos));
-    for pressed in [true, false] {
-        harness.event(Event::PointerButton {
-            pos,
-            button: PointerButton::Primary,
-            pressed,
-            modifiers: Modifiers::NONE,
-        });
-    }
-    harness.run();
+    editor_harness::click_at(&mut harness, pos);
     assert_eq!(harness.state().selection(), &Selection::Object(3));
     assert_eq!(harness.state().scene(), &before, "a click edits nothing");
 }

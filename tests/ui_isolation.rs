@@ -8,10 +8,9 @@ mod editor_harness;
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
-use std::time::{Duration, Instant};
 
 use clap::Parser;
-use editor_harness::{click_at, editor_harness, temp_dir};
+use editor_harness::{click_at, editor_harness, temp_dir, wait_for_final};
 use egui::{Modifiers, Pos2, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -70,23 +69,6 @@ fn isolation(harness: &Harness<'_, EditorApp>) -> Isolation {
 
 fn set(items: &[usize]) -> BTreeSet<usize> {
     items.iter().copied().collect()
-}
-
-/// Waits until the final frame of the newest request is on screen.
-fn wait_for_final(harness: &mut Harness<'_, EditorApp>) {
-    let deadline = Instant::now() + Duration::from_secs(120);
-    while !harness.state().preview().is_some_and(|p| {
-        p.shown()
-            .is_some_and(|s| s.is_final && s.generation == p.generation())
-    }) {
-        assert!(
-            Instant::now() < deadline,
-            "timed out waiting for the final frame"
-        );
-        std::thread::sleep(Duration::from_millis(10));
-        harness.step();
-    }
-    harness.run_ok();
 }
 
 /// What `raylab render scene.ron <flags>` renders, parsed by the real command line.

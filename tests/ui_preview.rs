@@ -6,8 +6,8 @@ mod editor_harness;
 
 use std::path::PathBuf;
 
-use editor_harness::{click_at, editor_harness, step_until};
-use egui::{Event, Modifiers, PointerButton, Pos2, Vec2};
+use editor_harness::{click_at, click_with, editor_harness, wait_for_final};
+use egui::{Modifiers, Pos2, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use raylab::cli::RenderArgs;
@@ -47,16 +47,6 @@ fn harness_sized(name: &str, size: Vec2) -> Harness<'static, EditorApp> {
     harness.run_ok();
     assert_eq!(harness.state().scene(), &small_scene());
     harness
-}
-
-/// Waits until the final frame of the newest request is on screen.
-fn wait_for_final(harness: &mut Harness<'_, EditorApp>) {
-    step_until(harness, "the final frame", |app| {
-        app.preview().is_some_and(|p| {
-            p.shown()
-                .is_some_and(|s| s.is_final && s.generation == p.generation())
-        })
-    });
 }
 
 fn click(harness: &mut Harness<'_, EditorApp>, label: &str) {
@@ -290,19 +280,7 @@ fn an_alt_click_inspects_without_the_toggle() {
     let mut harness = harness("alt");
     wait_for_final(&mut harness);
     let pos = object_on_screen(&harness, 3);
-    harness.event(Event::ModifiersChanged(Modifiers::ALT));
-    harness.event(Event::PointerMoved(pos));
-    for pressed in [true, false] {
-        harness.event(Event::PointerButton {
-            pos,
-            button: PointerButton::Primary,
-            pressed,
-            modifiers: Modifiers::ALT,
-        });
-    }
-    harness.run_ok();
-    harness.event(Event::ModifiersChanged(Modifiers::NONE));
-    harness.run_ok();
+    click_with(&mut harness, pos, Modifiers::ALT);
     assert_eq!(
         harness.state().selection(),
         &Selection::None,

@@ -13,22 +13,12 @@ use raylab::preview::Pass;
 use raylab::trace::{RenderOptions, RenderProgress, World, render};
 use raylab::ui::viewport::view_camera::free_render_size;
 use raylab::ui::{CAMERA_VIEW_LABEL, EditorApp, Selection, ViewMemory};
-use view_harness::{
-    click, drag, harness, harness_on, orbit, picture, scene_file, screen, step_until, view,
-};
+use view_harness::editor_harness::wait_for_final;
+use view_harness::{click, drag, harness, harness_on, orbit, picture, scene_file, screen, view};
 
 fn undo(harness: &mut Harness<'_, EditorApp>) {
     harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     harness.run_ok();
-}
-
-fn wait_for_final(harness: &mut Harness<'_, EditorApp>) {
-    step_until(harness, "the final frame", |app| {
-        app.preview().is_some_and(|p| {
-            p.shown()
-                .is_some_and(|s| s.is_final && s.generation == p.generation())
-        })
-    });
 }
 
 #[test]

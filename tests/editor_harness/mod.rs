@@ -77,16 +77,36 @@ fn build(
 
 /// A primary click (press and release) at `pos`.
 pub fn click_at(harness: &mut Harness<'_, EditorApp>, pos: Pos2) {
+    click_with(harness, pos, Modifiers::NONE);
+}
+
+/// A primary click at `pos` with `modifiers` held (and released after).
+pub fn click_with(harness: &mut Harness<'_, EditorApp>, pos: Pos2, modifiers: Modifiers) {
+    harness.event(Event::ModifiersChanged(modifiers));
     harness.event(Event::PointerMoved(pos));
     for pressed in [true, false] {
         harness.event(Event::PointerButton {
             pos,
             button: PointerButton::Primary,
             pressed,
-            modifiers: Modifiers::NONE,
+            modifiers,
         });
     }
     harness.run_ok();
+    if modifiers != Modifiers::NONE {
+        harness.event(Event::ModifiersChanged(Modifiers::NONE));
+        harness.run_ok();
+    }
+}
+
+/// Waits until the final frame of the newest preview request is on screen.
+pub fn wait_for_final(harness: &mut Harness<'_, EditorApp>) {
+    step_until(harness, "the final frame", |app| {
+        app.preview().is_some_and(|p| {
+            p.shown()
+                .is_some_and(|s| s.is_final && s.generation == p.generation())
+        })
+    });
 }
 
 /// Asks the window to close, as the window manager's close button does.

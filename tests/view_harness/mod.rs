@@ -4,13 +4,13 @@
 #![allow(dead_code)]
 
 #[path = "../editor_harness/mod.rs"]
-mod editor_harness;
+pub mod editor_harness;
 
 pub use editor_harness::step_until;
 
 use std::path::PathBuf;
 
-use egui::{Event, Modifiers, PointerButton, Pos2, Rect, Vec2};
+use egui::{Modifiers, PointerButton, Pos2, Rect, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use glam::DVec3;
@@ -116,19 +116,7 @@ pub fn segments(harness: &Harness<'_, EditorApp>) -> Vec<ScreenSegment> {
 
 /// A primary click at `pos` with `modifiers`, then waits for the probes.
 pub fn click(harness: &mut Harness<'_, EditorApp>, pos: Pos2, modifiers: Modifiers) {
-    harness.event(Event::ModifiersChanged(modifiers));
-    harness.event(Event::PointerMoved(pos));
-    for pressed in [true, false] {
-        harness.event(Event::PointerButton {
-            pos,
-            button: PointerButton::Primary,
-            pressed,
-            modifiers,
-        });
-    }
-    harness.run_ok();
-    harness.event(Event::ModifiersChanged(Modifiers::NONE));
-    harness.run_ok();
+    editor_harness::click_with(harness, pos, modifiers);
     wait_for_probes(harness);
 }
 
