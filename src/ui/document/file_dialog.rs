@@ -254,13 +254,13 @@ pub fn rfd_dialog(request: &DialogRequest) -> PathFuture {
     if let Some((name, extension)) = purpose.filter() {
         dialog = dialog.add_filter(name, &[extension]);
     }
-    if purpose.is_save() {
-        let answer = dialog.set_file_name(&request.file_name).save_file();
-        Box::pin(async move { answer.await.map(|file| file.path().to_owned()) })
+    let answer: Pin<Box<dyn Future<Output = Option<rfd::FileHandle>> + Send>> = if purpose.is_save()
+    {
+        Box::pin(dialog.set_file_name(&request.file_name).save_file())
     } else {
-        let answer = dialog.pick_file();
-        Box::pin(async move { answer.await.map(|file| file.path().to_owned()) })
-    }
+        Box::pin(dialog.pick_file())
+    };
+    Box::pin(async move { answer.await.map(|file| file.path().to_owned()) })
 }
 
 /// Waits for a native dialog's answer on a thread of its own, so the window keeps
