@@ -1,32 +1,16 @@
 //! The preview's final frame is the command line's picture: bit-identical for the same
 //! switches and views, and samples added in batches sum exactly as in one go.
 
+mod common;
 mod worker_harness;
 
-use raylab::cli::RenderArgs;
+use common::cli::cli_options;
 use raylab::preview::{Pass, PreviewRequest};
-use raylab::scene::Scene;
 use raylab::trace::{
     Image, RenderOptions, RenderProgress, SampleSums, Term, View, World, render, render_samples,
     render_samples_into,
 };
 use worker_harness::{small_scene, until_final, worker_with_counter};
-
-/// Render options as `raylab render` builds them from its arguments.
-fn cli_options(scene: &Scene, off: &[Term], solo: Option<Term>, view: View) -> RenderOptions {
-    let args = RenderArgs {
-        scene: "scene.ron".into(),
-        output: "out.png".into(),
-        width: None,
-        height: None,
-        spp: None,
-        off: off.to_vec(),
-        solo,
-        view,
-        isolation: Default::default(),
-    };
-    args.options(scene).unwrap()
-}
 
 /// Whether two images are equal pixel for pixel (exact f32 equality).
 fn identical(a: &Image, b: &Image) -> bool {

@@ -2,15 +2,16 @@
 //! through AccessKit with the real preview worker (on a small scene, so the final frame
 //! comes quickly).
 
+mod common;
 mod editor_harness;
 
 use std::path::PathBuf;
 
+use common::cli::cli_options;
 use editor_harness::{click_at, click_with, editor_harness, wait_for_final};
 use egui::{Modifiers, Pos2, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use raylab::cli::RenderArgs;
 use raylab::preview::Pass;
 use raylab::scene::{Scene, save_scene};
 use raylab::trace::{PinholeCamera, RenderProgress, Term, View, World, render};
@@ -64,25 +65,11 @@ fn toggle(harness: &mut Harness<'_, EditorApp>, label: &str) {
 
 /// What `raylab render scene.ron --off .. --solo .. --view ..` renders, exactly.
 fn cli_image(scene: &Scene, off: &[Term], solo: Option<Term>, view: View) -> raylab::trace::Image {
-    let args = RenderArgs {
-        scene: "scene.ron".into(),
-        output: "out.png".into(),
-        width: None,
-        height: None,
-        spp: None,
-        off: off.to_vec(),
-        solo,
-        view,
-        isolation: Default::default(),
-    };
     let world = World::new(scene).unwrap();
-    render(
-        &world,
-        &args.options(scene).unwrap(),
-        &RenderProgress::default(),
-    )
-    .unwrap()
-    .0
+    let options = cli_options(scene, off, solo, view);
+    render(&world, &options, &RenderProgress::default())
+        .unwrap()
+        .0
 }
 
 /// The preview's final image equals the CLI's pixel for pixel (exact f32 equality).
