@@ -3,102 +3,12 @@
 //! rays the edit made stale or newly needed (none for a material, switch, view or light
 //! colour edit; one light's shadow rays for that light moved; everything for geometry).
 
+mod reshade_harness;
+
 use glam::DVec3;
-use raylab::scene::examples::EXAMPLE_SCENES;
-use raylab::scene::{Light, Scene, Transform, parse_scene};
-use raylab::trace::{
-    CachedPass, HitCache, Isolation, RayCounts, RenderOptions, RenderProgress, RetraceReason,
-    Reuse, SampleSums, Term, View, World, render_one_sample_cached, render_samples,
-};
-
-/// An example scene at 64 x 48.
-fn example(name: &str) -> Scene {
-    let text = EXAMPLE_SCENES.iter().find(|(n, _)| *n == name).unwrap().1;
-    let mut scene = parse_scene(text).unwrap();
-    scene.camera.width = 64;
-    scene.camera.height = 48;
-    scene
-}
-
-/// A scene and how it is rendered: the state before or after an edit.
-#[derive(Clone)]
-struct Shot {
-    scene: Scene,
-    options: RenderOptions,
-}
-
-impl Shot {
-    fn of(scene: Scene) -> Self {
-        let options = RenderOptions::from_scene(&scene);
-        Self { scene, options }
-    }
-
-    fn world(&self) -> World {
-        World::isolated(&self.scene, &self.options.isolation).unwrap()
-    }
-
-    /// The one-sample pass traced from scratch, as `raylab render` does it.
-    fn traced(&self) -> SampleSums {
-        let options = RenderOptions {
-            samples_per_pixel: 1,
-            ..self.options.clone()
-        };
-        render_samples(&self.world(), &options, 0..1, &RenderProgress::default()).unwrap()
-    }
-
-    /// The one-sample pass answered from `cache` where it can.
-    fn cached(&self, cache: Option<&HitCache>) -> CachedPass {
-        let world = self.world();
-        render_one_sample_cached(&world, &self.options, cache, &RenderProgress::default()).unwrap()
-    }
-
-    fn edited(&self, edit: impl FnOnce(&mut Scene, &mut RenderOptions)) -> Self {
-        let mut next = self.clone();
-        edit(&mut next.scene, &mut next.options);
-        next
-    }
-}
-
-/// Every sum's bits, the guard's counts and the modelled rays are the same.
-fn assert_same_pass(reshaded: &SampleSums, traced: &SampleSums, what: &str) {
-    let bits = |s: &SampleSums| -> Vec<[u64; 3]> {
-        s.sums
-            .iter()
-            .map(|v| v.to_array().map(f64::to_bits))
-            .collect()
-    };
-    assert!(bits(reshaded) == bits(traced), "{what}: pixels differ");
-    assert_eq!(reshaded.non_finite, traced.non_finite, "{what}");
-    assert_eq!(reshaded.rays, traced.rays, "{what}: rays modelled");
-}
-
-/// Renders `before` (filling a cache), then each edit in turn from the cache the one
-/// before left; checks every re-shaded pass against a full trace and returns the rays
-/// each one traced.
-fn edit_chain(before: &Shot, edits: &[Shot], what: &str) -> Vec<CachedPass> {
-    let first = before.cached(None);
-    assert_same_pass(&first.sums, &before.traced(), what);
-    assert!(!first.reused);
-    assert_eq!(
-        first.traced, first.sums.rays,
-        "{what}: no cache traces everything"
-    );
-    let mut cache = first.cache;
-    let mut passes = Vec::new();
-    for (step, shot) in edits.iter().enumerate() {
-        let pass = shot.cached(Some(&cache));
-        assert_same_pass(&pass.sums, &shot.traced(), &format!("{what}, edit {step}"));
-        cache = pass.cache.clone();
-        passes.push(pass);
-    }
-    passes
-}
-
-const NOTHING: RayCounts = RayCounts {
-    primary: 0,
-    shadow: 0,
-    reflection: 0,
-};
+use raylab::scene::{Light, Transform};
+use raylab::trace::{Isolation, RetraceReason, Reuse, Term, View};
+use reshade_harness::{NOTHING, Shot, assert_same_pass, edit_chain, example, set_colour};
 
 /// Scenes with mirrors, every light kind, spots and shininess below 1.
 const SCENES: [&str; 4] = [
@@ -153,12 +63,88 @@ fn material_switch_view_and_light_colour_edits_trace_nothing() {
     }
 }
 
-fn set_colour(light: &mut Light, to: DVec3) {
-    match light {
-        Light::Ambient { colour, .. }
-        | Light::Point { colour, .. }
-        | Light::Directional { colour, .. }
-        | Light::Spot { colour, .. } => *colour = to,
+/// Colour edits (shininess aside) and term switches in the lit picture: every pixel
+/// shaded comes from its cached light factors, none is shaded in full, and each pass is
+/// still the traced one bit for bit.
+#[test]
+fn colour_and_switch_edits_shade_every_pixel_from_light_factors() {
+    for name in SCENES {
+        let base = Shot::of(example(name));
+        let first_material = base.scene.materials.keys().next().unwrap().clone();
+        let edits = [
+            base.edited(|s, _| {
+                let m = s.materials.get_mut(&first_material).unwrap();
+                m.diffuse = DVec3::new(0.9, 0.2, 0.1);
+                m.specular *= 0.5;
+                m.ambient *= 3.0;
+            }),
+            base.edited(|_, o| o.switches.set(Term::Specular, false)),
+            base.edited(|_, o| o.switches.set(Term::Diffuse, false)),
+            base.edited(|_, o| o.switches.set(Term::Shadows, false)),
+            base.edited(|_, o| o.switches.set(Term::Reflection, false)),
+            base.clone(),
+            base.edited(|_, o| o.switches = o.switches.with_solo(Some(Term::Specular))),
+            base.edited(|s, _| s.render.background = DVec3::new(0.3, 0.1, 0.0)),
+            base.edited(|s, _| {
+                for light in &mut s.lights {
+                    set_colour(light, DVec3::new(0.2, 0.9, 0.4));
+                }
+            }),
+            // A light turned down to nothing and up again keeps its factors.
+            base.edited(|s, _| set_colour(s.lights.last_mut().unwrap(), DVec3::ZERO)),
+            base.clone(),
+        ];
+        for (step, pass) in edit_chain(&base, &edits, name).iter().enumerate() {
+            assert_eq!(pass.traced, NOTHING, "{name}, edit {step}");
+            // (The first material may be out of the picture; the switches shade it all.)
+            assert!(step == 0 || pass.shaded_pixels > 0, "{name}, edit {step}");
+            assert_eq!(
+                pass.quick_pixels, pass.shaded_pixels,
+                "{name}, edit {step}: every shaded pixel from its factors"
+            );
+        }
+    }
+}
+
+/// The lobes kept are for one shininess: a new one, set while the specular term is off,
+/// has them worked out again before the term comes back.
+#[test]
+fn a_new_shininess_works_its_lobes_out_again_even_while_specular_is_off() {
+    let base = Shot::of(example("default.ron"));
+    let no_specular = base.edited(|_, o| o.switches.set(Term::Specular, false));
+    let duller = no_specular.edited(|s, _| {
+        s.materials.get_mut("red plastic").unwrap().shininess = 3.0;
+    });
+    let back_on = duller.edited(|_, o| o.switches.set(Term::Specular, true));
+    let passes = edit_chain(&base, &[no_specular.clone(), duller, back_on], "shininess");
+    assert_eq!(passes[0].quick_pixels, passes[0].shaded_pixels);
+    // The red ball's pixels are shaded in full: their lobes were for shininess 60.
+    let (quick, shaded) = (passes[1].quick_pixels, passes[1].shaded_pixels);
+    assert!(quick == 0 && shaded > 0, "{quick} of {shaded} from factors");
+    assert_eq!(passes[2].quick_pixels, passes[2].shaded_pixels, "new lobes kept");
+
+    // With diffuse off too the shader looks at no light there: the old lobes are
+    // forgotten, and the pixels are shaded in full when the terms come back.
+    let unlit = no_specular.edited(|_, o| o.switches.set(Term::Diffuse, false));
+    let duller = unlit.edited(|s, _| {
+        s.materials.get_mut("red plastic").unwrap().shininess = 3.0;
+    });
+    let lit = duller.edited(|_, o| *o = base.options.clone());
+    let passes = edit_chain(&base, &[unlit, duller, lit], "shininess, unlit");
+    assert!(passes[2].quick_pixels < passes[2].shaded_pixels);
+}
+
+/// The debug views are not the lit picture: they are shaded in full.
+#[test]
+fn debug_views_are_not_shaded_from_light_factors() {
+    let base = Shot::of(example("default.ron"));
+    let views = [View::Normal, View::Depth, View::ObjectId, View::ShadowMask];
+    let edits: Vec<Shot> = views
+        .iter()
+        .map(|&view| base.edited(|_, o| o.view = view))
+        .collect();
+    for pass in edit_chain(&base, &edits, "views") {
+        assert_eq!(pass.quick_pixels, 0);
     }
 }
 

@@ -20,15 +20,16 @@ use std::sync::Arc;
 
 use glam::{DAffine3, DVec3};
 
+use super::light_factors::{self, LightSlot};
 use super::lights::WorldLight;
 use super::render::RenderOptions;
 use super::terms::{TermSwitches, View};
 use super::world::{SurfacePoint, World};
 use crate::scene::{Camera, Material, Shape};
 
-/// The largest image the preview keeps a cache for: about 100 bytes a cached ray and 36
-/// a pixel, so 1280 x 1024 is some 180 MB with a few mirrors; larger previews re-trace
-/// every edit.
+/// The largest image the preview keeps a cache for: about 90 bytes a cached ray, 32 more
+/// per ray and light, and 36 a pixel, so 1280 x 1024 is some 350 MB with three lights
+/// and a few mirrors; larger previews re-trace every edit.
 pub const MAX_CACHED_PIXELS: usize = 1280 * 1024;
 
 /// A shadow ray the shader did not cast at that hit.
@@ -136,15 +137,16 @@ pub(super) struct PixelColour {
     pub rays: [u32; 3],
 }
 
-/// The cached rays of one tile. The chains and visibility are shared with the cache before when an edit
-/// left them as they were (most edits add no ray), so a re-shade copies nothing.
+/// The cached rays of one tile. The chains and light slots are shared with the cache
+/// before when an edit left them as they were (most edits add no ray), so a re-shade
+/// copies nothing.
 #[derive(Clone, Debug)]
 pub(super) struct TileHits {
     /// The pixels' mirror chains.
     pub chains: Arc<Chains>,
-    /// Per entry of `chains.hits`, one code per light of the cache (`NOT_CAST`, `CLEAR`
-    /// or the blocker's world index).
-    pub visibility: Arc<Vec<u32>>,
+    /// Per entry of `chains.hits`, one slot per light of the cache: its shadow ray's
+    /// answer (`NOT_CAST`, `CLEAR` or the blocker's world index) and what it gave the hit.
+    pub slots: Arc<Vec<LightSlot>>,
     /// Each pixel's colour, row-major within the tile.
     pub colours: Arc<Vec<PixelColour>>,
 }
@@ -283,6 +285,9 @@ pub struct HitCache {
     /// Per light of the world it was traced in, its shadow target: the column of
     /// shadow answers serves any light with the same target, whatever its index.
     lights: Vec<ShadowTarget>,
+    /// Per light likewise, its placement: the column of light factors serves any light
+    /// placed alike.
+    placements: Vec<[u64; 8]>,
     /// What the cached colours were shaded with.
     shading: Shading,
     object_materials: Vec<Material>,
@@ -295,6 +300,7 @@ impl HitCache {
         Self {
             geometry: RayGeometry::of(world, options.width, options.height),
             lights: world.lights.iter().map(ShadowTarget::of).collect(),
+            placements: light_factors::placements(world),
             shading: Shading::of(world, options),
             object_materials: object_materials(world),
             tiles,
@@ -321,7 +327,17 @@ impl HitCache {
         })
     }
 
-    /// Lights per cached entry (the visibility columns).
+    /// Per light of `world`, the column of light factors that serves it.
+    pub(super) fn factor_columns(&self, world: &World) -> Vec<Option<usize>> {
+        light_factors::factor_columns(&self.placements, world)
+    }
+
+    /// Per object of `world`, whether the lobes cached for it are stale.
+    pub(super) fn stale_lobes(&self, world: &World) -> Vec<bool> {
+        light_factors::stale_lobes(&self.object_materials, world)
+    }
+
+    /// Lights per cached entry (the light slot columns).
     pub(super) fn light_count(&self) -> usize {
         self.lights.len()
     }
@@ -364,7 +380,8 @@ impl HitCache {
             .iter()
             .map(|t| {
                 t.chains.hits.capacity() * size_of::<CachedHit>()
-                    + (t.visibility.capacity() + t.chains.chain_ends.capacity()) * size_of::<u32>()
+                    + t.slots.capacity() * size_of::<LightSlot>()
+                    + t.chains.chain_ends.capacity() * size_of::<u32>()
             })
             .sum()
     }

@@ -47,6 +47,9 @@ pub struct LightSample {
     /// Where a shadow ray must reach: the light's position, or `None` for a light at
     /// infinity.
     pub light_position: Option<DVec3>,
+    /// The squared distance the strength falls off with (1 for a light at infinity):
+    /// `radiance` is [`WorldLight::radiance_at`] this distance, bit for bit.
+    pub distance_squared: f64,
 }
 
 impl WorldLight {
@@ -89,9 +92,11 @@ impl WorldLight {
         match *self {
             WorldLight::Point { position, strength } => at_distance(p, position, strength),
             WorldLight::Directional { to_light, strength } => Some(LightSample {
+                // strength / 1, exactly.
                 radiance: strength,
                 to_light,
                 light_position: None,
+                distance_squared: 1.0,
             }),
             WorldLight::Spot {
                 position,
@@ -107,6 +112,48 @@ impl WorldLight {
                 (cos_to_p >= cos_angle).then_some(sample)
             }
         }
+    }
+
+    /// The strength arriving from `distance_squared` away, as [`Self::sample`] gives it:
+    /// the falloff alone, for re-shading a point whose distance is known.
+    #[inline]
+    #[must_use]
+    pub fn radiance_at(&self, distance_squared: f64) -> DVec3 {
+        self.strength() / distance_squared
+    }
+
+    /// Everything about the light but its strength, bit for bit: two lights with the same
+    /// placement sample every point alike up to their strengths.
+    #[must_use]
+    pub fn placement(&self) -> [u64; 8] {
+        let mut key = [0u64; 8];
+        let mut put = |at: usize, values: &[f64]| {
+            for (i, v) in values.iter().enumerate() {
+                key[at + i] = v.to_bits();
+            }
+        };
+        match *self {
+            WorldLight::Point { position, .. } => {
+                put(1, &position.to_array());
+                key[0] = 1;
+            }
+            WorldLight::Directional { to_light, .. } => {
+                put(1, &to_light.to_array());
+                key[0] = 2;
+            }
+            WorldLight::Spot {
+                position,
+                axis,
+                cos_angle,
+                ..
+            } => {
+                put(1, &position.to_array());
+                put(4, &axis.to_array());
+                put(7, &[cos_angle]);
+                key[0] = 3;
+            }
+        }
+        key
     }
 
     /// colour * intensity.
@@ -131,12 +178,52 @@ fn at_distance(p: DVec3, position: DVec3, strength: DVec3) -> Option<LightSample
         radiance: strength / d2,
         to_light: offset / d2.sqrt(),
         light_position: Some(position),
+        distance_squared: d2,
     })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn radiance_at_the_sampled_distance_is_the_sampled_radiance_bit_for_bit() {
+        let strength = DVec3::new(0.7, 1.3, 2.9);
+        let lights = [
+            WorldLight::Point {
+                position: DVec3::new(0.3, 4.1, -1.7),
+                strength,
+            },
+            WorldLight::Directional {
+                to_light: DVec3::new(0.6, 0.8, 0.0),
+                strength,
+            },
+            WorldLight::Spot {
+                position: DVec3::new(0.1, 5.0, 0.2),
+                axis: -DVec3::Y,
+                cos_angle: -1.0,
+                strength,
+            },
+        ];
+        for light in lights {
+            for p in [DVec3::ZERO, DVec3::new(1.1, -0.3, 7.9), DVec3::splat(1e5)] {
+                let sample = light.sample(p).unwrap();
+                let again = light.radiance_at(sample.distance_squared);
+                assert_eq!(sample.radiance.to_array().map(f64::to_bits), again.to_array().map(f64::to_bits));
+            }
+        }
+        let moved = WorldLight::Point {
+            position: DVec3::new(0.3, 4.1, -1.6),
+            strength,
+        };
+        let brighter = WorldLight::Point {
+            position: DVec3::new(0.3, 4.1, -1.7),
+            strength: strength * 2.0,
+        };
+        assert_eq!(lights[0].placement(), brighter.placement());
+        assert_ne!(lights[0].placement(), moved.placement());
+        assert_ne!(lights[0].placement(), lights[2].placement());
+    }
 
     #[test]
     fn point_light_falls_off_with_distance_squared() {

@@ -22,7 +22,7 @@ impl LocalLight {
     #[inline]
     #[must_use]
     pub fn diffuse(&self, kd: DVec3, n_dot_l: f64) -> DVec3 {
-        kd * self.strength * n_dot_l
+        diffuse_term(kd, self.strength, n_dot_l)
     }
 
     /// `ks * L * max(0, r.v)^s`, with r the light direction reflected about n (max before
@@ -30,13 +30,35 @@ impl LocalLight {
     #[inline]
     #[must_use]
     pub fn specular(&self, ks: DVec3, shininess: f64, n_dot_l: f64) -> DVec3 {
+        specular_term(ks, self.strength, self.specular_lobe(shininess, n_dot_l))
+    }
+
+    /// `max(0, r.v)^s`, or `None` where `r.v <= 0` (no specular term at all), for a light
+    /// with `n_dot_l = n.l > 0`: all of the specular term that depends on where the
+    /// point, the light and the viewer are.
+    #[inline]
+    #[must_use]
+    pub fn specular_lobe(&self, shininess: f64, n_dot_l: f64) -> Option<f64> {
         let r = 2.0 * n_dot_l * self.n - self.to_light;
         let r_dot_v = r.dot(self.view).max(0.0);
-        if r_dot_v > 0.0 {
-            ks * self.strength * phong_power(r_dot_v, shininess)
-        } else {
-            DVec3::ZERO
-        }
+        (r_dot_v > 0.0).then(|| phong_power(r_dot_v, shininess))
+    }
+}
+
+/// `kd * L * n.l`: the diffuse term from a light of strength `strength` at the point.
+#[inline]
+#[must_use]
+pub fn diffuse_term(kd: DVec3, strength: DVec3, n_dot_l: f64) -> DVec3 {
+    kd * strength * n_dot_l
+}
+
+/// `ks * L * lobe`, zero without a lobe ([`LocalLight::specular_lobe`]).
+#[inline]
+#[must_use]
+pub fn specular_term(ks: DVec3, strength: DVec3, lobe: Option<f64>) -> DVec3 {
+    match lobe {
+        Some(lobe) => ks * strength * lobe,
+        None => DVec3::ZERO,
     }
 }
 

@@ -5,6 +5,7 @@
 //! [`super::reshade`] answers from rays it traced before. Both feed the one lighting model,
 //! so a re-shaded pixel is the same arithmetic as a traced one.
 
+use super::light_factors::LitFactors;
 use super::ray::Ray;
 use super::tile_cull::Candidates;
 use super::world::{SurfacePoint, World};
@@ -36,6 +37,18 @@ pub trait RaySource {
         light: usize,
         query: impl FnOnce() -> ShadowQuery,
     ) -> Option<usize>;
+
+    /// Whether this source keeps what each light gives each hit
+    /// ([`RaySource::light_factors`]): the shader then works the factors out for every
+    /// light it looks at, whatever the switches.
+    #[inline]
+    fn keeps_light_factors(&self) -> bool {
+        false
+    }
+
+    /// What light `light` gave the hit at `depth`, for a source that keeps it.
+    #[inline]
+    fn light_factors(&mut self, _depth: u32, _light: usize, _factors: LitFactors) {}
 }
 
 /// Traces every ray in the world. The camera ray and the shadow rays from its hit test

@@ -14,10 +14,11 @@
 //! uses, so the pixel inspector reports this very code path.
 
 use glam::DVec3;
-use smallvec::SmallVec;
 
 use super::depth_view::DepthRange;
+use super::light_factors::LitFactors;
 use super::lights::LightSample;
+use super::mirror_chain::{Bounce, Chain, fold_back};
 pub use super::object_id::object_id_colour;
 use super::phong::LocalLight;
 use super::ray::Ray;
@@ -28,25 +29,7 @@ use super::record::{LightSkip, ShadowRay, SkippedLight, unsampled_reason};
 use super::spawn::{spawn_ray, spawn_ray_to};
 use super::terms::{ActiveTerms, Term, TermSwitches, View};
 use super::world::{SurfacePoint, World};
-
-/// What one ray of the mirror chain contributes: its own colour (ambient, diffuse and
-/// specular at a hit, the background at a miss) and the weight of the colour its mirror
-/// ray brings back (`km`; unused when no mirror ray was cast).
-#[derive(Clone, Copy, Debug)]
-struct Bounce {
-    local: DVec3,
-    km: DVec3,
-}
-
-impl Bounce {
-    /// A ray that casts no mirror ray.
-    fn local(colour: DVec3) -> Self {
-        Self {
-            local: colour,
-            km: DVec3::ZERO,
-        }
-    }
-}
+use crate::scene::Material;
 
 /// Which light a shadow ray goes to, from the hit at which depth of the mirror chain.
 #[derive(Clone, Copy, Debug)]
@@ -54,9 +37,6 @@ struct LightAt {
     depth: u32,
     index: usize,
 }
-
-/// Mirror chains up to this long stay on the stack; longer ones spill to the heap.
-const INLINE_BOUNCES: usize = 8;
 
 /// Traces rays through a world with a fixed set of switches and view.
 #[derive(Clone, Copy, Debug)]
@@ -93,6 +73,11 @@ impl<'w> Tracer<'w> {
     #[must_use]
     pub fn world(&self) -> &'w World {
         self.world
+    }
+
+    /// The terms of camera rays and of mirror rays, when the view is the lit picture.
+    pub(super) fn beauty_terms(&self) -> Option<(ActiveTerms, ActiveTerms)> {
+        (self.view == View::Beauty).then_some((self.primary, self.secondary))
     }
 
     /// The colour of a camera ray, unclamped, as the view asks for it.
@@ -150,7 +135,7 @@ impl<'w> Tracer<'w> {
             recorder.result(0, camera_bounce.local);
             return camera_bounce.local;
         };
-        let mut chain: SmallVec<[Bounce; INLINE_BOUNCES]> = SmallVec::new();
+        let mut chain = Chain::new();
         chain.push(camera_bounce);
         loop {
             let depth = chain.len() as u32;
@@ -162,19 +147,7 @@ impl<'w> Tracer<'w> {
                 None => break,
             }
         }
-        // Fold back: the deepest ray returns its own colour, each one before it adds km
-        // times the colour of the one after.
-        let mut depth = chain.len() - 1;
-        let mut colour = chain[depth].local;
-        recorder.result(depth as u32, colour);
-        while depth > 0 {
-            depth -= 1;
-            let bounce = &chain[depth];
-            recorder.reflection(depth as u32, bounce.km, colour);
-            colour = bounce.local + bounce.km * colour;
-            recorder.result(depth as u32, colour);
-        }
-        colour
+        fold_back(&chain, recorder)
     }
 
     /// One ray of the mirror chain at `depth`: what it adds itself, and the mirror ray to
@@ -227,6 +200,11 @@ impl<'w> Tracer<'w> {
             let view_dir = -ray.dir;
             for (index, light) in world.lights.iter().enumerate() {
                 let Some(sample) = light.sample(hit.p) else {
+                    // A light of zero strength stays unknown: the factors of a light
+                    // turned up from zero were never worked out.
+                    if rays.keeps_light_factors() && light.strength() != DVec3::ZERO {
+                        rays.light_factors(depth, index, LitFactors::UNREACHABLE);
+                    }
                     if R::ACTIVE {
                         let skipped = SkippedLight {
                             scene_index: world.light_scene_index[index],
@@ -237,6 +215,10 @@ impl<'w> Tracer<'w> {
                     continue;
                 };
                 let n_dot_l = hit.n.dot(sample.to_light);
+                if rays.keeps_light_factors() {
+                    let factors = self.light_factors(&hit, &sample, view_dir, material, n_dot_l);
+                    rays.light_factors(depth, index, factors);
+                }
                 // Plain locals on the hot path; the record is built only for a recorder.
                 let (mut cast, mut blocker) = (false, None);
                 let (mut diffuse, mut specular) = (DVec3::ZERO, DVec3::ZERO);
@@ -311,6 +293,28 @@ impl<'w> Tracer<'w> {
             return (bounce, Some(spawn_ray(&hit, reflected_dir)));
         }
         (Bounce::local(colour), None)
+    }
+
+    /// What the light of `sample` gives `hit`, kept for a quick re-shade: the lobe is
+    /// the one [`LocalLight::specular`] works out, blocked or not, switched on or not.
+    fn light_factors(
+        &self,
+        hit: &SurfacePoint,
+        sample: &LightSample,
+        view: DVec3,
+        material: &Material,
+        n_dot_l: f64,
+    ) -> LitFactors {
+        let lobe = (n_dot_l > 0.0).then(|| {
+            let local = LocalLight {
+                n: hit.n,
+                to_light: sample.to_light,
+                view,
+                strength: sample.radiance,
+            };
+            local.specular_lobe(material.shininess, n_dot_l)
+        });
+        LitFactors::reached(sample, n_dot_l, lobe.flatten())
     }
 
     /// The object blocking the shadow ray from `hit` (at `to.depth`) to light

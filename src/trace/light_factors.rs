@@ -1,0 +1,167 @@
+//! What each light gave each cached hit: the distance its strength falls off with, `n.l`
+//! and the Phong lobe. From these the diffuse and specular terms follow for any kd, ks,
+//! light strength and term switch, so [`super::quick_shade`] re-shades a pixel without a
+//! ray, a light sample or a lobe. They depend on the geometry, on where each light is and
+//! points ([`super::lights::WorldLight::placement`]) and, for the lobe, on the shininess.
+
+use super::hit_cache::NOT_CAST;
+use super::lights::{LightSample, WorldLight};
+use super::world::World;
+use crate::scene::Material;
+
+/// What one light gave one cached hit, encoded in three floats (the cache holds one per
+/// hit and light).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LitFactors {
+    distance_squared: f64,
+    /// NaN: unknown (the shader did not look at this light here); minus infinity: the
+    /// light cannot reach the point (outside its cone, or at the light itself).
+    n_dot_l: f64,
+    /// The lobe; -1 where there is none (`r.v <= 0`).
+    lobe: f64,
+}
+
+/// [`LitFactors`] decoded.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Lit {
+    /// Not known: shade the pixel in full.
+    Unknown,
+    /// The light cannot reach the point.
+    Unreachable,
+    /// The light's sample at the point.
+    Reached {
+        /// [`LightSample::distance_squared`].
+        distance_squared: f64,
+        /// The shading normal dotted with the direction to the light.
+        n_dot_l: f64,
+        /// The Phong lobe ([`super::phong::LocalLight::specular_lobe`]); meaningful
+        /// only where `n_dot_l > 0`.
+        lobe: Option<f64>,
+    },
+}
+
+impl LitFactors {
+    /// Nothing known.
+    pub const UNKNOWN: Self = Self {
+        distance_squared: f64::NAN,
+        n_dot_l: f64::NAN,
+        lobe: f64::NAN,
+    };
+
+    /// The light cannot reach the point.
+    pub const UNREACHABLE: Self = Self {
+        distance_squared: f64::NAN,
+        n_dot_l: f64::NEG_INFINITY,
+        lobe: f64::NAN,
+    };
+
+    /// A light sampled at the point.
+    #[must_use]
+    pub fn reached(sample: &LightSample, n_dot_l: f64, lobe: Option<f64>) -> Self {
+        Self {
+            distance_squared: sample.distance_squared,
+            n_dot_l,
+            lobe: lobe.unwrap_or(-1.0),
+        }
+    }
+
+    /// Whether the two are the same, bit for bit.
+    #[must_use]
+    pub fn same_as(&self, other: &Self) -> bool {
+        let bits = |f: &Self| [f.distance_squared, f.n_dot_l, f.lobe].map(f64::to_bits);
+        bits(self) == bits(other)
+    }
+
+    /// What is known.
+    #[inline]
+    #[must_use]
+    pub fn get(&self) -> Lit {
+        if self.n_dot_l.is_nan() {
+            Lit::Unknown
+        } else if self.n_dot_l == f64::NEG_INFINITY {
+            Lit::Unreachable
+        } else {
+            Lit::Reached {
+                distance_squared: self.distance_squared,
+                n_dot_l: self.n_dot_l,
+                lobe: (self.lobe >= 0.0).then_some(self.lobe),
+            }
+        }
+    }
+}
+
+/// What the cache keeps per hit and light: the shadow ray's answer
+/// ([`super::hit_cache::encode_blocker`], or `NOT_CAST`) and the light's factors.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct LightSlot {
+    pub shadow: u32,
+    pub factors: LitFactors,
+}
+
+impl LightSlot {
+    /// No shadow ray cast, no factor known.
+    pub const NOTHING: Self = Self {
+        shadow: NOT_CAST,
+        factors: LitFactors::UNKNOWN,
+    };
+}
+
+/// Per light of `world`, the column of `old` placements ([`WorldLight::placement`]) whose
+/// factors stay valid for it; `None` where they must be worked out again.
+pub(super) fn factor_columns(old: &[[u64; 8]], world: &World) -> Vec<Option<usize>> {
+    world
+        .lights
+        .iter()
+        .map(|light| {
+            let placement = light.placement();
+            old.iter().position(|p| *p == placement)
+        })
+        .collect()
+}
+
+/// Per object, whether the lobes cached for it are stale: its material's shininess is
+/// not, bit for bit, the one they were worked out with.
+pub(super) fn stale_lobes(cached: &[Material], world: &World) -> Vec<bool> {
+    world
+        .objects
+        .iter()
+        .enumerate()
+        .map(|(i, o)| {
+            let now = world.materials[o.material].shininess;
+            cached
+                .get(i)
+                .is_none_or(|m| m.shininess.to_bits() != now.to_bits())
+        })
+        .collect()
+}
+
+/// The placements of `world`'s lights, for [`factor_columns`].
+pub(super) fn placements(world: &World) -> Vec<[u64; 8]> {
+    world.lights.iter().map(WorldLight::placement).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec3;
+
+    #[test]
+    fn factors_decode_to_what_was_kept() {
+        let sample = LightSample {
+            radiance: DVec3::ONE,
+            to_light: DVec3::Y,
+            light_position: None,
+            distance_squared: 2.5,
+        };
+        assert_eq!(LitFactors::UNKNOWN.get(), Lit::Unknown);
+        assert_eq!(LitFactors::UNREACHABLE.get(), Lit::Unreachable);
+        for (n_dot_l, lobe) in [(0.5, Some(0.0)), (0.5, Some(0.25)), (0.5, None), (-0.2, None)] {
+            let expected = Lit::Reached {
+                distance_squared: 2.5,
+                n_dot_l,
+                lobe,
+            };
+            assert_eq!(LitFactors::reached(&sample, n_dot_l, lobe).get(), expected);
+        }
+    }
+}

@@ -1,0 +1,292 @@
+//! One tile's rays during the one-sample pass ([`super::reshade`]): the previous cache's
+//! chains and light slots read in place, and [`PixelRays`], the [`RaySource`] that
+//! answers a pixel's rays from them and traces (and keeps) whatever they lack.
+
+use std::sync::Arc;
+
+use super::hit_cache::{CachedHit, Chains, NOT_CAST, PixelColour, TileHits, decode_blocker, encode_blocker};
+use super::light_factors::{LightSlot, LitFactors};
+use super::ray::Ray;
+use super::ray_source::{LiveRays, RaySource, ShadowQuery};
+use super::shade::RayCounts;
+use super::world::{SurfacePoint, World};
+
+/// One tile's rays during the pass. It reads the previous cache's chains in place, shared,
+/// until a pixel needs a ray the cache lacks; from then on the tile's chains are rebuilt
+/// (the pixels before copied at once, each later one as it comes). Light slots are
+/// written into the shared ones on first change (copied once per tile).
+pub(super) struct TileRays {
+    chains: Arc<Chains>,
+    slots: Arc<Vec<LightSlot>>,
+    /// The rebuilt chains and slots, once one chain had to grow.
+    grown: Option<(Chains, Vec<LightSlot>)>,
+    /// The pixels' colours in the cache read (none for a fresh tile), and in this pass.
+    old_colours: Option<Arc<Vec<PixelColour>>>,
+    colours: Vec<PixelColour>,
+    /// Pixels shaded so far, and of them those shaded from light factors alone.
+    pub shaded: u64,
+    pub quick: u64,
+    /// The pixel being shaded, row-major within the tile.
+    pixel: usize,
+    lights: usize,
+    pub traced: RayCounts,
+}
+
+/// How the light slots of the cache read map onto the lights of the new world.
+pub(super) struct SlotColumns<'a> {
+    /// Lights per entry in the cache read.
+    pub old_lights: usize,
+    /// Per new light, the old column whose shadow answers stay valid.
+    pub shadows: &'a [Option<usize>],
+    /// Per new light, the old column whose light factors stay valid.
+    pub factors: &'a [Option<usize>],
+}
+
+impl TileRays {
+    /// Reading `old` for a world whose lights keep the old columns `columns` names.
+    pub fn reading(old: &TileHits, columns: &SlotColumns) -> Self {
+        let old_lights = columns.old_lights;
+        let same_lights = columns.shadows.len() == old_lights
+            && (0..old_lights)
+                .all(|i| columns.shadows[i] == Some(i) && columns.factors[i] == Some(i));
+        let slots = if same_lights {
+            Arc::clone(&old.slots)
+        } else {
+            // Entry by entry, not chunks of the old rows: the old world may have had no
+            // light at all.
+            let remapped = (0..old.chains.hits.len()).flat_map(|entry| {
+                let row = &old.slots[entry * old_lights..(entry + 1) * old_lights];
+                columns
+                    .shadows
+                    .iter()
+                    .zip(columns.factors)
+                    .map(|(shadow, factors)| LightSlot {
+                        shadow: shadow.map_or(NOT_CAST, |c| row[c].shadow),
+                        factors: factors.map_or(LitFactors::UNKNOWN, |c| row[c].factors),
+                    })
+            });
+            Arc::new(remapped.collect())
+        };
+        Self {
+            chains: Arc::clone(&old.chains),
+            slots,
+            grown: None,
+            old_colours: Some(Arc::clone(&old.colours)),
+            colours: Vec::with_capacity(old.colours.len()),
+            shaded: 0,
+            quick: 0,
+            pixel: 0,
+            lights: columns.shadows.len(),
+            traced: RayCounts::default(),
+        }
+    }
+
+    /// A tile with nothing cached, for a world with `lights` lights.
+    pub fn fresh(pixels: usize, lights: usize) -> Self {
+        let nothing = Chains {
+            chain_ends: vec![0; pixels],
+            hits: Vec::new(),
+        };
+        let growing = Chains {
+            chain_ends: Vec::with_capacity(pixels),
+            hits: Vec::with_capacity(pixels),
+        };
+        Self {
+            chains: Arc::new(nothing),
+            slots: Arc::new(Vec::new()),
+            grown: Some((growing, Vec::with_capacity(pixels * lights))),
+            old_colours: None,
+            colours: Vec::with_capacity(pixels),
+            shaded: 0,
+            quick: 0,
+            pixel: 0,
+            lights,
+            traced: RayCounts::default(),
+        }
+    }
+
+    /// Starts the next pixel: once rebuilding, copies its cached chain across.
+    pub fn begin_pixel(&mut self) {
+        if let Some((chains, slots)) = &mut self.grown {
+            let chain = self.chains.chain(self.pixel);
+            let lights = self.lights;
+            slots.extend_from_slice(&self.slots[chain.start * lights..chain.end * lights]);
+            chains.hits.extend_from_slice(&self.chains.hits[chain]);
+        }
+    }
+
+    /// The current pixel's cached colour, if none of its rays meets an object with
+    /// `changed[object]` set (and so its rays and colour are what they were).
+    pub fn unchanged_colour(&self, changed: &[bool]) -> Option<PixelColour> {
+        let old = self.old_colours.as_ref()?;
+        let touched = self
+            .pixel_chain()
+            .0
+            .iter()
+            .any(|hit| hit.object().is_some_and(|o| changed[o]));
+        (!touched).then(|| old[self.pixel])
+    }
+
+    /// The current pixel's cached chain, and its entries' light slots (`lights` each).
+    pub fn pixel_chain(&self) -> (&[CachedHit], &[LightSlot]) {
+        let chain = self.chain();
+        let (hits, slots) = match &self.grown {
+            Some((chains, slots)) => (&chains.hits, slots),
+            None => (&self.chains.hits, &*self.slots),
+        };
+        let lights = self.lights;
+        (
+            &hits[chain.clone()],
+            &slots[chain.start * lights..chain.end * lights],
+        )
+    }
+
+    /// Lights per entry.
+    pub fn lights(&self) -> usize {
+        self.lights
+    }
+
+    /// Ends the pixel, which came out `colour`.
+    pub fn end_pixel(&mut self, colour: PixelColour) {
+        if let Some((chains, _)) = &mut self.grown {
+            chains.chain_ends.push(chains.hits.len() as u32);
+        }
+        self.colours.push(colour);
+        self.pixel += 1;
+    }
+
+    /// Where the current pixel's chain is, in the chains read or rebuilt.
+    fn chain(&self) -> std::ops::Range<usize> {
+        match &self.grown {
+            Some((chains, _)) => {
+                let start = chains.chain_ends.last().map_or(0, |&end| end as usize);
+                start..chains.hits.len()
+            }
+            None => self.chains.chain(self.pixel),
+        }
+    }
+
+    /// Starts rebuilding, copying every chain up to and including the current pixel's.
+    fn grow(&mut self) -> &mut (Chains, Vec<LightSlot>) {
+        let (pixel, lights) = (self.pixel, self.lights);
+        let (chains, slots) = (&self.chains, &self.slots);
+        self.grown.get_or_insert_with(|| {
+            let end = chains.chain(pixel).end;
+            let mut hits = Vec::with_capacity(chains.hits.len() + chains.chain_ends.len() / 4);
+            hits.extend_from_slice(&chains.hits[..end]);
+            let copied = Chains {
+                chain_ends: chains.chain_ends[..pixel].to_vec(),
+                hits,
+            };
+            (copied, slots[..end * lights].to_vec())
+        })
+    }
+
+    /// The light slot `index` (entry * lights + light) to write.
+    fn slot_mut(&mut self, index: usize) -> &mut LightSlot {
+        match &mut self.grown {
+            Some((_, slots)) => &mut slots[index],
+            // Copied once per tile, while the cache before still holds the original.
+            None => &mut Arc::make_mut(&mut self.slots)[index],
+        }
+    }
+
+    /// The light slot `index` to read.
+    fn slot(&self, index: usize) -> LightSlot {
+        match &self.grown {
+            Some((_, slots)) => slots[index],
+            None => self.slots[index],
+        }
+    }
+
+    /// The tile's rays for the new cache.
+    pub fn finish(self) -> TileHits {
+        let colours = Arc::new(self.colours);
+        match self.grown {
+            Some((chains, slots)) => TileHits {
+                chains: Arc::new(chains),
+                slots: Arc::new(slots),
+                colours,
+            },
+            None => TileHits {
+                chains: self.chains,
+                slots: self.slots,
+                colours,
+            },
+        }
+    }
+}
+
+/// Answers one pixel's rays from its tile, tracing (and keeping) whatever it lacks, and
+/// keeps what each light gives each hit.
+pub(super) struct PixelRays<'t, 'c, 's> {
+    pub tile: &'t mut TileRays,
+    /// What traces the rays the cache lacks (culled for the camera ray's tile).
+    pub live: LiveRays<'c>,
+    /// Per object, whether the light factors kept for its hits have a stale lobe: they
+    /// are forgotten as the shader reaches the hit, and worked out again where it can.
+    pub stale_lobes: &'s [bool],
+}
+
+impl RaySource for PixelRays<'_, '_, '_> {
+    fn closest_hit(&mut self, world: &World, depth: u32, ray: &Ray) -> Option<SurfacePoint> {
+        let chain = self.tile.chain();
+        let depth = depth as usize;
+        let lights = self.tile.lights;
+        if depth < chain.len() {
+            let entry = chain.start + depth;
+            let hit = match &self.tile.grown {
+                Some((chains, _)) => &chains.hits[entry],
+                None => &self.tile.chains.hits[entry],
+            };
+            let hit = hit.point();
+            if hit.is_some_and(|h| self.stale_lobes.get(h.object).copied().unwrap_or(false)) {
+                for slot in entry * lights..(entry + 1) * lights {
+                    self.tile.slot_mut(slot).factors = LitFactors::UNKNOWN;
+                }
+            }
+            return hit;
+        }
+        // The chain is walked depth by depth: the missing entry is the next one.
+        debug_assert_eq!(depth, chain.len());
+        if depth == 0 {
+            self.tile.traced.primary += 1;
+        } else {
+            self.tile.traced.reflection += 1;
+        }
+        let hit = self.live.closest_hit(world, depth as u32, ray);
+        let (chains, slots) = self.tile.grow();
+        chains.hits.push(CachedHit::new(hit.as_ref()));
+        slots.extend(std::iter::repeat_n(LightSlot::NOTHING, lights));
+        hit
+    }
+
+    fn occluder(
+        &mut self,
+        world: &World,
+        depth: u32,
+        light: usize,
+        query: impl FnOnce() -> ShadowQuery,
+    ) -> Option<usize> {
+        let slot = (self.tile.chain().start + depth as usize) * self.tile.lights + light;
+        let code = self.tile.slot(slot).shadow;
+        if code != NOT_CAST {
+            return decode_blocker(code);
+        }
+        self.tile.traced.shadow += 1;
+        let blocked_by = self.live.occluder(world, depth, light, query);
+        self.tile.slot_mut(slot).shadow = encode_blocker(blocked_by);
+        blocked_by
+    }
+
+    fn keeps_light_factors(&self) -> bool {
+        true
+    }
+
+    fn light_factors(&mut self, depth: u32, light: usize, factors: LitFactors) {
+        let slot = (self.tile.chain().start + depth as usize) * self.tile.lights + light;
+        if !self.tile.slot(slot).factors.same_as(&factors) {
+            self.tile.slot_mut(slot).factors = factors;
+        }
+    }
+}

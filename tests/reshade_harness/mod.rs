@@ -1,0 +1,112 @@
+//! Shared by the re-shade tests: a scene and how it is rendered, the one-sample pass
+//! traced from scratch or answered from a cache, and a chain of edits each checked bit
+//! for bit against a full trace.
+#![allow(dead_code)]
+
+use glam::DVec3;
+use raylab::scene::examples::EXAMPLE_SCENES;
+use raylab::scene::{Light, Scene, parse_scene};
+use raylab::trace::{
+    CachedPass, HitCache, RayCounts, RenderOptions, RenderProgress, SampleSums, World,
+    render_one_sample_cached, render_samples,
+};
+
+/// An example scene at 64 x 48.
+pub fn example(name: &str) -> Scene {
+    let text = EXAMPLE_SCENES.iter().find(|(n, _)| *n == name).unwrap().1;
+    let mut scene = parse_scene(text).unwrap();
+    scene.camera.width = 64;
+    scene.camera.height = 48;
+    scene
+}
+
+/// A scene and how it is rendered: the state before or after an edit.
+#[derive(Clone)]
+pub struct Shot {
+    pub scene: Scene,
+    pub options: RenderOptions,
+}
+
+impl Shot {
+    pub fn of(scene: Scene) -> Self {
+        let options = RenderOptions::from_scene(&scene);
+        Self { scene, options }
+    }
+
+    pub fn world(&self) -> World {
+        World::isolated(&self.scene, &self.options.isolation).unwrap()
+    }
+
+    /// The one-sample pass traced from scratch, as `raylab render` does it.
+    pub fn traced(&self) -> SampleSums {
+        let options = RenderOptions {
+            samples_per_pixel: 1,
+            ..self.options.clone()
+        };
+        render_samples(&self.world(), &options, 0..1, &RenderProgress::default()).unwrap()
+    }
+
+    /// The one-sample pass answered from `cache` where it can.
+    pub fn cached(&self, cache: Option<&HitCache>) -> CachedPass {
+        let world = self.world();
+        render_one_sample_cached(&world, &self.options, cache, &RenderProgress::default()).unwrap()
+    }
+
+    pub fn edited(&self, edit: impl FnOnce(&mut Scene, &mut RenderOptions)) -> Self {
+        let mut next = self.clone();
+        edit(&mut next.scene, &mut next.options);
+        next
+    }
+}
+
+/// Every sum's bits, the guard's counts and the modelled rays are the same.
+pub fn assert_same_pass(reshaded: &SampleSums, traced: &SampleSums, what: &str) {
+    let bits = |s: &SampleSums| -> Vec<[u64; 3]> {
+        s.sums
+            .iter()
+            .map(|v| v.to_array().map(f64::to_bits))
+            .collect()
+    };
+    assert!(bits(reshaded) == bits(traced), "{what}: pixels differ");
+    assert_eq!(reshaded.non_finite, traced.non_finite, "{what}");
+    assert_eq!(reshaded.rays, traced.rays, "{what}: rays modelled");
+}
+
+/// Renders `before` (filling a cache), then each edit in turn from the cache the one
+/// before left; checks every re-shaded pass against a full trace and returns the rays
+/// each one traced.
+pub fn edit_chain(before: &Shot, edits: &[Shot], what: &str) -> Vec<CachedPass> {
+    let first = before.cached(None);
+    assert_same_pass(&first.sums, &before.traced(), what);
+    assert!(!first.reused);
+    assert_eq!(
+        first.traced, first.sums.rays,
+        "{what}: no cache traces everything"
+    );
+    let mut cache = first.cache;
+    let mut passes = Vec::new();
+    for (step, shot) in edits.iter().enumerate() {
+        let pass = shot.cached(Some(&cache));
+        assert_same_pass(&pass.sums, &shot.traced(), &format!("{what}, edit {step}"));
+        cache = pass.cache.clone();
+        passes.push(pass);
+    }
+    passes
+}
+
+pub const NOTHING: RayCounts = RayCounts {
+    primary: 0,
+    shadow: 0,
+    reflection: 0,
+};
+
+
+/// Sets any light's colour.
+pub fn set_colour(light: &mut Light, to: DVec3) {
+    match light {
+        Light::Ambient { colour, .. }
+        | Light::Point { colour, .. }
+        | Light::Directional { colour, .. }
+        | Light::Spot { colour, .. } => *colour = to,
+    }
+}
