@@ -24,108 +24,14 @@ use super::light_factors::{self, LightSlot};
 use super::lights::WorldLight;
 use super::render::RenderOptions;
 use super::terms::{TermSwitches, View};
-use super::world::{SurfacePoint, World};
+use super::chains::{CachedHit, Chains};
+use super::world::World;
 use crate::scene::{Camera, Material, Shape};
 
 /// The largest image the preview keeps a cache for: about 90 bytes a cached ray, 32 more
 /// per ray and light, and 36 a pixel, so 1280 x 1024 is some 350 MB with three lights
 /// and a few mirrors; larger previews re-trace every edit.
 pub const MAX_CACHED_PIXELS: usize = 1280 * 1024;
-
-/// A shadow ray the shader did not cast at that hit.
-pub(super) const NOT_CAST: u32 = u32::MAX;
-/// A shadow ray that met nothing.
-pub(super) const CLEAR: u32 = u32::MAX - 1;
-
-/// A hit as cached: a [`SurfacePoint`] with the shading normal kept as one bit (it is
-/// the outward normal or its exact negation), or a miss.
-#[derive(Clone, Copy, Debug)]
-pub(super) struct CachedHit {
-    t: f64,
-    p: DVec3,
-    n_outward: DVec3,
-    p_error: DVec3,
-    /// World index of the object hit; `u32::MAX` for a miss.
-    object: u32,
-    /// Whether the shading normal is `-n_outward`.
-    flipped: bool,
-}
-
-impl CachedHit {
-    /// What the closest-hit query returned.
-    pub fn new(hit: Option<&SurfacePoint>) -> Self {
-        match hit {
-            Some(hit) => Self {
-                t: hit.t,
-                p: hit.p,
-                n_outward: hit.n_outward,
-                p_error: hit.p_error,
-                object: u32::try_from(hit.object).expect("fewer than 2^32 - 1 objects"),
-                flipped: hit.n != hit.n_outward,
-            },
-            None => Self {
-                t: 0.0,
-                p: DVec3::ZERO,
-                n_outward: DVec3::ZERO,
-                p_error: DVec3::ZERO,
-                object: u32::MAX,
-                flipped: false,
-            },
-        }
-    }
-
-    /// The world index of the object hit; `None` for a miss.
-    pub fn object(&self) -> Option<usize> {
-        (self.object != u32::MAX).then_some(self.object as usize)
-    }
-
-    /// The hit again, bit for bit; `None` for a miss.
-    pub fn point(&self) -> Option<SurfacePoint> {
-        (self.object != u32::MAX).then(|| SurfacePoint {
-            object: self.object as usize,
-            t: self.t,
-            p: self.p,
-            n_outward: self.n_outward,
-            n: if self.flipped {
-                -self.n_outward
-            } else {
-                self.n_outward
-            },
-            p_error: self.p_error,
-        })
-    }
-}
-
-/// A shadow answer as cached.
-pub(super) fn encode_blocker(blocked_by: Option<usize>) -> u32 {
-    blocked_by.map_or(CLEAR, |i| {
-        u32::try_from(i).expect("fewer than 2^32 - 2 objects")
-    })
-}
-
-/// The cached shadow answer `code` (not [`NOT_CAST`]).
-pub(super) fn decode_blocker(code: u32) -> Option<usize> {
-    (code != CLEAR).then_some(code as usize)
-}
-
-/// The mirror chains of one tile's pixels, row-major within the tile.
-#[derive(Clone, Debug, Default)]
-pub(super) struct Chains {
-    /// End of each pixel's chain in `hits` (a chain starts where the one before ends).
-    pub chain_ends: Vec<u32>,
-    /// Every chain's entries, depth 0 first.
-    pub hits: Vec<CachedHit>,
-}
-
-impl Chains {
-    /// The range of `hits` holding pixel `pixel`'s chain.
-    pub fn chain(&self, pixel: usize) -> std::ops::Range<usize> {
-        let start = pixel
-            .checked_sub(1)
-            .map_or(0, |p| self.chain_ends[p] as usize);
-        start..self.chain_ends[pixel] as usize
-    }
-}
 
 /// A pixel's colour in the pass that filled the cache (as the shader returned it, maybe
 /// non-finite), and the rays it is made of: kept for a pixel no edit could change.
@@ -370,7 +276,7 @@ impl HitCache {
     /// Rays held (closest hits and misses; shadow answers not counted).
     #[must_use]
     pub fn ray_count(&self) -> usize {
-        self.tiles.iter().map(|t| t.chains.hits.len()).sum()
+        self.tiles.iter().map(|t| t.chains.len()).sum()
     }
 
     /// Approximate memory held, in bytes (parts shared with another cache included).
@@ -379,9 +285,9 @@ impl HitCache {
         self.tiles
             .iter()
             .map(|t| {
-                t.chains.hits.capacity() * size_of::<CachedHit>()
+                t.chains.capacity() * (size_of::<CachedHit>() + size_of::<u32>())
                     + t.slots.capacity() * size_of::<LightSlot>()
-                    + t.chains.chain_ends.capacity() * size_of::<u32>()
+                    + t.chains.pixel_capacity() * size_of::<u32>()
             })
             .sum()
     }

@@ -4,7 +4,7 @@
 //! ray, a light sample or a lobe. They depend on the geometry, on where each light is and
 //! points ([`super::lights::WorldLight::placement`]) and, for the lobe, on the shininess.
 
-use super::hit_cache::NOT_CAST;
+use super::chains::NOT_CAST;
 use super::lights::{LightSample, WorldLight};
 use super::world::World;
 use crate::scene::Material;

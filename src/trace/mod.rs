@@ -5,6 +5,7 @@ pub mod adaptive;
 pub mod bounds;
 pub mod bvh;
 pub mod camera;
+mod chains;
 pub mod depth_view;
 pub mod hit_cache;
 pub mod image;

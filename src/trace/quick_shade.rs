@@ -13,7 +13,7 @@
 
 use glam::DVec3;
 
-use super::hit_cache::{CLEAR, CachedHit, NOT_CAST};
+use super::chains::{CLEAR, NOT_CAST};
 use super::light_factors::{LightSlot, Lit};
 use super::mirror_chain::{Bounce, Chain, fold_back};
 use super::phong::{diffuse_term, specular_term};
@@ -44,12 +44,12 @@ impl<'w, 's> QuickShade<'w, 's> {
         })
     }
 
-    /// The colour of the pixel whose chain is `chain` with `lights` light slots per
-    /// entry in `slots`, and the rays the shader would count for it; `None` where the
+    /// The colour of the pixel whose chain's entries met `objects` (`u32::MAX`: a miss),
+    /// with `lights` light slots per entry in `slots`, and the rays the shader would count for it; `None` where the
     /// cache cannot answer.
     pub fn pixel(
         &self,
-        chain: &[CachedHit],
+        objects: &[u32],
         slots: &[LightSlot],
         lights: usize,
         counts: &mut RayCounts,
@@ -59,14 +59,14 @@ impl<'w, 's> QuickShade<'w, 's> {
             ..RayCounts::default()
         };
         let mut bounces = Chain::new();
-        for (depth, entry) in chain.iter().enumerate() {
+        for (depth, &object) in objects.iter().enumerate() {
             let terms = if depth == 0 {
                 &self.primary
             } else {
                 &self.secondary
             };
             let row = &slots[depth * lights..(depth + 1) * lights];
-            let (local, mirror) = self.entry(depth as u32, entry, row, terms, &mut own)?;
+            let (local, mirror) = self.entry(depth as u32, object, row, terms, &mut own)?;
             match mirror {
                 Some(km) => bounces.push(Bounce { local, km }),
                 None => {
@@ -85,20 +85,21 @@ impl<'w, 's> QuickShade<'w, 's> {
     fn entry(
         &self,
         depth: u32,
-        entry: &CachedHit,
+        object: u32,
         row: &[LightSlot],
         terms: &ActiveTerms,
         counts: &mut RayCounts,
     ) -> Option<(DVec3, Option<DVec3>)> {
         let world = self.world;
-        let Some(object) = entry.object() else {
+        if object == u32::MAX {
             let background = if terms.background {
                 world.background
             } else {
                 DVec3::ZERO
             };
             return Some((background, None));
-        };
+        }
+        let object = object as usize;
         if self.stale_lobes[object] {
             return None;
         }

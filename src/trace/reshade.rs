@@ -9,6 +9,8 @@
 //! [`Tracer`]'s own, through [`camera_sample`], so the sums are bit for bit those of
 //! [`super::render_samples`] at one sample per pixel.
 
+use std::sync::OnceLock;
+
 use super::camera::PinholeCamera;
 use super::hit_cache::{HitCache, PixelColour, Reuse};
 use super::isolation::assert_compiled_for;
@@ -64,7 +66,9 @@ pub fn render_one_sample_cached(
     });
     let camera = PinholeCamera::new(&world.camera, width, height);
     let tracer = Tracer::new(world, options.switches, options.view);
-    let cull = TileCull::new(world, &camera, width, height);
+    // Built on first need: a pass re-shaded from the cache may trace no ray at all.
+    let cull = OnceLock::new();
+    let cull = || cull.get_or_init(|| TileCull::new(world, &camera, width, height));
     let lights = world.lights.len();
     // Only materials changed (or nothing): pixels whose rays meet none of the objects
     // whose material changed keep their colour.
@@ -109,7 +113,7 @@ pub fn render_one_sample_cached(
                         let point = sample_point(px, py, 0, 1);
                         let source = &mut PixelRays {
                             tile: &mut *tile,
-                            live: LiveRays::among(cull.candidates(point)),
+                            live: LiveRays::among(cull().candidates(point)),
                             stale_lobes: &stale_lobes,
                         };
                         camera_sample(&tracer, &camera, point, source, &mut own)

@@ -4,7 +4,8 @@
 
 use std::sync::Arc;
 
-use super::hit_cache::{CachedHit, Chains, NOT_CAST, PixelColour, TileHits, decode_blocker, encode_blocker};
+use super::chains::{CachedHit, Chains, NOT_CAST, decode_blocker, encode_blocker};
+use super::hit_cache::{PixelColour, TileHits};
 use super::light_factors::{LightSlot, LitFactors};
 use super::ray::Ray;
 use super::ray_source::{LiveRays, RaySource, ShadowQuery};
@@ -54,7 +55,7 @@ impl TileRays {
         } else {
             // Entry by entry, not chunks of the old rows: the old world may have had no
             // light at all.
-            let remapped = (0..old.chains.hits.len()).flat_map(|entry| {
+            let remapped = (0..old.chains.len()).flat_map(|entry| {
                 let row = &old.slots[entry * old_lights..(entry + 1) * old_lights];
                 columns
                     .shadows
@@ -83,18 +84,13 @@ impl TileRays {
 
     /// A tile with nothing cached, for a world with `lights` lights.
     pub fn fresh(pixels: usize, lights: usize) -> Self {
-        let nothing = Chains {
-            chain_ends: vec![0; pixels],
-            hits: Vec::new(),
-        };
-        let growing = Chains {
-            chain_ends: Vec::with_capacity(pixels),
-            hits: Vec::with_capacity(pixels),
-        };
         Self {
-            chains: Arc::new(nothing),
+            chains: Arc::new(Chains::empty(pixels)),
             slots: Arc::new(Vec::new()),
-            grown: Some((growing, Vec::with_capacity(pixels * lights))),
+            grown: Some((
+                Chains::with_capacity(pixels),
+                Vec::with_capacity(pixels * lights),
+            )),
             old_colours: None,
             colours: Vec::with_capacity(pixels),
             shaded: 0,
@@ -111,7 +107,7 @@ impl TileRays {
             let chain = self.chains.chain(self.pixel);
             let lights = self.lights;
             slots.extend_from_slice(&self.slots[chain.start * lights..chain.end * lights]);
-            chains.hits.extend_from_slice(&self.chains.hits[chain]);
+            chains.extend_from(&self.chains, chain);
         }
     }
 
@@ -123,20 +119,21 @@ impl TileRays {
             .pixel_chain()
             .0
             .iter()
-            .any(|hit| hit.object().is_some_and(|o| changed[o]));
+            .any(|&o| o != u32::MAX && changed[o as usize]);
         (!touched).then(|| old[self.pixel])
     }
 
-    /// The current pixel's cached chain, and its entries' light slots (`lights` each).
-    pub fn pixel_chain(&self) -> (&[CachedHit], &[LightSlot]) {
+    /// The objects the current pixel's cached chain met (`u32::MAX` for a miss), and
+    /// its entries' light slots (`lights` each).
+    pub fn pixel_chain(&self) -> (&[u32], &[LightSlot]) {
         let chain = self.chain();
-        let (hits, slots) = match &self.grown {
-            Some((chains, slots)) => (&chains.hits, slots),
-            None => (&self.chains.hits, &*self.slots),
+        let (chains, slots) = match &self.grown {
+            Some((chains, slots)) => (chains, slots),
+            None => (&*self.chains, &*self.slots),
         };
         let lights = self.lights;
         (
-            &hits[chain.clone()],
+            chains.objects(chain.clone()),
             &slots[chain.start * lights..chain.end * lights],
         )
     }
@@ -149,7 +146,7 @@ impl TileRays {
     /// Ends the pixel, which came out `colour`.
     pub fn end_pixel(&mut self, colour: PixelColour) {
         if let Some((chains, _)) = &mut self.grown {
-            chains.chain_ends.push(chains.hits.len() as u32);
+            chains.end_chain();
         }
         self.colours.push(colour);
         self.pixel += 1;
@@ -158,10 +155,7 @@ impl TileRays {
     /// Where the current pixel's chain is, in the chains read or rebuilt.
     fn chain(&self) -> std::ops::Range<usize> {
         match &self.grown {
-            Some((chains, _)) => {
-                let start = chains.chain_ends.last().map_or(0, |&end| end as usize);
-                start..chains.hits.len()
-            }
+            Some((chains, _)) => chains.building(),
             None => self.chains.chain(self.pixel),
         }
     }
@@ -172,13 +166,7 @@ impl TileRays {
         let (chains, slots) = (&self.chains, &self.slots);
         self.grown.get_or_insert_with(|| {
             let end = chains.chain(pixel).end;
-            let mut hits = Vec::with_capacity(chains.hits.len() + chains.chain_ends.len() / 4);
-            hits.extend_from_slice(&chains.hits[..end]);
-            let copied = Chains {
-                chain_ends: chains.chain_ends[..pixel].to_vec(),
-                hits,
-            };
-            (copied, slots[..end * lights].to_vec())
+            (chains.prefix(pixel, end), slots[..end * lights].to_vec())
         })
     }
 
@@ -236,8 +224,8 @@ impl RaySource for PixelRays<'_, '_, '_> {
         if depth < chain.len() {
             let entry = chain.start + depth;
             let hit = match &self.tile.grown {
-                Some((chains, _)) => &chains.hits[entry],
-                None => &self.tile.chains.hits[entry],
+                Some((chains, _)) => chains.hit(entry),
+                None => self.tile.chains.hit(entry),
             };
             let hit = hit.point();
             if hit.is_some_and(|h| self.stale_lobes.get(h.object).copied().unwrap_or(false)) {
@@ -256,7 +244,7 @@ impl RaySource for PixelRays<'_, '_, '_> {
         }
         let hit = self.live.closest_hit(world, depth as u32, ray);
         let (chains, slots) = self.tile.grow();
-        chains.hits.push(CachedHit::new(hit.as_ref()));
+        chains.push(CachedHit::new(hit.as_ref()));
         slots.extend(std::iter::repeat_n(LightSlot::NOTHING, lights));
         hit
     }
