@@ -72,6 +72,28 @@ impl LitFactors {
         bits(self) == bits(other)
     }
 
+    /// `n.l` where the light was sampled; NaN where nothing is known, minus infinity
+    /// where the light cannot reach the point.
+    #[inline]
+    #[must_use]
+    pub fn n_dot_l(&self) -> f64 {
+        self.n_dot_l
+    }
+
+    /// The distance the strength falls off with (for a reached light).
+    #[inline]
+    #[must_use]
+    pub fn distance_squared(&self) -> f64 {
+        self.distance_squared
+    }
+
+    /// The Phong lobe (for a reached light in front of the surface).
+    #[inline]
+    #[must_use]
+    pub fn lobe(&self) -> Option<f64> {
+        (self.lobe >= 0.0).then_some(self.lobe)
+    }
+
     /// What is known.
     #[inline]
     #[must_use]

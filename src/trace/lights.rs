@@ -119,7 +119,7 @@ impl WorldLight {
     #[inline]
     #[must_use]
     pub fn radiance_at(&self, distance_squared: f64) -> DVec3 {
-        self.strength() / distance_squared
+        falloff(self.strength(), distance_squared)
     }
 
     /// Everything about the light but its strength, bit for bit: two lights with the same
@@ -167,6 +167,13 @@ impl WorldLight {
     }
 }
 
+/// `strength` arriving from `distance_squared` away: the one falloff of every sample.
+#[inline]
+#[must_use]
+pub fn falloff(strength: DVec3, distance_squared: f64) -> DVec3 {
+    strength / distance_squared
+}
+
 /// A point source at `position`: strength / d^2 along the unit direction to it.
 fn at_distance(p: DVec3, position: DVec3, strength: DVec3) -> Option<LightSample> {
     let offset = position - p;
@@ -175,7 +182,7 @@ fn at_distance(p: DVec3, position: DVec3, strength: DVec3) -> Option<LightSample
         return None;
     }
     Some(LightSample {
-        radiance: strength / d2,
+        radiance: falloff(strength, d2),
         to_light: offset / d2.sqrt(),
         light_position: Some(position),
         distance_squared: d2,

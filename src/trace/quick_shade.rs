@@ -14,39 +14,83 @@
 use glam::DVec3;
 
 use super::chains::{CLEAR, NOT_CAST};
-use super::light_factors::{LightSlot, Lit};
+use super::light_factors::LightSlot;
+use super::lights::falloff;
 use super::mirror_chain::{Bounce, Chain, fold_back};
 use super::phong::{diffuse_term, specular_term};
 use super::record::NoRecorder;
 use super::shade::{RayCounts, Tracer};
 use super::terms::ActiveTerms;
-use super::world::World;
 
-/// Shades pixels of one world from their cache entries.
-pub(super) struct QuickShade<'w, 's> {
-    world: &'w World,
-    primary: ActiveTerms,
-    secondary: ActiveTerms,
-    /// Per object, whether its cached lobes are stale ([`super::light_factors::stale_lobes`]).
-    stale_lobes: &'s [bool],
+/// What an entry on one object needs of its material, looked up once per pass.
+#[derive(Clone, Copy, Debug)]
+struct ObjectShade {
+    /// `ka * ambient`, as the shader works it out.
+    ambient: DVec3,
+    diffuse: DVec3,
+    specular: DVec3,
+    mirror: DVec3,
+    /// A diffuse or specular colour: the shader looks at the lights.
+    has_local: bool,
+    /// The cached lobes are for another shininess.
+    stale_lobes: bool,
 }
 
-impl<'w, 's> QuickShade<'w, 's> {
-    /// For what `tracer` shades; `None` for the debug views, which are not the lit
-    /// picture.
-    pub fn new(tracer: &Tracer<'w>, stale_lobes: &'s [bool]) -> Option<Self> {
+/// Shades pixels of one world from their cache entries.
+pub(super) struct QuickShade {
+    primary: ActiveTerms,
+    secondary: ActiveTerms,
+    background: DVec3,
+    max_depth: u32,
+    objects: Vec<ObjectShade>,
+    /// Per light, its strength; `None` for a light of zero strength, which the shader
+    /// does not sample.
+    lights: Vec<Option<DVec3>>,
+}
+
+impl QuickShade {
+    /// For what `tracer` shades, with per object whether its cached lobes are stale
+    /// ([`super::light_factors::stale_lobes`]); `None` for the debug views, which are not
+    /// the lit picture.
+    pub fn new(tracer: &Tracer, stale_lobes: &[bool]) -> Option<Self> {
         let (primary, secondary) = tracer.beauty_terms()?;
+        let world = tracer.world();
+        let objects = world
+            .objects
+            .iter()
+            .zip(stale_lobes)
+            .map(|(object, &stale_lobes)| {
+                let material = &world.materials[object.material];
+                ObjectShade {
+                    ambient: material.ambient * world.ambient,
+                    diffuse: material.diffuse,
+                    specular: material.specular,
+                    mirror: material.mirror,
+                    has_local: material.diffuse != DVec3::ZERO
+                        || material.specular != DVec3::ZERO,
+                    stale_lobes,
+                }
+            })
+            .collect();
+        let lights = world
+            .lights
+            .iter()
+            .map(|light| Some(light.strength()).filter(|s| *s != DVec3::ZERO))
+            .collect();
         Some(Self {
-            world: tracer.world(),
             primary,
             secondary,
-            stale_lobes,
+            background: world.background,
+            max_depth: world.max_depth,
+            objects,
+            lights,
         })
     }
 
     /// The colour of the pixel whose chain's entries met `objects` (`u32::MAX`: a miss),
-    /// with `lights` light slots per entry in `slots`, and the rays the shader would count for it; `None` where the
-    /// cache cannot answer.
+    /// with `lights` light slots per entry in `slots`, and the rays the shader would
+    /// count for it; `None` where the cache cannot answer.
+    #[inline]
     pub fn pixel(
         &self,
         objects: &[u32],
@@ -58,15 +102,19 @@ impl<'w, 's> QuickShade<'w, 's> {
             primary: 1,
             ..RayCounts::default()
         };
+        let row = |depth: usize| &slots[depth * lights..(depth + 1) * lights];
+        let &first = objects.first()?;
+        let (local, mirror) = self.entry(0, first, row(0), &self.primary, &mut own)?;
+        // Most camera rays meet no mirror: no chain to keep.
+        let Some(km) = mirror else {
+            counts.add(&own);
+            return Some(local);
+        };
         let mut bounces = Chain::new();
-        for (depth, &object) in objects.iter().enumerate() {
-            let terms = if depth == 0 {
-                &self.primary
-            } else {
-                &self.secondary
-            };
-            let row = &slots[depth * lights..(depth + 1) * lights];
-            let (local, mirror) = self.entry(depth as u32, object, row, terms, &mut own)?;
+        bounces.push(Bounce { local, km });
+        for (depth, &object) in objects.iter().enumerate().skip(1) {
+            let terms = &self.secondary;
+            let (local, mirror) = self.entry(depth as u32, object, row(depth), terms, &mut own)?;
             match mirror {
                 Some(km) => bounces.push(Bounce { local, km }),
                 None => {
@@ -81,7 +129,8 @@ impl<'w, 's> QuickShade<'w, 's> {
     }
 
     /// One entry's own colour and, if the shader casts a mirror ray from it, its km.
-    #[inline]
+    /// Inlined into both calls in [`Self::pixel`], as the shader's `shade` is.
+    #[inline(always)]
     fn entry(
         &self,
         depth: u32,
@@ -90,41 +139,34 @@ impl<'w, 's> QuickShade<'w, 's> {
         terms: &ActiveTerms,
         counts: &mut RayCounts,
     ) -> Option<(DVec3, Option<DVec3>)> {
-        let world = self.world;
         if object == u32::MAX {
             let background = if terms.background {
-                world.background
+                self.background
             } else {
                 DVec3::ZERO
             };
             return Some((background, None));
         }
-        let object = object as usize;
-        if self.stale_lobes[object] {
+        let shade = &self.objects[object as usize];
+        if shade.stale_lobes {
             return None;
         }
-        let material = &world.materials[world.objects[object].material];
         let mut colour = DVec3::ZERO;
         if terms.ambient {
-            colour += material.ambient * world.ambient;
+            colour += shade.ambient;
         }
-        let has_local = material.diffuse != DVec3::ZERO || material.specular != DVec3::ZERO;
-        if (terms.diffuse || terms.specular) && has_local {
-            for (light, slot) in world.lights.iter().zip(row) {
-                // The shader samples no light of zero strength.
-                if light.strength() == DVec3::ZERO {
+        if (terms.diffuse || terms.specular) && shade.has_local {
+            for (light, slot) in self.lights.iter().zip(row) {
+                let Some(strength) = *light else {
                     continue;
-                }
-                let (distance_squared, n_dot_l, lobe) = match slot.factors.get() {
-                    Lit::Unknown => return None,
-                    Lit::Unreachable => continue,
-                    Lit::Reached {
-                        distance_squared,
-                        n_dot_l,
-                        lobe,
-                    } => (distance_squared, n_dot_l, lobe),
                 };
-                if n_dot_l <= 0.0 || n_dot_l.is_nan() {
+                let factors = slot.factors;
+                let n_dot_l = factors.n_dot_l();
+                // Unknown, unreachable, or behind the surface: only the first is news.
+                if !(n_dot_l > 0.0) {
+                    if n_dot_l.is_nan() {
+                        return None;
+                    }
                     continue;
                 }
                 if terms.shadows {
@@ -136,14 +178,14 @@ impl<'w, 's> QuickShade<'w, 's> {
                         continue;
                     }
                 }
-                let strength = light.radiance_at(distance_squared);
+                let strength = falloff(strength, factors.distance_squared());
                 let diffuse = if terms.diffuse {
-                    diffuse_term(material.diffuse, strength, n_dot_l)
+                    diffuse_term(shade.diffuse, strength, n_dot_l)
                 } else {
                     DVec3::ZERO
                 };
                 let specular = if terms.specular {
-                    specular_term(material.specular, strength, lobe)
+                    specular_term(shade.specular, strength, factors.lobe())
                 } else {
                     DVec3::ZERO
                 };
@@ -151,10 +193,10 @@ impl<'w, 's> QuickShade<'w, 's> {
             }
         }
         let casts_mirror_ray =
-            terms.reflection && depth < world.max_depth && material.mirror != DVec3::ZERO;
+            terms.reflection && depth < self.max_depth && shade.mirror != DVec3::ZERO;
         if casts_mirror_ray {
             counts.reflection += 1;
         }
-        Some((colour, casts_mirror_ray.then_some(material.mirror)))
+        Some((colour, casts_mirror_ray.then_some(shade.mirror)))
     }
 }
