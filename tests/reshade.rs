@@ -121,7 +121,10 @@ fn a_new_shininess_works_its_lobes_out_again_even_while_specular_is_off() {
     // The red ball's pixels are shaded in full: their lobes were for shininess 60.
     let (quick, shaded) = (passes[1].quick_pixels, passes[1].shaded_pixels);
     assert!(quick == 0 && shaded > 0, "{quick} of {shaded} from factors");
-    assert_eq!(passes[2].quick_pixels, passes[2].shaded_pixels, "new lobes kept");
+    assert_eq!(
+        passes[2].quick_pixels, passes[2].shaded_pixels,
+        "new lobes kept"
+    );
 
     // With diffuse off too the shader looks at no light there: the old lobes are
     // forgotten, and the pixels are shaded in full when the terms come back.

@@ -177,4 +177,3 @@ impl Chains {
         self.chain_ends.push(self.hits.len() as u32);
     }
 }
-

@@ -20,11 +20,11 @@ use std::sync::Arc;
 
 use glam::{DAffine3, DVec3};
 
+use super::chains::{CachedHit, Chains};
 use super::light_factors::{self, LightSlot};
 use super::lights::WorldLight;
 use super::render::RenderOptions;
 use super::terms::{TermSwitches, View};
-use super::chains::{CachedHit, Chains};
 use super::world::World;
 use crate::scene::{Camera, Material, Shape};
 

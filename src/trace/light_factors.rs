@@ -177,7 +177,12 @@ mod tests {
         };
         assert_eq!(LitFactors::UNKNOWN.get(), Lit::Unknown);
         assert_eq!(LitFactors::UNREACHABLE.get(), Lit::Unreachable);
-        for (n_dot_l, lobe) in [(0.5, Some(0.0)), (0.5, Some(0.25)), (0.5, None), (-0.2, None)] {
+        for (n_dot_l, lobe) in [
+            (0.5, Some(0.0)),
+            (0.5, Some(0.25)),
+            (0.5, None),
+            (-0.2, None),
+        ] {
             let expected = Lit::Reached {
                 distance_squared: 2.5,
                 n_dot_l,

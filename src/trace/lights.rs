@@ -216,7 +216,10 @@ mod tests {
             for p in [DVec3::ZERO, DVec3::new(1.1, -0.3, 7.9), DVec3::splat(1e5)] {
                 let sample = light.sample(p).unwrap();
                 let again = light.radiance_at(sample.distance_squared);
-                assert_eq!(sample.radiance.to_array().map(f64::to_bits), again.to_array().map(f64::to_bits));
+                assert_eq!(
+                    sample.radiance.to_array().map(f64::to_bits),
+                    again.to_array().map(f64::to_bits)
+                );
             }
         }
         let moved = WorldLight::Point {

@@ -66,8 +66,7 @@ impl QuickShade {
                     diffuse: material.diffuse,
                     specular: material.specular,
                     mirror: material.mirror,
-                    has_local: material.diffuse != DVec3::ZERO
-                        || material.specular != DVec3::ZERO,
+                    has_local: material.diffuse != DVec3::ZERO || material.specular != DVec3::ZERO,
                     stale_lobes,
                 }
             })

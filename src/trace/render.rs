@@ -5,6 +5,7 @@ use std::ops::Range;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use glam::{DVec2, DVec3, Vec3};
+use rayon::prelude::*;
 
 use super::camera::PinholeCamera;
 use super::image::Image;
@@ -119,6 +120,25 @@ impl SampleSums {
         }
     }
 
+    /// Sums of no samples yet, to be made by the first render into them: no pixel held
+    /// until then (so none is cleared only to be overwritten).
+    #[must_use]
+    pub(super) fn unsummed(width: u32, height: u32) -> Self {
+        Self {
+            sums: Vec::new(),
+            ..Self::zero(0, 0)
+        }
+        .sized(width, height)
+    }
+
+    fn sized(self, width: u32, height: u32) -> Self {
+        Self {
+            width,
+            height,
+            ..self
+        }
+    }
+
     /// The image these sums make when divided by `count` samples.
     #[must_use]
     pub fn average(&self, count: u32) -> Image {
@@ -128,7 +148,7 @@ impl SampleSums {
             height: self.height,
             pixels: self
                 .sums
-                .iter()
+                .par_iter()
                 .map(|s| (*s * scale).as_vec3())
                 .collect::<Vec<Vec3>>(),
         }
@@ -144,7 +164,7 @@ pub fn render_samples(
     samples: Range<u32>,
     progress: &RenderProgress,
 ) -> Option<SampleSums> {
-    let mut sums = SampleSums::zero(options.width, options.height);
+    let mut sums = SampleSums::unsummed(options.width, options.height);
     render_samples_into(world, options, samples, &mut sums, progress)?;
     Some(sums)
 }

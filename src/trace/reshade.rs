@@ -59,9 +59,7 @@ pub fn render_one_sample_cached(
     let (width, height) = (options.width, options.height);
     assert_compiled_for(world, &options.isolation);
     let reuse = previous.and_then(|cache| match cache.reuse(world, width, height) {
-        Reuse::Reshade { kept_columns } => {
-            Some((cache, kept_columns, cache.factor_columns(world)))
-        }
+        Reuse::Reshade { kept_columns } => Some((cache, kept_columns, cache.factor_columns(world))),
         Reuse::Retrace(_) => None,
     });
     let camera = PinholeCamera::new(&world.camera, width, height);
@@ -131,7 +129,7 @@ pub fn render_one_sample_cached(
         });
         colour
     };
-    let mut sums = SampleSums::zero(width, height);
+    let mut sums = SampleSums::unsummed(width, height);
     let (_, states) = render_tiles_with(&mut sums, 0..1, progress, new_state, &sample)?;
     debug_assert_eq!(states.len(), tile_count(width, height) as usize);
     let mut traced = RayCounts::default();

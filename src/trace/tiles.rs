@@ -101,7 +101,10 @@ pub(super) fn render_tiles_with<S: Send>(
     progress.batches_total.store(batches, Ordering::Relaxed);
     progress.batches_done.store(0, Ordering::Relaxed);
 
-    let before: &SampleSums = sums;
+    // Sums with nothing summed yet ([`SampleSums::unsummed`]) are made from the tiles
+    // alone: nothing to read before, nothing to clear.
+    let unsummed = sums.sums.is_empty();
+    let before = (!unsummed).then_some(&*sums);
     let tiles: Vec<Option<Tile<S>>> = (0..tile_count)
         .into_par_iter()
         .map(|index| {
@@ -109,6 +112,7 @@ pub(super) fn render_tiles_with<S: Send>(
             render_tile(
                 rect,
                 new_state(index, rect),
+                width,
                 before,
                 samples.clone(),
                 progress,
@@ -121,17 +125,15 @@ pub(super) fn render_tiles_with<S: Send>(
     let mut rays = RayCounts::default();
     let mut new_pixels = Vec::new();
     let mut states = Vec::with_capacity(tiles.len());
+    let mut placed = Vec::with_capacity(tiles.len());
     for tile in tiles {
         states.push(tile.state);
         rays.add(&tile.rays);
         sums.non_finite += tile.non_finite;
         new_pixels.extend(tile.non_finite_pixels);
-        let rect = tile.rect;
-        for (row, chunk) in tile.sums.chunks(rect.w as usize).enumerate() {
-            let start = (rect.y0 as usize + row) * width as usize + rect.x0 as usize;
-            sums.sums[start..start + chunk.len()].copy_from_slice(chunk);
-        }
+        placed.push((tile.rect, tile.sums));
     }
+    place_tiles(sums, &placed, unsummed);
     sums.rays.add(&rays);
     if !new_pixels.is_empty() {
         sums.non_finite_pixels.extend(new_pixels);
@@ -141,24 +143,52 @@ pub(super) fn render_tiles_with<S: Send>(
     Some((rays, states))
 }
 
+/// Puts each tile's sums in its place in `sums`, in parallel, row by row of the image;
+/// `unsummed` sums are made first.
+fn place_tiles(sums: &mut SampleSums, tiles: &[(TileRect, Vec<DVec3>)], unsummed: bool) {
+    let width = sums.width as usize;
+    if width == 0 {
+        return;
+    }
+    let tiles_x = sums.width.div_ceil(TILE_SIZE) as usize;
+    let band = |y: usize| &tiles[y / TILE_SIZE as usize * tiles_x..][..tiles_x];
+    let fill_row = |y: usize, row: &mut [DVec3]| {
+        for (rect, tile_sums) in band(y) {
+            let (x0, w) = (rect.x0 as usize, rect.w as usize);
+            let start = (y - rect.y0 as usize) * w;
+            row[x0..x0 + w].copy_from_slice(&tile_sums[start..start + w]);
+        }
+    };
+    if unsummed {
+        sums.sums = vec![DVec3::ZERO; width * sums.height as usize];
+    }
+    sums.sums
+        .par_chunks_mut(width)
+        .enumerate()
+        .for_each(|(y, row)| fill_row(y, row));
+}
+
 /// Traces one tile batch by batch, each pixel's sum continuing from `before`; `None` as
 /// soon as a batch finds the render cancelled.
 fn render_tile<S>(
     rect: TileRect,
     mut state: S,
-    before: &SampleSums,
+    image_width: u32,
+    before: Option<&SampleSums>,
     samples: Range<u32>,
     progress: &RenderProgress,
     sample: &impl Fn(&mut S, u32, u32, u32, &mut RayCounts) -> DVec3,
 ) -> Option<Tile<S>> {
-    let image_width = before.width;
     let pixels: Vec<(u32, u32)> = (rect.y0..rect.y0 + rect.h)
         .flat_map(|py| (rect.x0..rect.x0 + rect.w).map(move |px| (px, py)))
         .collect();
-    let mut sums: Vec<DVec3> = pixels
-        .iter()
-        .map(|&(px, py)| before.sums[(py * image_width + px) as usize])
-        .collect();
+    let mut sums: Vec<DVec3> = match before {
+        Some(before) => pixels
+            .iter()
+            .map(|&(px, py)| before.sums[(py * image_width + px) as usize])
+            .collect(),
+        None => vec![DVec3::ZERO; pixels.len()],
+    };
     let mut finite = vec![true; pixels.len()];
     let mut rays = RayCounts::default();
     let mut non_finite = 0;

@@ -100,7 +100,6 @@ pub const NOTHING: RayCounts = RayCounts {
     reflection: 0,
 };
 
-
 /// Sets any light's colour.
 pub fn set_colour(light: &mut Light, to: DVec3) {
     match light {
