@@ -65,13 +65,6 @@ impl LitFactors {
         }
     }
 
-    /// Whether the two are the same, bit for bit.
-    #[must_use]
-    pub fn same_as(&self, other: &Self) -> bool {
-        let bits = |f: &Self| [f.distance_squared, f.n_dot_l, f.lobe].map(f64::to_bits);
-        bits(self) == bits(other)
-    }
-
     /// `n.l` where the light was sampled; NaN where nothing is known, minus infinity
     /// where the light cannot reach the point.
     #[inline]

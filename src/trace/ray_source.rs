@@ -38,11 +38,11 @@ pub trait RaySource {
         query: impl FnOnce() -> ShadowQuery,
     ) -> Option<usize>;
 
-    /// Whether this source keeps what each light gives each hit
-    /// ([`RaySource::light_factors`]): the shader then works the factors out for every
-    /// light it looks at, whatever the switches.
+    /// Whether this source keeps what light `light` gives the hit at `depth` and does
+    /// not have it yet ([`RaySource::light_factors`]): the shader then works the factors
+    /// out, whatever the switches.
     #[inline]
-    fn keeps_light_factors(&self) -> bool {
+    fn wants_light_factors(&self, _depth: u32, _light: usize) -> bool {
         false
     }
 

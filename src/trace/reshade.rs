@@ -92,41 +92,41 @@ pub fn render_one_sample_cached(
     };
     let sample = |tile: &mut TileRays, px: u32, py: u32, _index: u32, rays: &mut RayCounts| {
         tile.begin_pixel();
-        let kept = changed.as_deref().and_then(|c| tile.unchanged_colour(c));
-        let (colour, pixel_rays) = match kept {
-            Some(kept) => (kept.colour, kept.rays.map(u64::from)),
+        if let Some(kept) = changed.as_deref().and_then(|c| tile.unchanged_colour(c)) {
+            rays.primary += u64::from(kept.rays[0]);
+            rays.shadow += u64::from(kept.rays[1]);
+            rays.reflection += u64::from(kept.rays[2]);
+            tile.end_kept_pixel(kept);
+            return kept.colour;
+        }
+        tile.shaded += 1;
+        let mut own = RayCounts::default();
+        let (chain, slots) = tile.pixel_chain();
+        let quick = quick
+            .as_ref()
+            .and_then(|q| q.pixel(chain, slots, tile.lights(), &mut own));
+        let colour = match quick {
+            Some(colour) => {
+                tile.quick += 1;
+                colour
+            }
             None => {
-                tile.shaded += 1;
-                let mut own = RayCounts::default();
-                let (chain, slots) = tile.pixel_chain();
-                let quick = quick
-                    .as_ref()
-                    .and_then(|q| q.pixel(chain, slots, tile.lights(), &mut own));
-                let colour = match quick {
-                    Some(colour) => {
-                        tile.quick += 1;
-                        colour
-                    }
-                    None => {
-                        let point = sample_point(px, py, 0, 1);
-                        let source = &mut PixelRays {
-                            tile: &mut *tile,
-                            live: LiveRays::among(cull().candidates(point)),
-                            stale_lobes: &stale_lobes,
-                        };
-                        camera_sample(&tracer, &camera, point, source, &mut own)
-                    }
+                let point = sample_point(px, py, 0, 1);
+                let source = &mut PixelRays {
+                    tile: &mut *tile,
+                    live: LiveRays::among(cull().candidates(point)),
+                    stale_lobes: &stale_lobes,
                 };
-                (colour, [own.primary, own.shadow, own.reflection])
+                camera_sample(&tracer, &camera, point, source, &mut own)
             }
         };
-        rays.primary += pixel_rays[0];
-        rays.shadow += pixel_rays[1];
-        rays.reflection += pixel_rays[2];
-        tile.end_pixel(PixelColour {
+        rays.add(&own);
+        let pixel = PixelColour {
             colour,
-            rays: pixel_rays.map(|n| u32::try_from(n).unwrap_or(u32::MAX)),
-        });
+            rays: [own.primary, own.shadow, own.reflection]
+                .map(|n| u32::try_from(n).unwrap_or(u32::MAX)),
+        };
+        tile.end_pixel(pixel, false);
         colour
     };
     let mut sums = SampleSums::unsummed(width, height);

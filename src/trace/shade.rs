@@ -202,7 +202,7 @@ impl<'w> Tracer<'w> {
                 let Some(sample) = light.sample(hit.p) else {
                     // A light of zero strength stays unknown: the factors of a light
                     // turned up from zero were never worked out.
-                    if rays.keeps_light_factors() && light.strength() != DVec3::ZERO {
+                    if light.strength() != DVec3::ZERO && rays.wants_light_factors(depth, index) {
                         rays.light_factors(depth, index, LitFactors::UNREACHABLE);
                     }
                     if R::ACTIVE {
@@ -215,7 +215,7 @@ impl<'w> Tracer<'w> {
                     continue;
                 };
                 let n_dot_l = hit.n.dot(sample.to_light);
-                if rays.keeps_light_factors() {
+                if rays.wants_light_factors(depth, index) {
                     let factors = self.light_factors(&hit, &sample, view_dir, material, n_dot_l);
                     rays.light_factors(depth, index, factors);
                 }

@@ -6,7 +6,7 @@ use std::sync::Arc;
 
 use super::chains::{CachedHit, Chains, NOT_CAST, decode_blocker, encode_blocker};
 use super::hit_cache::{PixelColour, TileHits};
-use super::light_factors::{LightSlot, LitFactors};
+use super::light_factors::{LightSlot, Lit, LitFactors};
 use super::ray::Ray;
 use super::ray_source::{LiveRays, RaySource, ShadowQuery};
 use super::shade::RayCounts;
@@ -21,14 +21,17 @@ pub(super) struct TileRays {
     slots: Arc<Vec<LightSlot>>,
     /// The rebuilt chains and slots, once one chain had to grow.
     grown: Option<(Chains, Vec<LightSlot>)>,
-    /// The pixels' colours in the cache read (none for a fresh tile), and in this pass.
+    /// The pixels' colours in the cache read (none for a fresh tile), and in this pass
+    /// once one of them changed (until then the old ones stand for them).
     old_colours: Option<Arc<Vec<PixelColour>>>,
-    colours: Vec<PixelColour>,
+    colours: Option<Vec<PixelColour>>,
     /// Pixels shaded so far, and of them those shaded from light factors alone.
     pub shaded: u64,
     pub quick: u64,
-    /// The pixel being shaded, row-major within the tile.
+    /// The pixel being shaded, row-major within the tile, and its chain in the chains
+    /// read.
     pixel: usize,
+    read_chain: std::ops::Range<usize>,
     lights: usize,
     pub traced: RayCounts,
 }
@@ -55,28 +58,29 @@ impl TileRays {
         } else {
             // Entry by entry, not chunks of the old rows: the old world may have had no
             // light at all.
-            let remapped = (0..old.chains.len()).flat_map(|entry| {
+            let lights = columns.shadows.len();
+            let mut remapped = Vec::with_capacity(old.chains.len() * lights);
+            for entry in 0..old.chains.len() {
                 let row = &old.slots[entry * old_lights..(entry + 1) * old_lights];
-                columns
-                    .shadows
-                    .iter()
-                    .zip(columns.factors)
-                    .map(|(shadow, factors)| LightSlot {
+                for (shadow, factors) in columns.shadows.iter().zip(columns.factors) {
+                    remapped.push(LightSlot {
                         shadow: shadow.map_or(NOT_CAST, |c| row[c].shadow),
                         factors: factors.map_or(LitFactors::UNKNOWN, |c| row[c].factors),
-                    })
-            });
-            Arc::new(remapped.collect())
+                    });
+                }
+            }
+            Arc::new(remapped)
         };
         Self {
             chains: Arc::clone(&old.chains),
             slots,
             grown: None,
             old_colours: Some(Arc::clone(&old.colours)),
-            colours: Vec::with_capacity(old.colours.len()),
+            colours: None,
             shaded: 0,
             quick: 0,
             pixel: 0,
+            read_chain: 0..0,
             lights: columns.shadows.len(),
             traced: RayCounts::default(),
         }
@@ -92,10 +96,11 @@ impl TileRays {
                 Vec::with_capacity(pixels * lights),
             )),
             old_colours: None,
-            colours: Vec::with_capacity(pixels),
+            colours: Some(Vec::with_capacity(pixels)),
             shaded: 0,
             quick: 0,
             pixel: 0,
+            read_chain: 0..0,
             lights,
             traced: RayCounts::default(),
         }
@@ -103,8 +108,9 @@ impl TileRays {
 
     /// Starts the next pixel: once rebuilding, copies its cached chain across.
     pub fn begin_pixel(&mut self) {
+        self.read_chain = self.chains.chain(self.pixel);
         if let Some((chains, slots)) = &mut self.grown {
-            let chain = self.chains.chain(self.pixel);
+            let chain = self.read_chain.clone();
             let lights = self.lights;
             slots.extend_from_slice(&self.slots[chain.start * lights..chain.end * lights]);
             chains.extend_from(&self.chains, chain);
@@ -143,12 +149,32 @@ impl TileRays {
         self.lights
     }
 
+    /// Ends a pixel that kept its colour `kept` ([`Self::unchanged_colour`]).
+    pub fn end_kept_pixel(&mut self, kept: PixelColour) {
+        if self.colours.is_none() && self.grown.is_none() {
+            // Every pixel so far kept its colour: the old ones still stand for them.
+            self.pixel += 1;
+        } else {
+            self.end_pixel(kept, true);
+        }
+    }
+
     /// Ends the pixel, which came out `colour`.
-    pub fn end_pixel(&mut self, colour: PixelColour) {
+    pub fn end_pixel(&mut self, colour: PixelColour, kept: bool) {
         if let Some((chains, _)) = &mut self.grown {
             chains.end_chain();
         }
-        self.colours.push(colour);
+        match (&mut self.colours, &self.old_colours) {
+            (Some(colours), _) => colours.push(colour),
+            // Every pixel so far kept its colour: the old ones still stand for them.
+            (None, Some(_)) if kept => {}
+            (None, old) => {
+                let mut colours = Vec::with_capacity(old.as_ref().map_or(0, |o| o.len()));
+                colours.extend_from_slice(old.as_ref().map_or(&[][..], |o| &o[..self.pixel]));
+                colours.push(colour);
+                self.colours = Some(colours);
+            }
+        }
         self.pixel += 1;
     }
 
@@ -156,7 +182,7 @@ impl TileRays {
     fn chain(&self) -> std::ops::Range<usize> {
         match &self.grown {
             Some((chains, _)) => chains.building(),
-            None => self.chains.chain(self.pixel),
+            None => self.read_chain.clone(),
         }
     }
 
@@ -189,7 +215,11 @@ impl TileRays {
 
     /// The tile's rays for the new cache.
     pub fn finish(self) -> TileHits {
-        let colours = Arc::new(self.colours);
+        let colours = match (self.colours, self.old_colours) {
+            (Some(colours), _) => Arc::new(colours),
+            (None, Some(old)) => old,
+            (None, None) => Arc::new(Vec::new()),
+        };
         match self.grown {
             Some((chains, slots)) => TileHits {
                 chains: Arc::new(chains),
@@ -267,14 +297,15 @@ impl RaySource for PixelRays<'_, '_, '_> {
         blocked_by
     }
 
-    fn keeps_light_factors(&self) -> bool {
-        true
+    /// Factors kept are valid: those of a stale lobe or a light placed anew were
+    /// forgotten.
+    fn wants_light_factors(&self, depth: u32, light: usize) -> bool {
+        let slot = (self.tile.chain().start + depth as usize) * self.tile.lights + light;
+        self.tile.slot(slot).factors.get() == Lit::Unknown
     }
 
     fn light_factors(&mut self, depth: u32, light: usize, factors: LitFactors) {
         let slot = (self.tile.chain().start + depth as usize) * self.tile.lights + light;
-        if !self.tile.slot(slot).factors.same_as(&factors) {
-            self.tile.slot_mut(slot).factors = factors;
-        }
+        self.tile.slot_mut(slot).factors = factors;
     }
 }
