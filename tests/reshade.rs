@@ -137,6 +137,43 @@ fn a_new_shininess_works_its_lobes_out_again_even_while_specular_is_off() {
     assert!(passes[2].quick_pixels < passes[2].shaded_pixels);
 }
 
+/// A light 1e-7 from the surface point under the centre pixel: its strength there
+/// overflows to infinity through the diffuse term alone.
+const INFINITE_AT_THE_CENTRE: &str = r#"
+Scene(
+    camera: (position: (0.0, 0.0, 5.0), look_at: (0.0, 0.0, 0.0), fov_deg: 40.0,
+             width: 33, height: 33),
+    materials: { "white": (ambient: (0.1, 0.1, 0.1), diffuse: (0.8, 0.8, 0.8)) },
+    objects: [(shape: Sphere, material: "white")],
+    lights: [
+        Ambient(colour: (1.0, 1.0, 1.0)),
+        Point(position: (0.0, 0.0, 1.0000001), colour: (1.0, 1.0, 1.0), intensity: 1e300),
+    ],
+)
+"#;
+
+/// A re-shaded pass keeps the guard: the non-finite sample is counted in its pixel
+/// while the light is that strong, and gone when it is turned down.
+#[test]
+fn a_re_shaded_pass_counts_a_non_finite_sample_in_its_pixel() {
+    let base = Shot::of(raylab::scene::parse_scene(INFINITE_AT_THE_CENTRE).unwrap());
+    let edits = [
+        base.edited(|s, _| s.materials.get_mut("white").unwrap().ambient *= 3.0),
+        base.edited(|s, _| match &mut s.lights[1] {
+            Light::Point { intensity, .. } => *intensity = 1.0,
+            _ => unreachable!("the second light is the point light"),
+        }),
+        base.clone(),
+    ];
+    let passes = edit_chain(&base, &edits, "infinite light");
+    let non_finite: Vec<u64> = passes.iter().map(|p| p.sums.non_finite).collect();
+    assert_eq!(non_finite, [1, 0, 1]);
+    assert_eq!(passes[0].sums.non_finite_pixels, [16 * 33 + 16]);
+    for pass in &passes {
+        assert_eq!(pass.quick_pixels, pass.shaded_pixels);
+    }
+}
+
 /// The debug views are not the lit picture: they are shaded in full.
 #[test]
 fn debug_views_are_not_shaded_from_light_factors() {

@@ -23,6 +23,7 @@ use glam::{DAffine3, DVec3};
 use super::chains::{CachedHit, Chains};
 use super::light_factors::{self, LightSlot};
 use super::lights::WorldLight;
+use super::ray_counts::RayCounts;
 use super::render::RenderOptions;
 use super::terms::{TermSwitches, View};
 use super::world::World;
@@ -41,6 +42,26 @@ pub(super) struct PixelColour {
     pub colour: DVec3,
     /// Primary, shadow and reflection rays behind it.
     pub rays: [u32; 3],
+}
+
+impl PixelColour {
+    /// `colour`, made of the rays `rays`.
+    pub fn of(colour: DVec3, rays: &RayCounts) -> Self {
+        Self {
+            colour,
+            rays: [rays.primary, rays.shadow, rays.reflection]
+                .map(|n| u32::try_from(n).unwrap_or(u32::MAX)),
+        }
+    }
+
+    /// The rays behind it.
+    pub fn counts(&self) -> RayCounts {
+        RayCounts {
+            primary: u64::from(self.rays[0]),
+            shadow: u64::from(self.rays[1]),
+            reflection: u64::from(self.rays[2]),
+        }
+    }
 }
 
 /// The cached rays of one tile. The chains and light slots are shared with the cache

@@ -20,7 +20,7 @@ use super::render::{RenderOptions, RenderProgress, SampleSums, camera_sample, sa
 use super::shade::{RayCounts, Tracer};
 use super::tile_cull::TileCull;
 use super::tile_rays::{PixelRays, SlotColumns, TileRays};
-use super::tiles::{TileRect, render_tiles_with, tile_count};
+use super::tiles::{TileRect, TileWork, render_tiles_with, tile_count};
 use super::world::World;
 
 /// What the one-sample pass made.
@@ -93,9 +93,7 @@ pub fn render_one_sample_cached(
     let sample = |tile: &mut TileRays, px: u32, py: u32, _index: u32, rays: &mut RayCounts| {
         tile.begin_pixel();
         if let Some(kept) = changed.as_deref().and_then(|c| tile.unchanged_colour(c)) {
-            rays.primary += u64::from(kept.rays[0]);
-            rays.shadow += u64::from(kept.rays[1]);
-            rays.reflection += u64::from(kept.rays[2]);
+            rays.add(&kept.counts());
             tile.end_kept_pixel(kept);
             return kept.colour;
         }
@@ -121,16 +119,24 @@ pub fn render_one_sample_cached(
             }
         };
         rays.add(&own);
-        let pixel = PixelColour {
-            colour,
-            rays: [own.primary, own.shadow, own.reflection]
-                .map(|n| u32::try_from(n).unwrap_or(u32::MAX)),
-        };
-        tile.end_pixel(pixel, false);
+        tile.end_pixel(PixelColour::of(colour, &own), false);
         colour
     };
+    // A tile whose every pixel keeps its colour or is quick-shaded goes in one loop.
+    let whole = |tile: &mut TileRays| match &quick {
+        Some(quick) => tile.whole_tile(changed.as_deref(), |objects, slots, own| {
+            quick.pixel(objects, slots, lights, own)
+        }),
+        None if changed.is_some() => tile.whole_tile(changed.as_deref(), |_, _, _| None),
+        None => None,
+    };
+    let work = TileWork {
+        new_state,
+        whole,
+        sample: &sample,
+    };
     let mut sums = SampleSums::unsummed(width, height);
-    let (_, states) = render_tiles_with(&mut sums, 0..1, progress, new_state, &sample)?;
+    let (_, states) = render_tiles_with(&mut sums, 0..1, progress, &work)?;
     debug_assert_eq!(states.len(), tile_count(width, height) as usize);
     let mut traced = RayCounts::default();
     let (mut shaded_pixels, mut quick_pixels) = (0, 0);

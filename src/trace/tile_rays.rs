@@ -4,6 +4,8 @@
 
 use std::sync::Arc;
 
+use glam::DVec3;
+
 use super::chains::{CachedHit, Chains, NOT_CAST, decode_blocker, encode_blocker};
 use super::hit_cache::{PixelColour, TileHits};
 use super::light_factors::{LightSlot, Lit, LitFactors};
@@ -142,6 +144,61 @@ impl TileRays {
             chains.objects(chain.clone()),
             &slots[chain.start * lights..chain.end * lights],
         )
+    }
+
+    /// The whole tile of a cache read, no ray traced: each pixel keeps its colour (none
+    /// of its rays meets an object with `changed[object]` set) or comes from `shade`
+    /// (given its chain's objects and light slots, as [`Self::pixel_chain`]). The colours
+    /// and rays of every pixel, row-major; `None`, with the tile as it was, where `shade`
+    /// cannot answer for some pixel.
+    pub fn whole_tile(
+        &mut self,
+        changed: Option<&[bool]>,
+        shade: impl Fn(&[u32], &[LightSlot], &mut RayCounts) -> Option<DVec3>,
+    ) -> Option<(Vec<DVec3>, RayCounts)> {
+        let old = match (&self.grown, &self.old_colours) {
+            (None, Some(old)) if self.pixel == 0 => Arc::clone(old),
+            _ => return None,
+        };
+        let (chains, slots, lights) = (&*self.chains, &*self.slots, self.lights);
+        let mut colours = Vec::with_capacity(old.len());
+        let mut rays = RayCounts::default();
+        // Written from the first pixel whose colour changed on.
+        let mut new: Option<Vec<PixelColour>> = None;
+        let mut shaded = 0;
+        for (pixel, kept) in old.iter().enumerate() {
+            let chain = chains.chain(pixel);
+            let objects = chains.objects(chain.clone());
+            let keeps = changed.is_some_and(|changed| {
+                !objects
+                    .iter()
+                    .any(|&o| o != u32::MAX && changed[o as usize])
+            });
+            if keeps {
+                colours.push(kept.colour);
+                rays.add(&kept.counts());
+                if let Some(new) = &mut new {
+                    new.push(*kept);
+                }
+                continue;
+            }
+            let mut own = RayCounts::default();
+            let colour = shade(
+                objects,
+                &slots[chain.start * lights..chain.end * lights],
+                &mut own,
+            )?;
+            shaded += 1;
+            colours.push(colour);
+            rays.add(&own);
+            new.get_or_insert_with(|| old[..pixel].to_vec())
+                .push(PixelColour::of(colour, &own));
+        }
+        self.colours = new;
+        self.pixel = old.len();
+        self.shaded += shaded;
+        self.quick += shaded;
+        Some((colours, rays))
     }
 
     /// Lights per entry.

@@ -82,19 +82,41 @@ pub(super) fn render_tiles(
     sample: &impl SampleColour,
 ) -> Option<RayCounts> {
     let sample = |_: &mut (), px, py, index, rays: &mut RayCounts| sample(px, py, index, rays);
-    render_tiles_with(sums, samples, progress, |_, _| (), &sample).map(|(rays, _)| rays)
+    let tile = TileWork {
+        new_state: |_, _| (),
+        whole: |_: &mut ()| None,
+        sample: &sample,
+    };
+    render_tiles_with(sums, samples, progress, &tile).map(|(rays, _)| rays)
 }
 
-/// As [`render_tiles`], each tile with a state of its own: `new_state` makes it from the
-/// tile's index (row-major, [`tile_count`] of them) and rectangle, `sample` gets it with every pixel (row-major within the tile, one
-/// batch after another), and the states come back in tile order with the rays.
-pub(super) fn render_tiles_with<S: Send>(
+/// How [`render_tiles_with`] renders a tile with a state of its own.
+pub(super) struct TileWork<'s, N, W, F> {
+    /// Makes the state from the tile's index (row-major, [`tile_count`] of them) and
+    /// rectangle.
+    pub new_state: N,
+    /// For a one-sample pass: every pixel's colour (row-major within the tile) and their
+    /// rays at once, where the state can give them so; `None` to go pixel by pixel.
+    pub whole: W,
+    /// One sample of one pixel, given the state (pixels row-major within the tile, one
+    /// batch after another).
+    pub sample: &'s F,
+}
+
+/// As [`render_tiles`], each tile with a state of its own ([`TileWork`]); the states
+/// come back in tile order with the rays.
+pub(super) fn render_tiles_with<S, N, W, F>(
     sums: &mut SampleSums,
     samples: Range<u32>,
     progress: &RenderProgress,
-    new_state: impl Fn(u32, TileRect) -> S + Sync,
-    sample: &(impl Fn(&mut S, u32, u32, u32, &mut RayCounts) -> DVec3 + Sync),
-) -> Option<(RayCounts, Vec<S>)> {
+    work: &TileWork<N, W, F>,
+) -> Option<(RayCounts, Vec<S>)>
+where
+    S: Send,
+    N: Fn(u32, TileRect) -> S + Sync,
+    W: Fn(&mut S) -> Option<(Vec<DVec3>, RayCounts)> + Sync,
+    F: Fn(&mut S, u32, u32, u32, &mut RayCounts) -> DVec3 + Sync,
+{
     let (width, height) = (sums.width, sums.height);
     let tile_count = tile_count(width, height);
     let batches = tile_count as usize * samples.len();
@@ -111,12 +133,12 @@ pub(super) fn render_tiles_with<S: Send>(
             let rect = TileRect::of(index, width, height);
             render_tile(
                 rect,
-                new_state(index, rect),
+                (work.new_state)(index, rect),
                 width,
                 before,
                 samples.clone(),
                 progress,
-                sample,
+                work,
             )
         })
         .collect();
@@ -168,17 +190,61 @@ fn place_tiles(sums: &mut SampleSums, tiles: &[(TileRect, Vec<DVec3>)], unsummed
         .for_each(|(y, row)| fill_row(y, row));
 }
 
+/// A tile of one sample per pixel from its pixels' `colours` (row-major), under the
+/// same guard as [`render_tile`]'s.
+fn whole_tile<S>(
+    rect: TileRect,
+    state: S,
+    image_width: u32,
+    mut colours: Vec<DVec3>,
+    rays: RayCounts,
+) -> Tile<S> {
+    let mut non_finite_pixels = Vec::new();
+    for (i, colour) in colours.iter_mut().enumerate() {
+        if colour.is_finite() {
+            // The sum of one sample, as `render_tile` adds it.
+            *colour += DVec3::ZERO;
+        } else {
+            let (x, y) = (i as u32 % rect.w, i as u32 / rect.w);
+            non_finite_pixels.push((rect.y0 + y) * image_width + rect.x0 + x);
+            *colour = DVec3::ZERO;
+        }
+    }
+    Tile {
+        rect,
+        state,
+        sums: colours,
+        rays,
+        non_finite: non_finite_pixels.len() as u64,
+        non_finite_pixels,
+    }
+}
+
 /// Traces one tile batch by batch, each pixel's sum continuing from `before`; `None` as
 /// soon as a batch finds the render cancelled.
-fn render_tile<S>(
+fn render_tile<S, N, W, F>(
     rect: TileRect,
     mut state: S,
     image_width: u32,
     before: Option<&SampleSums>,
     samples: Range<u32>,
     progress: &RenderProgress,
-    sample: &impl Fn(&mut S, u32, u32, u32, &mut RayCounts) -> DVec3,
-) -> Option<Tile<S>> {
+    work: &TileWork<N, W, F>,
+) -> Option<Tile<S>>
+where
+    W: Fn(&mut S) -> Option<(Vec<DVec3>, RayCounts)>,
+    F: Fn(&mut S, u32, u32, u32, &mut RayCounts) -> DVec3,
+{
+    // A first one-sample pass may give the whole tile at once.
+    if samples.len() == 1 && before.is_none() {
+        if progress.is_cancelled() {
+            return None;
+        }
+        if let Some((colours, rays)) = (work.whole)(&mut state) {
+            progress.batches_done.fetch_add(1, Ordering::Relaxed);
+            return Some(whole_tile(rect, state, image_width, colours, rays));
+        }
+    }
     let pixels: Vec<(u32, u32)> = (rect.y0..rect.y0 + rect.h)
         .flat_map(|py| (rect.x0..rect.x0 + rect.w).map(move |px| (px, py)))
         .collect();
@@ -192,19 +258,25 @@ fn render_tile<S>(
     let mut finite = vec![true; pixels.len()];
     let mut rays = RayCounts::default();
     let mut non_finite = 0;
+    let mut add = |sum: &mut DVec3, finite: &mut bool, colour: DVec3| {
+        // The guard: NaN or infinity never reaches a pixel; it is counted instead.
+        if colour.is_finite() {
+            *sum += colour;
+        } else {
+            non_finite += 1;
+            *finite = false;
+        }
+    };
     for index in samples {
         if progress.is_cancelled() {
             return None;
         }
         for ((&(px, py), sum), finite) in pixels.iter().zip(&mut sums).zip(&mut finite) {
-            let colour = sample(&mut state, px, py, index, &mut rays);
-            // The guard: NaN or infinity never reaches a pixel; it is counted instead.
-            if colour.is_finite() {
-                *sum += colour;
-            } else {
-                non_finite += 1;
-                *finite = false;
-            }
+            add(
+                sum,
+                finite,
+                (work.sample)(&mut state, px, py, index, &mut rays),
+            );
         }
         progress.batches_done.fetch_add(1, Ordering::Relaxed);
     }

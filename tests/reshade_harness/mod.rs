@@ -69,6 +69,10 @@ pub fn assert_same_pass(reshaded: &SampleSums, traced: &SampleSums, what: &str) 
     };
     assert!(bits(reshaded) == bits(traced), "{what}: pixels differ");
     assert_eq!(reshaded.non_finite, traced.non_finite, "{what}");
+    assert_eq!(
+        reshaded.non_finite_pixels, traced.non_finite_pixels,
+        "{what}: non-finite pixels"
+    );
     assert_eq!(reshaded.rays, traced.rays, "{what}: rays modelled");
 }
 
