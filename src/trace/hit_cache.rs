@@ -29,10 +29,23 @@ use super::terms::{TermSwitches, View};
 use super::world::World;
 use crate::scene::{Camera, Material, Shape};
 
-/// The largest image the preview keeps a cache for: about 90 bytes a cached ray, 32 more
-/// per ray and light, and 36 a pixel, so 1280 x 1024 is some 350 MB with three lights
-/// and a few mirrors; larger previews re-trace every edit.
-pub const MAX_CACHED_PIXELS: usize = 1280 * 1024;
+/// The most memory the preview's cache may take, as [`cache_fits`] estimates it: larger
+/// previews re-trace every edit.
+pub const MAX_CACHE_BYTES: usize = 512 << 20;
+
+/// Whether the cache of `world` rendered at `width` x `height` stays under
+/// [`MAX_CACHE_BYTES`], for two rays a pixel (the default scene has 1.6: some 160 MB at
+/// 800 x 600 with its three lights, each ray 92 bytes and 32 more per light).
+#[must_use]
+pub fn cache_fits(world: &World, width: u32, height: u32) -> bool {
+    let per_ray =
+        size_of::<CachedHit>() + size_of::<u32>() + world.lights.len() * size_of::<LightSlot>();
+    let per_pixel = 2 * per_ray + size_of::<PixelColour>() + size_of::<u32>();
+    (width as usize)
+        .saturating_mul(height as usize)
+        .saturating_mul(per_pixel)
+        <= MAX_CACHE_BYTES
+}
 
 /// A pixel's colour in the pass that filled the cache (as the shader returned it, maybe
 /// non-finite), and the rays it is made of: kept for a pixel no edit could change.
@@ -311,5 +324,34 @@ impl HitCache {
                     + t.chains.pixel_capacity() * size_of::<u32>()
             })
             .sum()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::examples::EXAMPLE_SCENES;
+    use crate::scene::parse_scene;
+
+    #[test]
+    fn the_cache_fits_a_usual_preview_and_not_a_huge_one_nor_one_with_many_lights() {
+        let text = EXAMPLE_SCENES
+            .iter()
+            .find(|(n, _)| *n == "default.ron")
+            .unwrap()
+            .1;
+        let mut scene = parse_scene(text).unwrap();
+        let world = World::new(&scene).unwrap();
+        assert!(cache_fits(&world, 800, 600));
+        assert!(cache_fits(&world, 1280, 960));
+        assert!(!cache_fits(&world, 4000, 3000));
+        let light = scene.lights.last().unwrap().clone();
+        scene.lights.extend(std::iter::repeat_n(light, 10));
+        let many = World::new(&scene).unwrap();
+        assert!(
+            !cache_fits(&many, 1280, 960),
+            "each light adds a slot to every ray"
+        );
+        assert!(cache_fits(&many, 640, 480));
     }
 }

@@ -39,7 +39,7 @@ pub mod world;
 
 pub use adaptive::{AdaptiveOptions, AdaptiveRender, render_adaptive};
 pub use camera::PinholeCamera;
-pub use hit_cache::{HitCache, MAX_CACHED_PIXELS, RetraceReason, Reuse};
+pub use hit_cache::{HitCache, MAX_CACHE_BYTES, RetraceReason, Reuse, cache_fits};
 pub use image::Image;
 pub use inspect::{
     BounceReport, PixelOutside, PixelReport, inspect_pixel, pick, switches_text, try_inspect_pixel,

@@ -161,11 +161,12 @@ impl QuickShade {
                 };
                 let factors = slot.factors;
                 let n_dot_l = factors.n_dot_l();
-                // Unknown, unreachable, or behind the surface: only the first is news.
-                if !(n_dot_l > 0.0) {
-                    if n_dot_l.is_nan() {
-                        return None;
-                    }
+                // Unknown (NaN): shade in full. Unreachable or behind the surface: no term,
+                // as the shader's `n_dot_l > 0` test says.
+                if n_dot_l.is_nan() {
+                    return None;
+                }
+                if n_dot_l <= 0.0 {
                     continue;
                 }
                 if terms.shadows {
