@@ -3,11 +3,12 @@
 //! rays the edit made stale or newly needed (none for a material, switch, view or light
 //! colour edit; one light's shadow rays for that light moved; everything for geometry).
 
+mod common;
 mod reshade_harness;
 
 use glam::DVec3;
-use raylab::scene::{Light, Transform};
-use raylab::trace::{Isolation, RetraceReason, Reuse, Term, View};
+use raylab::scene::{Light, Scene, Transform};
+use raylab::trace::{Isolation, RenderOptions, RetraceReason, Reuse, Term, View};
 use reshade_harness::{NOTHING, Shot, assert_same_pass, edit_chain, example, set_colour};
 
 /// Scenes with mirrors, every light kind, spots and shininess below 1.
@@ -18,90 +19,105 @@ const SCENES: [&str; 4] = [
     "mirror_cap.ron",
 ];
 
+/// Every edit here traces nothing. Those marked `FACTORS` (colours other than
+/// shininess, term switches and solos of the lit picture, background, depth, light
+/// colours) shade every pixel they shade from its cached light factors alone.
 #[test]
 fn material_switch_view_and_light_colour_edits_trace_nothing() {
+    const FACTORS: bool = true;
     for name in SCENES {
         let base = Shot::of(example(name));
         let first_material = base.scene.materials.keys().next().unwrap().clone();
+        let edit = |change: fn(&mut Scene, &mut RenderOptions, &str), quick: bool| {
+            (base.edited(|s, o| change(s, o, &first_material)), quick)
+        };
+        let switch = |term: Term, on: bool| {
+            let shot = base.edited(|_, o| o.switches.set(term, on));
+            (shot, FACTORS)
+        };
+        let solo = |term: Term, quick: bool| {
+            let shot = base.edited(|_, o| o.switches = o.switches.with_solo(Some(term)));
+            (shot, quick)
+        };
+        let view = |view: View| (base.edited(|_, o| o.view = view), !FACTORS);
         let edits = [
-            base.edited(|s, _| {
-                let m = s.materials.get_mut(&first_material).unwrap();
-                m.diffuse = DVec3::new(0.9, 0.2, 0.1);
-                m.shininess = 0.0;
-            }),
-            base.edited(|s, _| s.materials.get_mut(&first_material).unwrap().ambient *= 3.0),
-            base.edited(|_, o| o.switches.set(Term::Specular, false)),
-            base.edited(|_, o| o.switches.set(Term::Shadows, false)),
-            base.edited(|_, o| o.switches.set(Term::Reflection, false)),
-            base.edited(|_, o| o.switches = o.switches.with_solo(Some(Term::Diffuse))),
-            base.edited(|_, o| o.switches = o.switches.with_solo(Some(Term::Shadows))),
-            base.edited(|_, o| o.switches = o.switches.with_solo(Some(Term::Reflection))),
-            base.edited(|_, o| o.view = View::Normal),
-            base.edited(|_, o| o.view = View::Depth),
-            base.edited(|_, o| o.view = View::ObjectId),
-            base.edited(|_, o| o.view = View::ShadowMask),
-            base.edited(|s, _| s.render.background = DVec3::new(0.3, 0.1, 0.0)),
-            base.edited(|s, _| s.render.max_depth = 1),
+            edit(
+                |s, _, m| {
+                    let m = s.materials.get_mut(m).unwrap();
+                    m.ambient *= 3.0;
+                    m.specular *= 0.5;
+                },
+                FACTORS,
+            ),
+            switch(Term::Specular, false),
+            switch(Term::Diffuse, false),
+            switch(Term::Shadows, false),
+            switch(Term::Reflection, false),
+            solo(Term::Diffuse, FACTORS),
+            solo(Term::Specular, FACTORS),
+            // Solo shadows is the shadow-mask view.
+            solo(Term::Shadows, !FACTORS),
+            solo(Term::Reflection, FACTORS),
+            view(View::Normal),
+            view(View::Depth),
+            view(View::ObjectId),
+            view(View::ShadowMask),
+            edit(
+                |s, _, _| s.render.background = DVec3::new(0.3, 0.1, 0.0),
+                FACTORS,
+            ),
+            edit(|s, _, _| s.render.max_depth = 1, FACTORS),
             // Back to the base: the deeper mirror rays of max_depth 5 were kept.
-            base.clone(),
-            base.edited(|s, _| {
-                for light in &mut s.lights {
-                    match light {
-                        Light::Ambient { intensity, .. }
-                        | Light::Point { intensity, .. }
-                        | Light::Directional { intensity, .. }
-                        | Light::Spot { intensity, .. } => *intensity *= 0.5,
+            (base.clone(), FACTORS),
+            edit(
+                |s, _, _| {
+                    for light in &mut s.lights {
+                        match light {
+                            Light::Ambient { intensity, .. }
+                            | Light::Point { intensity, .. }
+                            | Light::Directional { intensity, .. }
+                            | Light::Spot { intensity, .. } => *intensity *= 0.5,
+                        }
+                        set_colour(light, DVec3::new(0.2, 0.9, 0.4));
                     }
-                    set_colour(light, DVec3::new(0.2, 0.9, 0.4));
-                }
-            }),
-        ];
-        for (step, pass) in edit_chain(&base, &edits, name).iter().enumerate() {
-            assert!(pass.reused, "{name}, edit {step}");
-            assert_eq!(pass.traced, NOTHING, "{name}, edit {step}");
-        }
-    }
-}
-
-/// Colour edits (shininess aside) and term switches in the lit picture: every pixel
-/// shaded comes from its cached light factors, none is shaded in full, and each pass is
-/// still the traced one bit for bit.
-#[test]
-fn colour_and_switch_edits_shade_every_pixel_from_light_factors() {
-    for name in SCENES {
-        let base = Shot::of(example(name));
-        let first_material = base.scene.materials.keys().next().unwrap().clone();
-        let edits = [
-            base.edited(|s, _| {
-                let m = s.materials.get_mut(&first_material).unwrap();
-                m.diffuse = DVec3::new(0.9, 0.2, 0.1);
-                m.specular *= 0.5;
-                m.ambient *= 3.0;
-            }),
-            base.edited(|_, o| o.switches.set(Term::Specular, false)),
-            base.edited(|_, o| o.switches.set(Term::Diffuse, false)),
-            base.edited(|_, o| o.switches.set(Term::Shadows, false)),
-            base.edited(|_, o| o.switches.set(Term::Reflection, false)),
-            base.clone(),
-            base.edited(|_, o| o.switches = o.switches.with_solo(Some(Term::Specular))),
-            base.edited(|s, _| s.render.background = DVec3::new(0.3, 0.1, 0.0)),
-            base.edited(|s, _| {
-                for light in &mut s.lights {
-                    set_colour(light, DVec3::new(0.2, 0.9, 0.4));
-                }
-            }),
+                },
+                FACTORS,
+            ),
             // A light turned down to nothing and up again keeps its factors.
-            base.edited(|s, _| set_colour(s.lights.last_mut().unwrap(), DVec3::ZERO)),
-            base.clone(),
+            edit(
+                |s, _, _| set_colour(s.lights.last_mut().unwrap(), DVec3::ZERO),
+                FACTORS,
+            ),
+            (base.clone(), FACTORS),
+            // Last: the edit after a new shininess shades that material's pixels in full.
+            edit(
+                |s, _, m| {
+                    let m = s.materials.get_mut(m).unwrap();
+                    m.diffuse = DVec3::new(0.9, 0.2, 0.1);
+                    m.shininess = 0.0;
+                },
+                !FACTORS,
+            ),
         ];
-        for (step, pass) in edit_chain(&base, &edits, name).iter().enumerate() {
-            assert_eq!(pass.traced, NOTHING, "{name}, edit {step}");
-            // (The first material may be out of the picture; the switches shade it all.)
-            assert!(step == 0 || pass.shaded_pixels > 0, "{name}, edit {step}");
-            assert_eq!(
-                pass.quick_pixels, pass.shaded_pixels,
-                "{name}, edit {step}: every shaded pixel from its factors"
-            );
+        let (shots, quick): (Vec<Shot>, Vec<bool>) = edits.into_iter().unzip();
+        let passes = edit_chain(&base, &shots, name);
+        for (step, (pass, quick)) in passes.iter().zip(quick).enumerate() {
+            let what = format!("{name}, edit {step}");
+            assert!(pass.reused, "{what}");
+            assert_eq!(pass.traced, NOTHING, "{what}");
+            if quick {
+                assert_eq!(
+                    pass.quick_pixels, pass.shaded_pixels,
+                    "{what}: every shaded pixel from its factors"
+                );
+            } else {
+                assert_eq!(pass.quick_pixels, 0, "{what}: shaded in full");
+            }
+            // The switches and solos shade every pixel (a material may be out of the
+            // picture, and an edit back to what was shaded before changes nothing).
+            if (1..=8).contains(&step) {
+                assert_eq!(pass.shaded_pixels, 64 * 48, "{what}");
+            }
         }
     }
 }
@@ -137,26 +153,11 @@ fn a_new_shininess_works_its_lobes_out_again_even_while_specular_is_off() {
     assert!(passes[2].quick_pixels < passes[2].shaded_pixels);
 }
 
-/// A light 1e-7 from the surface point under the centre pixel: its strength there
-/// overflows to infinity through the diffuse term alone.
-const INFINITE_AT_THE_CENTRE: &str = r#"
-Scene(
-    camera: (position: (0.0, 0.0, 5.0), look_at: (0.0, 0.0, 0.0), fov_deg: 40.0,
-             width: 33, height: 33),
-    materials: { "white": (ambient: (0.1, 0.1, 0.1), diffuse: (0.8, 0.8, 0.8)) },
-    objects: [(shape: Sphere, material: "white")],
-    lights: [
-        Ambient(colour: (1.0, 1.0, 1.0)),
-        Point(position: (0.0, 0.0, 1.0000001), colour: (1.0, 1.0, 1.0), intensity: 1e300),
-    ],
-)
-"#;
-
 /// A re-shaded pass keeps the guard: the non-finite sample is counted in its pixel
 /// while the light is that strong, and gone when it is turned down.
 #[test]
 fn a_re_shaded_pass_counts_a_non_finite_sample_in_its_pixel() {
-    let base = Shot::of(raylab::scene::parse_scene(INFINITE_AT_THE_CENTRE).unwrap());
+    let base = Shot::of(raylab::scene::parse_scene(common::LIGHT_ON_THE_SURFACE).unwrap());
     let edits = [
         base.edited(|s, _| s.materials.get_mut("white").unwrap().ambient *= 3.0),
         base.edited(|s, _| match &mut s.lights[1] {
@@ -171,20 +172,6 @@ fn a_re_shaded_pass_counts_a_non_finite_sample_in_its_pixel() {
     assert_eq!(passes[0].sums.non_finite_pixels, [16 * 33 + 16]);
     for pass in &passes {
         assert_eq!(pass.quick_pixels, pass.shaded_pixels);
-    }
-}
-
-/// The debug views are not the lit picture: they are shaded in full.
-#[test]
-fn debug_views_are_not_shaded_from_light_factors() {
-    let base = Shot::of(example("default.ron"));
-    let views = [View::Normal, View::Depth, View::ObjectId, View::ShadowMask];
-    let edits: Vec<Shot> = views
-        .iter()
-        .map(|&view| base.edited(|_, o| o.view = view))
-        .collect();
-    for pass in edit_chain(&base, &edits, "views") {
-        assert_eq!(pass.quick_pixels, 0);
     }
 }
 

@@ -13,6 +13,23 @@ use raylab::scene::{
 };
 use raylab::trace::{NoRecorder, Ray, RayCounts, TermSwitches, Tracer, View, World};
 
+/// A 33 x 33 view of a unit sphere with a point light 1e-7 above the surface point under
+/// the centre pixel: each of colour and intensity is finite and so is their product, but
+/// divided by d^2 = 1e-14 the light's strength there is infinite.
+pub const LIGHT_ON_THE_SURFACE: &str = r#"
+Scene(
+    camera: (position: (0.0, 0.0, 5.0), look_at: (0.0, 0.0, 0.0), fov_deg: 40.0,
+             width: 33, height: 33),
+    render: (samples_per_pixel: 1),
+    materials: { "white": (ambient: (0.1, 0.1, 0.1), diffuse: (0.8, 0.8, 0.8)) },
+    objects: [(shape: Sphere, material: "white")],
+    lights: [
+        Ambient(colour: (1.0, 1.0, 1.0)),
+        Point(position: (0.0, 0.0, 1.0000001), colour: (1.0, 1.0, 1.0), intensity: 1e300),
+    ],
+)
+"#;
+
 /// A scene with one material "m", no objects, no lights and a camera on +z.
 pub fn bare_scene(material: Material) -> Scene {
     Scene {
