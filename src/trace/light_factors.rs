@@ -10,7 +10,8 @@ use super::world::World;
 use crate::scene::Material;
 
 /// What one light gave one cached hit, encoded in three floats (the cache holds one per
-/// hit and light).
+/// hit and light): unknown (`n.l` NaN), unreachable (`n.l` minus infinity, no term as
+/// for a light behind the surface), or the light's sample.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LitFactors {
     distance_squared: f64,
@@ -19,25 +20,6 @@ pub struct LitFactors {
     n_dot_l: f64,
     /// The lobe; -1 where there is none (`r.v <= 0`).
     lobe: f64,
-}
-
-/// [`LitFactors`] decoded.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Lit {
-    /// Not known: shade the pixel in full.
-    Unknown,
-    /// The light cannot reach the point.
-    Unreachable,
-    /// The light's sample at the point.
-    Reached {
-        /// [`LightSample::distance_squared`].
-        distance_squared: f64,
-        /// The shading normal dotted with the direction to the light.
-        n_dot_l: f64,
-        /// The Phong lobe ([`super::phong::LocalLight::specular_lobe`]); meaningful
-        /// only where `n_dot_l > 0`.
-        lobe: Option<f64>,
-    },
 }
 
 impl LitFactors {
@@ -87,21 +69,11 @@ impl LitFactors {
         (self.lobe >= 0.0).then_some(self.lobe)
     }
 
-    /// What is known.
+    /// Whether nothing is known: the pixel must be shaded in full.
     #[inline]
     #[must_use]
-    pub fn get(&self) -> Lit {
-        if self.n_dot_l.is_nan() {
-            Lit::Unknown
-        } else if self.n_dot_l == f64::NEG_INFINITY {
-            Lit::Unreachable
-        } else {
-            Lit::Reached {
-                distance_squared: self.distance_squared,
-                n_dot_l: self.n_dot_l,
-                lobe: (self.lobe >= 0.0).then_some(self.lobe),
-            }
-        }
+    pub fn is_unknown(&self) -> bool {
+        self.n_dot_l.is_nan()
     }
 }
 
@@ -168,20 +140,25 @@ mod tests {
             light_position: None,
             distance_squared: 2.5,
         };
-        assert_eq!(LitFactors::UNKNOWN.get(), Lit::Unknown);
-        assert_eq!(LitFactors::UNREACHABLE.get(), Lit::Unreachable);
+        assert!(LitFactors::UNKNOWN.is_unknown());
+        let unreachable = LitFactors::UNREACHABLE;
+        assert!(!unreachable.is_unknown());
+        assert_eq!(
+            unreachable.n_dot_l(),
+            f64::NEG_INFINITY,
+            "no term, as behind"
+        );
         for (n_dot_l, lobe) in [
             (0.5, Some(0.0)),
             (0.5, Some(0.25)),
             (0.5, None),
             (-0.2, None),
         ] {
-            let expected = Lit::Reached {
-                distance_squared: 2.5,
-                n_dot_l,
-                lobe,
-            };
-            assert_eq!(LitFactors::reached(&sample, n_dot_l, lobe).get(), expected);
+            let factors = LitFactors::reached(&sample, n_dot_l, lobe);
+            assert!(!factors.is_unknown());
+            assert_eq!(factors.distance_squared(), 2.5);
+            assert_eq!(factors.n_dot_l(), n_dot_l);
+            assert_eq!(factors.lobe(), lobe);
         }
     }
 }

@@ -48,7 +48,7 @@ pub struct LightSample {
     /// infinity.
     pub light_position: Option<DVec3>,
     /// The squared distance the strength falls off with (1 for a light at infinity):
-    /// `radiance` is [`WorldLight::radiance_at`] this distance, bit for bit.
+    /// `radiance` is [`falloff`] of the light's strength over this distance, bit for bit.
     pub distance_squared: f64,
 }
 
@@ -112,14 +112,6 @@ impl WorldLight {
                 (cos_to_p >= cos_angle).then_some(sample)
             }
         }
-    }
-
-    /// The strength arriving from `distance_squared` away, as [`Self::sample`] gives it:
-    /// the falloff alone, for re-shading a point whose distance is known.
-    #[inline]
-    #[must_use]
-    pub fn radiance_at(&self, distance_squared: f64) -> DVec3 {
-        falloff(self.strength(), distance_squared)
     }
 
     /// Everything about the light but its strength, bit for bit: two lights with the same
@@ -194,7 +186,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn radiance_at_the_sampled_distance_is_the_sampled_radiance_bit_for_bit() {
+    fn the_falloff_over_the_sampled_distance_is_the_sampled_radiance_bit_for_bit() {
         let strength = DVec3::new(0.7, 1.3, 2.9);
         let lights = [
             WorldLight::Point {
@@ -215,7 +207,7 @@ mod tests {
         for light in lights {
             for p in [DVec3::ZERO, DVec3::new(1.1, -0.3, 7.9), DVec3::splat(1e5)] {
                 let sample = light.sample(p).unwrap();
-                let again = light.radiance_at(sample.distance_squared);
+                let again = falloff(light.strength(), sample.distance_squared);
                 assert_eq!(
                     sample.radiance.to_array().map(f64::to_bits),
                     again.to_array().map(f64::to_bits)

@@ -125,17 +125,12 @@ impl SampleSums {
     #[must_use]
     pub(super) fn unsummed(width: u32, height: u32) -> Self {
         Self {
-            sums: Vec::new(),
-            ..Self::zero(0, 0)
-        }
-        .sized(width, height)
-    }
-
-    fn sized(self, width: u32, height: u32) -> Self {
-        Self {
             width,
             height,
-            ..self
+            sums: Vec::new(),
+            rays: RayCounts::default(),
+            non_finite: 0,
+            non_finite_pixels: Vec::new(),
         }
     }
 

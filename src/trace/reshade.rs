@@ -94,7 +94,7 @@ pub fn render_one_sample_cached(
         tile.begin_pixel();
         if let Some(kept) = changed.as_deref().and_then(|c| tile.unchanged_colour(c)) {
             rays.add(&kept.counts());
-            tile.end_kept_pixel(kept);
+            tile.end_pixel(kept, true);
             return kept.colour;
         }
         tile.shaded += 1;

@@ -8,7 +8,7 @@ use glam::DVec3;
 
 use super::chains::{CachedHit, Chains, NOT_CAST, decode_blocker, encode_blocker};
 use super::hit_cache::{PixelColour, TileHits};
-use super::light_factors::{LightSlot, Lit, LitFactors};
+use super::light_factors::{LightSlot, LitFactors};
 use super::ray::Ray;
 use super::ray_source::{LiveRays, RaySource, ShadowQuery};
 use super::shade::RayCounts;
@@ -123,12 +123,7 @@ impl TileRays {
     /// `changed[object]` set (and so its rays and colour are what they were).
     pub fn unchanged_colour(&self, changed: &[bool]) -> Option<PixelColour> {
         let old = self.old_colours.as_ref()?;
-        let touched = self
-            .pixel_chain()
-            .0
-            .iter()
-            .any(|&o| o != u32::MAX && changed[o as usize]);
-        (!touched).then(|| old[self.pixel])
+        (!meets_changed(self.pixel_chain().0, changed)).then(|| old[self.pixel])
     }
 
     /// The objects the current pixel's cached chain met (`u32::MAX` for a miss), and
@@ -169,12 +164,7 @@ impl TileRays {
         for (pixel, kept) in old.iter().enumerate() {
             let chain = chains.chain(pixel);
             let objects = chains.objects(chain.clone());
-            let keeps = changed.is_some_and(|changed| {
-                !objects
-                    .iter()
-                    .any(|&o| o != u32::MAX && changed[o as usize])
-            });
-            if keeps {
+            if changed.is_some_and(|changed| !meets_changed(objects, changed)) {
                 colours.push(kept.colour);
                 rays.add(&kept.counts());
                 if let Some(new) = &mut new {
@@ -206,17 +196,8 @@ impl TileRays {
         self.lights
     }
 
-    /// Ends a pixel that kept its colour `kept` ([`Self::unchanged_colour`]).
-    pub fn end_kept_pixel(&mut self, kept: PixelColour) {
-        if self.colours.is_none() && self.grown.is_none() {
-            // Every pixel so far kept its colour: the old ones still stand for them.
-            self.pixel += 1;
-        } else {
-            self.end_pixel(kept, true);
-        }
-    }
-
-    /// Ends the pixel, which came out `colour`.
+    /// Ends the pixel, which came out `colour` (`kept`: its colour in the cache read,
+    /// [`Self::unchanged_colour`]).
     pub fn end_pixel(&mut self, colour: PixelColour, kept: bool) {
         if let Some((chains, _)) = &mut self.grown {
             chains.end_chain();
@@ -292,6 +273,14 @@ impl TileRays {
     }
 }
 
+/// Whether a chain that met `objects` (`u32::MAX` for a miss) meets an object with
+/// `changed[object]` set.
+fn meets_changed(objects: &[u32], changed: &[bool]) -> bool {
+    objects
+        .iter()
+        .any(|&o| o != u32::MAX && changed[o as usize])
+}
+
 /// Answers one pixel's rays from its tile, tracing (and keeping) whatever it lacks, and
 /// keeps what each light gives each hit.
 pub(super) struct PixelRays<'t, 'c, 's> {
@@ -358,7 +347,7 @@ impl RaySource for PixelRays<'_, '_, '_> {
     /// forgotten.
     fn wants_light_factors(&self, depth: u32, light: usize) -> bool {
         let slot = (self.tile.chain().start + depth as usize) * self.tile.lights + light;
-        self.tile.slot(slot).factors.get() == Lit::Unknown
+        self.tile.slot(slot).factors.is_unknown()
     }
 
     fn light_factors(&mut self, depth: u32, light: usize, factors: LitFactors) {

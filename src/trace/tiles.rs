@@ -190,6 +190,17 @@ fn place_tiles(sums: &mut SampleSums, tiles: &[(TileRect, Vec<DVec3>)], unsummed
         .for_each(|(y, row)| fill_row(y, row));
 }
 
+/// The guard: adds `colour` to `sum` if it is finite; NaN or infinity never reaches a
+/// pixel, and the caller counts it instead (`false`).
+#[inline]
+fn add_sample(sum: &mut DVec3, colour: DVec3) -> bool {
+    let finite = colour.is_finite();
+    if finite {
+        *sum += colour;
+    }
+    finite
+}
+
 /// A tile of one sample per pixel from its pixels' `colours` (row-major), under the
 /// same guard as [`render_tile`]'s.
 fn whole_tile<S>(
@@ -201,14 +212,12 @@ fn whole_tile<S>(
 ) -> Tile<S> {
     let mut non_finite_pixels = Vec::new();
     for (i, colour) in colours.iter_mut().enumerate() {
-        if colour.is_finite() {
-            // The sum of one sample, as `render_tile` adds it.
-            *colour += DVec3::ZERO;
-        } else {
+        let mut sum = DVec3::ZERO;
+        if !add_sample(&mut sum, *colour) {
             let (x, y) = (i as u32 % rect.w, i as u32 / rect.w);
             non_finite_pixels.push((rect.y0 + y) * image_width + rect.x0 + x);
-            *colour = DVec3::ZERO;
         }
+        *colour = sum;
     }
     Tile {
         rect,
@@ -258,25 +267,15 @@ where
     let mut finite = vec![true; pixels.len()];
     let mut rays = RayCounts::default();
     let mut non_finite = 0;
-    let mut add = |sum: &mut DVec3, finite: &mut bool, colour: DVec3| {
-        // The guard: NaN or infinity never reaches a pixel; it is counted instead.
-        if colour.is_finite() {
-            *sum += colour;
-        } else {
-            non_finite += 1;
-            *finite = false;
-        }
-    };
     for index in samples {
         if progress.is_cancelled() {
             return None;
         }
         for ((&(px, py), sum), finite) in pixels.iter().zip(&mut sums).zip(&mut finite) {
-            add(
-                sum,
-                finite,
-                (work.sample)(&mut state, px, py, index, &mut rays),
-            );
+            if !add_sample(sum, (work.sample)(&mut state, px, py, index, &mut rays)) {
+                non_finite += 1;
+                *finite = false;
+            }
         }
         progress.batches_done.fetch_add(1, Ordering::Relaxed);
     }
