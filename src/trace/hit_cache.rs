@@ -21,6 +21,7 @@ use std::sync::Arc;
 use glam::{DAffine3, DVec3};
 
 use super::chains::{CachedHit, Chains};
+use super::dependence::{KeepRule, TermDependence};
 use super::light_factors::{self, LightSlot};
 use super::lights::WorldLight;
 use super::ray_counts::RayCounts;
@@ -48,22 +49,26 @@ pub fn cache_fits(world: &World, width: u32, height: u32) -> bool {
 }
 
 /// A pixel's colour in the pass that filled the cache (as the shader returned it, maybe
-/// non-finite), and the rays it is made of: kept for a pixel no edit could change.
+/// non-finite), the rays it is made of and the switches it depends on: kept for a pixel
+/// no edit could change.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct PixelColour {
     /// The colour.
     pub colour: DVec3,
     /// Primary, shadow and reflection rays behind it.
     pub rays: [u32; 3],
+    /// The switches whose change may change it.
+    pub depends: TermDependence,
 }
 
 impl PixelColour {
-    /// `colour`, made of the rays `rays`.
-    pub fn of(colour: DVec3, rays: &RayCounts) -> Self {
+    /// `colour`, made of the rays `rays`, depending on the switches `depends`.
+    pub fn of(colour: DVec3, rays: &RayCounts, depends: TermDependence) -> Self {
         Self {
             colour,
             rays: [rays.primary, rays.shadow, rays.reflection]
                 .map(|n| u32::try_from(n).unwrap_or(u32::MAX)),
+            depends,
         }
     }
 
@@ -247,23 +252,38 @@ impl HitCache {
         }
     }
 
-    /// For a world this cache can serve ([`Self::reuse`]): per object, whether its
-    /// material differs from the one the cached colours were shaded with; `None` when
-    /// anything else the shader reads changed, and every pixel must be shaded again.
-    pub(super) fn changed_objects(
-        &self,
-        world: &World,
-        options: &RenderOptions,
-    ) -> Option<Vec<bool>> {
-        if Shading::of(world, options) != self.shading {
+    /// For a world this cache can serve ([`Self::reuse`]): which pixels keep their
+    /// colour (none of whose rays meets an object whose material changed, and that
+    /// depend on no switch that changed); `None` when anything else the shader reads
+    /// changed, and every pixel must be shaded again.
+    pub(super) fn keep_rule(&self, world: &World, options: &RenderOptions) -> Option<KeepRule> {
+        let now = Shading::of(world, options);
+        let switched = if now == self.shading {
+            TermDependence::NONE
+        } else {
+            let (old, new) = (self.shading.switches, now.switches);
+            let others_alike = Shading {
+                switches: old,
+                ..now
+            } == self.shading;
+            let view = options.view;
+            match (others_alike, old.beauty_terms(view), new.beauty_terms(view)) {
+                (true, Some(old), Some(new)) => TermDependence::switched(old, new),
+                _ => return None,
+            }
+        };
+        let now = object_materials(world);
+        if now.len() != self.object_materials.len() {
             return None;
         }
-        let now = object_materials(world);
-        (now.len() == self.object_materials.len()).then(|| {
-            now.iter()
-                .zip(&self.object_materials)
-                .map(|(a, b)| a != b)
-                .collect()
+        let changed: Vec<bool> = now
+            .iter()
+            .zip(&self.object_materials)
+            .map(|(a, b)| a != b)
+            .collect();
+        Some(KeepRule {
+            changed_objects: changed.contains(&true).then_some(changed),
+            switched,
         })
     }
 

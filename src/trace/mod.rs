@@ -6,6 +6,7 @@ pub mod bounds;
 pub mod bvh;
 pub mod camera;
 mod chains;
+mod dependence;
 pub mod depth_view;
 pub mod hit_cache;
 pub mod image;

@@ -12,8 +12,10 @@
 use std::sync::OnceLock;
 
 use super::camera::PinholeCamera;
+use super::dependence::{DependenceRule, TermDependence};
 use super::hit_cache::{HitCache, PixelColour, Reuse};
 use super::isolation::assert_compiled_for;
+use super::light_factors::LightSlot;
 use super::quick_shade::QuickShade;
 use super::ray_source::LiveRays;
 use super::render::{RenderOptions, RenderProgress, SampleSums, camera_sample, sample_point};
@@ -68,11 +70,19 @@ pub fn render_one_sample_cached(
     let cull = OnceLock::new();
     let cull = || cull.get_or_init(|| TileCull::new(world, &camera, width, height));
     let lights = world.lights.len();
-    // Only materials changed (or nothing): pixels whose rays meet none of the objects
-    // whose material changed keep their colour.
-    let changed = reuse
+    // Only materials or switches changed (or nothing): pixels whose rays meet none of
+    // the objects whose material changed, and that depend on no switch that changed,
+    // keep their colour.
+    let keep = reuse
         .as_ref()
-        .and_then(|(cache, ..)| cache.changed_objects(world, options));
+        .and_then(|(cache, ..)| cache.keep_rule(world, options));
+    // What each pixel shaded depends on, for the next edit's keep rule.
+    let dependence = tracer.beauty_terms().map(|_| DependenceRule::new(world));
+    let depends = |objects: &[u32], slots: &[LightSlot]| {
+        dependence.as_ref().map_or(TermDependence::ANY, |rule| {
+            rule.of_chain(objects, slots, lights)
+        })
+    };
     let stale_lobes = reuse
         .as_ref()
         .map_or_else(Vec::new, |(cache, ..)| cache.stale_lobes(world));
@@ -92,7 +102,7 @@ pub fn render_one_sample_cached(
     };
     let sample = |tile: &mut TileRays, px: u32, py: u32, _index: u32, rays: &mut RayCounts| {
         tile.begin_pixel();
-        if let Some(kept) = changed.as_deref().and_then(|c| tile.unchanged_colour(c)) {
+        if let Some(kept) = keep.as_ref().and_then(|k| tile.unchanged_colour(k)) {
             rays.add(&kept.counts());
             tile.end_pixel(kept, true);
             return kept.colour;
@@ -119,15 +129,18 @@ pub fn render_one_sample_cached(
             }
         };
         rays.add(&own);
-        tile.end_pixel(PixelColour::of(colour, &own), false);
+        let (chain, slots) = tile.pixel_chain();
+        let depends = depends(chain, slots);
+        tile.end_pixel(PixelColour::of(colour, &own, depends), false);
         colour
     };
     // A tile whose every pixel keeps its colour or is quick-shaded goes in one loop.
     let whole = |tile: &mut TileRays| match &quick {
-        Some(quick) => tile.whole_tile(changed.as_deref(), |objects, slots, own| {
-            quick.pixel(objects, slots, lights, own)
+        Some(quick) => tile.whole_tile(keep.as_ref(), |objects, slots, own| {
+            let colour = quick.pixel(objects, slots, lights, own)?;
+            Some((colour, depends(objects, slots)))
         }),
-        None if changed.is_some() => tile.whole_tile(changed.as_deref(), |_, _, _| None),
+        None if keep.is_some() => tile.whole_tile(keep.as_ref(), |_, _, _| None),
         None => None,
     };
     let work = TileWork {

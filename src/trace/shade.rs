@@ -27,7 +27,7 @@ use super::ray_source::{LiveRays, RaySource, ShadowQuery};
 pub use super::record::{LightRecord, NoRecorder, Recorder};
 use super::record::{LightSkip, ShadowRay, SkippedLight, unsampled_reason};
 use super::spawn::{spawn_ray, spawn_ray_to};
-use super::terms::{ActiveTerms, Term, TermSwitches, View};
+use super::terms::{ActiveTerms, TermSwitches, View};
 use super::world::{SurfacePoint, World};
 use crate::scene::Material;
 
@@ -53,11 +53,7 @@ impl<'w> Tracer<'w> {
     /// A tracer for `world`. Solo `shadows` shows the shadow mask.
     #[must_use]
     pub fn new(world: &'w World, switches: TermSwitches, view: View) -> Self {
-        let view = if view == View::Beauty && switches.solo == Some(Term::Shadows) {
-            View::ShadowMask
-        } else {
-            view
-        };
+        let view = switches.shown_view(view);
         Self {
             world,
             primary: switches.primary(),

@@ -121,6 +121,22 @@ impl TermSwitches {
         active
     }
 
+    /// The view the tracer shows: solo shadows turns the lit picture into the shadow mask.
+    #[must_use]
+    pub fn shown_view(&self, view: View) -> View {
+        if view == View::Beauty && self.solo == Some(Term::Shadows) {
+            View::ShadowMask
+        } else {
+            view
+        }
+    }
+
+    /// The terms of camera rays and of mirror rays, where `view` shows the lit picture.
+    #[must_use]
+    pub fn beauty_terms(&self, view: View) -> Option<(ActiveTerms, ActiveTerms)> {
+        (self.shown_view(view) == View::Beauty).then(|| (self.primary(), self.secondary()))
+    }
+
     /// What to compute at the hits of reflected rays: the `on` switches, no solo.
     #[must_use]
     pub fn secondary(&self) -> ActiveTerms {

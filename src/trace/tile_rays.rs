@@ -7,6 +7,7 @@ use std::sync::Arc;
 use glam::DVec3;
 
 use super::chains::{CachedHit, Chains, NOT_CAST, decode_blocker, encode_blocker};
+use super::dependence::{KeepRule, TermDependence};
 use super::hit_cache::{PixelColour, TileHits};
 use super::light_factors::{LightSlot, LitFactors};
 use super::ray::Ray;
@@ -119,11 +120,11 @@ impl TileRays {
         }
     }
 
-    /// The current pixel's cached colour, if none of its rays meets an object with
-    /// `changed[object]` set (and so its rays and colour are what they were).
-    pub fn unchanged_colour(&self, changed: &[bool]) -> Option<PixelColour> {
-        let old = self.old_colours.as_ref()?;
-        (!meets_changed(self.pixel_chain().0, changed)).then(|| old[self.pixel])
+    /// The current pixel's cached colour, if `keep` keeps it (and so its rays and colour
+    /// are what they were).
+    pub fn unchanged_colour(&self, keep: &KeepRule) -> Option<PixelColour> {
+        let old = self.old_colours.as_ref()?[self.pixel];
+        keep.keeps(self.pixel_chain().0, old.depends).then_some(old)
     }
 
     /// The objects the current pixel's cached chain met (`u32::MAX` for a miss), and
@@ -141,15 +142,15 @@ impl TileRays {
         )
     }
 
-    /// The whole tile of a cache read, no ray traced: each pixel keeps its colour (none
-    /// of its rays meets an object with `changed[object]` set) or comes from `shade`
-    /// (given its chain's objects and light slots, as [`Self::pixel_chain`]). The colours
-    /// and rays of every pixel, row-major; `None`, with the tile as it was, where `shade`
-    /// cannot answer for some pixel.
+    /// The whole tile of a cache read, no ray traced: each pixel `keep` keeps keeps its
+    /// colour, the others come from `shade` (given its chain's objects and light slots,
+    /// as [`Self::pixel_chain`]: their colour and dependence). The colours and rays of
+    /// every pixel, row-major; `None`, with the tile as it was, where `shade` cannot
+    /// answer for some pixel.
     pub fn whole_tile(
         &mut self,
-        changed: Option<&[bool]>,
-        shade: impl Fn(&[u32], &[LightSlot], &mut RayCounts) -> Option<DVec3>,
+        keep: Option<&KeepRule>,
+        shade: impl Fn(&[u32], &[LightSlot], &mut RayCounts) -> Option<(DVec3, TermDependence)>,
     ) -> Option<(Vec<DVec3>, RayCounts)> {
         let old = match (&self.grown, &self.old_colours) {
             (None, Some(old)) if self.pixel == 0 => Arc::clone(old),
@@ -164,7 +165,7 @@ impl TileRays {
         for (pixel, kept) in old.iter().enumerate() {
             let chain = chains.chain(pixel);
             let objects = chains.objects(chain.clone());
-            if changed.is_some_and(|changed| !meets_changed(objects, changed)) {
+            if keep.is_some_and(|keep| keep.keeps(objects, kept.depends)) {
                 colours.push(kept.colour);
                 rays.add(&kept.counts());
                 if let Some(new) = &mut new {
@@ -173,7 +174,7 @@ impl TileRays {
                 continue;
             }
             let mut own = RayCounts::default();
-            let colour = shade(
+            let (colour, depends) = shade(
                 objects,
                 &slots[chain.start * lights..chain.end * lights],
                 &mut own,
@@ -182,7 +183,7 @@ impl TileRays {
             colours.push(colour);
             rays.add(&own);
             new.get_or_insert_with(|| old[..pixel].to_vec())
-                .push(PixelColour::of(colour, &own));
+                .push(PixelColour::of(colour, &own, depends));
         }
         self.colours = new;
         self.pixel = old.len();
@@ -271,14 +272,6 @@ impl TileRays {
             },
         }
     }
-}
-
-/// Whether a chain that met `objects` (`u32::MAX` for a miss) meets an object with
-/// `changed[object]` set.
-fn meets_changed(objects: &[u32], changed: &[bool]) -> bool {
-    objects
-        .iter()
-        .any(|&o| o != u32::MAX && changed[o as usize])
 }
 
 /// Answers one pixel's rays from its tile, tracing (and keeping) whatever it lacks, and

@@ -1,0 +1,289 @@
+//! Which term switches a pixel's colour can depend on, worked out from its cached chain
+//! each time it is shaded, so that a switch edit re-shades only the pixels it can change:
+//! turning specular off or on leaves alone every pixel none of whose hits has a Phong
+//! lobe (about three quarters of the default scene's).
+//!
+//! The rule follows the shader's own tests (`Tracer::shade`): a term adds nothing, and
+//! casts no ray, where the test before it fails. It is conservative: a light whose
+//! factors are unknown counts as reaching the hit with a lobe.
+
+use glam::DVec3;
+
+use super::light_factors::LightSlot;
+use super::terms::ActiveTerms;
+use super::world::World;
+
+/// Switches a pixel depends on (or that an edit changed), for the camera ray's hit and
+/// for the hits of its mirror rays.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct TermDependence(u16);
+
+/// `ka * ambient` is not zero.
+const AMBIENT: u16 = 1 << 0;
+/// A miss, with a background that is not black.
+const BACKGROUND: u16 = 1 << 1;
+/// Some light reaches the hit from in front: its diffuse term, its shadow ray and
+/// whether the shader looks at the lights at all.
+const LIGHTS: u16 = 1 << 2;
+/// Some light reaching the hit from in front has a Phong lobe.
+const SPECULAR: u16 = 1 << 3;
+/// The hit casts a mirror ray when reflection is on.
+const REFLECTION: u16 = 1 << 4;
+/// The bits of the mirror rays' hits sit this far up.
+const MIRROR_HITS: u32 = 5;
+
+impl TermDependence {
+    /// Depends on every switch: a pixel whose dependence was not worked out.
+    pub const ANY: Self = Self(u16::MAX);
+    /// Depends on no switch (or: no switch changed).
+    pub const NONE: Self = Self(0);
+
+    /// The switches that differ between `old` and `new`, each the terms of camera rays
+    /// and of mirror rays.
+    #[must_use]
+    pub fn switched(old: (ActiveTerms, ActiveTerms), new: (ActiveTerms, ActiveTerms)) -> Self {
+        let of = |a: ActiveTerms, b: ActiveTerms| {
+            let looks_at_lights = |t: ActiveTerms| t.diffuse || t.specular;
+            let mut bits = 0;
+            for (differs, bit) in [
+                (a.ambient != b.ambient, AMBIENT),
+                (a.background != b.background, BACKGROUND),
+                (a.diffuse != b.diffuse, LIGHTS),
+                (a.shadows != b.shadows, LIGHTS),
+                (looks_at_lights(a) != looks_at_lights(b), LIGHTS),
+                (a.specular != b.specular, SPECULAR),
+                (a.reflection != b.reflection, REFLECTION),
+            ] {
+                if differs {
+                    bits |= bit;
+                }
+            }
+            bits
+        };
+        Self(of(old.0, new.0) | of(old.1, new.1) << MIRROR_HITS)
+    }
+
+    /// Whether a pixel of this dependence may change when the switches `switched` do.
+    #[must_use]
+    #[inline]
+    pub fn meets(self, switched: Self) -> bool {
+        self.0 & switched.0 != 0
+    }
+}
+
+/// What the shader's tests look at per object.
+#[derive(Clone, Copy, Debug)]
+struct ObjectTerms {
+    ambient: bool,
+    /// A diffuse or specular colour: the shader looks at the lights.
+    local: bool,
+    mirror: bool,
+}
+
+/// The dependence of pixels in one world.
+#[derive(Clone, Debug)]
+pub(super) struct DependenceRule {
+    objects: Vec<ObjectTerms>,
+    background: bool,
+    max_depth: u32,
+}
+
+impl DependenceRule {
+    /// For `world`'s materials, lights and depth.
+    #[must_use]
+    pub fn new(world: &World) -> Self {
+        let objects = world
+            .objects
+            .iter()
+            .map(|object| {
+                let material = &world.materials[object.material];
+                ObjectTerms {
+                    // As the shader works it out: NaN is not zero either.
+                    ambient: material.ambient * world.ambient != DVec3::ZERO,
+                    local: material.diffuse != DVec3::ZERO || material.specular != DVec3::ZERO,
+                    mirror: material.mirror != DVec3::ZERO,
+                }
+            })
+            .collect();
+        Self {
+            objects,
+            background: world.background != DVec3::ZERO,
+            max_depth: world.max_depth,
+        }
+    }
+
+    /// The dependence of a pixel whose chain met `objects` (`u32::MAX`: a miss), with
+    /// `lights` light slots per entry in `slots`.
+    #[must_use]
+    pub fn of_chain(&self, objects: &[u32], slots: &[LightSlot], lights: usize) -> TermDependence {
+        let mut all = 0;
+        for (depth, &object) in objects.iter().enumerate() {
+            let bits = match self.objects.get(object as usize) {
+                None if self.background => BACKGROUND,
+                None => 0,
+                Some(terms) => {
+                    let row = &slots[depth * lights..(depth + 1) * lights];
+                    let mut bits = 0;
+                    if terms.ambient {
+                        bits |= AMBIENT;
+                    }
+                    if terms.local {
+                        bits |= lit_bits(row);
+                    }
+                    if terms.mirror && (depth as u32) < self.max_depth {
+                        bits |= REFLECTION;
+                    }
+                    bits
+                }
+            };
+            all |= if depth == 0 {
+                bits
+            } else {
+                bits << MIRROR_HITS
+            };
+        }
+        TermDependence(all)
+    }
+}
+
+/// `LIGHTS` and `SPECULAR` as the lights of one hit have them.
+fn lit_bits(row: &[LightSlot]) -> u16 {
+    let mut bits = 0;
+    for slot in row {
+        let n_dot_l = slot.factors.n_dot_l();
+        if n_dot_l.is_nan() {
+            return LIGHTS | SPECULAR;
+        }
+        if n_dot_l > 0.0 {
+            bits |= LIGHTS;
+            if slot.factors.lobe().is_some() {
+                bits |= SPECULAR;
+            }
+        }
+    }
+    bits
+}
+
+/// Which pixels an edit leaves as they were: none of whose rays meets an object whose
+/// material changed, and that depend on none of the switches that changed.
+#[derive(Clone, Debug)]
+pub(super) struct KeepRule {
+    /// Per world object, whether its material changed; `None`: none did.
+    pub changed_objects: Option<Vec<bool>>,
+    /// The switches that changed.
+    pub switched: TermDependence,
+}
+
+impl KeepRule {
+    /// Whether a pixel whose chain met `objects` (`u32::MAX`: a miss) and whose colour
+    /// had dependence `depends` keeps its colour.
+    #[must_use]
+    #[inline]
+    pub fn keeps(&self, objects: &[u32], depends: TermDependence) -> bool {
+        !depends.meets(self.switched)
+            && self.changed_objects.as_ref().is_none_or(|changed| {
+                !objects
+                    .iter()
+                    .any(|&o| o != u32::MAX && changed[o as usize])
+            })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::trace::light_factors::LitFactors;
+    use crate::trace::lights::LightSample;
+    use crate::trace::terms::{Term, TermSwitches};
+
+    fn slot(n_dot_l: f64, lobe: Option<f64>) -> LightSlot {
+        let sample = LightSample {
+            radiance: DVec3::ONE,
+            to_light: DVec3::Y,
+            light_position: None,
+            distance_squared: 1.0,
+        };
+        LightSlot {
+            factors: LitFactors::reached(&sample, n_dot_l, lobe),
+            ..LightSlot::NOTHING
+        }
+    }
+
+    fn terms(switches: TermSwitches) -> (ActiveTerms, ActiveTerms) {
+        (switches.primary(), switches.secondary())
+    }
+
+    #[test]
+    fn each_switch_names_the_dependences_it_can_change() {
+        let on = TermSwitches::ALL_ON;
+        let off = |term| {
+            let mut s = on;
+            s.set(term, false);
+            TermDependence::switched(terms(on), terms(s))
+        };
+        assert_eq!(
+            TermDependence::switched(terms(on), terms(on)),
+            TermDependence::NONE
+        );
+        let both = |bits: u16| TermDependence(bits | bits << MIRROR_HITS);
+        assert_eq!(off(Term::Specular), both(SPECULAR));
+        assert_eq!(off(Term::Diffuse), both(LIGHTS));
+        assert_eq!(off(Term::Shadows), both(LIGHTS));
+        assert_eq!(off(Term::Ambient), both(AMBIENT));
+        assert_eq!(off(Term::Reflection), both(REFLECTION));
+        // With diffuse off, specular decides whether the lights are looked at at all.
+        let mut no_diffuse = on;
+        no_diffuse.set(Term::Diffuse, false);
+        let mut neither = no_diffuse;
+        neither.set(Term::Specular, false);
+        let switched = TermDependence::switched(terms(no_diffuse), terms(neither));
+        assert_eq!(switched, both(SPECULAR | LIGHTS));
+        // A solo changes the camera ray's terms only.
+        let solo = TermDependence::switched(terms(on), terms(on.with_solo(Some(Term::Diffuse))));
+        assert_eq!(
+            solo,
+            TermDependence(AMBIENT | BACKGROUND | SPECULAR | REFLECTION)
+        );
+    }
+
+    #[test]
+    fn lights_behind_or_out_of_reach_add_nothing_and_unknown_ones_add_everything() {
+        let unreachable = LightSlot {
+            factors: LitFactors::UNREACHABLE,
+            ..LightSlot::NOTHING
+        };
+        assert_eq!(lit_bits(&[slot(-0.3, None), unreachable]), 0);
+        assert_eq!(lit_bits(&[slot(0.5, None)]), LIGHTS);
+        assert_eq!(
+            lit_bits(&[slot(0.5, None), slot(0.2, Some(0.0))]),
+            LIGHTS | SPECULAR
+        );
+        assert_eq!(
+            lit_bits(&[slot(-1.0, None), LightSlot::NOTHING]),
+            LIGHTS | SPECULAR
+        );
+    }
+
+    #[test]
+    fn a_kept_pixel_meets_no_changed_object_and_no_changed_switch() {
+        let rule = KeepRule {
+            changed_objects: Some(vec![false, true]),
+            switched: TermDependence(SPECULAR),
+        };
+        assert!(rule.keeps(&[0, u32::MAX], TermDependence(LIGHTS)));
+        assert!(
+            !rule.keeps(&[0, 1], TermDependence(LIGHTS)),
+            "meets object 1"
+        );
+        assert!(!rule.keeps(&[0], TermDependence(SPECULAR)), "has a lobe");
+        assert!(!rule.keeps(&[0], TermDependence::ANY));
+        let switches_only = KeepRule {
+            changed_objects: None,
+            switched: TermDependence(SPECULAR << MIRROR_HITS),
+        };
+        assert!(
+            switches_only.keeps(&[1], TermDependence(SPECULAR)),
+            "lobe at the camera hit only"
+        );
+    }
+}
