@@ -9,7 +9,7 @@
 
 use glam::DVec3;
 
-use super::light_factors::LightSlot;
+use super::light_factors::{LightSlot, LitFactors};
 use super::terms::ActiveTerms;
 use super::world::World;
 
@@ -69,22 +69,86 @@ impl TermDependence {
     pub fn meets(self, switched: Self) -> bool {
         self.0 & switched.0 != 0
     }
+
+    /// Adds what the entry at `depth` of the mirror chain depends on.
+    #[inline]
+    pub fn add(&mut self, depth: usize, entry: EntryTerms) {
+        self.0 |= if depth == 0 {
+            entry.0
+        } else {
+            entry.0 << MIRROR_HITS
+        };
+    }
+}
+
+/// What one entry of a mirror chain depends on, found as the shader's tests go (by
+/// [`DependenceRule::of_chain`] and by the quick re-shade as it shades).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(super) struct EntryTerms(u16);
+
+impl EntryTerms {
+    /// A miss, showing `background` when the term is on.
+    #[must_use]
+    #[inline]
+    pub fn miss(background: DVec3) -> Self {
+        // NaN is not zero either.
+        Self(if background != DVec3::ZERO {
+            BACKGROUND
+        } else {
+            0
+        })
+    }
+
+    /// A hit whose `ka * ambient` is `ambient` and which casts a mirror ray when
+    /// reflection is on exactly if `casts_mirror_ray`.
+    #[must_use]
+    #[inline]
+    pub fn hit(ambient: DVec3, casts_mirror_ray: bool) -> Self {
+        let mut bits = 0;
+        if ambient != DVec3::ZERO {
+            bits |= AMBIENT;
+        }
+        if casts_mirror_ray {
+            bits |= REFLECTION;
+        }
+        Self(bits)
+    }
+
+    /// Adds one light's factors at the hit (of a material with a diffuse or specular
+    /// colour): in front it adds the light terms, with a lobe the specular term;
+    /// unknown factors add both.
+    #[inline]
+    pub fn light(&mut self, factors: &LitFactors) {
+        let n_dot_l = factors.n_dot_l();
+        if n_dot_l.is_nan() {
+            self.0 |= LIGHTS | SPECULAR;
+        } else if n_dot_l > 0.0 {
+            self.lit(factors.lobe().is_some());
+        }
+    }
+
+    /// Adds a light known to be in front of the hit, with or without a lobe.
+    #[inline]
+    pub fn lit(&mut self, has_lobe: bool) {
+        self.0 |= if has_lobe { LIGHTS | SPECULAR } else { LIGHTS };
+    }
 }
 
 /// What the shader's tests look at per object.
 #[derive(Clone, Copy, Debug)]
 struct ObjectTerms {
-    ambient: bool,
+    /// `ka * ambient`.
+    ambient: DVec3,
     /// A diffuse or specular colour: the shader looks at the lights.
     local: bool,
     mirror: bool,
 }
 
-/// The dependence of pixels in one world.
+/// The dependence of pixels in one world, for those shaded in full.
 #[derive(Clone, Debug)]
 pub(super) struct DependenceRule {
     objects: Vec<ObjectTerms>,
-    background: bool,
+    background: DVec3,
     max_depth: u32,
 }
 
@@ -98,8 +162,7 @@ impl DependenceRule {
             .map(|object| {
                 let material = &world.materials[object.material];
                 ObjectTerms {
-                    // As the shader works it out: NaN is not zero either.
-                    ambient: material.ambient * world.ambient != DVec3::ZERO,
+                    ambient: material.ambient * world.ambient,
                     local: material.diffuse != DVec3::ZERO || material.specular != DVec3::ZERO,
                     mirror: material.mirror != DVec3::ZERO,
                 }
@@ -107,7 +170,7 @@ impl DependenceRule {
             .collect();
         Self {
             objects,
-            background: world.background != DVec3::ZERO,
+            background: world.background,
             max_depth: world.max_depth,
         }
     }
@@ -116,52 +179,25 @@ impl DependenceRule {
     /// `lights` light slots per entry in `slots`.
     #[must_use]
     pub fn of_chain(&self, objects: &[u32], slots: &[LightSlot], lights: usize) -> TermDependence {
-        let mut all = 0;
+        let mut all = TermDependence::NONE;
         for (depth, &object) in objects.iter().enumerate() {
-            let bits = match self.objects.get(object as usize) {
-                None if self.background => BACKGROUND,
-                None => 0,
+            let entry = match self.objects.get(object as usize) {
+                None => EntryTerms::miss(self.background),
                 Some(terms) => {
-                    let row = &slots[depth * lights..(depth + 1) * lights];
-                    let mut bits = 0;
-                    if terms.ambient {
-                        bits |= AMBIENT;
-                    }
+                    let casts = terms.mirror && (depth as u32) < self.max_depth;
+                    let mut entry = EntryTerms::hit(terms.ambient, casts);
                     if terms.local {
-                        bits |= lit_bits(row);
+                        for slot in &slots[depth * lights..(depth + 1) * lights] {
+                            entry.light(&slot.factors);
+                        }
                     }
-                    if terms.mirror && (depth as u32) < self.max_depth {
-                        bits |= REFLECTION;
-                    }
-                    bits
+                    entry
                 }
             };
-            all |= if depth == 0 {
-                bits
-            } else {
-                bits << MIRROR_HITS
-            };
+            all.add(depth, entry);
         }
-        TermDependence(all)
+        all
     }
-}
-
-/// `LIGHTS` and `SPECULAR` as the lights of one hit have them.
-fn lit_bits(row: &[LightSlot]) -> u16 {
-    let mut bits = 0;
-    for slot in row {
-        let n_dot_l = slot.factors.n_dot_l();
-        if n_dot_l.is_nan() {
-            return LIGHTS | SPECULAR;
-        }
-        if n_dot_l > 0.0 {
-            bits |= LIGHTS;
-            if slot.factors.lobe().is_some() {
-                bits |= SPECULAR;
-            }
-        }
-    }
-    bits
 }
 
 /// Which pixels an edit leaves as they were: none of whose rays meets an object whose
@@ -192,7 +228,6 @@ impl KeepRule {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::trace::light_factors::LitFactors;
     use crate::trace::lights::LightSample;
     use crate::trace::terms::{Term, TermSwitches};
 
@@ -248,20 +283,35 @@ mod tests {
 
     #[test]
     fn lights_behind_or_out_of_reach_add_nothing_and_unknown_ones_add_everything() {
+        let lit = |slots: &[LightSlot]| {
+            let mut entry = EntryTerms::default();
+            for slot in slots {
+                entry.light(&slot.factors);
+            }
+            entry.0
+        };
         let unreachable = LightSlot {
             factors: LitFactors::UNREACHABLE,
             ..LightSlot::NOTHING
         };
-        assert_eq!(lit_bits(&[slot(-0.3, None), unreachable]), 0);
-        assert_eq!(lit_bits(&[slot(0.5, None)]), LIGHTS);
+        assert_eq!(lit(&[slot(-0.3, None), unreachable]), 0);
+        assert_eq!(lit(&[slot(0.5, None)]), LIGHTS);
         assert_eq!(
-            lit_bits(&[slot(0.5, None), slot(0.2, Some(0.0))]),
+            lit(&[slot(0.5, None), slot(0.2, Some(0.0))]),
             LIGHTS | SPECULAR
         );
         assert_eq!(
-            lit_bits(&[slot(-1.0, None), LightSlot::NOTHING]),
+            lit(&[slot(-1.0, None), LightSlot::NOTHING]),
             LIGHTS | SPECULAR
         );
+        assert_eq!(EntryTerms::miss(DVec3::ZERO).0, 0);
+        assert_eq!(EntryTerms::miss(DVec3::splat(0.1)).0, BACKGROUND);
+        assert_eq!(EntryTerms::hit(DVec3::ZERO, true).0, REFLECTION);
+        assert_eq!(EntryTerms::hit(DVec3::splat(f64::NAN), false).0, AMBIENT);
+        let mut chain = TermDependence::NONE;
+        chain.add(0, EntryTerms::hit(DVec3::ONE, false));
+        chain.add(2, EntryTerms::miss(DVec3::ONE));
+        assert_eq!(chain, TermDependence(AMBIENT | BACKGROUND << MIRROR_HITS));
     }
 
     #[test]

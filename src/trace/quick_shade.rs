@@ -14,6 +14,7 @@
 use glam::DVec3;
 
 use super::chains::{CLEAR, NOT_CAST};
+use super::dependence::{EntryTerms, TermDependence};
 use super::light_factors::LightSlot;
 use super::lights::falloff;
 use super::mirror_chain::{Bounce, Chain, fold_back};
@@ -34,6 +35,10 @@ struct ObjectShade {
     has_local: bool,
     /// The cached lobes are for another shininess.
     stale_lobes: bool,
+    /// What an entry on it depends on before its lights: below `max_depth` (a mirror
+    /// ray cast when reflection is on) and at it.
+    terms_below_max: EntryTerms,
+    terms_at_max: EntryTerms,
 }
 
 /// Shades pixels of one world from their cache entries.
@@ -41,6 +46,8 @@ pub(super) struct QuickShade {
     primary: ActiveTerms,
     secondary: ActiveTerms,
     background: DVec3,
+    /// What a miss depends on.
+    miss_terms: EntryTerms,
     max_depth: u32,
     objects: Vec<ObjectShade>,
     /// Per light, its strength; `None` for a light of zero strength, which the shader
@@ -61,13 +68,16 @@ impl QuickShade {
             .zip(stale_lobes)
             .map(|(object, &stale_lobes)| {
                 let material = &world.materials[object.material];
+                let ambient = material.ambient * world.ambient;
                 ObjectShade {
-                    ambient: material.ambient * world.ambient,
+                    ambient,
                     diffuse: material.diffuse,
                     specular: material.specular,
                     mirror: material.mirror,
                     has_local: material.diffuse != DVec3::ZERO || material.specular != DVec3::ZERO,
                     stale_lobes,
+                    terms_below_max: EntryTerms::hit(ambient, material.mirror != DVec3::ZERO),
+                    terms_at_max: EntryTerms::hit(ambient, false),
                 }
             })
             .collect();
@@ -80,6 +90,7 @@ impl QuickShade {
             primary,
             secondary,
             background: world.background,
+            miss_terms: EntryTerms::miss(world.background),
             max_depth: world.max_depth,
             objects,
             lights,
@@ -87,8 +98,9 @@ impl QuickShade {
     }
 
     /// The colour of the pixel whose chain's entries met `objects` (`u32::MAX`: a miss),
-    /// with `lights` light slots per entry in `slots`, and the rays the shader would
-    /// count for it; `None` where the cache cannot answer.
+    /// with `lights` light slots per entry in `slots`, and the switches it depends on
+    /// (worked out as it is shaded, as [`super::dependence::DependenceRule`] would); also
+    /// the rays the shader would count for it. `None` where the cache cannot answer.
     #[inline]
     pub fn pixel(
         &self,
@@ -96,30 +108,34 @@ impl QuickShade {
         slots: &[LightSlot],
         lights: usize,
         counts: &mut RayCounts,
-    ) -> Option<DVec3> {
+    ) -> Option<(DVec3, TermDependence)> {
         let mut own = RayCounts {
             primary: 1,
             ..RayCounts::default()
         };
         let row = |depth: usize| &slots[depth * lights..(depth + 1) * lights];
+        let mut depends = TermDependence::NONE;
         let &first = objects.first()?;
-        let (local, mirror) = self.entry(0, first, row(0), &self.primary, &mut own)?;
+        let (local, mirror, terms) = self.entry(0, first, row(0), &self.primary, &mut own)?;
+        depends.add(0, terms);
         // Most camera rays meet no mirror: no chain to keep.
         let Some(km) = mirror else {
             counts.add(&own);
-            return Some(local);
+            return Some((local, depends));
         };
         let mut bounces = Chain::new();
         bounces.push(Bounce { local, km });
         for (depth, &object) in objects.iter().enumerate().skip(1) {
             let terms = &self.secondary;
-            let (local, mirror) = self.entry(depth as u32, object, row(depth), terms, &mut own)?;
+            let (local, mirror, entry) =
+                self.entry(depth as u32, object, row(depth), terms, &mut own)?;
+            depends.add(depth, entry);
             match mirror {
                 Some(km) => bounces.push(Bounce { local, km }),
                 None => {
                     bounces.push(Bounce::local(local));
                     counts.add(&own);
-                    return Some(fold_back(&bounces, &mut NoRecorder));
+                    return Some((fold_back(&bounces, &mut NoRecorder), depends));
                 }
             }
         }
@@ -127,8 +143,9 @@ impl QuickShade {
         None
     }
 
-    /// One entry's own colour and, if the shader casts a mirror ray from it, its km.
-    /// Inlined into both calls in [`Self::pixel`], as the shader's `shade` is.
+    /// One entry's own colour, if the shader casts a mirror ray from it its km, and what
+    /// the entry depends on. Inlined into both calls in [`Self::pixel`], as the shader's
+    /// `shade` is.
     #[inline(always)]
     fn entry(
         &self,
@@ -137,19 +154,25 @@ impl QuickShade {
         row: &[LightSlot],
         terms: &ActiveTerms,
         counts: &mut RayCounts,
-    ) -> Option<(DVec3, Option<DVec3>)> {
+    ) -> Option<(DVec3, Option<DVec3>, EntryTerms)> {
         if object == u32::MAX {
             let background = if terms.background {
                 self.background
             } else {
                 DVec3::ZERO
             };
-            return Some((background, None));
+            return Some((background, None, self.miss_terms));
         }
         let shade = &self.objects[object as usize];
         if shade.stale_lobes {
             return None;
         }
+        let below_max = depth < self.max_depth;
+        let mut entry = if below_max {
+            shade.terms_below_max
+        } else {
+            shade.terms_at_max
+        };
         let mut colour = DVec3::ZERO;
         if terms.ambient {
             colour += shade.ambient;
@@ -169,6 +192,8 @@ impl QuickShade {
                 if n_dot_l <= 0.0 {
                     continue;
                 }
+                let lobe = factors.lobe();
+                entry.lit(lobe.is_some());
                 if terms.shadows {
                     if slot.shadow == NOT_CAST {
                         return None;
@@ -185,18 +210,22 @@ impl QuickShade {
                     DVec3::ZERO
                 };
                 let specular = if terms.specular {
-                    specular_term(shade.specular, strength, factors.lobe())
+                    specular_term(shade.specular, strength, lobe)
                 } else {
                     DVec3::ZERO
                 };
                 colour += diffuse + specular;
             }
+        } else if shade.has_local {
+            // The lights are not looked at, but would be with another switch.
+            for slot in row {
+                entry.light(&slot.factors);
+            }
         }
-        let casts_mirror_ray =
-            terms.reflection && depth < self.max_depth && shade.mirror != DVec3::ZERO;
+        let casts_mirror_ray = terms.reflection && below_max && shade.mirror != DVec3::ZERO;
         if casts_mirror_ray {
             counts.reflection += 1;
         }
-        Some((colour, casts_mirror_ray.then_some(shade.mirror)))
+        Some((colour, casts_mirror_ray.then_some(shade.mirror), entry))
     }
 }

@@ -76,7 +76,8 @@ pub fn render_one_sample_cached(
     let keep = reuse
         .as_ref()
         .and_then(|(cache, ..)| cache.keep_rule(world, options));
-    // What each pixel shaded depends on, for the next edit's keep rule.
+    // What each pixel shaded in full depends on, for the next edit's keep rule (the
+    // quick re-shade works it out as it shades).
     let dependence = tracer.beauty_terms().map(|_| DependenceRule::new(world));
     let depends = |objects: &[u32], slots: &[LightSlot]| {
         dependence.as_ref().map_or(TermDependence::ANY, |rule| {
@@ -113,10 +114,10 @@ pub fn render_one_sample_cached(
         let quick = quick
             .as_ref()
             .and_then(|q| q.pixel(chain, slots, tile.lights(), &mut own));
-        let colour = match quick {
-            Some(colour) => {
+        let (colour, depends) = match quick {
+            Some(shaded) => {
                 tile.quick += 1;
-                colour
+                shaded
             }
             None => {
                 let point = sample_point(px, py, 0, 1);
@@ -125,20 +126,19 @@ pub fn render_one_sample_cached(
                     live: LiveRays::among(cull().candidates(point)),
                     stale_lobes: &stale_lobes,
                 };
-                camera_sample(&tracer, &camera, point, source, &mut own)
+                let colour = camera_sample(&tracer, &camera, point, source, &mut own);
+                let (chain, slots) = tile.pixel_chain();
+                (colour, depends(chain, slots))
             }
         };
         rays.add(&own);
-        let (chain, slots) = tile.pixel_chain();
-        let depends = depends(chain, slots);
         tile.end_pixel(PixelColour::of(colour, &own, depends), false);
         colour
     };
     // A tile whose every pixel keeps its colour or is quick-shaded goes in one loop.
     let whole = |tile: &mut TileRays| match &quick {
         Some(quick) => tile.whole_tile(keep.as_ref(), |objects, slots, own| {
-            let colour = quick.pixel(objects, slots, lights, own)?;
-            Some((colour, depends(objects, slots)))
+            quick.pixel(objects, slots, lights, own)
         }),
         None if keep.is_some() => tile.whole_tile(keep.as_ref(), |_, _, _| None),
         None => None,
