@@ -11,6 +11,14 @@ use raylab::trace::{
     render_one_sample_cached, render_samples,
 };
 
+/// Scenes with mirrors, every light kind, spots and shininess below 1.
+pub const SCENES: [&str; 4] = [
+    "default.ron",
+    "spotlights.ron",
+    "specular_exponents.ron",
+    "mirror_cap.ron",
+];
+
 /// An example scene at 64 x 48.
 pub fn example(name: &str) -> Scene {
     let text = EXAMPLE_SCENES.iter().find(|(n, _)| *n == name).unwrap().1;
