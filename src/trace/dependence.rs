@@ -1,7 +1,7 @@
 //! Which term switches a pixel's colour can depend on, worked out from its cached chain
 //! each time it is shaded, so that a switch edit re-shades only the pixels it can change:
 //! turning specular off or on leaves alone every pixel none of whose hits has a Phong
-//! lobe (about three quarters of the default scene's).
+//! lobe (over half of the default scene's).
 //!
 //! The rule follows the shader's own tests (`Tracer::shade`): a term adds nothing, and
 //! casts no ray, where the test before it fails. It is conservative: a light whose
@@ -132,23 +132,33 @@ impl EntryTerms {
     pub fn lit(&mut self, has_lobe: bool) {
         self.0 |= if has_lobe { LIGHTS | SPECULAR } else { LIGHTS };
     }
+
+    /// Adds every light of the hit's row of light slots ([`Self::light`]).
+    #[inline]
+    pub fn lights(&mut self, row: &[LightSlot]) {
+        for slot in row {
+            self.light(&slot.factors);
+        }
+    }
 }
 
-/// What the shader's tests look at per object.
+/// What the shader's tests look at per object, found once per pass.
 #[derive(Clone, Copy, Debug)]
 struct ObjectTerms {
-    /// `ka * ambient`.
-    ambient: DVec3,
+    /// What an entry on it depends on before its lights: below `max_depth` (a mirror
+    /// ray cast when reflection is on) and at it.
+    below_max: EntryTerms,
+    at_max: EntryTerms,
     /// A diffuse or specular colour: the shader looks at the lights.
     local: bool,
-    mirror: bool,
 }
 
-/// The dependence of pixels in one world, for those shaded in full.
+/// The dependence of pixels in one world: for those shaded in full
+/// ([`Self::of_chain`]), and what the quick re-shade starts each entry from.
 #[derive(Clone, Debug)]
 pub(super) struct DependenceRule {
     objects: Vec<ObjectTerms>,
-    background: DVec3,
+    miss: EntryTerms,
     max_depth: u32,
 }
 
@@ -161,17 +171,37 @@ impl DependenceRule {
             .iter()
             .map(|object| {
                 let material = &world.materials[object.material];
+                let ambient = material.ambient * world.ambient;
                 ObjectTerms {
-                    ambient: material.ambient * world.ambient,
+                    below_max: EntryTerms::hit(ambient, material.mirror != DVec3::ZERO),
+                    at_max: EntryTerms::hit(ambient, false),
                     local: material.diffuse != DVec3::ZERO || material.specular != DVec3::ZERO,
-                    mirror: material.mirror != DVec3::ZERO,
                 }
             })
             .collect();
         Self {
             objects,
-            background: world.background,
+            miss: EntryTerms::miss(world.background),
             max_depth: world.max_depth,
+        }
+    }
+
+    /// What a miss depends on.
+    #[must_use]
+    #[inline]
+    pub fn miss_terms(&self) -> EntryTerms {
+        self.miss
+    }
+
+    /// What an entry on world object `object` at `depth` depends on before its lights.
+    #[must_use]
+    #[inline]
+    pub fn hit_terms(&self, object: usize, depth: u32) -> EntryTerms {
+        let terms = &self.objects[object];
+        if depth < self.max_depth {
+            terms.below_max
+        } else {
+            terms.at_max
         }
     }
 
@@ -182,14 +212,11 @@ impl DependenceRule {
         let mut all = TermDependence::NONE;
         for (depth, &object) in objects.iter().enumerate() {
             let entry = match self.objects.get(object as usize) {
-                None => EntryTerms::miss(self.background),
+                None => self.miss,
                 Some(terms) => {
-                    let casts = terms.mirror && (depth as u32) < self.max_depth;
-                    let mut entry = EntryTerms::hit(terms.ambient, casts);
+                    let mut entry = self.hit_terms(object as usize, depth as u32);
                     if terms.local {
-                        for slot in &slots[depth * lights..(depth + 1) * lights] {
-                            entry.light(&slot.factors);
-                        }
+                        entry.lights(&slots[depth * lights..(depth + 1) * lights]);
                     }
                     entry
                 }
@@ -285,9 +312,7 @@ mod tests {
     fn lights_behind_or_out_of_reach_add_nothing_and_unknown_ones_add_everything() {
         let lit = |slots: &[LightSlot]| {
             let mut entry = EntryTerms::default();
-            for slot in slots {
-                entry.light(&slot.factors);
-            }
+            entry.lights(slots);
             entry.0
         };
         let unreachable = LightSlot {

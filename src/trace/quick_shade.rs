@@ -14,7 +14,7 @@
 use glam::DVec3;
 
 use super::chains::{CLEAR, NOT_CAST};
-use super::dependence::{EntryTerms, TermDependence};
+use super::dependence::{DependenceRule, EntryTerms, TermDependence};
 use super::light_factors::LightSlot;
 use super::lights::falloff;
 use super::mirror_chain::{Bounce, Chain, fold_back};
@@ -35,19 +35,15 @@ struct ObjectShade {
     has_local: bool,
     /// The cached lobes are for another shininess.
     stale_lobes: bool,
-    /// What an entry on it depends on before its lights: below `max_depth` (a mirror
-    /// ray cast when reflection is on) and at it.
-    terms_below_max: EntryTerms,
-    terms_at_max: EntryTerms,
 }
 
 /// Shades pixels of one world from their cache entries.
-pub(super) struct QuickShade {
+pub(super) struct QuickShade<'r> {
     primary: ActiveTerms,
     secondary: ActiveTerms,
     background: DVec3,
-    /// What a miss depends on.
-    miss_terms: EntryTerms,
+    /// What each entry depends on before its lights.
+    dependence: &'r DependenceRule,
     max_depth: u32,
     objects: Vec<ObjectShade>,
     /// Per light, its strength; `None` for a light of zero strength, which the shader
@@ -55,11 +51,15 @@ pub(super) struct QuickShade {
     lights: Vec<Option<DVec3>>,
 }
 
-impl QuickShade {
+impl<'r> QuickShade<'r> {
     /// For what `tracer` shades, with per object whether its cached lobes are stale
-    /// ([`super::light_factors::stale_lobes`]); `None` for the debug views, which are not
-    /// the lit picture.
-    pub fn new(tracer: &Tracer, stale_lobes: &[bool]) -> Option<Self> {
+    /// ([`super::light_factors::stale_lobes`]) and the dependence rule of its world;
+    /// `None` for the debug views, which are not the lit picture.
+    pub fn new(
+        tracer: &Tracer,
+        stale_lobes: &[bool],
+        dependence: &'r DependenceRule,
+    ) -> Option<Self> {
         let (primary, secondary) = tracer.beauty_terms()?;
         let world = tracer.world();
         let objects = world
@@ -68,16 +68,13 @@ impl QuickShade {
             .zip(stale_lobes)
             .map(|(object, &stale_lobes)| {
                 let material = &world.materials[object.material];
-                let ambient = material.ambient * world.ambient;
                 ObjectShade {
-                    ambient,
+                    ambient: material.ambient * world.ambient,
                     diffuse: material.diffuse,
                     specular: material.specular,
                     mirror: material.mirror,
                     has_local: material.diffuse != DVec3::ZERO || material.specular != DVec3::ZERO,
                     stale_lobes,
-                    terms_below_max: EntryTerms::hit(ambient, material.mirror != DVec3::ZERO),
-                    terms_at_max: EntryTerms::hit(ambient, false),
                 }
             })
             .collect();
@@ -90,7 +87,7 @@ impl QuickShade {
             primary,
             secondary,
             background: world.background,
-            miss_terms: EntryTerms::miss(world.background),
+            dependence,
             max_depth: world.max_depth,
             objects,
             lights,
@@ -161,18 +158,13 @@ impl QuickShade {
             } else {
                 DVec3::ZERO
             };
-            return Some((background, None, self.miss_terms));
+            return Some((background, None, self.dependence.miss_terms()));
         }
         let shade = &self.objects[object as usize];
         if shade.stale_lobes {
             return None;
         }
-        let below_max = depth < self.max_depth;
-        let mut entry = if below_max {
-            shade.terms_below_max
-        } else {
-            shade.terms_at_max
-        };
+        let mut entry = self.dependence.hit_terms(object as usize, depth);
         let mut colour = DVec3::ZERO;
         if terms.ambient {
             colour += shade.ambient;
@@ -218,11 +210,10 @@ impl QuickShade {
             }
         } else if shade.has_local {
             // The lights are not looked at, but would be with another switch.
-            for slot in row {
-                entry.light(&slot.factors);
-            }
+            entry.lights(row);
         }
-        let casts_mirror_ray = terms.reflection && below_max && shade.mirror != DVec3::ZERO;
+        let casts_mirror_ray =
+            terms.reflection && depth < self.max_depth && shade.mirror != DVec3::ZERO;
         if casts_mirror_ray {
             counts.reflection += 1;
         }

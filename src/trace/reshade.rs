@@ -76,8 +76,8 @@ pub fn render_one_sample_cached(
     let keep = reuse
         .as_ref()
         .and_then(|(cache, ..)| cache.keep_rule(world, options));
-    // What each pixel shaded in full depends on, for the next edit's keep rule (the
-    // quick re-shade works it out as it shades).
+    // What each pixel shaded depends on, for the next edit's keep rule: the quick
+    // re-shade works it out as it shades, the others from their chain afterwards.
     let dependence = tracer.beauty_terms().map(|_| DependenceRule::new(world));
     let depends = |objects: &[u32], slots: &[LightSlot]| {
         dependence.as_ref().map_or(TermDependence::ANY, |rule| {
@@ -89,7 +89,8 @@ pub fn render_one_sample_cached(
         .map_or_else(Vec::new, |(cache, ..)| cache.stale_lobes(world));
     let quick = reuse
         .as_ref()
-        .and_then(|_| QuickShade::new(&tracer, &stale_lobes));
+        .zip(dependence.as_ref())
+        .and_then(|(_, rule)| QuickShade::new(&tracer, &stale_lobes, rule));
     let new_state = |index: u32, rect: TileRect| match &reuse {
         Some((cache, shadows, factors)) => {
             let columns = SlotColumns {
