@@ -1,8 +1,8 @@
 //! The frame cut into 16 x 16 tiles, traced in parallel with rayon. Inside a tile the
 //! samples go in batches, one sample for every pixel of the tile at a time, and the
-//! cancel flag is checked before each batch: a cancelled render stops within one batch per
-//! tile whatever the sample count. The guard that keeps non-finite samples out of the
-//! sums lives here too.
+//! cancel flag is checked before each row of a batch: a cancelled render stops within one
+//! row per tile whatever the sample count. Also the guard that keeps non-finite samples
+//! out of the sums.
 
 use std::ops::Range;
 use std::sync::atomic::Ordering;
@@ -23,16 +23,12 @@ pub trait SampleColour: Fn(u32, u32, u32, &mut RayCounts) -> DVec3 + Sync {}
 
 impl<F: Fn(u32, u32, u32, &mut RayCounts) -> DVec3 + Sync> SampleColour for F {}
 
-/// A rectangle of the image, in pixels.
+/// A rectangle of the image, in pixels: left column, top row, width and height.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct TileRect {
-    /// Left column.
     pub x0: u32,
-    /// Top row.
     pub y0: u32,
-    /// Width.
     pub w: u32,
-    /// Height.
     pub h: u32,
 }
 
@@ -127,7 +123,8 @@ where
     // alone: nothing to read before, nothing to clear.
     let unsummed = sums.sums.is_empty();
     let before = (!unsummed).then_some(&*sums);
-    let tiles: Vec<Option<Tile<S>>> = (0..tile_count)
+    // Into an `Option`: after a cancel, tiles not yet started are not even set up.
+    let tiles: Option<Vec<Tile<S>>> = (0..tile_count)
         .into_par_iter()
         .map(|index| {
             let rect = TileRect::of(index, width, height);
@@ -142,7 +139,7 @@ where
             )
         })
         .collect();
-    let tiles: Vec<Tile<S>> = tiles.into_iter().collect::<Option<_>>()?;
+    let tiles = tiles?;
 
     let mut rays = RayCounts::default();
     let mut new_pixels = Vec::new();
@@ -230,7 +227,7 @@ fn whole_tile<S>(
 }
 
 /// Traces one tile batch by batch, each pixel's sum continuing from `before`; `None` as
-/// soon as a batch finds the render cancelled.
+/// soon as a row of a batch finds the render cancelled.
 fn render_tile<S, N, W, F>(
     rect: TileRect,
     mut state: S,
@@ -244,15 +241,16 @@ where
     W: Fn(&mut S) -> Option<(Vec<DVec3>, RayCounts)>,
     F: Fn(&mut S, u32, u32, u32, &mut RayCounts) -> DVec3,
 {
+    if progress.is_cancelled() {
+        return None;
+    }
     // A first one-sample pass may give the whole tile at once.
-    if samples.len() == 1 && before.is_none() {
-        if progress.is_cancelled() {
-            return None;
-        }
-        if let Some((colours, rays)) = (work.whole)(&mut state) {
-            progress.batches_done.fetch_add(1, Ordering::Relaxed);
-            return Some(whole_tile(rect, state, image_width, colours, rays));
-        }
+    if samples.len() == 1
+        && before.is_none()
+        && let Some((colours, rays)) = (work.whole)(&mut state)
+    {
+        progress.batches_done.fetch_add(1, Ordering::Relaxed);
+        return Some(whole_tile(rect, state, image_width, colours, rays));
     }
     let pixels: Vec<(u32, u32)> = (rect.y0..rect.y0 + rect.h)
         .flat_map(|py| (rect.x0..rect.x0 + rect.w).map(move |px| (px, py)))
@@ -268,10 +266,13 @@ where
     let mut rays = RayCounts::default();
     let mut non_finite = 0;
     for index in samples {
-        if progress.is_cancelled() {
-            return None;
-        }
-        for ((&(px, py), sum), finite) in pixels.iter().zip(&mut sums).zip(&mut finite) {
+        for (i, ((&(px, py), sum), finite)) in
+            pixels.iter().zip(&mut sums).zip(&mut finite).enumerate()
+        {
+            // Row by row: an edit need not wait for a tile of many-sample pixels.
+            if i % rect.w as usize == 0 && progress.is_cancelled() {
+                return None;
+            }
             if !add_sample(sum, (work.sample)(&mut state, px, py, index, &mut rays)) {
                 non_finite += 1;
                 *finite = false;
@@ -317,9 +318,9 @@ mod tests {
     }
 
     #[test]
-    fn a_cancel_inside_a_tile_stops_it_at_the_end_of_that_batch() {
-        // One 16 x 16 tile on one thread, 64 samples a pixel; the 300th sample (inside
-        // the second batch) cancels. Exactly two batches are traced, not all 64.
+    fn a_cancel_inside_a_tile_stops_it_at_the_end_of_that_row() {
+        // One 16 x 16 tile on one thread, 64 samples a pixel; the 300th sample (the
+        // third row of the second batch) cancels: one batch and three rows are traced.
         let progress = RenderProgress::default();
         let calls = AtomicU64::new(0);
         let cancel_at = 300;
@@ -332,7 +333,10 @@ mod tests {
         let outcome = pool.install(|| render_tiles(&mut sums, 0..64, &progress, &sample));
         assert!(outcome.is_none());
         let batch = u64::from(TILE_SIZE * TILE_SIZE);
-        assert_eq!(calls.load(Ordering::SeqCst), 2 * batch);
+        assert_eq!(
+            calls.load(Ordering::SeqCst),
+            batch + 3 * u64::from(TILE_SIZE)
+        );
         assert!(
             sums.sums.iter().all(|s| *s == DVec3::ZERO),
             "a cancelled render leaves the sums untouched"
