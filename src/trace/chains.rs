@@ -97,12 +97,12 @@ impl Chains {
         }
     }
 
-    /// No pixel yet, room for `pixels` of them with one entry each.
-    pub fn with_capacity(pixels: usize) -> Self {
+    /// No pixel yet, room for `pixels` of them with `entries` entries in all.
+    pub fn with_capacity(pixels: usize, entries: usize) -> Self {
         Self {
             chain_ends: Vec::with_capacity(pixels),
-            hits: Vec::with_capacity(pixels),
-            objects: Vec::with_capacity(pixels),
+            hits: Vec::with_capacity(entries),
+            objects: Vec::with_capacity(entries),
         }
     }
 

@@ -15,7 +15,7 @@ use super::world::World;
 
 /// Switches a pixel depends on (or that an edit changed), for the camera ray's hit and
 /// for the hits of its mirror rays.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub(super) struct TermDependence(u16);
 
 /// `ka * ambient` is not zero.
@@ -68,6 +68,14 @@ impl TermDependence {
     #[inline]
     pub fn meets(self, switched: Self) -> bool {
         self.0 & switched.0 != 0
+    }
+
+    /// What a group of pixels of dependences `self` and `other` depends on: a switch
+    /// meets it exactly where it meets one of them.
+    #[must_use]
+    #[inline]
+    pub fn union(self, other: Self) -> Self {
+        Self(self.0 | other.0)
     }
 
     /// Adds what the entry at `depth` of the mirror chain depends on.
@@ -227,33 +235,9 @@ impl DependenceRule {
     }
 }
 
-/// Which pixels an edit leaves as they were: none of whose rays meets an object whose
-/// material changed, and that depend on none of the switches that changed.
-#[derive(Clone, Debug)]
-pub(super) struct KeepRule {
-    /// Per world object, whether its material changed; `None`: none did.
-    pub changed_objects: Option<Vec<bool>>,
-    /// The switches that changed.
-    pub switched: TermDependence,
-}
-
-impl KeepRule {
-    /// Whether a pixel whose chain met `objects` (`u32::MAX`: a miss) and whose colour
-    /// had dependence `depends` keeps its colour.
-    #[must_use]
-    #[inline]
-    pub fn keeps(&self, objects: &[u32], depends: TermDependence) -> bool {
-        !depends.meets(self.switched)
-            && self.changed_objects.as_ref().is_none_or(|changed| {
-                !objects
-                    .iter()
-                    .any(|&o| o != u32::MAX && changed[o as usize])
-            })
-    }
-}
-
 #[cfg(test)]
 mod tests {
+    use super::super::keep_rule::KeepRule;
     use super::*;
     use crate::trace::lights::LightSample;
     use crate::trace::terms::{Term, TermSwitches};
@@ -341,10 +325,7 @@ mod tests {
 
     #[test]
     fn a_kept_pixel_meets_no_changed_object_and_no_changed_switch() {
-        let rule = KeepRule {
-            changed_objects: Some(vec![false, true]),
-            switched: TermDependence(SPECULAR),
-        };
+        let rule = KeepRule::new(vec![false, true], TermDependence(SPECULAR));
         assert!(rule.keeps(&[0, u32::MAX], TermDependence(LIGHTS)));
         assert!(
             !rule.keeps(&[0, 1], TermDependence(LIGHTS)),
@@ -352,10 +333,7 @@ mod tests {
         );
         assert!(!rule.keeps(&[0], TermDependence(SPECULAR)), "has a lobe");
         assert!(!rule.keeps(&[0], TermDependence::ANY));
-        let switches_only = KeepRule {
-            changed_objects: None,
-            switched: TermDependence(SPECULAR << MIRROR_HITS),
-        };
+        let switches_only = KeepRule::new(vec![false; 2], TermDependence(SPECULAR << MIRROR_HITS));
         assert!(
             switches_only.keeps(&[1], TermDependence(SPECULAR)),
             "lobe at the camera hit only"

@@ -21,7 +21,8 @@ use std::sync::Arc;
 use glam::{DAffine3, DVec3};
 
 use super::chains::{CachedHit, Chains};
-use super::dependence::{KeepRule, TermDependence};
+use super::dependence::TermDependence;
+use super::keep_rule::{KeepRule, TileSummary};
 use super::light_factors::{self, LightSlot};
 use super::lights::WorldLight;
 use super::ray_counts::RayCounts;
@@ -94,6 +95,8 @@ pub(super) struct TileHits {
     pub slots: Arc<Vec<LightSlot>>,
     /// Each pixel's colour, row-major within the tile.
     pub colours: Arc<Vec<PixelColour>>,
+    /// What its pixels depend on, all together: a whole tile kept in one test.
+    pub summary: TileSummary,
 }
 
 /// Everything the shader reads besides the rays and the objects' materials: with all of
@@ -281,10 +284,7 @@ impl HitCache {
             .zip(&self.object_materials)
             .map(|(a, b)| a != b)
             .collect();
-        Some(KeepRule {
-            changed_objects: changed.contains(&true).then_some(changed),
-            switched,
-        })
+        Some(KeepRule::new(changed, switched))
     }
 
     /// Per light of `world`, the column of light factors that serves it.

@@ -12,6 +12,7 @@ pub mod hit_cache;
 pub mod image;
 pub mod inspect;
 pub mod isolation;
+mod keep_rule;
 pub mod light_factors;
 pub mod lights;
 mod mirror_chain;
