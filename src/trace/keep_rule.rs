@@ -101,6 +101,17 @@ impl TileSummary {
         }
         summary
     }
+
+    /// The summary of this tile's chains once its pixels came out with dependences
+    /// `depends` all together, made of `rays`.
+    #[must_use]
+    pub fn reshaded(self, depends: TermDependence, rays: RayCounts) -> Self {
+        Self {
+            depends,
+            rays,
+            ..self
+        }
+    }
 }
 
 #[cfg(test)]

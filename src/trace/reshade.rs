@@ -11,6 +11,8 @@
 
 use std::sync::OnceLock;
 
+use rayon::prelude::*;
+
 use super::camera::PinholeCamera;
 use super::dependence::{DependenceRule, TermDependence};
 use super::hit_cache::{HitCache, PixelColour, Reuse};
@@ -154,15 +156,13 @@ pub fn render_one_sample_cached(
     debug_assert_eq!(states.len(), tile_count(width, height) as usize);
     let mut traced = RayCounts::default();
     let (mut shaded_pixels, mut quick_pixels) = (0, 0);
-    let tiles = states
-        .into_iter()
-        .map(|state| {
-            traced.add(&state.traced);
-            shaded_pixels += state.shaded;
-            quick_pixels += state.quick;
-            state.finish()
-        })
-        .collect();
+    for state in &states {
+        traced.add(&state.traced);
+        shaded_pixels += state.shaded;
+        quick_pixels += state.quick;
+    }
+    // In parallel: finishing a tile that changed sums it up again.
+    let tiles = states.into_par_iter().map(TileRays::finish).collect();
     Some(CachedPass {
         sums,
         traced,

@@ -29,8 +29,10 @@ pub(super) struct TileRays {
     /// once one of them changed (until then the old ones stand for them).
     old_colours: Option<Arc<Vec<PixelColour>>>,
     colours: Option<Vec<PixelColour>>,
-    /// The summary of the tile read, which still holds while its chains and colours do.
+    /// The summary of the tile read, which still holds while its chains and colours do,
+    /// and the one worked out as [`Self::whole_tile`] re-shaded it.
     old_summary: TileSummary,
+    new_summary: Option<TileSummary>,
     /// Pixels shaded so far, and of them those shaded from light factors alone.
     pub shaded: u64,
     pub quick: u64,
@@ -84,6 +86,7 @@ impl TileRays {
             old_colours: Some(Arc::clone(&old.colours)),
             colours: None,
             old_summary: old.summary,
+            new_summary: None,
             shaded: 0,
             quick: 0,
             pixel: 0,
@@ -108,6 +111,7 @@ impl TileRays {
             old_colours: None,
             colours: Some(Vec::with_capacity(pixels)),
             old_summary: TileSummary::default(),
+            new_summary: None,
             shaded: 0,
             quick: 0,
             pixel: 0,
@@ -178,10 +182,12 @@ impl TileRays {
         // Written from the first pixel whose colour changed on.
         let mut new: Option<Vec<PixelColour>> = None;
         let mut shaded = 0;
+        let mut depends_all = TermDependence::NONE;
         for (pixel, kept) in old.iter().enumerate() {
             let chain = chains.chain(pixel);
             let objects = chains.objects(chain.clone());
             if keep.is_some_and(|keep| keep.keeps(objects, kept.depends)) {
+                depends_all = depends_all.union(kept.depends);
                 colours.push(kept.colour);
                 rays.add(&kept.counts());
                 if let Some(new) = &mut new {
@@ -196,6 +202,7 @@ impl TileRays {
                 &mut own,
             )?;
             shaded += 1;
+            depends_all = depends_all.union(depends);
             colours.push(colour);
             rays.add(&own);
             new.get_or_insert_with(|| {
@@ -207,6 +214,8 @@ impl TileRays {
             .push(PixelColour::of(colour, &own, depends));
         }
         self.colours = new;
+        // The chains are those read: so are the objects they met.
+        self.new_summary = Some(self.old_summary.reshaded(depends_all, rays));
         self.pixel = old.len();
         self.shaded += shaded;
         self.quick += shaded;
@@ -285,10 +294,10 @@ impl TileRays {
             Some((chains, slots)) => (Arc::new(chains), Arc::new(slots)),
             None => (self.chains, self.slots),
         };
-        let summary = if unchanged {
-            self.old_summary
-        } else {
-            TileSummary::of(&chains, &colours)
+        let summary = match self.new_summary {
+            _ if unchanged => self.old_summary,
+            Some(summary) => summary,
+            None => TileSummary::of(&chains, &colours),
         };
         TileHits {
             chains,
