@@ -35,6 +35,7 @@ pub mod shapes;
 pub mod spawn;
 pub mod terms;
 pub mod tile_cull;
+mod tile_placement;
 mod tile_rays;
 pub mod tiles;
 pub mod world;

@@ -12,6 +12,7 @@ use rayon::prelude::*;
 
 use super::render::{RenderProgress, SampleSums};
 use super::shade::RayCounts;
+use super::tile_placement::place_tiles;
 
 /// Side of a square tile in pixels: small enough to balance two cores, big enough that
 /// per-tile overhead is noise.
@@ -160,33 +161,6 @@ where
     Some((rays, states))
 }
 
-/// Puts each tile's sums in its place in `sums`, in parallel, row by row of the image;
-/// `unsummed` sums are made first.
-fn place_tiles(sums: &mut SampleSums, tiles: &[(TileRect, Vec<DVec3>)], unsummed: bool) {
-    let width = sums.width as usize;
-    if width == 0 {
-        return;
-    }
-    let tiles_x = sums.width.div_ceil(TILE_SIZE) as usize;
-    let band = |y: usize| &tiles[y / TILE_SIZE as usize * tiles_x..][..tiles_x];
-    let fill_row = |y: usize, row: &mut [DVec3]| {
-        for (rect, tile_sums) in band(y) {
-            let (x0, w) = (rect.x0 as usize, rect.w as usize);
-            let start = (y - rect.y0 as usize) * w;
-            row[x0..x0 + w].copy_from_slice(&tile_sums[start..start + w]);
-        }
-    };
-    if unsummed {
-        // Cleared in parallel: one thread took a millisecond on a full frame.
-        let zeros = rayon::iter::repeat_n(DVec3::ZERO, width * sums.height as usize);
-        sums.sums = zeros.collect();
-    }
-    sums.sums
-        .par_chunks_mut(width)
-        .enumerate()
-        .for_each(|(y, row)| fill_row(y, row));
-}
-
 /// The guard: adds `colour` to `sum` if it is finite; NaN or infinity never reaches a
 /// pixel, and the caller counts it instead (`false`).
 #[inline]
@@ -265,17 +239,22 @@ where
     let mut finite = vec![true; pixels.len()];
     let mut rays = RayCounts::default();
     let mut non_finite = 0;
+    let w = rect.w as usize;
     for index in samples {
-        for (i, ((&(px, py), sum), finite)) in
-            pixels.iter().zip(&mut sums).zip(&mut finite).enumerate()
-        {
+        let rows = pixels
+            .chunks(w)
+            .zip(sums.chunks_mut(w))
+            .zip(finite.chunks_mut(w));
+        for ((row, row_sums), row_finite) in rows {
             // Row by row: an edit need not wait for a tile of many-sample pixels.
-            if i % rect.w as usize == 0 && progress.is_cancelled() {
+            if progress.is_cancelled() {
                 return None;
             }
-            if !add_sample(sum, (work.sample)(&mut state, px, py, index, &mut rays)) {
-                non_finite += 1;
-                *finite = false;
+            for ((&(px, py), sum), finite) in row.iter().zip(row_sums).zip(row_finite) {
+                if !add_sample(sum, (work.sample)(&mut state, px, py, index, &mut rays)) {
+                    non_finite += 1;
+                    *finite = false;
+                }
             }
         }
         progress.batches_done.fetch_add(1, Ordering::Relaxed);
