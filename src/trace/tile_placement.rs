@@ -4,7 +4,7 @@
 use glam::DVec3;
 use rayon::prelude::*;
 
-use super::render::SampleSums;
+use super::render::{SampleSums, cleared};
 use super::tiles::{TILE_SIZE, TileRect};
 
 /// Puts each tile's sums in its place in `sums`, in parallel, row by row of the image;
@@ -24,10 +24,8 @@ pub(super) fn place_tiles(sums: &mut SampleSums, tiles: &[(TileRect, Vec<DVec3>)
         }
     };
     if unsummed {
-        // Cleared first (the crate has no unsafe code to fill them uninitialised), in
-        // parallel: one thread took a millisecond on a full frame.
-        let zeros = rayon::iter::repeat_n(DVec3::ZERO, width * sums.height as usize);
-        sums.sums = zeros.collect();
+        // Cleared first: the crate has no unsafe code to fill them uninitialised.
+        sums.sums = cleared(width * sums.height as usize);
     }
     sums.sums
         .par_chunks_mut(width)
