@@ -99,7 +99,7 @@ impl TileRays {
     /// A tile with nothing cached, for a world with `lights` lights.
     pub fn fresh(pixels: usize, lights: usize) -> Self {
         // Room for one mirror bounce in every pixel: growing a tile's chains as they
-        // come reallocated and copied them (7% of a full frame's instructions).
+        // come reallocated and copied them (3% of a full frame's instructions).
         let entries = 2 * pixels;
         Self {
             chains: Arc::new(Chains::empty(pixels)),
