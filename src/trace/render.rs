@@ -127,7 +127,7 @@ impl SampleSums {
     }
 
     /// Sums of no samples yet, to be made by the first render into them: no pixel held
-    /// until then (so none is cleared only to be overwritten).
+    /// while that render runs, and none read before its tiles are placed.
     #[must_use]
     pub(super) fn unsummed(width: u32, height: u32) -> Self {
         Self {

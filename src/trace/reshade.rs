@@ -161,7 +161,7 @@ pub fn render_one_sample_cached(
         shaded_pixels += state.shaded;
         quick_pixels += state.quick;
     }
-    // In parallel: finishing a tile that changed sums it up again.
+    // In parallel: finishing a tile whose pixels went one by one sums it up again.
     let tiles = states.into_par_iter().map(TileRays::finish).collect();
     Some(CachedPass {
         sums,

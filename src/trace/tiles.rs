@@ -119,7 +119,7 @@ where
     progress.batches_done.store(0, Ordering::Relaxed);
 
     // Sums with nothing summed yet ([`SampleSums::unsummed`]) are made from the tiles
-    // alone: nothing to read before, nothing to clear.
+    // alone: nothing to read before.
     let unsummed = sums.sums.is_empty();
     let before = (!unsummed).then_some(&*sums);
     // Into an `Option`: after a cancel, tiles not yet started are not even set up.
