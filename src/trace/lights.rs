@@ -85,6 +85,7 @@ impl WorldLight {
     /// (outside a spot cone, exactly at the light, or a light of zero strength, such as
     /// an imported legacy spot light without an angle): no shadow ray is cast for it.
     #[must_use]
+    #[inline]
     pub fn sample(&self, p: DVec3) -> Option<LightSample> {
         if self.strength() == DVec3::ZERO {
             return None;

@@ -330,6 +330,7 @@ impl World {
     }
 
     /// World-space details of an object-space hit.
+    #[inline(always)]
     fn surface_point(&self, index: usize, ray: &Ray, hit: &ShapeHit) -> SurfacePoint {
         let object = &self.objects[index];
         let m = &object.world_from_object;
