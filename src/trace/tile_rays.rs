@@ -40,6 +40,9 @@ pub(super) struct TileRays {
     /// read.
     pixel: usize,
     read_chain: std::ops::Range<usize>,
+    /// Where the pixel's chain starts, read or rebuilt (rebuilding keeps the entries
+    /// before it where they were, so this holds for the whole pixel).
+    entry_start: usize,
     lights: usize,
     pub traced: RayCounts,
 }
@@ -91,6 +94,7 @@ impl TileRays {
             quick: 0,
             pixel: 0,
             read_chain: 0..0,
+            entry_start: 0,
             lights: columns.shadows.len(),
             traced: RayCounts::default(),
         }
@@ -116,6 +120,7 @@ impl TileRays {
             quick: 0,
             pixel: 0,
             read_chain: 0..0,
+            entry_start: 0,
             lights,
             traced: RayCounts::default(),
         }
@@ -124,12 +129,21 @@ impl TileRays {
     /// Starts the next pixel: once rebuilding, copies its cached chain across.
     pub fn begin_pixel(&mut self) {
         self.read_chain = self.chains.chain(self.pixel);
-        if let Some((chains, slots)) = &mut self.grown {
+        self.entry_start = self.chain().start;
+        // Nothing to copy for an empty chain (each of a fresh tile's).
+        if let Some((chains, slots)) = self.grown.as_mut().filter(|_| !self.read_chain.is_empty()) {
             let chain = self.read_chain.clone();
             let lights = self.lights;
             slots.extend_from_slice(&self.slots[chain.start * lights..chain.end * lights]);
             chains.extend_from(&self.chains, chain);
         }
+    }
+
+    /// The light slot of light `light` at the current pixel's entry at `depth`.
+    #[inline]
+    fn slot_index(&self, depth: u32, light: usize) -> usize {
+        debug_assert_eq!(self.entry_start, self.chain().start);
+        (self.entry_start + depth as usize) * self.lights + light
     }
 
     /// The current pixel's cached colour, if `keep` keeps it (and so its rays and colour
@@ -348,7 +362,7 @@ impl RaySource for PixelRays<'_, '_, '_> {
         let hit = self.live.closest_hit(world, depth as u32, ray);
         let (chains, slots) = self.tile.grow();
         chains.push(CachedHit::new(hit.as_ref()));
-        slots.extend(std::iter::repeat_n(LightSlot::NOTHING, lights));
+        slots.resize(slots.len() + lights, LightSlot::NOTHING);
         hit
     }
 
@@ -359,7 +373,7 @@ impl RaySource for PixelRays<'_, '_, '_> {
         light: usize,
         query: impl FnOnce() -> ShadowQuery,
     ) -> Option<usize> {
-        let slot = (self.tile.chain().start + depth as usize) * self.tile.lights + light;
+        let slot = self.tile.slot_index(depth, light);
         let code = self.tile.slot(slot).shadow;
         if code != NOT_CAST {
             return decode_blocker(code);
@@ -373,12 +387,12 @@ impl RaySource for PixelRays<'_, '_, '_> {
     /// Factors kept are valid: those of a stale lobe or a light placed anew were
     /// forgotten.
     fn wants_light_factors(&self, depth: u32, light: usize) -> bool {
-        let slot = (self.tile.chain().start + depth as usize) * self.tile.lights + light;
+        let slot = self.tile.slot_index(depth, light);
         self.tile.slot(slot).factors.is_unknown()
     }
 
     fn light_factors(&mut self, depth: u32, light: usize, factors: LitFactors) {
-        let slot = (self.tile.chain().start + depth as usize) * self.tile.lights + light;
+        let slot = self.tile.slot_index(depth, light);
         self.tile.slot_mut(slot).factors = factors;
     }
 }
