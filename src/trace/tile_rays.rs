@@ -280,6 +280,7 @@ impl TileRays {
     }
 
     /// The light slot `index` (entry * lights + light) to write.
+    #[inline(always)]
     fn slot_mut(&mut self, index: usize) -> &mut LightSlot {
         match &mut self.grown {
             Some((_, slots)) => &mut slots[index],
@@ -289,6 +290,7 @@ impl TileRays {
     }
 
     /// The light slot `index` to read.
+    #[inline(always)]
     fn slot(&self, index: usize) -> LightSlot {
         match &self.grown {
             Some((_, slots)) => slots[index],
