@@ -102,7 +102,14 @@ pub fn render_one_sample_cached(
             };
             TileRays::reading(&cache.tiles[index as usize], &columns)
         }
-        None => TileRays::fresh(rect.pixel_count(), lights),
+        None => {
+            // Room for what the tile held before, as a geometry or camera edit changes
+            // it little, and a few bounces more; else one bounce a pixel.
+            let pixels = rect.pixel_count();
+            let before = previous.and_then(|cache| cache.tiles.get(index as usize));
+            let entries = before.map_or(2 * pixels, |tile| tile.chains.len() + pixels / 8);
+            TileRays::fresh(pixels, lights, entries)
+        }
     };
     let sample = |tile: &mut TileRays, px: u32, py: u32, _index: u32, rays: &mut RayCounts| {
         tile.begin_pixel();

@@ -100,11 +100,9 @@ impl TileRays {
         }
     }
 
-    /// A tile with nothing cached, for a world with `lights` lights.
-    pub fn fresh(pixels: usize, lights: usize) -> Self {
-        // Room for one mirror bounce in every pixel: growing a tile's chains as they
-        // come reallocated and copied them (3% of a full frame's instructions).
-        let entries = 2 * pixels;
+    /// A tile with nothing cached, for a world with `lights` lights, with room for
+    /// `entries` entries: growing a tile's chains reallocates and copies them.
+    pub fn fresh(pixels: usize, lights: usize, entries: usize) -> Self {
         Self {
             chains: Arc::new(Chains::empty(pixels)),
             slots: Arc::new(Vec::new()),
