@@ -217,7 +217,7 @@ impl World {
     pub fn intersect_among(&self, ray: &Ray, t_max: f64, among: ObjectSet) -> Option<SurfacePoint> {
         let inv_dir = ray.dir.recip();
         let closest = match &self.bvh {
-            Some(bvh) => {
+            Some(bvh) if self.walks_bvh(among) => {
                 let mut closest: Option<(usize, ShapeHit)> = None;
                 bvh.traverse(ray, inv_dir, t_max, |index, t_limit| {
                     if !among.contains(index) {
@@ -231,9 +231,18 @@ impl World {
                 });
                 closest
             }
-            None => self.closest_in_list(ray, inv_dir, t_max, among),
+            _ => self.closest_in_list(ray, inv_dir, t_max, among),
         };
         closest.map(|(index, hit)| self.surface_point(index, ray, &hit))
+    }
+
+    /// Whether a query limited to `among` walks the BVH (when there is one). A culled set
+    /// names every candidate when the world has no more objects than culling covers, and
+    /// testing those few in a list beats walking the tree (a tile's camera rays and their
+    /// shadow rays, most of a frame's rays).
+    #[inline]
+    fn walks_bvh(&self, among: ObjectSet) -> bool {
+        among == ObjectSet::ALL || self.objects.len() > ObjectSet::CULLED_BELOW
     }
 
     /// The flat list's closest hit: the objects of `among` in scene order, each later one
@@ -298,7 +307,7 @@ impl World {
                 && self.objects[index].blocks(ray, inv_dir, t_max)
         };
         match &self.bvh {
-            Some(bvh) => {
+            Some(bvh) if self.walks_bvh(among) => {
                 let mut found = None;
                 bvh.traverse(ray, inv_dir, t_max, |index, _| {
                     if blocks(index) {
@@ -310,7 +319,7 @@ impl World {
                 });
                 found
             }
-            None => self.first_blocker_in_list(ray, inv_dir, t_max, except, among),
+            _ => self.first_blocker_in_list(ray, inv_dir, t_max, except, among),
         }
     }
 

@@ -64,6 +64,7 @@ pub fn object_bounds(shape: Shape) -> Aabb {
 
 /// The closest hit of an object-space ray with `t` in (0, t_max).
 #[must_use]
+#[inline]
 pub fn intersect(shape: Shape, ray: &Ray, t_max: f64) -> Option<ShapeHit> {
     match shape {
         Shape::Sphere => sphere::intersect(ray, t_max),
@@ -76,6 +77,7 @@ pub fn intersect(shape: Shape, ray: &Ray, t_max: f64) -> Option<ShapeHit> {
 
 /// Whether an object-space ray hits the shape with `t` in (0, t_max).
 #[must_use]
+#[inline]
 pub fn occluded(shape: Shape, ray: &Ray, t_max: f64) -> bool {
     match shape {
         Shape::Sphere => sphere::occluded(ray, t_max),
