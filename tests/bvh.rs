@@ -44,10 +44,38 @@ proptest! {
         let origin = DVec3::new(origin.0, origin.1, origin.2);
         let ray = Ray::new(origin, (DVec3::new(target.0, target.1, target.2) - origin).normalize_or(DVec3::Y));
         let (a, b) = (flat.intersect(&ray, f64::INFINITY), bvh.intersect(&ray, f64::INFINITY));
-        prop_assert_eq!(a.map(|h| h.t), b.map(|h| h.t));
+        prop_assert_eq!(a.map(|h| (h.object, h.t)), b.map(|h| (h.object, h.t)));
         prop_assert_eq!(a.map(|h| h.p), b.map(|h| h.p));
-        let limit = a.map_or(50.0, |h| h.t * 0.999);
-        prop_assert_eq!(flat.occluder(&ray, limit).is_some(), bvh.occluder(&ray, limit).is_some());
+        // The same blocker: the first in scene order, not the first the tree meets.
+        for limit in [a.map_or(50.0, |h| h.t * 0.999), 50.0] {
+            prop_assert_eq!(flat.occluder(&ray, limit), bvh.occluder(&ray, limit));
+        }
+    }
+}
+
+/// The crowd's cubes stand on the floor, so rays meet some faces at exactly the floor's
+/// `t`: the tree must give such ties to the earlier object, as the list does.
+#[test]
+fn ties_and_blockers_follow_scene_order() {
+    let scene = raylab::bench::crossover::crowd(32);
+    let mut flat = World::new(&scene).unwrap();
+    flat.set_acceleration(Acceleration::Flat);
+    let mut bvh = World::new(&scene).unwrap();
+    bvh.set_acceleration(Acceleration::Bvh);
+    let mut state = 12345u64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut point = || DVec3::new(next() * 10.0 - 5.0, next() * 2.0, next() * 10.0 - 5.0);
+    for _ in 0..20_000 {
+        let origin = point();
+        let ray = Ray::new(origin, (point() - origin).normalize_or(DVec3::Y));
+        let (a, b) = (flat.intersect(&ray, 20.0), bvh.intersect(&ray, 20.0));
+        assert_eq!(a.map(|h| (h.object, h.t)), b.map(|h| (h.object, h.t)));
+        assert_eq!(flat.occluder(&ray, 20.0), bvh.occluder(&ray, 20.0));
     }
 }
 

@@ -10,13 +10,16 @@ use super::ray::Ray;
 /// Objects per leaf at most.
 const LEAF_SIZE: usize = 4;
 
-/// One node: a leaf holds `count > 0` objects from `first` in [`Bvh::order`]; an inner
-/// node (`count == 0`) has its children at `first` and `first + 1`.
+/// One node: a leaf holds `count > 0` objects from `first` in [`Bvh::order`], in scene
+/// order; an inner node (`count == 0`) has its children at `first` and `first + 1`.
 #[derive(Clone, Copy, Debug)]
 struct Node {
     bounds: Aabb,
     first: u32,
     count: u32,
+    /// The smallest object index below the node, to skip subtrees that cannot hold an
+    /// earlier blocker than the one found.
+    min_object: u32,
 }
 
 /// The hierarchy: nodes in one array, children of a node next to each other.
@@ -43,12 +46,14 @@ impl Bvh {
             bounds: union(boxes, &bvh.order),
             first: 0,
             count: boxes.len() as u32,
+            min_object: 0,
         });
         let mut pending = vec![0usize];
         while let Some(index) = pending.pop() {
             let node = bvh.nodes[index];
             let (start, count) = (node.first as usize, node.count as usize);
             if count <= LEAF_SIZE {
+                bvh.order[start..start + count].sort_unstable();
                 continue;
             }
             let slice = &mut bvh.order[start..start + count];
@@ -69,6 +74,7 @@ impl Bvh {
                     bounds: union(boxes, ids),
                     first: first as u32,
                     count: len as u32,
+                    min_object: ids.iter().copied().min().unwrap_or(0),
                 });
             }
             bvh.nodes[index].first = left as u32;
@@ -110,17 +116,64 @@ impl Bvh {
                 }
             } else if depth + 2 <= stack.len() {
                 // Push the far child first so the near one is tested first.
-                let (a, b) = (node.first, node.first + 1);
-                let axis_dir = ray.dir[longest_axis(
-                    &self.nodes[a as usize].bounds,
-                    &self.nodes[b as usize].bounds,
-                )];
-                let (near, far) = if axis_dir >= 0.0 { (a, b) } else { (b, a) };
+                let (near, far) = self.children_near_first(node.first, ray);
                 stack[depth] = far;
                 stack[depth + 1] = near;
                 depth += 2;
             }
         }
+    }
+}
+
+impl Bvh {
+    /// The first object in scene order (smallest index) that `blocks` the ray, among those
+    /// whose boxes it meets before `t_max`: the flat list's answer. A blocker found
+    /// lets the walk skip every subtree and leaf entry from its index on.
+    pub fn first_blocker(
+        &self,
+        ray: &Ray,
+        inv_dir: DVec3,
+        t_max: f64,
+        mut blocks: impl FnMut(usize) -> bool,
+    ) -> Option<usize> {
+        let mut found = u32::MAX;
+        let mut stack = [0u32; 64];
+        let mut depth = usize::from(!self.nodes.is_empty());
+        while depth > 0 {
+            depth -= 1;
+            let node = self.nodes[stack[depth] as usize];
+            if node.min_object >= found || !node.bounds.hit_by(ray, inv_dir, t_max) {
+                continue;
+            }
+            if node.count > 0 {
+                let leaf = &self.order[node.first as usize..(node.first + node.count) as usize];
+                // Leaves are in scene order: the first blocker is the leaf's earliest.
+                if let Some(&object) = leaf
+                    .iter()
+                    .take_while(|&&object| object < found)
+                    .find(|&&object| blocks(object as usize))
+                {
+                    found = object;
+                }
+            } else if depth + 2 <= stack.len() {
+                let (near, far) = self.children_near_first(node.first, ray);
+                stack[depth] = far;
+                stack[depth + 1] = near;
+                depth += 2;
+            }
+        }
+        (found != u32::MAX).then_some(found as usize)
+    }
+
+    /// An inner node's children, the one the ray enters first along their split first.
+    #[inline]
+    fn children_near_first(&self, first: u32, ray: &Ray) -> (u32, u32) {
+        let (a, b) = (first, first + 1);
+        let axis_dir = ray.dir[longest_axis(
+            &self.nodes[a as usize].bounds,
+            &self.nodes[b as usize].bounds,
+        )];
+        if axis_dir >= 0.0 { (a, b) } else { (b, a) }
     }
 }
 

@@ -223,7 +223,13 @@ impl World {
                     if !among.contains(index) {
                         return Ok(None);
                     }
-                    let hit = self.objects[index].hit(ray, inv_dir, t_limit);
+                    // A tie goes to the earlier object, as in the list: one before the
+                    // closest so far may also hit at exactly its `t`.
+                    let limit = match closest {
+                        Some((best, _)) if index < best => t_limit.next_up(),
+                        _ => t_limit,
+                    };
+                    let hit = self.objects[index].hit(ray, inv_dir, limit);
                     if let Some(hit) = hit {
                         closest = Some((index, hit));
                     }
@@ -307,18 +313,7 @@ impl World {
                 && self.objects[index].blocks(ray, inv_dir, t_max)
         };
         match &self.bvh {
-            Some(bvh) if self.walks_bvh(among) => {
-                let mut found = None;
-                bvh.traverse(ray, inv_dir, t_max, |index, _| {
-                    if blocks(index) {
-                        found = Some(index);
-                        Err(())
-                    } else {
-                        Ok(None)
-                    }
-                });
-                found
-            }
+            Some(bvh) if self.walks_bvh(among) => bvh.first_blocker(ray, inv_dir, t_max, blocks),
             _ => self.first_blocker_in_list(ray, inv_dir, t_max, except, among),
         }
     }
