@@ -20,6 +20,8 @@ struct Node {
     /// The smallest object index below the node, to skip subtrees that cannot hold an
     /// earlier blocker than the one found.
     min_object: u32,
+    /// An inner node's split axis: its first child holds the lower box centres.
+    axis: u32,
 }
 
 /// The hierarchy: nodes in one array, children of a node next to each other.
@@ -47,6 +49,7 @@ impl Bvh {
             first: 0,
             count: boxes.len() as u32,
             min_object: 0,
+            axis: 0,
         });
         let mut pending = vec![0usize];
         while let Some(index) = pending.pop() {
@@ -75,10 +78,12 @@ impl Bvh {
                     first: first as u32,
                     count: len as u32,
                     min_object: ids.iter().copied().min().unwrap_or(0),
+                    axis: 0,
                 });
             }
             bvh.nodes[index].first = left as u32;
             bvh.nodes[index].count = 0;
+            bvh.nodes[index].axis = axis as u32;
             pending.extend([left, left + 1]);
         }
         bvh
@@ -116,7 +121,7 @@ impl Bvh {
                 }
             } else if depth + 2 <= stack.len() {
                 // Push the far child first so the near one is tested first.
-                let (near, far) = self.children_near_first(node.first, ray);
+                let (near, far) = Self::children_near_first(&node, ray);
                 stack[depth] = far;
                 stack[depth + 1] = near;
                 depth += 2;
@@ -156,7 +161,7 @@ impl Bvh {
                     found = object;
                 }
             } else if depth + 2 <= stack.len() {
-                let (near, far) = self.children_near_first(node.first, ray);
+                let (near, far) = Self::children_near_first(&node, ray);
                 stack[depth] = far;
                 stack[depth + 1] = near;
                 depth += 2;
@@ -165,21 +170,17 @@ impl Bvh {
         (found != u32::MAX).then_some(found as usize)
     }
 
-    /// An inner node's children, the one the ray enters first along their split first.
+    /// An inner node's children, the one on the side the ray comes from along the split
+    /// axis first.
     #[inline]
-    fn children_near_first(&self, first: u32, ray: &Ray) -> (u32, u32) {
-        let (a, b) = (first, first + 1);
-        let axis_dir = ray.dir[longest_axis(
-            &self.nodes[a as usize].bounds,
-            &self.nodes[b as usize].bounds,
-        )];
-        if axis_dir >= 0.0 { (a, b) } else { (b, a) }
+    fn children_near_first(node: &Node, ray: &Ray) -> (u32, u32) {
+        let (a, b) = (node.first, node.first + 1);
+        if ray.dir[node.axis as usize] >= 0.0 {
+            (a, b)
+        } else {
+            (b, a)
+        }
     }
-}
-
-/// The axis along which two sibling boxes' centres are farthest apart.
-fn longest_axis(a: &Aabb, b: &Aabb) -> usize {
-    (((b.min + b.max) - (a.min + a.max)).abs()).max_position()
 }
 
 fn union(boxes: &[Aabb], ids: &[u32]) -> Aabb {
