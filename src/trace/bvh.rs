@@ -1,6 +1,11 @@
 //! A bounding volume hierarchy over the objects' world boxes, for scenes with many
-//! objects. Small scenes are faster with the flat list (see docs/BENCHMARKS.md for the
-//! measured crossover), so the world only builds one above that size.
+//! objects: median split on box centres, up to 4 objects a leaf, the near child first by
+//! the ray's sign along the split axis. It gives the flat list's answers bit for bit: a
+//! tie in `t` goes to the earlier object, and an occlusion query returns the first
+//! blocker in scene order (leaves are in scene order and nodes know their smallest
+//! object index, so a found blocker prunes the rest). Small scenes are faster with the
+//! flat list, and a tile's culled queries with the list of their few candidates (see
+//! [`super::world::BVH_MIN_OBJECTS`] and docs/BENCHMARKS.md).
 
 use glam::DVec3;
 
