@@ -79,10 +79,18 @@ fn ties_and_blockers_follow_scene_order() {
     }
 }
 
+/// 60 objects: culling covers them all; 80: tile queries list the first 64 and walk a
+/// tree over the rest.
 #[test]
 fn large_scenes_build_a_bvh_and_render_the_same_picture() {
+    for count in [60, 80] {
+        same_picture_with_and_without_bvh(count);
+    }
+}
+
+fn same_picture_with_and_without_bvh(count: usize) {
     use raylab::trace::{RenderOptions, RenderProgress, render};
-    let mut scene = crowded_scene(3, 60);
+    let mut scene = crowded_scene(3, count);
     scene
         .lights
         .push(point_light(DVec3::new(0.0, 10.0, 5.0), 100.0));

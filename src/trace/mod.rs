@@ -39,6 +39,7 @@ mod tile_placement;
 mod tile_rays;
 pub mod tiles;
 pub mod world;
+mod world_trees;
 
 pub use adaptive::{AdaptiveOptions, AdaptiveRender, render_adaptive};
 pub use camera::PinholeCamera;

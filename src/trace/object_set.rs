@@ -1,6 +1,6 @@
 //! A set of a world's objects by index, as a bit mask: what a culling step hands the
 //! ray queries so they test fewer objects. Objects from index 64 on are always in the
-//! set (culling covers the first 64; a world that large walks its BVH anyway).
+//! set (culling covers the first 64; a world that large walks a BVH over the rest).
 
 /// A set of object indices into [`super::World::objects`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -49,7 +49,7 @@ impl WorldObject {
 
     /// The closest hit of a world ray with `t` in (0, t_max), in object space.
     #[inline(always)]
-    fn hit(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> Option<ShapeHit> {
+    pub(super) fn hit(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> Option<ShapeHit> {
         if !self.may_be_hit(ray, inv_dir, t_max) {
             return None;
         }
@@ -58,7 +58,7 @@ impl WorldObject {
 
     /// Whether a world ray meets the object with `t` in (0, t_max).
     #[inline(always)]
-    fn blocks(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> bool {
+    pub(super) fn blocks(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> bool {
         self.may_be_hit(ray, inv_dir, t_max)
             && shapes::occluded(self.shape, &ray.transformed(&self.object_from_world), t_max)
     }
@@ -111,7 +111,10 @@ pub struct World {
     /// The lights and objects left out when compiling ([`World::isolated`]).
     pub isolation: Isolation,
     /// The hierarchy over the objects, for scenes large enough to need one.
-    bvh: Option<Bvh>,
+    pub(super) bvh: Option<Bvh>,
+    /// With more objects than culling covers, a hierarchy over the uncovered ones (from
+    /// [`ObjectSet::CULLED_BELOW`] on) for culled queries.
+    pub(super) tail_bvh: Option<Bvh>,
 }
 
 /// How rays find the objects they may hit.
@@ -189,6 +192,7 @@ impl World {
             view_distance: (scene.camera.look_at - scene.camera.position).length(),
             isolation: Isolation::NONE,
             bvh: None,
+            tail_bvh: None,
         };
         if world.objects.len() >= BVH_MIN_OBJECTS {
             world.set_acceleration(Acceleration::Bvh);
@@ -198,12 +202,13 @@ impl World {
 
     /// Chooses how rays find objects (the default follows [`BVH_MIN_OBJECTS`]).
     pub fn set_acceleration(&mut self, acceleration: Acceleration) {
-        self.bvh = match acceleration {
-            Acceleration::Flat => None,
-            Acceleration::Bvh => Some(Bvh::build(
-                &self.objects.iter().map(|o| o.bounds).collect::<Vec<_>>(),
-            )),
+        let boxes: Vec<Aabb> = self.objects.iter().map(|o| o.bounds).collect();
+        let tree = |from: usize| {
+            (acceleration == Acceleration::Bvh && from < boxes.len())
+                .then(|| Bvh::build(&boxes[from..]))
         };
+        self.bvh = tree(0);
+        self.tail_bvh = tree(ObjectSet::CULLED_BELOW);
     }
 
     /// The closest hit along a world ray with `t` in (0, t_max).
@@ -218,54 +223,35 @@ impl World {
     #[must_use]
     pub fn intersect_among(&self, ray: &Ray, t_max: f64, among: ObjectSet) -> Option<SurfacePoint> {
         let inv_dir = ray.dir.recip();
+        // A culled set names every candidate among the objects culling covers, and
+        // testing those few in the list beats walking the tree.
         let closest = match &self.bvh {
-            Some(bvh) if self.walks_bvh(among) => {
-                let mut closest: Option<(usize, ShapeHit)> = None;
-                bvh.traverse(ray, inv_dir, t_max, |index, t_limit| {
-                    if !among.contains(index) {
-                        return Ok(None);
-                    }
-                    // A tie goes to the earlier object, as in the list: one before the
-                    // closest so far may also hit at exactly its `t`.
-                    let limit = match closest {
-                        Some((best, _)) if index < best => t_limit.next_up(),
-                        _ => t_limit,
-                    };
-                    let hit = self.objects[index].hit(ray, inv_dir, limit);
-                    if let Some(hit) = hit {
-                        closest = Some((index, hit));
-                    }
-                    Ok(hit.map(|hit| hit.t))
-                });
-                closest
+            Some(bvh) if among == ObjectSet::ALL => {
+                self.closest_in_tree::<0>(bvh, ray, inv_dir, t_max, among, None)
             }
-            _ => self.closest_in_list(ray, inv_dir, t_max, among),
+            Some(_) if self.tail_bvh.is_some() => {
+                self.closest_listed_then_tail(ray, inv_dir, t_max, among)
+            }
+            _ => self.closest_in_list(ray, inv_dir, t_max, among, self.objects.len()),
         };
         closest.map(|(index, hit)| self.surface_point(index, ray, &hit))
     }
 
-    /// Whether a query limited to `among` walks the BVH (when there is one). A culled set
-    /// names every candidate when the world has no more objects than culling covers, and
-    /// testing those few in a list beats walking the tree (a tile's camera rays and their
-    /// shadow rays, most of a frame's rays).
-    #[inline]
-    fn walks_bvh(&self, among: ObjectSet) -> bool {
-        among == ObjectSet::ALL || self.objects.len() > ObjectSet::CULLED_BELOW
-    }
-
     /// The flat list's closest hit: the objects of `among` in scene order, each later one
-    /// tested only up to the nearest hit so far (so a tie keeps the earlier object).
-    #[inline]
-    fn closest_in_list(
+    /// below `count`, tested only up to the nearest hit so far (so a tie keeps the earlier
+    /// object).
+    #[inline(always)]
+    pub(super) fn closest_in_list(
         &self,
         ray: &Ray,
         inv_dir: DVec3,
         t_max: f64,
         among: ObjectSet,
+        count: usize,
     ) -> Option<(usize, ShapeHit)> {
         let mut closest = None;
         let mut t_limit = t_max;
-        for index in among.members_below(self.objects.len()) {
+        for index in among.members_below(count) {
             if let Some(hit) = self.objects[index].hit(ray, inv_dir, t_limit) {
                 t_limit = hit.t;
                 closest = Some((index, hit));
@@ -309,30 +295,38 @@ impl World {
         among: ObjectSet,
     ) -> Option<usize> {
         let inv_dir = ray.dir.recip();
-        let blocks = |index: usize| {
-            Some(index) != except
-                && among.contains(index)
-                && self.objects[index].blocks(ray, inv_dir, t_max)
-        };
+        // As for the closest hit: a culled query tests its candidates in the list.
         match &self.bvh {
-            Some(bvh) if self.walks_bvh(among) => bvh.first_blocker(ray, inv_dir, t_max, blocks),
-            _ => self.first_blocker_in_list(ray, inv_dir, t_max, except, among),
+            Some(bvh) if among == ObjectSet::ALL => bvh.first_blocker(ray, inv_dir, t_max, |i| {
+                Some(i) != except && self.objects[i].blocks(ray, inv_dir, t_max)
+            }),
+            Some(_) if self.tail_bvh.is_some() => {
+                self.blocker_listed_then_tail(ray, inv_dir, t_max, except, among)
+            }
+            _ => self.first_blocker_in_list(ray, inv_dir, t_max, except, among, self.objects.len()),
         }
     }
 
-    /// The flat list's first object of `among`, in scene order, that blocks the ray.
-    #[inline]
-    fn first_blocker_in_list(
+    /// The flat list's first object of `among` below `count`, in scene order, that blocks
+    /// the ray.
+    #[inline(always)]
+    pub(super) fn first_blocker_in_list(
         &self,
         ray: &Ray,
         inv_dir: DVec3,
         t_max: f64,
         except: Option<usize>,
         among: ObjectSet,
+        count: usize,
     ) -> Option<usize> {
-        among
-            .members_below(self.objects.len())
-            .find(|&index| Some(index) != except && self.objects[index].blocks(ray, inv_dir, t_max))
+        // A loop, not `find`: its closure's fold stayed out of line with two callers.
+        #[allow(clippy::manual_find)]
+        for index in among.members_below(count) {
+            if Some(index) != except && self.objects[index].blocks(ray, inv_dir, t_max) {
+                return Some(index);
+            }
+        }
+        None
     }
 
     /// World-space details of an object-space hit.
