@@ -127,9 +127,10 @@ pub enum Acceleration {
 }
 
 /// From this many objects on, the world builds a BVH. It serves the queries culling does
-/// not narrow (mirror rays and their shadow rays, and every query of a world over 64
-/// objects): in a crowd of mirrors the tree is even with the flat list at 12 objects by
-/// instruction count and 3% slower by the clock, ahead from 16 (see docs/BENCHMARKS.md).
+/// not narrow (mirror rays and their shadow rays, and in a world over 64 objects the ones
+/// culling does not cover): in a crowd of mirrors the tree is even with the flat list at
+/// 12 objects (0.99 of its instructions, 1.01 of its time), ahead from 16 (0.96, 0.97;
+/// see docs/BENCHMARKS.md).
 pub const BVH_MIN_OBJECTS: usize = 16;
 
 impl World {
