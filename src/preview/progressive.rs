@@ -9,7 +9,8 @@
 //! the pass is shown), and a later plan whose world the cache can serve (an edit that
 //! moved no object and not the camera) skips the coarse passes: its one-sample pass
 //! re-shades the cached hits, tracing only the rays the cache lacks, and is the first
-//! frame published.
+//! frame published. A light moved keeps the coarsest pass before it, since casting its
+//! shadow rays again takes about a traced frame's time.
 
 use std::sync::Arc;
 use std::time::Instant;
@@ -17,7 +18,7 @@ use std::time::Instant;
 use super::convergence::{ConvergenceCurve, estimated_rmse};
 use super::frame::Frame;
 use super::plan::{Pass, plan_passes};
-use crate::trace::{HitCache, cache_fits, render_one_sample_cached};
+use crate::trace::{HitCache, Reuse, cache_fits, render_one_sample_cached};
 use crate::trace::{Image, RayCounts, RenderOptions, RenderProgress, SampleSums, World};
 use crate::trace::{render_samples, render_samples_into};
 
@@ -58,14 +59,24 @@ fn run_plan(
     publish: &mut dyn FnMut(Frame),
 ) {
     let cacheable = cache_fits(world, target.width, target.height);
-    let reshade = cacheable
-        && cache
-            .as_deref()
-            .and_then(Option::as_ref)
-            .is_some_and(|c| c.reuse(world, target.width, target.height).is_reshade());
-    let passes: Vec<Pass> = plan_passes(target)
+    let reuse = cache
+        .as_deref()
+        .and_then(Option::as_ref)
+        .filter(|_| cacheable)
+        .map(|c| c.reuse(world, target.width, target.height));
+    let reshade = reuse.as_ref().is_some_and(Reuse::is_reshade);
+    // A re-shade that casts a moved light's shadow rays again takes about as long as a
+    // traced frame, so it keeps the coarsest pass: without it, a light dragged with
+    // edits coming faster than that frame showed nothing until the drag stopped.
+    let keep_coarsest = reuse.is_some_and(|r| !r.recast_lights().is_empty());
+    let plan = plan_passes(target);
+    let coarsest = plan.first().copied();
+    let passes: Vec<Pass> = plan
         .into_iter()
-        .filter(|pass| !(reshade && matches!(pass, Pass::Coarse { .. })))
+        .filter(|&pass| {
+            !(reshade && matches!(pass, Pass::Coarse { .. }))
+                || (keep_coarsest && Some(pass) == coarsest)
+        })
         .collect();
     let mut accumulated = None;
     let mut curve = ConvergenceCurve::default();
@@ -334,5 +345,27 @@ mod tests {
             again.push(f.pass);
         });
         assert_eq!(again, passes[one_sample..]);
+        // A light moved re-shades too, casting its shadow rays again, after the
+        // coarsest pass (that re-shade takes about a traced frame's time).
+        let mut moved = scene.clone();
+        if let crate::scene::Light::Point { position, .. } = &mut moved.lights[1] {
+            position.x += 0.5;
+        }
+        let moved = World::new(&moved).unwrap();
+        let (mut lit, mut recast) = (Vec::new(), None);
+        render_plan_cached(&moved, &target, &mut cache, &mut go, &mut |f| {
+            if matches!(f.pass, Pass::Full { target: 1, .. }) {
+                recast = Some(f.rays);
+            }
+            lit.push(f.pass);
+        });
+        assert_eq!(lit[0], passes[0]);
+        assert_eq!(lit[1..], passes[one_sample..]);
+        let recast = recast.unwrap();
+        assert_eq!((recast.primary, recast.reflection), (0, 0), "re-shaded");
+        assert!(
+            recast.shadow > 0,
+            "the moved light's shadow rays cast again"
+        );
     }
 }
