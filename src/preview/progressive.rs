@@ -352,20 +352,13 @@ mod tests {
             position.x += 0.5;
         }
         let moved = World::new(&moved).unwrap();
-        let (mut lit, mut recast) = (Vec::new(), None);
+        let mut lit = Vec::new();
         render_plan_cached(&moved, &target, &mut cache, &mut go, &mut |f| {
-            if matches!(f.pass, Pass::Full { target: 1, .. }) {
-                recast = Some(f.rays);
-            }
             lit.push(f.pass);
         });
+        // (At 160 x 120 the plan has one coarse pass; tests/preview_worker_reshade.rs
+        // tells the re-shade from a re-trace at a size with two.)
         assert_eq!(lit[0], passes[0]);
         assert_eq!(lit[1..], passes[one_sample..]);
-        let recast = recast.unwrap();
-        assert_eq!((recast.primary, recast.reflection), (0, 0), "re-shaded");
-        assert!(
-            recast.shadow > 0,
-            "the moved light's shadow rays cast again"
-        );
     }
 }
