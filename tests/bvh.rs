@@ -9,13 +9,7 @@ use raylab::scene::{Material, Shape};
 use raylab::trace::{Acceleration, Ray, World};
 
 fn crowded_scene(seed: u64, count: usize) -> raylab::scene::Scene {
-    let mut state = seed | 1;
-    let mut next = move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut next = unit_random(seed);
     let mut scene = bare_scene(Material {
         diffuse: DVec3::ONE,
         ..Material::default()
@@ -62,13 +56,7 @@ fn ties_and_blockers_follow_scene_order() {
     flat.set_acceleration(Acceleration::Flat);
     let mut bvh = World::new(&scene).unwrap();
     bvh.set_acceleration(Acceleration::Bvh);
-    let mut state = 12345u64;
-    let mut next = move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut next = unit_random(12345);
     let mut point = || DVec3::new(next() * 10.0 - 5.0, next() * 2.0, next() * 10.0 - 5.0);
     for _ in 0..20_000 {
         let origin = point();

@@ -104,3 +104,15 @@ pub fn assert_colour(actual: DVec3, expected: DVec3) {
         "colour {actual} expected {expected}"
     );
 }
+
+/// A reproducible stream of numbers in [0, 1) from `seed` (xorshift64; a seed of 0 is
+/// made odd), for tests that want many varied inputs without a random crate.
+pub fn unit_random(seed: u64) -> impl FnMut() -> f64 {
+    let mut state = seed | 1;
+    move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
