@@ -35,10 +35,12 @@ pub mod shapes;
 pub mod spawn;
 pub mod terms;
 pub mod tile_cull;
+mod tile_pass;
 mod tile_placement;
 mod tile_rays;
 pub mod tiles;
 pub mod world;
+mod world_batch;
 mod world_trees;
 
 pub use adaptive::{AdaptiveOptions, AdaptiveRender, render_adaptive};

@@ -15,7 +15,8 @@ use super::sampling::sample_in_pixel;
 use super::shade::{NoRecorder, RayCounts, Tracer};
 use super::terms::{Isolation, TermSwitches, View};
 use super::tile_cull::TileCull;
-use super::tiles::render_tiles;
+use super::tile_pass::TilePass;
+use super::tiles::{TileRect, TileWork, render_tiles_with};
 use super::world::World;
 use crate::scene::Scene;
 
@@ -201,7 +202,7 @@ pub fn render_samples_into(
     let tracer = Tracer::new(world, options.switches, options.view);
     let count = options.samples_per_pixel;
     let cull = TileCull::new(world, &camera, width, height);
-    let sample = |px: u32, py: u32, index: u32, rays: &mut RayCounts| {
+    let sample = |_: &mut TileRect, px: u32, py: u32, index: u32, rays: &mut RayCounts| {
         let point = sample_point(px, py, index, count);
         camera_sample(
             &tracer,
@@ -211,7 +212,20 @@ pub fn render_samples_into(
             rays,
         )
     };
-    render_tiles(sums, samples, progress, &sample)
+    // A one-sample pass (the tiles ask only then) finds each tile's first hits at once.
+    let pass = TilePass {
+        tracer: &tracer,
+        camera: &camera,
+        cull: &cull,
+        index: samples.start,
+        count,
+    };
+    let work = TileWork {
+        new_state: |_, rect| rect,
+        whole: |rect: &mut TileRect| pass.tile(*rect),
+        sample: &sample,
+    };
+    render_tiles_with(sums, samples, progress, &work).map(|(rays, _)| rays)
 }
 
 /// Renders a whole image with all of `options.samples_per_pixel`; `None` if cancelled.

@@ -19,9 +19,11 @@ use super::tile_placement::place_tiles;
 pub const TILE_SIZE: u32 = 16;
 
 /// The colour of sample `index` of pixel `(px, py)`, unguarded (it may be non-finite),
-/// adding the rays it cast to the tally.
+/// adding the rays it cast to the tally. (The tests' form of [`TileWork::sample`].)
+#[cfg(test)]
 pub trait SampleColour: Fn(u32, u32, u32, &mut RayCounts) -> DVec3 + Sync {}
 
+#[cfg(test)]
 impl<F: Fn(u32, u32, u32, &mut RayCounts) -> DVec3 + Sync> SampleColour for F {}
 
 /// A rectangle of the image, in pixels: left column, top row, width and height.
@@ -71,7 +73,9 @@ struct Tile<S> {
 /// Continues `sums` with the samples `samples` of every pixel, each colour from
 /// `sample`. Each pixel adds its samples in index order whatever the batching, so the
 /// numbers do not depend on how a range is split. Returns the rays of this call (also
-/// added to `sums.rays`), or `None` if cancelled, leaving `sums` untouched.
+/// added to `sums.rays`), or `None` if cancelled, leaving `sums` untouched. The tests'
+/// way in; the tracer's passes give a [`TileWork`] to [`render_tiles_with`].
+#[cfg(test)]
 pub(super) fn render_tiles(
     sums: &mut SampleSums,
     samples: Range<u32>,

@@ -332,7 +332,7 @@ impl World {
 
     /// World-space details of an object-space hit.
     #[inline(always)]
-    fn surface_point(&self, index: usize, ray: &Ray, hit: &ShapeHit) -> SurfacePoint {
+    pub(super) fn surface_point(&self, index: usize, ray: &Ray, hit: &ShapeHit) -> SurfacePoint {
         let object = &self.objects[index];
         let m = &object.world_from_object;
         let p = m.transform_point3(hit.p);
