@@ -151,7 +151,7 @@ impl<'w> Tracer<'w> {
     /// it returns is not passed through memory (callgrind: about 2% more instructions per
     /// camera ray when it is not).
     #[inline(always)]
-    fn shade<R: Recorder>(
+    pub(super) fn shade<R: Recorder>(
         &self,
         ray: &Ray,
         depth: u32,

@@ -1,38 +1,45 @@
-//! A plain render's one-sample pass over a tile with its camera rays' closest hits found
-//! at once ([`World::intersect_batch`]: the tile's objects outer, its rays inner), then
-//! each pixel shaded as before from its known first hit. Each batch answer is the single
-//! query's bit for bit, so the colours are the pixel-by-pixel path's (tested below).
+//! A plain render's one-sample pass over a tile, traced depth by depth instead of one
+//! pixel's whole path at a time: the closest hits of all the tile's camera rays at once
+//! ([`World::intersect_batch`]: the tile's objects outer, its rays inner), then each
+//! pixel shaded from its hit by the shader's own code (lights and shadow rays as
+//! before); then the mirror rays that shading cast, the same way, and so on down the
+//! chains, which are folded back at the end. Each batch answer is the single query's bit
+//! for bit, so the colours are the pixel-by-pixel path's (tested below).
 //!
-//! The first stage of tracing a tile's rays together rather than one pixel's whole path
-//! at a time. It runs more instructions (the batch's bookkeeping), yet the frame is
-//! faster: an object's test over neighbouring rays branches alike. Casting the first
-//! shadow rays the same way was tried and lost that gain, since each light had to be
-//! sampled twice (docs/BENCHMARKS.md).
+//! The batches run more instructions (their bookkeeping), yet the frame is faster: an
+//! object's test over neighbouring rays branches alike. Staging each light's samples and
+//! shadow rays the same way was measured and lost more to the bookkeeping than it gained
+//! (docs/BENCHMARKS.md). The stages are where SIMD across rays would go.
 
 use glam::{DVec2, DVec3};
 
 use super::camera::PinholeCamera;
+use super::mirror_chain::Bounce;
+use super::object_set::ObjectSet;
 use super::ray::Ray;
 use super::ray_source::{LiveRays, RaySource, ShadowQuery};
 use super::render::{camera_sample, sample_point};
-use super::shade::{RayCounts, Tracer};
-use super::tile_cull::TileCull;
+use super::shade::{NoRecorder, RayCounts, Tracer};
+use super::terms::ActiveTerms;
+use super::tile_cull::{Candidates, TileCull};
 use super::tiles::TileRect;
 use super::world::{SurfacePoint, World};
 
-/// Answers the camera ray from the hit the tile found, every other ray live.
-struct FirstHitKnown<'c> {
-    camera_ray: Ray,
-    first: Option<SurfacePoint>,
+/// Answers the closest hit of the ray at `depth` from the batch that found it, every
+/// other ray live.
+struct KnownHit<'c> {
+    depth: u32,
+    ray: Ray,
+    hit: Option<SurfacePoint>,
     live: LiveRays<'c>,
 }
 
-impl RaySource for FirstHitKnown<'_> {
+impl RaySource for KnownHit<'_> {
     #[inline]
     fn closest_hit(&mut self, world: &World, depth: u32, ray: &Ray) -> Option<SurfacePoint> {
-        if depth == 0 {
-            debug_assert_eq!(*ray, self.camera_ray, "the first hit is this ray's");
-            self.first
+        if depth == self.depth {
+            debug_assert_eq!(*ray, self.ray, "the batch's hit is this ray's");
+            self.hit
         } else {
             self.live.closest_hit(world, depth, ray)
         }
@@ -62,36 +69,123 @@ pub(super) struct TilePass<'a> {
 
 impl TilePass<'_> {
     /// Every pixel's colour of `rect` (row-major) and the rays traced, or `None` where
-    /// the tile's camera rays do not share one culled set (then it goes pixel by pixel).
+    /// the tile's pixels do not share one culled set (then it goes pixel by pixel).
     pub fn tile(&self, rect: TileRect) -> Option<(Vec<DVec3>, RayCounts)> {
         let points: Vec<DVec2> = (rect.y0..rect.y0 + rect.h)
             .flat_map(|py| (rect.x0..rect.x0 + rect.w).map(move |px| (px, py)))
             .map(|(px, py)| sample_point(px, py, self.index, self.count))
             .collect();
-        let among = self.cull.candidates(*points.first()?).camera;
-        if points
+        let among = self.cull.candidates(*points.first()?);
+        let lights = self.tracer.world().lights.len();
+        let same = |other: Candidates| {
+            other.camera == among.camera && (0..lights).all(|l| other.shadow(l) == among.shadow(l))
+        };
+        if !points
             .iter()
-            .any(|&point| self.cull.candidates(point).camera != among)
+            .all(|&point| same(self.cull.candidates(point)))
         {
             return None;
         }
         let rays: Vec<Ray> = points.iter().map(|&point| self.camera.ray(point)).collect();
-        let firsts = self.tracer.world().intersect_batch(&rays, among);
         let mut counts = RayCounts::default();
-        let colours = points
+        let colours = match self.tracer.beauty_terms() {
+            Some(terms) => self.lit(rays, among, terms, &mut counts),
+            None => self.view(&points, rays, among, &mut counts),
+        };
+        Some((colours, counts))
+    }
+
+    /// The lit picture: each depth of the tile's mirror chains found and shaded, the
+    /// chains folded back as [`Tracer::trace_primary_from`] folds one.
+    fn lit(
+        &self,
+        rays: Vec<Ray>,
+        among: Candidates,
+        (primary, secondary): (ActiveTerms, ActiveTerms),
+        counts: &mut RayCounts,
+    ) -> Vec<DVec3> {
+        let world = self.tracer.world();
+        let pixels = rays.len();
+        counts.primary += pixels as u64;
+        // Per depth, the pixels whose chain reaches it and what their rays there add.
+        let mut levels: Vec<(Vec<usize>, Vec<Bounce>)> = Vec::new();
+        let mut active: Vec<(usize, Ray)> = rays.into_iter().enumerate().collect();
+        let mut depth = 0;
+        while !active.is_empty() {
+            let level_rays: Vec<Ray> = active.iter().map(|(_, ray)| *ray).collect();
+            // As `LiveRays`: camera rays test the tile's culled set, mirror rays all.
+            let (terms, objects) = if depth == 0 {
+                (&primary, among.camera)
+            } else {
+                (&secondary, ObjectSet::ALL)
+            };
+            let hits = world.intersect_batch(&level_rays, objects);
+            let mut level = (
+                Vec::with_capacity(active.len()),
+                Vec::with_capacity(active.len()),
+            );
+            let mut next = Vec::new();
+            for ((pixel, ray), hit) in active.iter().zip(hits) {
+                let (depth, ray, live) = (depth, *ray, LiveRays::among(among));
+                let mut source = KnownHit {
+                    depth,
+                    ray,
+                    hit,
+                    live,
+                };
+                let (bounce, mirror_ray) =
+                    self.tracer
+                        .shade(&ray, depth, terms, &mut source, counts, &mut NoRecorder);
+                level.0.push(*pixel);
+                level.1.push(bounce);
+                if let Some(mirror_ray) = mirror_ray {
+                    next.push((*pixel, mirror_ray));
+                }
+            }
+            levels.push(level);
+            active = next;
+            depth += 1;
+        }
+        // Deepest first: `colour(d) = local(d) + km(d) * colour(d + 1)`, as `fold_back`.
+        let mut colours = vec![DVec3::ZERO; pixels];
+        let mut folded = vec![false; pixels];
+        for (level_pixels, bounces) in levels.iter().rev() {
+            for (&pixel, bounce) in level_pixels.iter().zip(bounces) {
+                colours[pixel] = if folded[pixel] {
+                    bounce.local + bounce.km * colours[pixel]
+                } else {
+                    bounce.local
+                };
+                folded[pixel] = true;
+            }
+        }
+        colours
+    }
+
+    /// A debug view: the camera rays' hits found at once, each pixel's view from its hit.
+    fn view(
+        &self,
+        points: &[DVec2],
+        rays: Vec<Ray>,
+        among: Candidates,
+        counts: &mut RayCounts,
+    ) -> Vec<DVec3> {
+        let hits = self.tracer.world().intersect_batch(&rays, among.camera);
+        points
             .iter()
             .zip(rays)
-            .zip(firsts)
-            .map(|((&point, camera_ray), first)| {
-                let mut source = FirstHitKnown {
-                    camera_ray,
-                    first,
-                    live: LiveRays::among(self.cull.candidates(point)),
+            .zip(hits)
+            .map(|((&point, ray), hit)| {
+                let live = LiveRays::among(among);
+                let mut source = KnownHit {
+                    depth: 0,
+                    ray,
+                    hit,
+                    live,
                 };
-                camera_sample(self.tracer, self.camera, point, &mut source, &mut counts)
+                camera_sample(self.tracer, self.camera, point, &mut source, counts)
             })
-            .collect();
-        Some((colours, counts))
+            .collect()
     }
 }
 

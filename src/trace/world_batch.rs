@@ -1,8 +1,9 @@
 //! Closest hits for a batch of rays that share one culled candidate set, as a tile's
-//! camera rays do: the objects outer and the rays inner, so that each object's data and
-//! test are set up once per batch instead of once per ray. Per ray it is the flat list's
-//! query (the objects in scene order, each tested only up to the nearest hit so far), so
-//! every answer is [`World::intersect_among`]'s bit for bit.
+//! camera rays, or its mirror rays of one depth, do: the objects outer and the rays
+//! inner, so that each object's data and test are set up once per batch instead of once
+//! per ray. Per ray it is the flat list's query (the objects in scene order, each tested
+//! only up to the nearest hit so far), so every answer is [`World::intersect_among`]'s
+//! bit for bit.
 
 use glam::DVec3;
 
