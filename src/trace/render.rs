@@ -212,17 +212,17 @@ pub fn render_samples_into(
             rays,
         )
     };
-    // A one-sample pass (the tiles ask only then) finds each tile's first hits at once.
+    // Each batch (one sample of every pixel of a tile) traced depth by depth.
     let pass = TilePass {
         tracer: &tracer,
         camera: &camera,
         cull: &cull,
-        index: samples.start,
         count,
     };
     let work = TileWork {
         new_state: |_, rect| rect,
-        whole: |rect: &mut TileRect| pass.tile(*rect),
+        whole: |_: &mut TileRect| None,
+        batch: |rect: &mut TileRect, index| pass.tile(*rect, index),
         sample: &sample,
     };
     render_tiles_with(sums, samples, progress, &work).map(|(rays, _)| rays)

@@ -156,6 +156,7 @@ pub fn render_one_sample_cached(
     let work = TileWork {
         new_state,
         whole,
+        batch: |_: &mut TileRays, _| None,
         sample: &sample,
     };
     let mut sums = SampleSums::unsummed(width, height);

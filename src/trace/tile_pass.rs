@@ -1,5 +1,5 @@
-//! A plain render's one-sample pass over a tile, traced depth by depth instead of one
-//! pixel's whole path at a time: the closest hits of all the tile's camera rays at once
+//! A plain render's batch (one sample of every pixel of a tile), traced depth by depth
+//! instead of one pixel's whole path at a time: the closest hits of all the tile's camera rays at once
 //! ([`World::intersect_batch`]: the tile's objects outer, its rays inner), then each
 //! pixel shaded from its hit by the shader's own code (lights and shadow rays as
 //! before); then the mirror rays that shading cast, the same way, and so on down the
@@ -62,18 +62,17 @@ pub(super) struct TilePass<'a> {
     pub tracer: &'a Tracer<'a>,
     pub camera: &'a PinholeCamera,
     pub cull: &'a TileCull,
-    /// The one sample's index, and the pixel's sample count it is one of.
-    pub index: u32,
+    /// The pixel's sample count (where its samples fall).
     pub count: u32,
 }
 
 impl TilePass<'_> {
-    /// Every pixel's colour of `rect` (row-major) and the rays traced, or `None` where
-    /// the tile's pixels do not share one culled set (then it goes pixel by pixel).
-    pub fn tile(&self, rect: TileRect) -> Option<(Vec<DVec3>, RayCounts)> {
+    /// Sample `index` of every pixel of `rect` (row-major) and the rays traced, or `None`
+    /// where the samples do not share one culled set (then they go pixel by pixel).
+    pub fn tile(&self, rect: TileRect, index: u32) -> Option<(Vec<DVec3>, RayCounts)> {
         let points: Vec<DVec2> = (rect.y0..rect.y0 + rect.h)
             .flat_map(|py| (rect.x0..rect.x0 + rect.w).map(move |px| (px, py)))
-            .map(|(px, py)| sample_point(px, py, self.index, self.count))
+            .map(|(px, py)| sample_point(px, py, index, self.count))
             .collect();
         let among = self.cull.candidates(*points.first()?);
         let lights = self.tracer.world().lights.len();
@@ -193,11 +192,14 @@ impl TilePass<'_> {
 mod tests {
     use super::*;
     use crate::scene::examples::EXAMPLE_SCENES;
-    use crate::trace::render::{RenderOptions, RenderProgress, render_samples};
+    use crate::trace::render::{
+        RenderOptions, RenderProgress, render_samples, render_samples_into,
+    };
     use crate::trace::terms::{Term, TermSwitches, View};
 
-    /// The one-sample pass (tile by tile) against each pixel traced alone, with the
-    /// same culling, for every example scene, view and a solo switch.
+    /// Batches (tile by tile) against each pixel traced alone, with the same culling,
+    /// for every example scene, view and a solo switch: a one-sample pass, and samples
+    /// summed onto sums from before.
     #[test]
     fn a_tile_pass_colours_every_pixel_as_the_pixel_by_pixel_path() {
         let solo_specular = TermSwitches::ALL_ON.with_solo(Some(Term::Specular));
@@ -219,19 +221,33 @@ mod tests {
                     ..RenderOptions::from_scene(&scene)
                 };
                 let progress = RenderProgress::default();
-                let sums = render_samples(&world, &options, 1..2, &progress).unwrap();
+                // One batch alone (a one-sample pass), then two summed after a first.
+                let one = render_samples(&world, &options, 1..2, &progress).unwrap();
+                let mut three = render_samples(&world, &options, 0..1, &progress).unwrap();
+                render_samples_into(&world, &options, 1..3, &mut three, &progress).unwrap();
                 let camera = PinholeCamera::new(&world.camera, 53, 37);
                 let tracer = Tracer::new(&world, switches, view);
                 let cull = TileCull::new(&world, &camera, 53, 37);
-                let mut rays = RayCounts::default();
-                for (i, sum) in sums.sums.iter().enumerate() {
+                let mut rays = [RayCounts::default(), RayCounts::default()];
+                for (i, (one, three)) in one.sums.iter().zip(&three.sums).enumerate() {
                     let (px, py) = (i as u32 % 53, i as u32 / 53);
-                    let point = sample_point(px, py, 1, 3);
-                    let mut live = LiveRays::among(cull.candidates(point));
-                    let alone = camera_sample(&tracer, &camera, point, &mut live, &mut rays);
-                    assert_eq!(*sum, alone, "{name} {view:?} pixel ({px}, {py})");
+                    let mut sum = DVec3::ZERO;
+                    for index in 0..3 {
+                        let point = sample_point(px, py, index, 3);
+                        let mut live = LiveRays::among(cull.candidates(point));
+                        let counts = &mut rays[usize::from(index == 1)];
+                        let alone = camera_sample(&tracer, &camera, point, &mut live, counts);
+                        if index == 1 {
+                            assert_eq!(*one, alone, "{name} {view:?} pixel ({px}, {py})");
+                        }
+                        sum += alone;
+                    }
+                    assert_eq!(*three, sum, "{name} {view:?} pixel ({px}, {py}), 3 samples");
                 }
-                assert_eq!(sums.rays, rays, "{name} {view:?}: the same rays counted");
+                assert_eq!(one.rays, rays[1], "{name} {view:?}: the same rays counted");
+                let mut all = rays[0];
+                all.add(&rays[1]);
+                assert_eq!(three.rays, all, "{name} {view:?}: the same rays, 3 samples");
             }
         }
     }

@@ -86,34 +86,39 @@ pub(super) fn render_tiles(
     let tile = TileWork {
         new_state: |_, _| (),
         whole: |_: &mut ()| None,
+        batch: |_: &mut (), _| None,
         sample: &sample,
     };
     render_tiles_with(sums, samples, progress, &tile).map(|(rays, _)| rays)
 }
 
 /// How [`render_tiles_with`] renders a tile with a state of its own.
-pub(super) struct TileWork<'s, N, W, F> {
+pub(super) struct TileWork<'s, N, W, B, F> {
     /// Makes the state from the tile's index (row-major, of [`tile_count`]) and rectangle.
     pub new_state: N,
     /// For a one-sample pass: every pixel's colour (row-major within the tile) and their
     /// rays at once, where the state can give them so; `None` to go pixel by pixel.
     pub whole: W,
+    /// For each batch: sample `index` of every pixel (row-major within the tile) and
+    /// their rays at once, where the state can give them so; `None` to go pixel by pixel.
+    pub batch: B,
     /// One sample of one pixel, given the state (row-major in the tile, batch by batch).
     pub sample: &'s F,
 }
 
 /// As [`render_tiles`], each tile with a state of its own ([`TileWork`]); the states
 /// come back in tile order with the rays.
-pub(super) fn render_tiles_with<S, N, W, F>(
+pub(super) fn render_tiles_with<S, N, W, B, F>(
     sums: &mut SampleSums,
     samples: Range<u32>,
     progress: &RenderProgress,
-    work: &TileWork<N, W, F>,
+    work: &TileWork<N, W, B, F>,
 ) -> Option<(RayCounts, Vec<S>)>
 where
     S: Send,
     N: Fn(u32, TileRect) -> S + Sync,
     W: Fn(&mut S) -> Option<(Vec<DVec3>, RayCounts)> + Sync,
+    B: Fn(&mut S, u32) -> Option<(Vec<DVec3>, RayCounts)> + Sync,
     F: Fn(&mut S, u32, u32, u32, &mut RayCounts) -> DVec3 + Sync,
 {
     let (width, height) = (sums.width, sums.height);
@@ -206,17 +211,18 @@ fn whole_tile<S>(
 
 /// Traces one tile batch by batch, each pixel's sum continuing from `before`; `None` as
 /// soon as a row of a batch finds the render cancelled.
-fn render_tile<S, N, W, F>(
+fn render_tile<S, N, W, B, F>(
     rect: TileRect,
     mut state: S,
     image_width: u32,
     before: Option<&SampleSums>,
     samples: Range<u32>,
     progress: &RenderProgress,
-    work: &TileWork<N, W, F>,
+    work: &TileWork<N, W, B, F>,
 ) -> Option<Tile<S>>
 where
     W: Fn(&mut S) -> Option<(Vec<DVec3>, RayCounts)>,
+    B: Fn(&mut S, u32) -> Option<(Vec<DVec3>, RayCounts)>,
     F: Fn(&mut S, u32, u32, u32, &mut RayCounts) -> DVec3,
 {
     if progress.is_cancelled() {
@@ -245,6 +251,20 @@ where
     let mut non_finite = 0;
     let w = rect.w as usize;
     for index in samples {
+        if progress.is_cancelled() {
+            return None;
+        }
+        if let Some((colours, batch_rays)) = (work.batch)(&mut state, index) {
+            rays.add(&batch_rays);
+            for ((sum, finite), colour) in sums.iter_mut().zip(&mut finite).zip(colours) {
+                if !add_sample(sum, colour) {
+                    non_finite += 1;
+                    *finite = false;
+                }
+            }
+            progress.batches_done.fetch_add(1, Ordering::Relaxed);
+            continue;
+        }
         let rows = pixels
             .chunks(w)
             .zip(sums.chunks_mut(w))
