@@ -18,14 +18,6 @@ use super::tile_placement::place_tiles;
 /// per-tile overhead is noise.
 pub const TILE_SIZE: u32 = 16;
 
-/// The colour of sample `index` of pixel `(px, py)`, unguarded (it may be non-finite),
-/// adding the rays it cast to the tally. (The tests' form of [`TileWork::sample`].)
-#[cfg(test)]
-pub trait SampleColour: Fn(u32, u32, u32, &mut RayCounts) -> DVec3 + Sync {}
-
-#[cfg(test)]
-impl<F: Fn(u32, u32, u32, &mut RayCounts) -> DVec3 + Sync> SampleColour for F {}
-
 /// A rectangle of the image, in pixels: left column, top row, width and height.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct TileRect {
@@ -70,28 +62,6 @@ struct Tile<S> {
     non_finite_pixels: Vec<u32>,
 }
 
-/// Continues `sums` with the samples `samples` of every pixel, each colour from
-/// `sample`. Each pixel adds its samples in index order whatever the batching, so the
-/// numbers do not depend on how a range is split. Returns the rays of this call (also
-/// added to `sums.rays`), or `None` if cancelled, leaving `sums` untouched. The tests'
-/// way in; the tracer's passes give a [`TileWork`] to [`render_tiles_with`].
-#[cfg(test)]
-pub(super) fn render_tiles(
-    sums: &mut SampleSums,
-    samples: Range<u32>,
-    progress: &RenderProgress,
-    sample: &impl SampleColour,
-) -> Option<RayCounts> {
-    let sample = |_: &mut (), px, py, index, rays: &mut RayCounts| sample(px, py, index, rays);
-    let tile = TileWork {
-        new_state: |_, _| (),
-        whole: |_: &mut ()| None,
-        batch: |_: &mut (), _| None,
-        sample: &sample,
-    };
-    render_tiles_with(sums, samples, progress, &tile).map(|(rays, _)| rays)
-}
-
 /// How [`render_tiles_with`] renders a tile with a state of its own.
 pub(super) struct TileWork<'s, N, W, B, F> {
     /// Makes the state from the tile's index (row-major, of [`tile_count`]) and rectangle.
@@ -106,8 +76,11 @@ pub(super) struct TileWork<'s, N, W, B, F> {
     pub sample: &'s F,
 }
 
-/// As [`render_tiles`], each tile with a state of its own ([`TileWork`]); the states
-/// come back in tile order with the rays.
+/// Continues `sums` with the samples `samples` of every pixel, each tile with a state
+/// of its own ([`TileWork`]). Each pixel adds its samples in index order whatever the
+/// batching, so the numbers do not depend on how a range is split. Returns the rays of
+/// this call (also added to `sums.rays`) and the states in tile order, or `None` if
+/// cancelled, leaving `sums` untouched.
 pub(super) fn render_tiles_with<S, N, W, B, F>(
     sums: &mut SampleSums,
     samples: Range<u32>,
@@ -210,7 +183,7 @@ fn whole_tile<S>(
 }
 
 /// Traces one tile batch by batch, each pixel's sum continuing from `before`; `None` as
-/// soon as a row of a batch finds the render cancelled.
+/// soon as the render is found cancelled, before a batch or a row of one.
 fn render_tile<S, N, W, B, F>(
     rect: TileRect,
     mut state: S,
@@ -300,103 +273,4 @@ where
 }
 
 #[cfg(test)]
-mod tests {
-    use std::sync::atomic::AtomicU64;
-
-    use super::*;
-
-    /// A sample colour that depends on the pixel and index only; counts its calls and
-    /// cancels `progress` on call number `cancel_at` (counting from 1).
-    fn cancelling(
-        calls: &AtomicU64,
-        cancel_at: u64,
-        progress: &RenderProgress,
-    ) -> impl Fn(u32, u32, u32, &mut RayCounts) -> DVec3 + Sync {
-        move |px, py, index, _| {
-            if calls.fetch_add(1, Ordering::SeqCst) + 1 == cancel_at {
-                progress.cancel();
-            }
-            DVec3::new(f64::from(px), f64::from(py), f64::from(index))
-        }
-    }
-
-    #[test]
-    fn a_cancel_inside_a_tile_stops_it_at_the_end_of_that_row() {
-        // One 16 x 16 tile on one thread, 64 samples a pixel; the 300th sample (the
-        // third row of the second batch) cancels: one batch and three rows are traced.
-        let progress = RenderProgress::default();
-        let calls = AtomicU64::new(0);
-        let cancel_at = 300;
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(1)
-            .build()
-            .unwrap();
-        let mut sums = SampleSums::zero(16, 16);
-        let sample = cancelling(&calls, cancel_at, &progress);
-        let outcome = pool.install(|| render_tiles(&mut sums, 0..64, &progress, &sample));
-        assert!(outcome.is_none());
-        let batch = u64::from(TILE_SIZE * TILE_SIZE);
-        assert_eq!(
-            calls.load(Ordering::SeqCst),
-            batch + 3 * u64::from(TILE_SIZE)
-        );
-        assert!(
-            sums.sums.iter().all(|s| *s == DVec3::ZERO),
-            "a cancelled render leaves the sums untouched"
-        );
-    }
-
-    #[test]
-    fn after_a_cancel_each_running_tile_traces_at_most_one_more_batch() {
-        // 96 x 64 pixels (24 tiles) at 1024 samples on 2 threads: a cancel after the
-        // 1000th sample lets at most one batch per tile in flight finish.
-        let threads = 2;
-        let progress = RenderProgress::default();
-        let calls = AtomicU64::new(0);
-        let cancel_at = 1000;
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .unwrap();
-        let mut sums = SampleSums::zero(96, 64);
-        let sample = cancelling(&calls, cancel_at, &progress);
-        let outcome = pool.install(|| render_tiles(&mut sums, 0..1024, &progress, &sample));
-        assert!(outcome.is_none());
-        let after = calls.load(Ordering::SeqCst) - cancel_at;
-        let batch = u64::from(TILE_SIZE * TILE_SIZE);
-        assert!(
-            after <= threads as u64 * batch,
-            "{after} samples traced after the cancel"
-        );
-    }
-
-    #[test]
-    fn a_non_finite_sample_is_counted_listed_and_kept_out_of_the_sum() {
-        // 20 x 18 pixels (four tiles, one partial); sample 2 of pixel (17, 3) is NaN and
-        // sample 0 of pixel (4, 16) is infinite.
-        let progress = RenderProgress::default();
-        let mut sums = SampleSums::zero(20, 18);
-        let sample = |px: u32, py: u32, index: u32, rays: &mut RayCounts| {
-            rays.primary += 1;
-            match (px, py, index) {
-                (17, 3, 2) => DVec3::new(0.5, f64::NAN, 0.5),
-                (4, 16, 0) => DVec3::splat(f64::INFINITY),
-                _ => DVec3::splat(0.25),
-            }
-        };
-        render_tiles(&mut sums, 0..2, &progress, &sample).unwrap();
-        render_tiles(&mut sums, 2..4, &progress, &sample).unwrap();
-        assert_eq!(sums.non_finite, 2);
-        assert_eq!(sums.non_finite_pixels, vec![3 * 20 + 17, 16 * 20 + 4]);
-        assert_eq!(sums.rays.primary, 20 * 18 * 4);
-        assert_eq!(
-            sums.sums[3 * 20 + 17],
-            DVec3::splat(0.75),
-            "three samples kept"
-        );
-        assert_eq!(sums.sums[16 * 20 + 4], DVec3::splat(0.75));
-        assert_eq!(sums.sums[0], DVec3::splat(1.0));
-        assert!(sums.sums.iter().all(|s| s.is_finite()));
-        assert_eq!(progress.fraction(), 1.0);
-    }
-}
+mod tests;
