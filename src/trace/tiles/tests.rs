@@ -99,26 +99,45 @@ fn a_cancel_inside_a_tile_stops_it_at_the_end_of_that_row() {
     );
 }
 
-#[test]
-fn after_a_cancel_each_running_tile_traces_at_most_one_more_batch() {
-    // 96 x 64 pixels (24 tiles) at 1024 samples on 2 threads: a cancel after the
-    // 1000th sample lets at most one batch per tile in flight finish.
-    let threads = 2;
+/// Renders 96 x 64 pixels (24 tiles) on 2 threads, each tile pixel by pixel or (with
+/// `batches`) batch by batch given whole, the sample numbered `cancel_at` cancelling;
+/// checks the render is cancelled with its sums untouched, and returns how many samples
+/// were traced after the cancel.
+fn traced_after_a_cancel(batches: bool, samples: Range<u32>, cancel_at: u64) -> u64 {
     let progress = RenderProgress::default();
     let calls = AtomicU64::new(0);
-    let cancel_at = 1000;
     let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(threads)
+        .num_threads(THREADS)
         .build()
         .unwrap();
     let mut sums = SampleSums::zero(96, 64);
     let sample = cancelling(&calls, cancel_at, &progress);
-    let outcome = pool.install(|| render_tiles(&mut sums, 0..1024, &progress, &sample));
+    let outcome = pool.install(|| {
+        if batches {
+            render_batches(&mut sums, samples, &progress, &sample)
+        } else {
+            render_tiles(&mut sums, samples, &progress, &sample)
+        }
+    });
     assert!(outcome.is_none());
-    let after = calls.load(Ordering::SeqCst) - cancel_at;
+    assert!(
+        sums.sums.iter().all(|s| *s == DVec3::ZERO),
+        "sums untouched"
+    );
+    calls.load(Ordering::SeqCst) - cancel_at
+}
+
+/// The threads of [`traced_after_a_cancel`].
+const THREADS: usize = 2;
+
+#[test]
+fn after_a_cancel_each_running_tile_traces_at_most_one_more_batch() {
+    // 1024 samples: a cancel after the 1000th sample lets at most one batch per tile in
+    // flight finish.
+    let after = traced_after_a_cancel(false, 0..1024, 1000);
     let batch = u64::from(TILE_SIZE * TILE_SIZE);
     assert!(
-        after <= threads as u64 * batch,
+        after <= THREADS as u64 * batch,
         "{after} samples traced after the cancel"
     );
 }
@@ -163,30 +182,14 @@ fn a_non_finite_sample_is_counted_listed_and_kept_out_of_the_sum() {
 
 #[test]
 fn a_cancel_stops_a_tile_given_batch_by_batch_before_its_next_batch() {
-    // 96 x 64 pixels (24 tiles) at 64 samples on 2 threads, every batch given whole: a
-    // cancel during the 30th batch lets no tile start another batch (without the check
-    // before each batch, every tile would run all 64).
-    let threads = 2;
-    let progress = RenderProgress::default();
-    let calls = AtomicU64::new(0);
-    let cancel_at = 30 * u64::from(TILE_SIZE * TILE_SIZE);
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(threads)
-        .build()
-        .unwrap();
-    let mut sums = SampleSums::zero(96, 64);
-    let sample = cancelling(&calls, cancel_at, &progress);
-    let outcome = pool.install(|| render_batches(&mut sums, 0..64, &progress, &sample));
-    assert!(outcome.is_none());
-    assert!(
-        sums.sums.iter().all(|s| *s == DVec3::ZERO),
-        "sums untouched"
-    );
-    let after = calls.load(Ordering::SeqCst) - cancel_at;
+    // 64 samples, every batch given whole: a cancel during the 30th batch lets no tile
+    // start another batch (without the check before each batch, every tile would run
+    // all 64).
     let batch = u64::from(TILE_SIZE * TILE_SIZE);
+    let after = traced_after_a_cancel(true, 0..64, 30 * batch);
     // The rest of the cancelling batch, and a batch of each other thread.
     assert!(
-        after < threads as u64 * batch,
+        after < THREADS as u64 * batch,
         "{after} samples traced after the cancel"
     );
 }
