@@ -1,15 +1,15 @@
 //! A plain render's batch (one sample of every pixel of a tile), traced depth by depth
-//! instead of one pixel's whole path at a time: the closest hits of all the tile's camera rays at once
-//! ([`World::intersect_batch`]: the tile's objects outer, its rays inner), then each
-//! pixel shaded from its hit by the shader's own code (lights and shadow rays as
-//! before); then the mirror rays that shading cast, the same way, and so on down the
-//! chains, which are folded back at the end. Each batch answer is the single query's bit
-//! for bit, so the colours are the pixel-by-pixel path's (tested below).
+//! instead of one pixel's whole path at a time: the closest hits of all the tile's
+//! camera rays at once ([`World::intersect_batch`]: the tile's objects outer, its rays
+//! inner), then each pixel shaded from its hit by the shader's own code (lights and
+//! shadow rays as before); then the mirror rays that shading cast, the same way, and so
+//! on down the chains, which are folded back at the end. Each batch answer is the single
+//! query's bit for bit, so the colours are the pixel-by-pixel path's (tested below).
 //!
 //! The batches run more instructions (their bookkeeping), yet the frame is faster: an
 //! object's test over neighbouring rays branches alike. Staging each light's samples and
-//! shadow rays the same way was measured and lost more to the bookkeeping than it gained
-//! (docs/BENCHMARKS.md). The stages are where SIMD across rays would go.
+//! shadow rays the same way lost more to the bookkeeping than it gained, and so did SIMD
+//! lanes for the batches' tests (docs/BENCHMARKS.md, "tiles traced depth by depth").
 
 use glam::{DVec2, DVec3};
 
