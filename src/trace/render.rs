@@ -213,7 +213,6 @@ pub fn render_samples_into(
         )
     };
     // Each batch (one sample of every pixel of a tile) traced depth by depth.
-    let first = samples.start;
     let pass = TilePass {
         tracer: &tracer,
         camera: &camera,
@@ -222,8 +221,7 @@ pub fn render_samples_into(
     };
     let work = TileWork {
         new_state: |_, rect| rect,
-        // The first one-sample pass is given as a whole tile: no sums before to read.
-        whole: |rect: &mut TileRect| pass.tile(*rect, first),
+        whole: |_: &mut TileRect| None,
         batch: |rect: &mut TileRect, index| pass.tile(*rect, index),
         sample: &sample,
     };

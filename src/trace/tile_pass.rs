@@ -34,6 +34,19 @@ struct KnownHit<'c> {
     live: LiveRays<'c>,
 }
 
+impl<'c> KnownHit<'c> {
+    /// `hit` for `ray` at `depth`; the rest asked of the world among `among`, the tile's
+    /// culled sets (as [`LiveRays`] would for any of its pixels).
+    fn new(depth: u32, ray: Ray, hit: Option<SurfacePoint>, among: Candidates<'c>) -> Self {
+        Self {
+            depth,
+            ray,
+            hit,
+            live: LiveRays::among(among),
+        }
+    }
+}
+
 impl RaySource for KnownHit<'_> {
     #[inline]
     fn closest_hit(&mut self, world: &World, depth: u32, ray: &Ray) -> Option<SurfacePoint> {
@@ -104,50 +117,40 @@ impl TilePass<'_> {
         counts: &mut RayCounts,
     ) -> Vec<DVec3> {
         let world = self.tracer.world();
-        let pixels = rays.len();
-        counts.primary += pixels as u64;
+        let count = rays.len();
+        counts.primary += count as u64;
         // Per depth, the pixels whose chain reaches it and what their rays there add.
         let mut levels: Vec<(Vec<usize>, Vec<Bounce>)> = Vec::new();
-        let mut active: Vec<(usize, Ray)> = rays.into_iter().enumerate().collect();
+        let (mut pixels, mut rays): (Vec<usize>, Vec<Ray>) = ((0..count).collect(), rays);
         let mut depth = 0;
-        while !active.is_empty() {
-            let level_rays: Vec<Ray> = active.iter().map(|(_, ray)| *ray).collect();
+        while !rays.is_empty() {
             // As `LiveRays`: camera rays test the tile's culled set, mirror rays all.
             let (terms, objects) = if depth == 0 {
                 (&primary, among.camera)
             } else {
                 (&secondary, ObjectSet::ALL)
             };
-            let hits = world.intersect_batch(&level_rays, objects);
-            let mut level = (
-                Vec::with_capacity(active.len()),
-                Vec::with_capacity(active.len()),
-            );
-            let mut next = Vec::new();
-            for ((pixel, ray), hit) in active.iter().zip(hits) {
-                let (depth, ray, live) = (depth, *ray, LiveRays::among(among));
-                let mut source = KnownHit {
-                    depth,
-                    ray,
-                    hit,
-                    live,
-                };
+            let hits = world.intersect_batch(&rays, objects);
+            let mut bounces = Vec::with_capacity(rays.len());
+            let (mut next_pixels, mut next_rays) = (Vec::new(), Vec::new());
+            for ((&pixel, ray), hit) in pixels.iter().zip(&rays).zip(hits) {
+                let mut source = KnownHit::new(depth, *ray, hit, among);
                 let (bounce, mirror_ray) =
                     self.tracer
-                        .shade(&ray, depth, terms, &mut source, counts, &mut NoRecorder);
-                level.0.push(*pixel);
-                level.1.push(bounce);
+                        .shade(ray, depth, terms, &mut source, counts, &mut NoRecorder);
+                bounces.push(bounce);
                 if let Some(mirror_ray) = mirror_ray {
-                    next.push((*pixel, mirror_ray));
+                    next_pixels.push(pixel);
+                    next_rays.push(mirror_ray);
                 }
             }
-            levels.push(level);
-            active = next;
+            levels.push((pixels, bounces));
+            (pixels, rays) = (next_pixels, next_rays);
             depth += 1;
         }
         // Deepest first: `colour(d) = local(d) + km(d) * colour(d + 1)`, as `fold_back`.
-        let mut colours = vec![DVec3::ZERO; pixels];
-        let mut folded = vec![false; pixels];
+        let mut colours = vec![DVec3::ZERO; count];
+        let mut folded = vec![false; count];
         for (level_pixels, bounces) in levels.iter().rev() {
             for (&pixel, bounce) in level_pixels.iter().zip(bounces) {
                 colours[pixel] = if folded[pixel] {
@@ -175,13 +178,7 @@ impl TilePass<'_> {
             .zip(rays)
             .zip(hits)
             .map(|((&point, ray), hit)| {
-                let live = LiveRays::among(among);
-                let mut source = KnownHit {
-                    depth: 0,
-                    ray,
-                    hit,
-                    live,
-                };
+                let mut source = KnownHit::new(0, ray, hit, among);
                 camera_sample(self.tracer, self.camera, point, &mut source, counts)
             })
             .collect()

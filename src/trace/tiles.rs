@@ -201,10 +201,12 @@ where
     if progress.is_cancelled() {
         return None;
     }
-    // A first one-sample pass may give the whole tile at once.
+    // A first one-sample pass may give the whole tile at once, as a whole or as its one
+    // batch: with no sums before to read, it needs none of the loop's set-up below.
     if samples.len() == 1
         && before.is_none()
-        && let Some((colours, rays)) = (work.whole)(&mut state)
+        && let Some((colours, rays)) =
+            (work.whole)(&mut state).or_else(|| (work.batch)(&mut state, samples.start))
     {
         progress.batches_done.fetch_add(1, Ordering::Relaxed);
         return Some(whole_tile(rect, state, image_width, colours, rays));
