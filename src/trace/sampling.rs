@@ -33,10 +33,10 @@ pub fn sample_in_pixel(px: u32, py: u32, index: u32, count: u32) -> DVec2 {
 pub fn sequence_sample(px: u32, py: u32, index: u32) -> DVec2 {
     let seed = pixel_seed(px, py, index / SEQUENCE_LENGTH);
     let index = index % SEQUENCE_LENGTH;
-    DVec2::new(
-        f64::from(sobol_burley::sample(index, 0, seed)),
-        f64::from(sobol_burley::sample(index, 1, seed)),
-    )
+    // The first four dimensions at once: the crate's SIMD path, the same values as two
+    // calls of `sample` (dimensions 0 and 1) at a third of the instructions.
+    let [x, y, _, _] = sobol_burley::sample_4d(index, 0, seed);
+    DVec2::new(f64::from(x), f64::from(y))
 }
 
 /// A per-pixel scramble seed (and per run of [`SEQUENCE_LENGTH`] samples), so that
@@ -69,6 +69,27 @@ mod tests {
 
     fn samples(px: u32, py: u32, indices: std::ops::Range<u32>, count: u32) -> Vec<DVec2> {
         indices.map(|i| sample_in_pixel(px, py, i, count)).collect()
+    }
+
+    /// The four-dimension call gives the sequence's first two dimensions exactly, run
+    /// after run of [`SEQUENCE_LENGTH`] samples.
+    #[test]
+    fn a_sample_is_the_sequences_first_two_dimensions() {
+        for (px, py) in [(0, 0), (3, 7), (799, 599)] {
+            for index in (0..300).chain([SEQUENCE_LENGTH - 1, SEQUENCE_LENGTH + 5]) {
+                let seed = pixel_seed(px, py, index / SEQUENCE_LENGTH);
+                let i = index % SEQUENCE_LENGTH;
+                let expected = DVec2::new(
+                    f64::from(sobol_burley::sample(i, 0, seed)),
+                    f64::from(sobol_burley::sample(i, 1, seed)),
+                );
+                assert_eq!(
+                    sequence_sample(px, py, index),
+                    expected,
+                    "({px}, {py}) #{index}"
+                );
+            }
+        }
     }
 
     #[test]
