@@ -145,7 +145,8 @@ impl EntryTerms {
     #[inline]
     pub fn lights(&mut self, row: &[LightSlot]) {
         for slot in row {
-            self.light(&slot.factors);
+            let factors = slot.factors;
+            self.light(&factors);
         }
     }
 }

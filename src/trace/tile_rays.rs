@@ -388,7 +388,8 @@ impl RaySource for PixelRays<'_, '_, '_> {
     /// forgotten.
     fn wants_light_factors(&self, depth: u32, light: usize) -> bool {
         let slot = self.tile.slot_index(depth, light);
-        self.tile.slot(slot).factors.is_unknown()
+        let factors = self.tile.slot(slot).factors;
+        factors.is_unknown()
     }
 
     fn light_factors(&mut self, depth: u32, light: usize, factors: LitFactors) {
