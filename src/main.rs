@@ -19,6 +19,13 @@ const PURGE_DELAY_DEFAULT_MS: std::ffi::c_long = 1000;
 const KEEP_FREED_MS: std::ffi::c_long = 10_000;
 
 fn main() -> std::process::ExitCode {
+    // No transparent huge pages: mimalloc asks for them, and then a first touch of
+    // fresh memory may stall on the kernel zeroing (and compacting for) 2 MiB. Moving a
+    // light took 74-105 ms with them and 57-64 without; a first colour edit after a
+    // re-trace sometimes 30-47 ms instead of 11-13; material edits 8% longer without
+    // (docs/BENCHMARKS.md). A kernel that refuses leaves things as they were: harmless.
+    #[cfg(target_os = "linux")]
+    let _ = rustix::thread::disable_transparent_huge_pages(true);
     // SAFETY: reading and setting a mimalloc option takes no pointer and may be done at
     // any time; the option is set only where it has purge_delay's documented default,
     // so a renumbered option is left alone.
