@@ -18,6 +18,13 @@ pub(super) struct Bounce {
 }
 
 impl Bounce {
+    /// This ray's colour, given the colour its mirror ray brought back: the one step of
+    /// every fold.
+    #[inline]
+    pub fn fold(&self, brought_back: DVec3) -> DVec3 {
+        self.local + self.km * brought_back
+    }
+
     /// A ray that casts no mirror ray.
     pub fn local(colour: DVec3) -> Self {
         Self {
@@ -45,7 +52,7 @@ pub(super) fn fold_back(chain: &[Bounce], recorder: &mut impl Recorder) -> DVec3
         depth -= 1;
         let bounce = &chain[depth];
         recorder.reflection(depth as u32, bounce.km, colour);
-        colour = bounce.local + bounce.km * colour;
+        colour = bounce.fold(colour);
         recorder.result(depth as u32, colour);
     }
     colour

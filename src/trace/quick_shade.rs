@@ -4,8 +4,10 @@
 //! light colours and intensities, ambient, background) or of the term switches needs no
 //! more.
 //!
-//! It takes the shader's steps (`Tracer::shade` for the beauty view, then the shared
-//! [`fold_back`]) with the shared term functions of [`super::phong`], so its colour is
+//! It takes the shader's steps (`Tracer::shade` for the beauty view, then the fold of
+//! [`super::mirror_chain::fold_back`], deepest entry first, through the same
+//! [`Bounce::fold`] step but with no chain kept) with the shared term functions of
+//! [`super::phong`], so its colour is
 //! the shader's bit for bit (tests/reshade.rs holds every edit kind to that). Where the
 //! cache lacks something the shader would need (a ray never traced, a shadow ray never
 //! cast, a light's factors unknown, a lobe for another shininess) it gives up, and the
@@ -17,9 +19,8 @@ use super::chains::{CLEAR, NOT_CAST};
 use super::dependence::{DependenceRule, EntryTerms, TermDependence};
 use super::light_factors::LightSlot;
 use super::lights::falloff;
-use super::mirror_chain::{Bounce, Chain, fold_back};
+use super::mirror_chain::Bounce;
 use super::phong::{diffuse_term, specular_term};
-use super::record::NoRecorder;
 use super::shade::{RayCounts, Tracer};
 use super::terms::ActiveTerms;
 
@@ -106,43 +107,63 @@ impl<'r> QuickShade<'r> {
         lights: usize,
         counts: &mut RayCounts,
     ) -> Option<(DVec3, TermDependence)> {
+        // The chain the shader would follow ends at its first entry that casts no
+        // mirror ray; a cached chain without one lacks the next ray.
+        let last = objects
+            .iter()
+            .enumerate()
+            .position(|(depth, &object)| !self.casts_mirror_ray(depth, object))?;
         let mut own = RayCounts {
             primary: 1,
             ..RayCounts::default()
         };
-        let row = |depth: usize| &slots[depth * lights..(depth + 1) * lights];
         let mut depends = TermDependence::NONE;
-        let &first = objects.first()?;
-        let (local, mirror, terms) = self.entry(0, first, row(0), &self.primary, &mut own)?;
-        depends.add(0, terms);
-        // Most camera rays meet no mirror: no chain to keep.
-        let Some(km) = mirror else {
-            counts.add(&own);
-            return Some((local, depends));
-        };
-        let mut bounces = Chain::new();
-        bounces.push(Bounce { local, km });
-        for (depth, &object) in objects.iter().enumerate().skip(1) {
-            let terms = &self.secondary;
-            let (local, mirror, entry) =
-                self.entry(depth as u32, object, row(depth), terms, &mut own)?;
+        // Deepest first, each entry folding in the colour of the one after, as
+        // `fold_back` does, with no chain kept.
+        let mut colour = DVec3::ZERO;
+        for depth in (0..=last).rev() {
+            let row = &slots[depth * lights..(depth + 1) * lights];
+            let (local, km, entry) = self.entry(
+                depth as u32,
+                objects[depth],
+                row,
+                self.terms(depth),
+                &mut own,
+            )?;
             depends.add(depth, entry);
-            match mirror {
-                Some(km) => bounces.push(Bounce { local, km }),
-                None => {
-                    bounces.push(Bounce::local(local));
-                    counts.add(&own);
-                    return Some((fold_back(&bounces, &mut NoRecorder), depends));
-                }
-            }
+            debug_assert_eq!(km.is_some(), depth < last, "the chain's end, found twice");
+            colour = match km {
+                Some(km) if depth < last => Bounce { local, km }.fold(colour),
+                _ => local,
+            };
         }
-        // The chain ends where the shader would cast one more mirror ray.
-        None
+        counts.add(&own);
+        Some((colour, depends))
+    }
+
+    /// The terms on at depth `depth`: the camera ray's (a solo shows them alone) or the
+    /// mirror rays'.
+    #[inline]
+    fn terms(&self, depth: usize) -> &ActiveTerms {
+        if depth == 0 {
+            &self.primary
+        } else {
+            &self.secondary
+        }
+    }
+
+    /// Whether the shader casts a mirror ray from entry `depth` on `object`
+    /// (`u32::MAX`: a miss, which casts none).
+    #[inline]
+    fn casts_mirror_ray(&self, depth: usize, object: u32) -> bool {
+        object != u32::MAX
+            && self.terms(depth).reflection
+            && depth < self.max_depth as usize
+            && self.objects[object as usize].mirror != DVec3::ZERO
     }
 
     /// One entry's own colour, if the shader casts a mirror ray from it its km, and what
-    /// the entry depends on. Inlined into both calls in [`Self::pixel`], as the shader's
-    /// `shade` is.
+    /// the entry depends on. Inlined into [`Self::pixel`], as the shader's `shade` is.
     #[inline(always)]
     fn entry(
         &self,
