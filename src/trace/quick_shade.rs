@@ -122,19 +122,17 @@ impl<'r> QuickShade<'r> {
         // `fold_back` does, with no chain kept.
         let mut colour = DVec3::ZERO;
         for depth in (0..=last).rev() {
+            let object = objects[depth];
             let row = &slots[depth * lights..(depth + 1) * lights];
-            let (local, km, entry) = self.entry(
-                depth as u32,
-                objects[depth],
-                row,
-                self.terms(depth),
-                &mut own,
-            )?;
+            let (local, entry) = self.entry(depth, object, row, &mut own)?;
             depends.add(depth, entry);
-            debug_assert_eq!(km.is_some(), depth < last, "the chain's end, found twice");
-            colour = match km {
-                Some(km) if depth < last => Bounce { local, km }.fold(colour),
-                _ => local,
+            colour = if depth < last {
+                // Every entry before the last casts a mirror ray (found above).
+                own.reflection += 1;
+                let km = self.objects[object as usize].mirror;
+                Bounce { local, km }.fold(colour)
+            } else {
+                local
             };
         }
         counts.add(&own);
@@ -162,30 +160,30 @@ impl<'r> QuickShade<'r> {
             && self.objects[object as usize].mirror != DVec3::ZERO
     }
 
-    /// One entry's own colour, if the shader casts a mirror ray from it its km, and what
-    /// the entry depends on. Inlined into [`Self::pixel`], as the shader's `shade` is.
+    /// One entry's own colour (its mirror ray's share apart) and what the entry depends
+    /// on. Inlined into [`Self::pixel`], as the shader's `shade` is.
     #[inline(always)]
     fn entry(
         &self,
-        depth: u32,
+        depth: usize,
         object: u32,
         row: &[LightSlot],
-        terms: &ActiveTerms,
         counts: &mut RayCounts,
-    ) -> Option<(DVec3, Option<DVec3>, EntryTerms)> {
+    ) -> Option<(DVec3, EntryTerms)> {
+        let terms = self.terms(depth);
         if object == u32::MAX {
             let background = if terms.background {
                 self.background
             } else {
                 DVec3::ZERO
             };
-            return Some((background, None, self.dependence.miss_terms()));
+            return Some((background, self.dependence.miss_terms()));
         }
         let shade = &self.objects[object as usize];
         if shade.stale_lobes {
             return None;
         }
-        let mut entry = self.dependence.hit_terms(object as usize, depth);
+        let mut entry = self.dependence.hit_terms(object as usize, depth as u32);
         let mut colour = DVec3::ZERO;
         if terms.ambient {
             colour += shade.ambient;
@@ -233,11 +231,6 @@ impl<'r> QuickShade<'r> {
             // The lights are not looked at, but would be with another switch.
             entry.lights(row);
         }
-        let casts_mirror_ray =
-            terms.reflection && depth < self.max_depth && shade.mirror != DVec3::ZERO;
-        if casts_mirror_ray {
-            counts.reflection += 1;
-        }
-        Some((colour, casts_mirror_ray.then_some(shade.mirror), entry))
+        Some((colour, entry))
     }
 }
