@@ -52,6 +52,26 @@ impl ObjectSet {
         }
     }
 
+    /// The set less object `index`, if it is one culling covers (those from
+    /// [`Self::CULLED_BELOW`] on stay in).
+    #[must_use]
+    #[inline]
+    pub fn without(self, index: Option<usize>) -> Self {
+        match index {
+            Some(index) if index < Self::CULLED_BELOW => Self {
+                bits: self.bits & !(1 << index),
+            },
+            _ => self,
+        }
+    }
+
+    /// Whether none of the first `count` objects is in the set.
+    #[must_use]
+    #[inline]
+    pub fn is_empty_below(self, count: usize) -> bool {
+        self.members_below(count).next().is_none()
+    }
+
     /// How many of the first `count` objects are in the set.
     #[must_use]
     pub fn count_below(self, count: usize) -> usize {
@@ -110,5 +130,13 @@ mod tests {
         );
         assert_eq!(set.count_below(64), 2);
         assert_eq!(ObjectSet::ALL.count_below(7), 7);
+        let only_three = set.without(Some(63));
+        assert!(!only_three.is_empty_below(64) && only_three.without(Some(3)).is_empty_below(64));
+        assert!(
+            !only_three.without(Some(3)).is_empty_below(65),
+            "the tail is never culled"
+        );
+        assert_eq!(set.without(Some(200)), set, "nor taken out");
+        assert_eq!(set.without(None), set);
     }
 }

@@ -17,8 +17,6 @@ pub struct ShadowQuery {
     pub ray: Ray,
     /// How far it looks.
     pub t_max: f64,
-    /// The object it cannot meet (the one it leaves on its outer side), if any.
-    pub except: Option<usize>,
 }
 
 /// Answers the shader's ray queries for one pixel sample, in the order the shader asks:
@@ -28,13 +26,15 @@ pub trait RaySource {
     fn closest_hit(&mut self, world: &World, depth: u32, ray: &Ray) -> Option<SurfacePoint>;
 
     /// The world index of an object blocking the shadow ray from the hit at `depth` to
-    /// light `light` (an index into [`World::lights`]), if any. `query` makes the ray,
-    /// for a source that has to cast it.
+    /// light `light` (an index into [`World::lights`]), if any. The ray cannot meet object
+    /// `except` (the one it leaves on its outer side). `query` makes the ray, for a
+    /// source that has to cast it.
     fn occluder(
         &mut self,
         world: &World,
         depth: u32,
         light: usize,
+        except: Option<usize>,
         query: impl FnOnce() -> ShadowQuery,
     ) -> Option<usize>;
 
@@ -93,18 +93,21 @@ impl RaySource for LiveRays<'_> {
         world: &World,
         depth: u32,
         light: usize,
+        except: Option<usize>,
         query: impl FnOnce() -> ShadowQuery,
     ) -> Option<usize> {
-        let query = query();
         if depth == 0 {
-            world.occluder_except_among(
-                &query.ray,
-                query.t_max,
-                query.except,
-                self.among.shadow(light),
-            )
+            let among = self.among.shadow(light);
+            // Culling left nothing that could block: no ray to spawn (about a quarter
+            // of the default scene's camera hits' shadow rays).
+            if among.without(except).is_empty_below(world.objects.len()) {
+                return None;
+            }
+            let query = query();
+            world.occluder_except_among(&query.ray, query.t_max, except, among)
         } else {
-            world.occluder_except(&query.ray, query.t_max, query.except)
+            let query = query();
+            world.occluder_except(&query.ray, query.t_max, except)
         }
     }
 }

@@ -325,24 +325,30 @@ impl<'w> Tracer<'w> {
         counts: &mut RayCounts,
     ) -> Option<usize> {
         counts.shadow += 1;
-        rays.occluder(self.world, to.depth, to.index, || {
+        let except = self.shadow_except(hit, sample);
+        rays.occluder(self.world, to.depth, to.index, except, || {
             self.shadow_query(hit, sample)
         })
+    }
+
+    /// The object a shadow ray from `hit` to the light of `sample` cannot meet: every
+    /// shape is convex or flat, so a shadow ray leaving a solid on its outer side, or
+    /// leaving a plane, cannot meet the surface it starts on.
+    #[inline]
+    fn shadow_except(&self, hit: &SurfacePoint, sample: &LightSample) -> Option<usize> {
+        let leaves_outward = self.world.objects[hit.object].shape == crate::scene::Shape::Plane
+            || hit.n_outward.dot(sample.to_light) > 0.0;
+        leaves_outward.then_some(hit.object)
     }
 
     /// The shadow ray from `hit` to the light of `sample`.
     #[inline]
     fn shadow_query(&self, hit: &SurfacePoint, sample: &LightSample) -> ShadowQuery {
-        // Every shape is convex or flat: a shadow ray leaving a solid on its outer side,
-        // or leaving a plane, cannot meet the surface it starts on.
-        let leaves_outward = self.world.objects[hit.object].shape == crate::scene::Shape::Plane
-            || hit.n_outward.dot(sample.to_light) > 0.0;
-        let except = leaves_outward.then_some(hit.object);
         let (ray, t_max) = match sample.light_position {
             Some(position) => spawn_ray_to(hit, position),
             None => (spawn_ray(hit, sample.to_light), f64::INFINITY),
         };
-        ShadowQuery { ray, t_max, except }
+        ShadowQuery { ray, t_max }
     }
 
     /// Fraction of the lights that reach `hit` (in front, inside any spot cone) whose

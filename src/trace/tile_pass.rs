@@ -64,9 +64,10 @@ impl RaySource for KnownHit<'_> {
         world: &World,
         depth: u32,
         light: usize,
+        except: Option<usize>,
         query: impl FnOnce() -> ShadowQuery,
     ) -> Option<usize> {
-        self.live.occluder(world, depth, light, query)
+        self.live.occluder(world, depth, light, except, query)
     }
 }
 

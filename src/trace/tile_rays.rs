@@ -371,6 +371,7 @@ impl RaySource for PixelRays<'_, '_, '_> {
         world: &World,
         depth: u32,
         light: usize,
+        except: Option<usize>,
         query: impl FnOnce() -> ShadowQuery,
     ) -> Option<usize> {
         let slot = self.tile.slot_index(depth, light);
@@ -379,7 +380,7 @@ impl RaySource for PixelRays<'_, '_, '_> {
             return decode_blocker(code);
         }
         self.tile.traced.shadow += 1;
-        let blocked_by = self.live.occluder(world, depth, light, query);
+        let blocked_by = self.live.occluder(world, depth, light, except, query);
         self.tile.slot_mut(slot).shadow = encode_blocker(blocked_by);
         blocked_by
     }
