@@ -10,9 +10,9 @@ use std::sync::atomic::Ordering;
 use glam::DVec3;
 use rayon::prelude::*;
 
-use super::render::{RenderProgress, SampleSums};
+use super::render::{RenderProgress, SampleSums, cleared};
 use super::shade::RayCounts;
-use super::tile_placement::place_tiles;
+use super::tile_placement::place_band;
 
 /// Side of a square tile in pixels: small enough to balance two cores, big enough that
 /// per-tile overhead is noise.
@@ -100,40 +100,47 @@ where
     progress.batches_total.store(batches, Ordering::Relaxed);
     progress.batches_done.store(0, Ordering::Relaxed);
 
-    // Sums with nothing summed yet ([`SampleSums::unsummed`]) are made from the tiles
-    // alone: nothing to read before.
-    let unsummed = sums.sums.is_empty();
-    let before = (!unsummed).then_some(&*sums);
-    // Into an `Option`: after a cancel, tiles not yet started are not even set up.
-    let tiles: Option<Vec<Tile<S>>> = (0..tile_count)
-        .into_par_iter()
-        .map(|index| {
-            let rect = TileRect::of(index, width, height);
-            render_tile(
-                rect,
-                (work.new_state)(index, rect),
-                width,
-                before,
-                samples.clone(),
-                progress,
-                work,
-            )
+    // Sums with nothing summed yet ([`SampleSums::unsummed`]) have nothing to read
+    // before; either way the tiles' sums go into a new frame, so a cancel leaves `sums`
+    // as it was.
+    let before = (!sums.sums.is_empty()).then_some(&*sums);
+    let mut frame = cleared(width as usize * height as usize);
+    let tiles_x = width.div_ceil(TILE_SIZE);
+    // Band by band (a row of tiles), the band's tiles in parallel, each band put in the
+    // frame as soon as its tiles are done, while their sums are still in the cache.
+    let bands: Option<Vec<Vec<Tile<S>>>> = frame
+        .par_chunks_mut((width * TILE_SIZE).max(1) as usize)
+        .enumerate()
+        .map(|(band, band_sums)| {
+            let first = band as u32 * tiles_x;
+            let tiles: Option<Vec<Tile<S>>> = (first..first + tiles_x)
+                .into_par_iter()
+                .map(|index| {
+                    let rect = TileRect::of(index, width, height);
+                    let state = (work.new_state)(index, rect);
+                    render_tile(rect, state, width, before, samples.clone(), progress, work)
+                })
+                .collect();
+            let mut tiles = tiles?;
+            let placed = tiles
+                .iter_mut()
+                .map(|tile| (tile.rect, std::mem::take(&mut tile.sums)));
+            place_band(band_sums, width as usize, placed);
+            Some(tiles)
         })
         .collect();
-    let tiles = tiles?;
+    let bands = bands?;
 
     let mut rays = RayCounts::default();
     let mut new_pixels = Vec::new();
-    let mut states = Vec::with_capacity(tiles.len());
-    let mut placed = Vec::with_capacity(tiles.len());
-    for tile in tiles {
+    let mut states = Vec::with_capacity(tile_count as usize);
+    for tile in bands.into_iter().flatten() {
         states.push(tile.state);
         rays.add(&tile.rays);
         sums.non_finite += tile.non_finite;
         new_pixels.extend(tile.non_finite_pixels);
-        placed.push((tile.rect, tile.sums));
     }
-    place_tiles(sums, &placed, unsummed);
+    sums.sums = frame;
     sums.rays.add(&rays);
     if !new_pixels.is_empty() {
         sums.non_finite_pixels.extend(new_pixels);
