@@ -24,6 +24,9 @@ fn main() -> std::process::ExitCode {
     // light took 74-105 ms with them and 57-64 without; a first colour edit after a
     // re-trace sometimes 30-47 ms instead of 11-13; material edits 8% longer without
     // (docs/BENCHMARKS.md). A kernel that refuses leaves things as they were: harmless.
+    // The allocations before `main` (the runtime's first) are covered by mimalloc's
+    // `no_thp` feature (Cargo.toml), which stops it asking for huge pages at all: without
+    // it each process zeroed two 2 MiB pages before starting, about 1 ms.
     #[cfg(target_os = "linux")]
     let _ = rustix::thread::disable_transparent_huge_pages(true);
     // SAFETY: reading and setting a mimalloc option takes no pointer and may be done at
