@@ -104,10 +104,12 @@ where
     // before; either way the tiles' sums go into a new frame, so a cancel leaves `sums`
     // as it was.
     let before = (!sums.sums.is_empty()).then_some(&*sums);
+    // Cleared first: the crate has no unsafe code to fill it uninitialised.
     let mut frame = cleared(width as usize * height as usize);
     let tiles_x = width.div_ceil(TILE_SIZE);
     // Band by band (a row of tiles), the band's tiles in parallel, each band put in the
-    // frame as soon as its tiles are done, while their sums are still in the cache.
+    // frame as soon as its tiles are done, while their sums are still in the cache. Into
+    // `Option`s: after a cancel, tiles not yet started are not even set up.
     let bands: Option<Vec<Vec<Tile<S>>>> = frame
         .par_chunks_mut((width * TILE_SIZE).max(1) as usize)
         .enumerate()
