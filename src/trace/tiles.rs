@@ -10,7 +10,7 @@ use std::sync::atomic::Ordering;
 use glam::DVec3;
 use rayon::prelude::*;
 
-use super::render::{RenderProgress, SampleSums, cleared};
+use super::render::{RenderProgress, SampleSums, cleared_unless_cancelled};
 use super::shade::RayCounts;
 use super::tile_placement::place_band;
 
@@ -101,37 +101,54 @@ where
     progress.batches_done.store(0, Ordering::Relaxed);
 
     // Sums with nothing summed yet ([`SampleSums::unsummed`]) have nothing to read
-    // before; either way the tiles' sums go into a new frame, so a cancel leaves `sums`
-    // as it was.
-    let before = (!sums.sums.is_empty()).then_some(&*sums);
-    // Cleared first: the crate has no unsafe code to fill it uninitialised.
-    let mut frame = cleared(width as usize * height as usize);
+    // before.
+    let unsummed = sums.sums.is_empty();
+    let before = (!unsummed).then_some(&*sums);
     let tiles_x = width.div_ceil(TILE_SIZE);
-    // Band by band (a row of tiles), the band's tiles in parallel, each band put in the
-    // frame as soon as its tiles are done, while their sums are still in the cache. Into
-    // `Option`s: after a cancel, tiles not yet started are not even set up.
-    let bands: Option<Vec<Vec<Tile<S>>>> = frame
-        .par_chunks_mut((width * TILE_SIZE).max(1) as usize)
-        .enumerate()
-        .map(|(band, band_sums)| {
-            let first = band as u32 * tiles_x;
-            let tiles: Option<Vec<Tile<S>>> = (first..first + tiles_x)
-                .into_par_iter()
-                .map(|index| {
-                    let rect = TileRect::of(index, width, height);
-                    let state = (work.new_state)(index, rect);
-                    render_tile(rect, state, width, before, samples.clone(), progress, work)
-                })
-                .collect();
-            let mut tiles = tiles?;
-            let placed = tiles
-                .iter_mut()
-                .map(|tile| (tile.rect, std::mem::take(&mut tile.sums)));
-            place_band(band_sums, width as usize, placed);
-            Some(tiles)
-        })
-        .collect();
-    let bands = bands?;
+    let band_len = (width * TILE_SIZE).max(1) as usize;
+    // One band (a row of tiles), its tiles in parallel. Into an `Option`: after a
+    // cancel, tiles not yet started are not even set up.
+    let trace_band = |band: usize| -> Option<Vec<Tile<S>>> {
+        let first = band as u32 * tiles_x;
+        (first..first + tiles_x)
+            .into_par_iter()
+            .map(|index| {
+                let rect = TileRect::of(index, width, height);
+                let state = (work.new_state)(index, rect);
+                render_tile(rect, state, width, before, samples.clone(), progress, work)
+            })
+            .collect()
+    };
+    let (new_frame, bands) = if unsummed {
+        // Each band goes into a new frame as soon as its tiles are done, while their
+        // sums are still in the cache; the frame replaces the sums only when all are.
+        // Cleared first: the crate has no unsafe code to fill it uninitialised.
+        let mut frame = cleared_unless_cancelled(width as usize * height as usize, progress)?;
+        let bands: Option<Vec<Vec<Tile<S>>>> = frame
+            .par_chunks_mut(band_len)
+            .enumerate()
+            .map(|(band, band_sums)| {
+                let mut tiles = trace_band(band)?;
+                place(band_sums, width, &mut tiles);
+                Some(tiles)
+            })
+            .collect();
+        (Some(frame), bands?)
+    } else {
+        // The tiles read the sums before while they run: placed in them when all are
+        // done, so a cancel leaves them as they were, and no new frame is faulted in
+        // for every anti-aliasing pass.
+        let bands: Option<Vec<Vec<Tile<S>>>> = (0..height.div_ceil(TILE_SIZE) as usize)
+            .into_par_iter()
+            .map(trace_band)
+            .collect();
+        let mut bands = bands?;
+        sums.sums
+            .par_chunks_mut(band_len)
+            .zip(bands.par_iter_mut())
+            .for_each(|(band_sums, tiles)| place(band_sums, width, tiles));
+        (None, bands)
+    };
 
     let mut rays = RayCounts::default();
     let mut new_pixels = Vec::new();
@@ -142,7 +159,9 @@ where
         sums.non_finite += tile.non_finite;
         new_pixels.extend(tile.non_finite_pixels);
     }
-    sums.sums = frame;
+    if let Some(frame) = new_frame {
+        sums.sums = frame;
+    }
     sums.rays.add(&rays);
     if !new_pixels.is_empty() {
         sums.non_finite_pixels.extend(new_pixels);
@@ -150,6 +169,15 @@ where
         sums.non_finite_pixels.dedup();
     }
     Some((rays, states))
+}
+
+/// Puts the sums of a band's `tiles` in `band_sums` (the frame's rows they cover, `width`
+/// pixels each), freeing them.
+fn place<S>(band_sums: &mut [DVec3], width: u32, tiles: &mut [Tile<S>]) {
+    let placed = tiles
+        .iter_mut()
+        .map(|tile| (tile.rect, std::mem::take(&mut tile.sums)));
+    place_band(band_sums, width as usize, placed);
 }
 
 /// The guard: adds `colour` to `sum` if it is finite; NaN or infinity never reaches a

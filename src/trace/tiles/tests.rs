@@ -193,3 +193,16 @@ fn a_cancel_stops_a_tile_given_batch_by_batch_before_its_next_batch() {
         "{after} samples traced after the cancel"
     );
 }
+
+#[test]
+fn a_frame_is_cleared_in_parts_unless_cancelled() {
+    let progress = RenderProgress::default();
+    // Sizes below one part, not a multiple of the parts, and of the most parts.
+    for pixels in [0, 1, 7_500, 480_001, 1_000_003] {
+        let frame = cleared_unless_cancelled(pixels, &progress).unwrap();
+        assert_eq!(frame.len(), pixels);
+        assert!(frame.iter().all(|sum| *sum == DVec3::ZERO));
+    }
+    progress.cancel();
+    assert!(cleared_unless_cancelled(480_000, &progress).is_none());
+}
