@@ -149,13 +149,13 @@ impl TilePass<'_> {
             (pixels, rays) = (next_pixels, next_rays);
             depth += 1;
         }
-        // Deepest first: `colour(d) = local(d) + km(d) * colour(d + 1)`, as `fold_back`.
+        // Deepest first, through `fold_back`'s own step (`Bounce::fold`).
         let mut colours = vec![DVec3::ZERO; count];
         let mut folded = vec![false; count];
         for (level_pixels, bounces) in levels.iter().rev() {
             for (&pixel, bounce) in level_pixels.iter().zip(bounces) {
                 colours[pixel] = if folded[pixel] {
-                    bounce.local + bounce.km * colours[pixel]
+                    bounce.fold(colours[pixel])
                 } else {
                     bounce.local
                 };
