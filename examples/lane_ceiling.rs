@@ -19,7 +19,6 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use glam::DVec3;
-use raylab::scene::Shape;
 use raylab::trace::Ray;
 use raylab::trace::shapes::{self, gamma};
 
@@ -59,7 +58,7 @@ fn main() {
     let mut scalar = vec![[0.0; 4]; RAYS];
     let scalar_ns = best_ns(|| {
         for (ray, out) in rays.iter().zip(scalar.iter_mut()) {
-            *out = shapes::intersect(Shape::Sphere, black_box(ray), f64::INFINITY)
+            *out = shapes::intersect(shapes::Primitive::Sphere, black_box(ray), f64::INFINITY)
                 .map_or([f64::NAN; 4], |hit| [hit.t, hit.p.x, hit.p.y, hit.p.z]);
         }
     });

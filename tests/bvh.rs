@@ -16,11 +16,13 @@ fn crowded_scene(seed: u64, count: usize) -> raylab::scene::Scene {
     });
     scene.objects.push(floor(-1.0, 30.0));
     for i in 0..count {
-        let shape = Shape::ALL[i % 5];
+        let shape = &Shape::ALL[i % 5].clone();
         let translate = DVec3::new(next() * 20.0 - 10.0, next() * 4.0, next() * 20.0 - 10.0);
         let rotate = DVec3::new(next() * 360.0, next() * 360.0, next() * 360.0);
         let scale = DVec3::new(0.2 + next(), 0.2 + next(), 0.2 + next());
-        scene.objects.push(object(shape, translate, rotate, scale));
+        scene
+            .objects
+            .push(object(shape.clone(), translate, rotate, scale));
     }
     scene
 }

@@ -13,7 +13,7 @@ use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use raylab::scene::{Material, Shape};
 use raylab::trace::world::WorldObject;
-use raylab::trace::{Ray, SurfacePoint, World};
+use raylab::trace::{Primitive, Ray, SurfacePoint, World};
 use twofloat::TwoFloat as Dd;
 
 /// The object-space point that `world_from_object` takes exactly to `p_world`, in
@@ -54,12 +54,12 @@ fn distance_to_surface(object: &WorldObject, p_world: DVec3) -> f64 {
     // Each part: (signed object-space distance, object-space normal), when p is over it.
     let mut parts: Vec<(f64, DVec3)> = Vec::new();
     match object.shape {
-        Shape::Sphere => {
+        Primitive::Sphere => {
             let len = (q[0] * q[0] + q[1] * q[1] + q[2] * q[2]).sqrt();
             parts.push((f64::from(len - one), q64.normalize()));
         }
-        Shape::Plane => parts.push((q64.z, DVec3::Z)),
-        Shape::Cube => {
+        Primitive::Plane => parts.push((q64.z, DVec3::Z)),
+        Primitive::Cube => {
             for axis in 0..3 {
                 let others_inside = (0..3)
                     .filter(|&a| a != axis)
@@ -71,7 +71,7 @@ fn distance_to_surface(object: &WorldObject, p_world: DVec3) -> f64 {
                 }
             }
         }
-        Shape::Cylinder => {
+        Primitive::Cylinder => {
             if near(q64.z.abs(), 1.0) {
                 parts.push((
                     f64::from(radius - one),
@@ -82,7 +82,7 @@ fn distance_to_surface(object: &WorldObject, p_world: DVec3) -> f64 {
                 parts.push((f64::from(z.abs() - one), DVec3::Z));
             }
         }
-        Shape::Cone => {
+        Primitive::Cone => {
             if near(q64.z, 1.0) && q64.z >= -1e-9 {
                 let side = f64::from((radius - z) / Dd::from(std::f64::consts::SQRT_2));
                 let n = DVec3::new(q64.x, q64.y, -radius.hi()).normalize_or(-DVec3::Z);
@@ -134,7 +134,7 @@ fn case(shape: Shape) -> impl Strategy<Value = (World, Ray)> {
                 let scale = DVec3::new(f.0, f.1, f.2) * 10f64.powf(log_scale);
                 let mut scene = bare_scene(Material::default());
                 scene.objects.push(object(
-                    shape,
+                    shape.clone(),
                     offset_dir * offset,
                     DVec3::new(r.0, r.1, r.2),
                     scale,
@@ -176,7 +176,7 @@ fn print_error_table() {
     );
     println!("|---|---|---|---|---|");
     for shape in Shape::ALL {
-        let strategy = case(shape);
+        let strategy = case(shape.clone());
         let (mut hits, mut max, mut sum, mut bound_sum) = (0u32, 0f64, 0f64, 0f64);
         for _ in 0..20_000 {
             let (world, ray) = strategy.new_tree(&mut runner).unwrap().current();

@@ -49,7 +49,9 @@ fn full_scene_lights_in_file_order_with_intensity_one() {
             Light::Point {
                 position: DVec3::new(1.0, 5.0, -2.0),
                 colour: DVec3::splat(10.0),
-                intensity: 1.0
+                intensity: 1.0,
+                radius: 0.0,
+                samples: 1,
             },
             Light::Directional {
                 direction: DVec3::new(0.0, -1.0, 0.0),
@@ -61,7 +63,9 @@ fn full_scene_lights_in_file_order_with_intensity_one() {
                 direction: DVec3::new(0.0, -1.0, 1e-3),
                 angle_deg: 30.0,
                 colour: DVec3::new(20.0, 18.0, 16.0),
-                intensity: 1.0
+                intensity: 1.0,
+                radius: 0.0,
+                samples: 1,
             },
         ]
     );
@@ -121,7 +125,7 @@ fn full_scene_objects_and_transforms() {
     let objects = &import.scene.objects;
     let summary: Vec<(&str, Shape, &str)> = objects
         .iter()
-        .map(|o| (o.name.as_str(), o.shape, o.material.as_str()))
+        .map(|o| (o.name.as_str(), o.shape.clone(), o.material.as_str()))
         .collect();
     assert_eq!(
         summary,
@@ -341,6 +345,8 @@ fn a_spot_light_without_angle_is_an_unlit_spot_with_a_warning() {
             angle_deg: 45.0,
             colour: DVec3::splat(50.0),
             intensity: 0.0,
+            radius: 0.0,
+            samples: 1,
         }
     );
     validate(&import.scene).expect("valid");

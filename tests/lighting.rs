@@ -183,6 +183,8 @@ fn spot_light_lights_inside_its_cone_only() {
         angle_deg: 30.0,
         colour: DVec3::ONE,
         intensity: 20.0,
+        radius: 0.0,
+        samples: 1,
     });
     // At x = 2: d^2 = 20, n.l = 4 / sqrt(20).
     let expected = 20.0 / 20.0 * (4.0 / 20f64.sqrt());
@@ -209,6 +211,8 @@ fn a_180_degree_spot_lights_every_direction_even_straight_behind_it() {
         angle_deg,
         colour: DVec3::ONE,
         intensity: 16.0,
+        radius: 0.0,
+        samples: 1,
     };
     let mut scene = floor_scene();
     scene.lights.push(spot(180.0));
@@ -242,6 +246,8 @@ fn every_light_kind_is_shadowed_by_a_blocker_and_unshadowed_without_shadows() {
             angle_deg: 20.0,
             colour: DVec3::ONE,
             intensity: 36.0,
+            radius: 0.0,
+            samples: 1,
         },
     ];
     for light in lights {

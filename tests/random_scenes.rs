@@ -43,7 +43,9 @@ fn light_strategy() -> impl Strategy<Value = Light> {
             |(position, colour, intensity)| Light::Point {
                 position,
                 colour,
-                intensity
+                intensity,
+                radius: 0.0,
+                samples: 1,
             }
         ),
         (vec3(-1.0..1.0), colour.clone()).prop_filter_map(
@@ -65,6 +67,8 @@ fn light_strategy() -> impl Strategy<Value = Light> {
                     angle_deg,
                     colour,
                     intensity: 20.0,
+                    radius: 0.0,
+                    samples: 1,
                 })
             }
         ),
@@ -92,6 +96,8 @@ fn scene_strategy() -> impl Strategy<Value = Scene> {
                     specular: ks,
                     shininess,
                     mirror: km,
+                    transmission: DVec3::ZERO,
+                    ior: 1.0,
                 });
                 scene.objects = objects;
                 scene.lights = lights;

@@ -11,7 +11,7 @@ use raylab::trace::{Ray, World};
 
 /// Whether an object-space point is strictly inside a solid unit shape (`None` for the
 /// plane, which has no inside).
-fn inside(shape: Shape, p: DVec3) -> Option<bool> {
+fn inside(shape: &Shape, p: DVec3) -> Option<bool> {
     let r2 = p.x * p.x + p.y * p.y;
     Some(match shape {
         Shape::Sphere => p.length_squared() < 1.0,
@@ -19,11 +19,12 @@ fn inside(shape: Shape, p: DVec3) -> Option<bool> {
         Shape::Cylinder => r2 < 1.0 && p.z.abs() < 1.0,
         Shape::Cone => r2 < p.z * p.z && p.z > 0.0 && p.z < 1.0,
         Shape::Plane => return None,
+        other => panic!("no inside test for {other:?}"),
     })
 }
 
 /// Distance-like residual of an object-space point from the shape's surface.
-fn surface_residual(shape: Shape, p: DVec3) -> f64 {
+fn surface_residual(shape: &Shape, p: DVec3) -> f64 {
     let r = (p.x * p.x + p.y * p.y).sqrt();
     match shape {
         Shape::Sphere => (p.length() - 1.0).abs(),
@@ -44,6 +45,7 @@ fn surface_residual(shape: Shape, p: DVec3) -> f64 {
             let cap = (p.z - 1.0).abs().max((r - 1.0).max(0.0));
             side.min(cap)
         }
+        other => panic!("no surface residual for {other:?}"),
     }
 }
 
@@ -78,7 +80,7 @@ fn placed_shape_and_ray() -> impl Strategy<Value = (Shape, DVec3, DVec3, DVec3, 
                 let scale = DVec3::new(factors.0, factors.1, factors.2) * size;
                 let rotate = DVec3::new(rot.0, rot.1, rot.2);
                 let translate = offset_dir * offset;
-                let placed = object(shape, translate, rotate, scale);
+                let placed = object(shape.clone(), translate, rotate, scale);
                 let m = placed.transform.world_from_object();
                 let target = m.transform_point3(DVec3::new(aim.0, aim.1, aim.2));
                 let eye = target + eye_dir * distance * scale.max_element();
@@ -106,7 +108,7 @@ proptest! {
     fn hits_lie_on_the_surface_within_their_bound_and_normals_are_unit_and_facing(
         (shape, translate, rotate, scale, ray) in placed_shape_and_ray()
     ) {
-        let world = world_of(shape, translate, rotate, scale);
+        let world = world_of(shape.clone(), translate, rotate, scale);
         let Some(hit) = world.intersect(&ray, f64::INFINITY) else { return Ok(()); };
         prop_assert!(hit.p.is_finite() && hit.n.is_finite() && hit.t.is_finite() && hit.p_error.is_finite());
         prop_assert!((hit.n.length() - 1.0).abs() < 1e-12);
@@ -118,7 +120,7 @@ proptest! {
         // largest scale, is within the reported bound (plus the map's own rounding).
         let object = &world.objects[0];
         let p_object = object.object_from_world.transform_point3(hit.p);
-        let residual = surface_residual(shape, p_object) * scale.max_element();
+        let residual = surface_residual(&shape, p_object) * scale.max_element();
         let bound = hit.p_error.length() * 4.0;
         prop_assert!(residual <= bound, "residual {residual} bound {bound}");
     }
@@ -127,9 +129,9 @@ proptest! {
     fn nothing_is_crossed_before_the_reported_hit(
         (shape, translate, rotate, scale, ray) in placed_shape_and_ray()
     ) {
-        let world = world_of(shape, translate, rotate, scale);
+        let world = world_of(shape.clone(), translate, rotate, scale);
         let object = &world.objects[0];
-        let status = |t: f64| inside(shape, object.object_from_world.transform_point3(ray.at(t)));
+        let status = |t: f64| inside(&shape, object.object_from_world.transform_point3(ray.at(t)));
         let Some(start) = status(0.0) else { return Ok(()); };
         let end = world.intersect(&ray, f64::INFINITY).map_or(1e3 * (ray.origin.length() + 1.0), |h| h.t);
         for i in 1..200 {

@@ -127,6 +127,8 @@ fn a_light_marker_under_the_gizmo_buttons_does_not_take_their_presses() {
         position: ray.at(6.0),
         colour,
         intensity,
+        radius: 0.0,
+        samples: 1,
     };
     harness
         .state_mut()

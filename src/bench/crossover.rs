@@ -62,7 +62,7 @@ pub fn crowd(count: usize) -> Scene {
         );
         scene.objects.push(Object {
             name: format!("object {i}"),
-            shape: Shape::ALL[i % 5],
+            shape: Shape::ALL[i % 5].clone(),
             transform: place(
                 translate,
                 DVec3::new(0.0, i as f64 * 37.0, 0.0),
@@ -80,6 +80,8 @@ pub fn crowd(count: usize) -> Scene {
             position: DVec3::new(3.0, 8.0, 6.0),
             colour: DVec3::ONE,
             intensity: 80.0,
+            radius: 0.0,
+            samples: 1,
         },
     ];
     scene.camera.position = DVec3::new(0.0, 7.0, 9.0);

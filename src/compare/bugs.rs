@@ -6,9 +6,10 @@
 
 use glam::DVec3;
 
-use crate::scene::{Material, Shape};
+use crate::scene::Material;
 use crate::trace::SurfacePoint;
 pub use crate::trace::phong::{LocalLight, phong_power};
+use crate::trace::shapes::Primitive;
 use crate::trace::world::WorldObject;
 
 /// A wrong shading normal.
@@ -239,11 +240,11 @@ impl Part {
 
     /// The parts a shape is made of.
     #[must_use]
-    pub fn of_shape(shape: Shape) -> &'static [Part] {
+    pub fn of_shape(shape: Primitive) -> &'static [Part] {
         match shape {
-            Shape::Sphere | Shape::Cube => &[Part::Whole],
-            Shape::Plane => &[Part::Front, Part::Back],
-            Shape::Cylinder | Shape::Cone => &[Part::Side, Part::Caps],
+            Primitive::Sphere | Primitive::Cube => &[Part::Whole],
+            Primitive::Plane => &[Part::Front, Part::Back],
+            Primitive::Cylinder | Primitive::Cone => &[Part::Side, Part::Caps],
         }
     }
 
@@ -253,14 +254,14 @@ impl Part {
         let n_object =
             (object.world_from_object.matrix3.transpose() * hit.n_outward).normalize_or_zero();
         match object.shape {
-            Shape::Sphere | Shape::Cube => Part::Whole,
-            Shape::Plane if hit.n_outward.dot(ray_dir) < 0.0 => Part::Front,
-            Shape::Plane => Part::Back,
+            Primitive::Sphere | Primitive::Cube => Part::Whole,
+            Primitive::Plane if hit.n_outward.dot(ray_dir) < 0.0 => Part::Front,
+            Primitive::Plane => Part::Back,
             // Cap normals are +-z; side normals have |z| of 0 (cylinder) or 1/sqrt 2 (cone,
             // pointing to -z).
-            Shape::Cylinder if n_object.z.abs() > 0.9 => Part::Caps,
-            Shape::Cone if n_object.z > 0.9 => Part::Caps,
-            Shape::Cylinder | Shape::Cone => Part::Side,
+            Primitive::Cylinder if n_object.z.abs() > 0.9 => Part::Caps,
+            Primitive::Cone if n_object.z > 0.9 => Part::Caps,
+            Primitive::Cylinder | Primitive::Cone => Part::Side,
         }
     }
 

@@ -9,7 +9,7 @@ use super::bugs::{ClampBug, NormalBug, Part, SpecularBug};
 use super::channels::{ChannelSpace, Family, Kind};
 use super::components::{Components, MAX_MISSING_OBJECTS};
 use super::target::{FitState, Target};
-use crate::scene::Shape;
+use crate::trace::shapes::Primitive;
 
 /// A set of channels scaled by one number.
 #[derive(Clone, Debug, PartialEq)]
@@ -43,7 +43,7 @@ fn choices(count: usize) -> impl Iterator<Item = Option<usize>> + Clone {
 impl Groups {
     /// The groups of a world numbered by `space` whose objects have these shapes.
     #[must_use]
-    pub fn new(space: ChannelSpace, shapes: &[Shape]) -> Self {
+    pub fn new(space: ChannelSpace, shapes: &[Primitive]) -> Self {
         let mut list = Vec::new();
         let objects = space.objects;
         let mut add = |family, light, object: Option<usize>, part, kinds: Vec<Kind>| {

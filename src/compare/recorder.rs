@@ -11,8 +11,9 @@ use glam::DVec3;
 
 use super::bugs::{ClampBug, LocalLight, NormalBug, Part, SpecularBug, local_terms};
 use super::channels::{ChannelSpace, Kind};
-use crate::scene::{Material, Shape};
+use crate::scene::Material;
 use crate::trace::lights::LightSample;
+use crate::trace::shapes::Primitive;
 use crate::trace::spawn::{spawn_ray, spawn_ray_to};
 use crate::trace::{
     LightRecord, NoRecorder, Ray, RayCounts, Recorder, SurfacePoint, TermSwitches, Tracer, View,
@@ -166,7 +167,7 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
     /// closed solid shadows itself; a plane's other side needs a shadow ray.
     fn reaches_from_behind(&self, hit: &SurfacePoint, sample: &LightSample) -> bool {
         let world = self.ctx.world;
-        if world.objects[hit.object].shape != Shape::Plane {
+        if world.objects[hit.object].shape != Primitive::Plane {
             return false;
         }
         let except = Some(hit.object);

@@ -272,7 +272,7 @@ mod tests {
             .inverse()
             .transform_point3(framed.position);
         assert!(clearance::contains(
-            Shape::Cylinder,
+            &Shape::Cylinder,
             pillar
                 .transform
                 .world_from_object()
@@ -280,7 +280,7 @@ mod tests {
                 .transform_point3(plain)
         ));
         assert!(
-            !clearance::contains(Shape::Cylinder, eye_in_pillar),
+            !clearance::contains(&Shape::Cylinder, eye_in_pillar),
             "{}",
             framed.position
         );

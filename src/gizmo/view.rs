@@ -4,7 +4,7 @@
 use glam::DVec3;
 
 use crate::scene::{Camera, Object, Trs};
-use crate::trace::shapes::object_bounds;
+use crate::trace::shapes::shape_bounds;
 
 /// World units one pixel spans at the depth of `p_world`, in an image `height_px` tall,
 /// so a handle can keep a constant size on screen. Never zero or negative: a point at or
@@ -33,7 +33,7 @@ pub fn object_axes(rotate_deg: DVec3) -> [DVec3; 3] {
 /// The sphere (centre, radius) around an object's bounding box in world space.
 #[must_use]
 pub fn bounding_sphere(object: &Object) -> (DVec3, f64) {
-    let bounds = object_bounds(object.shape).transformed(&object.transform.world_from_object());
+    let bounds = shape_bounds(&object.shape).transformed(&object.transform.world_from_object());
     let centre = (bounds.min + bounds.max) * 0.5;
     (centre, (bounds.max - centre).length())
 }

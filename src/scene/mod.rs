@@ -3,24 +3,29 @@
 //! Nothing here knows about rendering or the editor; `trace` compiles a [`Scene`] into a
 //! render-ready world.
 
+mod conventions;
 mod error;
 pub mod examples;
 mod file;
 pub mod legacy;
+mod light;
 mod model;
+mod shape;
 mod text_file;
 pub mod transform;
 mod validate;
 
+pub use conventions::{ClampConvention, Conventions, MirrorConvention, Quantise};
 pub use error::SceneError;
 pub use file::{
     load_scene, parse_scene, save_scene, scene_to_ron, write_atomically, write_atomically_with,
 };
-pub use model::{
-    Camera, FORMAT_VERSION, Light, LightKind, Material, Object, RenderSettings, Scene, Shape,
-};
+pub use light::{Light, LightKind};
+pub use model::{Camera, FORMAT_VERSION, Material, Object, RenderSettings, Scene};
+pub use shape::{CsgOp, Shape};
 pub use text_file::{MAX_SCENE_FILE_BYTES, TextFileError, read_text_file};
 pub use transform::{MatrixRows, Transform, Trs, affine_from_rows, rows_from_affine};
 pub use validate::{
-    MAX_DEPTH, MAX_IMAGE_SIDE, MAX_SAMPLES_PER_PIXEL, MAX_SPOT_ANGLE_DEG, validate,
+    MAX_DEPTH, MAX_IMAGE_SIDE, MAX_IOR, MAX_LIGHT_SAMPLES, MAX_SAMPLES_PER_PIXEL,
+    MAX_SPOT_ANGLE_DEG, MAX_TREE_DEPTH, validate,
 };

@@ -9,6 +9,9 @@ use std::collections::BTreeMap;
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
+use super::conventions::Conventions;
+use super::light::Light;
+use super::shape::Shape;
 use super::transform::Transform;
 
 /// The current (and only) version of the file format.
@@ -90,6 +93,9 @@ pub struct RenderSettings {
     /// Anti-aliasing target: stratified samples per pixel.
     #[serde(default = "default_samples_per_pixel")]
     pub samples_per_pixel: u32,
+    /// The course framework's mirror, clamp and quantise habits; default the contract's.
+    #[serde(default, skip_serializing_if = "Conventions::is_default")]
+    pub conventions: Conventions,
 }
 
 fn default_max_depth() -> u32 {
@@ -106,6 +112,7 @@ impl Default for RenderSettings {
             max_depth: default_max_depth(),
             background: DVec3::ZERO,
             samples_per_pixel: default_samples_per_pixel(),
+            conventions: Conventions::default(),
         }
     }
 }
@@ -129,6 +136,24 @@ pub struct Material {
     /// Mirror reflectance (km).
     #[serde(default)]
     pub mirror: DVec3,
+    /// Transmittance (kt) of the refraction term; default 0 (opaque).
+    #[serde(default, skip_serializing_if = "is_zero_colour")]
+    pub transmission: DVec3,
+    /// Index of refraction of the object's inside (the outside is 1); default 1.
+    #[serde(default = "default_ior", skip_serializing_if = "is_unit_ior")]
+    pub ior: f64,
+}
+
+fn default_ior() -> f64 {
+    1.0
+}
+
+fn is_unit_ior(ior: &f64) -> bool {
+    *ior == 1.0
+}
+
+fn is_zero_colour(colour: &DVec3) -> bool {
+    *colour == DVec3::ZERO
 }
 
 fn default_shininess() -> f64 {
@@ -143,196 +168,28 @@ impl Default for Material {
             specular: DVec3::ZERO,
             shininess: default_shininess(),
             mirror: DVec3::ZERO,
+            transmission: DVec3::ZERO,
+            ior: default_ior(),
         }
     }
 }
 
-/// The five unit shapes, in object space (see the table in SCENE_FORMAT.md).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
-pub enum Shape {
-    /// Centre at the origin, radius 1.
-    Sphere,
-    /// The two-sided square z = 0, -1 <= x, y <= 1.
-    Plane,
-    /// The cube [-1, 1]^3.
-    Cube,
-    /// x^2 + y^2 = 1 for -1 <= z <= 1, closed by disc caps.
-    Cylinder,
-    /// x^2 + y^2 = z^2 for 0 <= z <= 1, apex at the origin, capped at z = 1.
-    Cone,
-}
-
-impl Shape {
-    /// Every shape, in menu order.
-    pub const ALL: [Shape; 5] = [
-        Shape::Sphere,
-        Shape::Plane,
-        Shape::Cube,
-        Shape::Cylinder,
-        Shape::Cone,
-    ];
-
-    /// The name used in files and menus.
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        match self {
-            Shape::Sphere => "Sphere",
-            Shape::Plane => "Plane",
-            Shape::Cube => "Cube",
-            Shape::Cylinder => "Cylinder",
-            Shape::Cone => "Cone",
-        }
-    }
-}
-
-/// One object: a unit shape, its placement and its material.
+/// One object: a shape (or a node of an object tree), its placement and its material.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Object {
     /// Display name; when left out of a file it becomes "<shape> <index>".
     #[serde(default)]
     pub name: String,
-    /// Which unit shape.
+    /// Which shape, or which tree node.
     pub shape: Shape,
-    /// Object-to-world placement.
+    /// Placement: object-to-world, or object-to-parent inside a tree.
     #[serde(default)]
     pub transform: Transform,
-    /// Name of an entry in `Scene::materials`.
+    /// Name of an entry in `Scene::materials`; empty inside a tree means the parent's
+    /// (a group's children and CSG operands may leave it out), and a group has none.
+    #[serde(default)]
     pub material: String,
-}
-
-/// A light. Strength is `colour * intensity`; point and spot lights fall off as 1/d^2.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub enum Light {
-    /// Adds `ka * colour * intensity` everywhere.
-    Ambient {
-        /// Light colour (linear RGB, may exceed 1).
-        colour: DVec3,
-        /// Multiplier of `colour`.
-        #[serde(default = "default_intensity")]
-        intensity: f64,
-    },
-    /// A point light.
-    Point {
-        /// World position.
-        position: DVec3,
-        /// Light colour (linear RGB, may exceed 1).
-        colour: DVec3,
-        /// Multiplier of `colour`.
-        #[serde(default = "default_intensity")]
-        intensity: f64,
-    },
-    /// A light at infinity; `direction` is the way the light travels.
-    Directional {
-        /// The way the light travels (need not be unit length).
-        direction: DVec3,
-        /// Light colour (linear RGB, may exceed 1).
-        colour: DVec3,
-        /// Multiplier of `colour`.
-        #[serde(default = "default_intensity")]
-        intensity: f64,
-    },
-    /// A point light restricted to a cone with a hard edge.
-    Spot {
-        /// World position of the apex.
-        position: DVec3,
-        /// Axis of the cone: the way the light travels.
-        direction: DVec3,
-        /// Half-angle of the cone in degrees, in (0, 180]: 90 lights a half-space, 180
-        /// every direction.
-        angle_deg: f64,
-        /// Light colour (linear RGB, may exceed 1).
-        colour: DVec3,
-        /// Multiplier of `colour`.
-        #[serde(default = "default_intensity")]
-        intensity: f64,
-    },
-}
-
-fn default_intensity() -> f64 {
-    1.0
-}
-
-/// The four kinds of light, without their values: for menus, messages and importers.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum LightKind {
-    /// [`Light::Ambient`].
-    Ambient,
-    /// [`Light::Point`].
-    Point,
-    /// [`Light::Directional`].
-    Directional,
-    /// [`Light::Spot`].
-    Spot,
-}
-
-impl LightKind {
-    /// Every kind, in menu order.
-    pub const ALL: [LightKind; 4] = [
-        LightKind::Ambient,
-        LightKind::Point,
-        LightKind::Directional,
-        LightKind::Spot,
-    ];
-
-    /// The kind's name, as in files: the variant name of [`Light`].
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        match self {
-            LightKind::Ambient => "Ambient",
-            LightKind::Point => "Point",
-            LightKind::Directional => "Directional",
-            LightKind::Spot => "Spot",
-        }
-    }
-}
-
-impl Light {
-    /// Which kind of light this is.
-    #[must_use]
-    pub fn kind(&self) -> LightKind {
-        match self {
-            Light::Ambient { .. } => LightKind::Ambient,
-            Light::Point { .. } => LightKind::Point,
-            Light::Directional { .. } => LightKind::Directional,
-            Light::Spot { .. } => LightKind::Spot,
-        }
-    }
-
-    /// The kind's name, as in files and menus.
-    #[must_use]
-    pub fn kind_name(&self) -> &'static str {
-        self.kind().name()
-    }
-
-    /// The light's colour, before `intensity`.
-    #[must_use]
-    pub fn colour(&self) -> DVec3 {
-        match *self {
-            Light::Ambient { colour, .. }
-            | Light::Point { colour, .. }
-            | Light::Directional { colour, .. }
-            | Light::Spot { colour, .. } => colour,
-        }
-    }
-
-    /// The multiplier of the light's colour.
-    #[must_use]
-    pub fn intensity(&self) -> f64 {
-        match *self {
-            Light::Ambient { intensity, .. }
-            | Light::Point { intensity, .. }
-            | Light::Directional { intensity, .. }
-            | Light::Spot { intensity, .. } => intensity,
-        }
-    }
-
-    /// The light's colour times its intensity.
-    #[must_use]
-    pub fn strength(&self) -> DVec3 {
-        self.colour() * self.intensity()
-    }
 }
 
 impl Scene {
@@ -350,10 +207,22 @@ impl Scene {
     }
 
     /// Gives every unnamed object its default name, "<shape> <index>".
+    /// Inside a tree each child is numbered among its siblings.
     pub fn fill_default_names(&mut self) {
-        for (index, object) in self.objects.iter_mut().enumerate() {
+        fill_default_names(&mut self.objects);
+    }
+}
+
+fn fill_default_names(objects: &mut [Object]) {
+    // A loop over a work list, not recursion: trees may be deep.
+    let mut pending = vec![objects];
+    while let Some(level) = pending.pop() {
+        for (index, object) in level.iter_mut().enumerate() {
             if object.name.is_empty() {
                 object.name = format!("{} {index}", object.shape.name());
+            }
+            if let Some(children) = object.shape.children_mut() {
+                pending.push(children);
             }
         }
     }

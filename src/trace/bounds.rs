@@ -20,6 +20,12 @@ impl Aabb {
         Self { min, max }
     }
 
+    /// The smallest box holding both boxes.
+    #[must_use]
+    pub fn union(&self, other: &Aabb) -> Self {
+        Self::new(self.min.min(other.min), self.max.max(other.max))
+    }
+
     /// The box around this box's eight corners after `world_from_object`, grown by a
     /// relative margin so that rounding in the transform can never cull a real hit.
     #[must_use]

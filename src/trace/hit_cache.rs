@@ -27,9 +27,10 @@ use super::light_factors::{self, LightSlot};
 use super::lights::WorldLight;
 use super::ray_counts::RayCounts;
 use super::render::RenderOptions;
+use super::shapes::Primitive;
 use super::terms::{TermSwitches, View};
 use super::world::World;
-use crate::scene::{Camera, Material, Shape};
+use crate::scene::{Camera, Material};
 
 /// The most memory the preview's cache may take, as [`cache_fits`] estimates it: larger
 /// previews re-trace every edit.
@@ -141,7 +142,7 @@ struct RayGeometry {
     width: u32,
     height: u32,
     camera: Camera,
-    objects: Vec<(Shape, DAffine3)>,
+    objects: Vec<(Primitive, DAffine3)>,
     object_scene_index: Vec<usize>,
 }
 

@@ -247,6 +247,8 @@ mod tests {
             angle_deg: 45.0,
             colour: DVec3::ONE,
             intensity: 1.0,
+            radius: 0.0,
+            samples: 1,
         });
         assert!(light.sample(DVec3::new(0.99, 0.0, 0.0)).is_some());
         assert!(light.sample(DVec3::new(1.01, 0.0, 0.0)).is_none());
@@ -263,6 +265,8 @@ mod tests {
             angle_deg,
             colour: DVec3::ONE,
             intensity: 1.0,
+            radius: 0.0,
+            samples: 1,
         })
     }
 
@@ -298,12 +302,16 @@ mod tests {
             angle_deg: 45.0,
             colour: DVec3::ONE,
             intensity: 0.0,
+            radius: 0.0,
+            samples: 1,
         });
         assert_eq!(dark.sample(DVec3::NEG_Y), None);
         let black = WorldLight::new(&Light::Point {
             position: DVec3::ZERO,
             colour: DVec3::ZERO,
             intensity: 3.0,
+            radius: 0.0,
+            samples: 1,
         });
         assert_eq!(black.sample(DVec3::X), None);
     }

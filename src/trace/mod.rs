@@ -59,6 +59,7 @@ pub use render::{
 };
 pub use reshade::{CachedPass, render_one_sample_cached};
 pub use shade::{LightRecord, NoRecorder, RayCounts, Recorder, Tracer};
+pub use shapes::Primitive;
 pub use terms::{Isolation, Term, TermSwitches, View};
 pub use tiles::TILE_SIZE;
 pub use world::{Acceleration, BVH_MIN_OBJECTS, SurfacePoint, World};

@@ -336,7 +336,8 @@ impl<'w> Tracer<'w> {
     /// leaving a plane, cannot meet the surface it starts on.
     #[inline]
     fn shadow_except(&self, hit: &SurfacePoint, sample: &LightSample) -> Option<usize> {
-        let leaves_outward = self.world.objects[hit.object].shape == crate::scene::Shape::Plane
+        let leaves_outward = self.world.objects[hit.object].shape
+            == super::shapes::Primitive::Plane
             || hit.n_outward.dot(sample.to_light) > 0.0;
         leaves_outward.then_some(hit.object)
     }

@@ -8,9 +8,9 @@ use super::bvh::Bvh;
 use super::lights::WorldLight;
 use super::object_set::ObjectSet;
 use super::ray::Ray;
-use super::shapes::{self, ShapeHit, gamma};
+use super::shapes::{self, Primitive, ShapeHit, gamma};
 use super::terms::Isolation;
-use crate::scene::{Light, Material, Scene, SceneError, Shape, validate};
+use crate::scene::{Light, Material, Object, Scene, SceneError, validate};
 
 /// One object, placed and ready to intersect.
 #[derive(Clone, Debug)]
@@ -18,7 +18,7 @@ pub struct WorldObject {
     /// Its name in the scene, for the inspector and errors.
     pub name: String,
     /// Which unit shape.
-    pub shape: Shape,
+    pub shape: Primitive,
     /// Object-to-world transform.
     pub world_from_object: DAffine3,
     /// World-to-object transform.
@@ -147,26 +147,27 @@ impl World {
             .objects
             .iter()
             .map(|object| {
+                let shape = Primitive::of(&object.shape).ok_or_else(|| not_drawn(object))?;
                 let world_from_object = object.transform.world_from_object();
                 let object_from_world = world_from_object.inverse();
                 let material = material_names
                     .binary_search(&object.material)
                     .expect("validated: every material exists");
-                WorldObject {
+                Ok(WorldObject {
                     name: object.name.clone(),
-                    shape: object.shape,
+                    shape,
                     world_from_object,
                     object_from_world,
                     normal_from_object: world_from_object.matrix3.inverse().transpose(),
-                    bounds: shapes::object_bounds(object.shape).transformed(&world_from_object),
+                    bounds: shapes::object_bounds(shape).transformed(&world_from_object),
                     material,
-                    bounding_sphere: (object.shape == Shape::Sphere)
+                    bounding_sphere: (shape == Primitive::Sphere)
                         .then(|| BoundingSphere::around_unit_sphere(&world_from_object)),
                     abs_world_from_object: abs_mat(&world_from_object.matrix3),
                     abs_object_from_world: abs_mat(&object_from_world.matrix3),
-                }
+                })
             })
-            .collect();
+            .collect::<Result<_, SceneError>>()?;
         let mut lights = Vec::new();
         let mut light_scene_index = Vec::new();
         let mut ambient = DVec3::ZERO;
@@ -370,4 +371,13 @@ fn world_error(object: &WorldObject, hit: &ShapeHit, p_world: DVec3) -> DVec3 {
 
 fn abs_mat(m: &DMat3) -> DMat3 {
     DMat3::from_cols(m.x_axis.abs(), m.y_axis.abs(), m.z_axis.abs())
+}
+
+/// The error for an object the tracer cannot draw yet.
+fn not_drawn(object: &Object) -> SceneError {
+    SceneError::Invalid(format!(
+        "object \"{}\": the tracer cannot draw a {} yet",
+        object.name,
+        object.shape.name()
+    ))
 }

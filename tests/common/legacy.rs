@@ -93,6 +93,8 @@ pub fn material(
         specular,
         shininess,
         mirror,
+        transmission: DVec3::ZERO,
+        ior: 1.0,
     }
 }
 

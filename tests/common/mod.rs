@@ -46,6 +46,7 @@ pub fn bare_scene(material: Material) -> Scene {
             max_depth: 5,
             background: DVec3::ZERO,
             samples_per_pixel: 1,
+            conventions: Default::default(),
         },
         materials: BTreeMap::from([("m".to_owned(), material)]),
         objects: Vec::new(),
@@ -83,6 +84,8 @@ pub fn point_light(position: DVec3, intensity: f64) -> Light {
         position,
         colour: DVec3::ONE,
         intensity,
+        radius: 0.0,
+        samples: 1,
     }
 }
 

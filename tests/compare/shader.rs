@@ -5,10 +5,10 @@
 
 use glam::{DVec2, DVec3};
 use raylab::compare::OtherImage;
-use raylab::scene::{Light, Scene, Shape};
+use raylab::scene::{Light, Scene};
 use raylab::trace::sampling::sample_in_pixel;
 use raylab::trace::spawn::{spawn_ray, spawn_ray_to};
-use raylab::trace::{PinholeCamera, Ray, SurfacePoint, World};
+use raylab::trace::{PinholeCamera, Primitive, Ray, SurfacePoint, World};
 
 /// The bugs to switch on; the default is none.
 #[derive(Clone, Debug, Default)]
@@ -46,7 +46,7 @@ impl Shader<'_> {
         let mut ray = *ray;
         loop {
             let hit = self.world.intersect(&ray, f64::INFINITY)?;
-            let plane = self.world.objects[hit.object].shape == Shape::Plane;
+            let plane = self.world.objects[hit.object].shape == Primitive::Plane;
             if self.bugs.one_sided_planes && plane && hit.n_outward.dot(ray.dir) > 0.0 {
                 ray = spawn_ray(&hit, ray.dir); // through the plane's back, as if not there
                 continue;
@@ -57,7 +57,7 @@ impl Shader<'_> {
 
     fn normal(&self, hit: &SurfacePoint, dir: DVec3) -> DVec3 {
         let object = &self.world.objects[hit.object];
-        if !(self.bugs.cone_normal_without_z && object.shape == Shape::Cone) {
+        if !(self.bugs.cone_normal_without_z && object.shape == Primitive::Cone) {
             return hit.n;
         }
         let mut n_object =
@@ -74,7 +74,7 @@ impl Shader<'_> {
         if self.bugs.shadows_off {
             return true;
         }
-        let plane = self.world.objects[hit.object].shape == Shape::Plane;
+        let plane = self.world.objects[hit.object].shape == Primitive::Plane;
         let except = (plane || hit.n_outward.dot(to_light) > 0.0).then_some(hit.object);
         match position {
             Some(p) => {

@@ -54,6 +54,8 @@ pub fn mirror_scene() -> Scene {
             angle_deg: 10.0,
             colour: DVec3::ONE,
             intensity: 10.0,
+            radius: 0.0,
+            samples: 1,
         },
     ];
     scene.render.background = DVec3::new(0.1, 0.2, 0.3);

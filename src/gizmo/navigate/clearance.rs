@@ -36,7 +36,7 @@ impl Obstacles {
                 let world_from_object = object.transform.world_from_object();
                 let object_from_world = world_from_object.inverse();
                 object_from_world.is_finite().then_some(Placed {
-                    shape: object.shape,
+                    shape: object.shape.clone(),
                     world_from_object,
                     object_from_world,
                 })
@@ -57,7 +57,7 @@ impl Obstacles {
     ) -> bool {
         self.placed.iter().all(|object| {
             let eye = object.object_from_world.transform_point3(eye_world);
-            match object.shape {
+            match &object.shape {
                 Shape::Plane => {
                     object.plane_leaves_view(target_world, eye_world, previous_eye_world)
                 }
@@ -112,14 +112,21 @@ impl Placed {
 /// Whether an object-space point lies strictly inside a solid unit shape (the boundary
 /// does not count). A plane has no inside.
 #[must_use]
-pub fn contains(shape: Shape, p: DVec3) -> bool {
+pub fn contains(shape: &Shape, p: DVec3) -> bool {
     let radial = p.x * p.x + p.y * p.y;
     match shape {
         Shape::Sphere => p.length_squared() < 1.0,
         Shape::Cube => p.abs().max_element() < 1.0,
         Shape::Cylinder => radial < 1.0 && p.z.abs() < 1.0,
         Shape::Cone => radial < p.z * p.z && p.z > 0.0 && p.z < 1.0,
-        Shape::Plane => false,
+        Shape::Torus { minor } => {
+            let ring = radial.sqrt() - 1.0;
+            ring * ring + p.z * p.z < minor * minor
+        }
+        Shape::Tube { inner } => radial < 1.0 && radial > inner * inner && p.z.abs() < 1.0,
+        Shape::Octahedron => p.abs().element_sum() < 1.0,
+        // Meshes and trees are not tested: the camera may stand inside them.
+        Shape::Plane | Shape::Mesh { .. } | Shape::Csg { .. } | Shape::Group { .. } => false,
     }
 }
 
@@ -167,19 +174,19 @@ mod tests {
 
     #[test]
     fn solids_contain_their_inside_only() {
-        assert!(contains(Shape::Sphere, DVec3::new(0.5, 0.5, 0.5)));
-        assert!(!contains(Shape::Sphere, DVec3::new(0.6, 0.6, 0.6)));
-        assert!(contains(Shape::Cube, DVec3::new(0.9, -0.9, 0.9)));
-        assert!(!contains(Shape::Cube, DVec3::new(1.0, 0.0, 0.0)));
-        assert!(contains(Shape::Cylinder, DVec3::new(0.0, 0.9, -0.9)));
-        assert!(!contains(Shape::Cylinder, DVec3::new(0.0, 0.0, 1.1)));
-        assert!(contains(Shape::Cone, DVec3::new(0.1, 0.1, 0.5)));
-        assert!(!contains(Shape::Cone, DVec3::new(0.5, 0.5, 0.5)));
+        assert!(contains(&Shape::Sphere, DVec3::new(0.5, 0.5, 0.5)));
+        assert!(!contains(&Shape::Sphere, DVec3::new(0.6, 0.6, 0.6)));
+        assert!(contains(&Shape::Cube, DVec3::new(0.9, -0.9, 0.9)));
+        assert!(!contains(&Shape::Cube, DVec3::new(1.0, 0.0, 0.0)));
+        assert!(contains(&Shape::Cylinder, DVec3::new(0.0, 0.9, -0.9)));
+        assert!(!contains(&Shape::Cylinder, DVec3::new(0.0, 0.0, 1.1)));
+        assert!(contains(&Shape::Cone, DVec3::new(0.1, 0.1, 0.5)));
+        assert!(!contains(&Shape::Cone, DVec3::new(0.5, 0.5, 0.5)));
         assert!(
-            !contains(Shape::Cone, DVec3::new(0.0, 0.0, -0.5)),
+            !contains(&Shape::Cone, DVec3::new(0.0, 0.0, -0.5)),
             "the mirror cone"
         );
-        assert!(!contains(Shape::Plane, DVec3::ZERO));
+        assert!(!contains(&Shape::Plane, DVec3::ZERO));
     }
 
     #[test]

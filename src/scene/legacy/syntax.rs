@@ -106,7 +106,7 @@ pub enum LightSetting {
 }
 
 /// What an Object block draws.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum ObjectKind {
     /// One of the five shapes the project draws.
     Shape(Shape),

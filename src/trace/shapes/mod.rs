@@ -17,6 +17,49 @@ use super::bounds::Aabb;
 use super::ray::Ray;
 use crate::scene::Shape;
 
+/// The shapes the tracer intersects directly: the scene's leaf shapes in a `Copy` form
+/// the hot loops can match on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Primitive {
+    /// The unit sphere.
+    Sphere,
+    /// The two-sided unit square in z = 0.
+    Plane,
+    /// The cube [-1, 1]^3.
+    Cube,
+    /// The capped unit cylinder.
+    Cylinder,
+    /// The capped unit cone.
+    Cone,
+}
+
+impl Primitive {
+    /// The primitive for a scene shape, or `None` where the tracer cannot draw it.
+    #[must_use]
+    pub fn of(shape: &Shape) -> Option<Primitive> {
+        Some(match shape {
+            Shape::Sphere => Primitive::Sphere,
+            Shape::Plane => Primitive::Plane,
+            Shape::Cube => Primitive::Cube,
+            Shape::Cylinder => Primitive::Cylinder,
+            Shape::Cone => Primitive::Cone,
+            _ => return None,
+        })
+    }
+
+    /// The scene shape this primitive draws.
+    #[must_use]
+    pub fn shape(self) -> Shape {
+        match self {
+            Primitive::Sphere => Shape::Sphere,
+            Primitive::Plane => Shape::Plane,
+            Primitive::Cube => Shape::Cube,
+            Primitive::Cylinder => Shape::Cylinder,
+            Primitive::Cone => Shape::Cone,
+        }
+    }
+}
+
 /// A hit on a unit shape, all in object space.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ShapeHit {
@@ -52,39 +95,77 @@ fn in_range(ray: &Ray, t: f64, t_max: f64) -> bool {
 
 /// The object-space bounding box of a unit shape.
 #[must_use]
-pub fn object_bounds(shape: Shape) -> Aabb {
+pub fn object_bounds(shape: Primitive) -> Aabb {
     match shape {
-        Shape::Sphere => sphere::bounds(),
-        Shape::Plane => plane::bounds(),
-        Shape::Cube => cube::bounds(),
-        Shape::Cylinder => cylinder::bounds(),
-        Shape::Cone => cone::bounds(),
+        Primitive::Sphere => sphere::bounds(),
+        Primitive::Plane => plane::bounds(),
+        Primitive::Cube => cube::bounds(),
+        Primitive::Cylinder => cylinder::bounds(),
+        Primitive::Cone => cone::bounds(),
+    }
+}
+
+/// The object-space bounds of any scene shape, for framing, placement and gizmos: a
+/// tree's are its children's placed bounds joined (a Difference's, its first operand's);
+/// a mesh's, which need its file, stand as the unit cube until the mesh is loaded.
+#[must_use]
+pub fn shape_bounds(shape: &Shape) -> Aabb {
+    use crate::scene::CsgOp;
+    let unit_cube = Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0));
+    match shape {
+        Shape::Torus { minor } => {
+            let r = 1.0 + minor;
+            Aabb::new(DVec3::new(-r, -r, -minor), DVec3::new(r, r, *minor))
+        }
+        Shape::Tube { .. } | Shape::Octahedron | Shape::Mesh { .. } => unit_cube,
+        Shape::Csg { op, operands } => {
+            let placed = |o: &crate::scene::Object| {
+                shape_bounds(&o.shape).transformed(&o.transform.world_from_object())
+            };
+            let take = if *op == CsgOp::Difference {
+                1
+            } else {
+                operands.len()
+            };
+            operands
+                .iter()
+                .take(take)
+                .map(placed)
+                .reduce(|a, b| a.union(&b))
+                .unwrap_or(unit_cube)
+        }
+        Shape::Group { children } => children
+            .iter()
+            .map(|o| shape_bounds(&o.shape).transformed(&o.transform.world_from_object()))
+            .reduce(|a, b| a.union(&b))
+            .unwrap_or(unit_cube),
+        leaf => object_bounds(Primitive::of(leaf).expect("every other shape is a primitive")),
     }
 }
 
 /// The closest hit of an object-space ray with `t` in (0, t_max).
 #[must_use]
 #[inline]
-pub fn intersect(shape: Shape, ray: &Ray, t_max: f64) -> Option<ShapeHit> {
+pub fn intersect(shape: Primitive, ray: &Ray, t_max: f64) -> Option<ShapeHit> {
     match shape {
-        Shape::Sphere => sphere::intersect(ray, t_max),
-        Shape::Plane => plane::intersect(ray, t_max),
-        Shape::Cube => cube::intersect(ray, t_max),
-        Shape::Cylinder => cylinder::intersect(ray, t_max),
-        Shape::Cone => cone::intersect(ray, t_max),
+        Primitive::Sphere => sphere::intersect(ray, t_max),
+        Primitive::Plane => plane::intersect(ray, t_max),
+        Primitive::Cube => cube::intersect(ray, t_max),
+        Primitive::Cylinder => cylinder::intersect(ray, t_max),
+        Primitive::Cone => cone::intersect(ray, t_max),
     }
 }
 
 /// Whether an object-space ray hits the shape with `t` in (0, t_max).
 #[must_use]
 #[inline]
-pub fn occluded(shape: Shape, ray: &Ray, t_max: f64) -> bool {
+pub fn occluded(shape: Primitive, ray: &Ray, t_max: f64) -> bool {
     match shape {
-        Shape::Sphere => sphere::occluded(ray, t_max),
-        Shape::Plane => plane::occluded(ray, t_max),
-        Shape::Cube => cube::occluded(ray, t_max),
-        Shape::Cylinder => cylinder::occluded(ray, t_max),
-        Shape::Cone => cone::occluded(ray, t_max),
+        Primitive::Sphere => sphere::occluded(ray, t_max),
+        Primitive::Plane => plane::occluded(ray, t_max),
+        Primitive::Cube => cube::occluded(ray, t_max),
+        Primitive::Cylinder => cylinder::occluded(ray, t_max),
+        Primitive::Cone => cone::occluded(ray, t_max),
     }
 }
 

@@ -6,7 +6,7 @@
 use glam::{DAffine3, DQuat, DVec3};
 
 use crate::scene::{Camera, Scene, Shape, Transform, Trs};
-use crate::trace::shapes::object_bounds;
+use crate::trace::shapes::shape_bounds;
 
 /// A floor is a plane whose normal is within this cosine of the camera's up.
 const FLOOR_COS: f64 = 0.9;
@@ -40,24 +40,30 @@ fn unit_size(camera: &Camera) -> f64 {
 /// The placement of a new `shape`: at the camera's target, or standing on the floor
 /// under it; upright along the camera's up; a plane faces the camera.
 #[must_use]
-pub fn new_object_transform(scene: &Scene, shape: Shape) -> Transform {
+pub fn new_object_transform(scene: &Scene, shape: &Shape) -> Transform {
     let frame = Frame::of(&scene.camera);
     let size = unit_size(&scene.camera);
     // The object's +z: along up for a cylinder, down for a cone (cap below, apex up),
     // towards the camera for a plane.
     let axis = match shape {
-        Shape::Sphere | Shape::Cube => DVec3::Z,
-        Shape::Cylinder => frame.up,
+        Shape::Cylinder | Shape::Tube { .. } | Shape::Torus { .. } => frame.up,
         Shape::Cone => -frame.up,
         Shape::Plane => -frame.forward,
+        _ => DVec3::Z,
     };
     let rotation = DQuat::from_rotation_arc(DVec3::Z, axis);
     let target = scene.camera.look_at;
     let centre = match (shape, floor_under(scene, target, &frame)) {
         // Every upright unit shape reaches one unit below its origin.
-        (Shape::Sphere | Shape::Cube | Shape::Cylinder | Shape::Cone, Some(floor)) => {
-            floor + frame.up * size
-        }
+        (
+            Shape::Sphere
+            | Shape::Cube
+            | Shape::Cylinder
+            | Shape::Cone
+            | Shape::Tube { .. }
+            | Shape::Octahedron,
+            Some(floor),
+        ) => floor + frame.up * size,
         _ => target,
     };
     let affine = DAffine3::from_scale_rotation_translation(DVec3::splat(size), rotation, centre);
@@ -95,9 +101,9 @@ fn floor_under(scene: &Scene, target: DVec3, frame: &Frame) -> Option<DVec3> {
 /// How far a duplicate of an object moves: along the camera's right by its width seen
 /// from the camera, and a quarter more, so the two do not overlap.
 #[must_use]
-pub fn duplicate_offset(scene: &Scene, shape: Shape, transform: &Transform) -> DVec3 {
+pub fn duplicate_offset(scene: &Scene, shape: &Shape, transform: &Transform) -> DVec3 {
     let frame = Frame::of(&scene.camera);
-    let bounds = object_bounds(shape).transformed(&transform.world_from_object());
+    let bounds = shape_bounds(shape).transformed(&transform.world_from_object());
     let extent = bounds.max - bounds.min;
     let width = extent.dot(frame.right.abs());
     let width = if width.is_finite() && width > 0.0 {
@@ -137,7 +143,7 @@ mod tests {
     use crate::trace::PinholeCamera;
 
     fn world_bounds(shape: Shape, transform: &Transform) -> crate::trace::bounds::Aabb {
-        object_bounds(shape).transformed(&transform.world_from_object())
+        shape_bounds(&shape).transformed(&transform.world_from_object())
     }
 
     #[test]
@@ -145,9 +151,9 @@ mod tests {
         let scene = crate::scene::examples::default_scene();
         let camera = PinholeCamera::new(&scene.camera, scene.camera.width, scene.camera.height);
         for shape in [Shape::Cylinder, Shape::Cone, Shape::Cube, Shape::Sphere] {
-            let transform = new_object_transform(&scene, shape);
+            let transform = new_object_transform(&scene, &shape);
             let m = transform.world_from_object();
-            let bounds = world_bounds(shape, &transform);
+            let bounds = world_bounds(shape.clone(), &transform);
             // The default scene's floor is the plane y = 0.
             assert!(
                 bounds.min.y.abs() < 1e-6,
@@ -169,7 +175,7 @@ mod tests {
     #[test]
     fn without_a_floor_a_new_object_goes_to_the_cameras_target() {
         let scene = crate::ui::document::files::new_scene();
-        let transform = new_object_transform(&scene, Shape::Sphere);
+        let transform = new_object_transform(&scene, &Shape::Sphere);
         let centre = transform.world_from_object().translation;
         assert!(centre.abs_diff_eq(scene.camera.look_at, 1e-12), "{centre}");
     }
@@ -178,10 +184,10 @@ mod tests {
     fn a_duplicate_moves_aside_without_overlapping() {
         let scene = crate::scene::examples::default_scene();
         for object in &scene.objects[1..] {
-            let offset = duplicate_offset(&scene, object.shape, &object.transform);
+            let offset = duplicate_offset(&scene, &object.shape, &object.transform);
             let copy = moved(&object.transform, offset);
-            let a = world_bounds(object.shape, &object.transform);
-            let b = world_bounds(object.shape, &copy);
+            let a = world_bounds(object.shape.clone(), &object.transform);
+            let b = world_bounds(object.shape.clone(), &copy);
             let apart = (0..3).any(|i| a.max[i] < b.min[i] || b.max[i] < a.min[i]);
             assert!(apart, "{}: {a:?} vs {b:?}", object.name);
         }

@@ -17,7 +17,7 @@ impl SceneEdit {
             SceneEdit::AddObject(shape) => {
                 let material = first_material(scene);
                 let name = unique_name(shape.name(), scene.objects.iter().map(|o| &o.name));
-                let transform = placement::new_object_transform(scene, shape);
+                let transform = placement::new_object_transform(scene, &shape);
                 scene.objects.push(Object {
                     name,
                     shape,
@@ -96,6 +96,8 @@ fn new_light(kind: LightKind) -> Light {
             position: DVec3::new(2.0, 5.0, 3.0),
             colour,
             intensity: 20.0,
+            radius: 0.0,
+            samples: 1,
         },
         LightKind::Directional => Light::Directional {
             direction: DVec3::new(-1.0, -2.0, -1.0),
@@ -108,6 +110,8 @@ fn new_light(kind: LightKind) -> Light {
             angle_deg: 25.0,
             colour,
             intensity: 20.0,
+            radius: 0.0,
+            samples: 1,
         },
     }
 }
@@ -119,6 +123,8 @@ fn grey_material() -> Material {
         specular: DVec3::splat(0.3),
         shininess: 32.0,
         mirror: DVec3::ZERO,
+        transmission: DVec3::ZERO,
+        ior: 1.0,
     }
 }
 
@@ -138,7 +144,7 @@ fn duplicate(scene: &mut Scene, selection: &mut Selection) -> Result<(), String>
         Selection::Object(i) => {
             let mut copy = scene.objects.get(i).ok_or("no such object")?.clone();
             copy.name = unique_name(&copy.name, scene.objects.iter().map(|o| &o.name));
-            let offset = placement::duplicate_offset(scene, copy.shape, &copy.transform);
+            let offset = placement::duplicate_offset(scene, &copy.shape, &copy.transform);
             copy.transform = placement::moved(&copy.transform, offset);
             scene.objects.insert(i + 1, copy);
             *selection = Selection::Object(i + 1);

@@ -23,6 +23,8 @@ pub fn new_scene() -> Scene {
             specular: DVec3::splat(0.3),
             shininess: 32.0,
             mirror: DVec3::ZERO,
+            transmission: DVec3::ZERO,
+            ior: 1.0,
         },
     );
     scene.render.background = DVec3::new(0.05, 0.06, 0.09);
@@ -35,6 +37,8 @@ pub fn new_scene() -> Scene {
             position: DVec3::new(-4.0, 6.0, 5.0),
             colour: DVec3::ONE,
             intensity: 40.0,
+            radius: 0.0,
+            samples: 1,
         },
     ];
     scene

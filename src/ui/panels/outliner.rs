@@ -48,7 +48,7 @@ pub fn outliner_ui(
                     let shown = isolation.is_object_shown(index);
                     let row = Row {
                         name: &object.name,
-                        icon: shape_icon(object.shape),
+                        icon: shape_icon(&object.shape),
                         greyed: !shown,
                     };
                     row_ui(
@@ -134,13 +134,19 @@ pub fn light_label(light: &Light, index: usize) -> String {
     format!("{} light {}", light.kind_name(), index + 1)
 }
 
-fn shape_icon(shape: Shape) -> &'static str {
+fn shape_icon(shape: &Shape) -> &'static str {
     match shape {
         Shape::Sphere => "●",
         Shape::Plane => "▭",
         Shape::Cube => "■",
         Shape::Cylinder => "▮",
         Shape::Cone => "▲",
+        Shape::Torus { .. } => "◎",
+        Shape::Tube { .. } => "◘",
+        Shape::Octahedron => "◆",
+        Shape::Mesh { .. } => "△",
+        Shape::Csg { .. } => "⊖",
+        Shape::Group { .. } => "▤",
     }
 }
 

@@ -66,6 +66,8 @@ impl Converter<'_> {
                     position,
                     colour,
                     intensity: 1.0,
+                    radius: 0.0,
+                    samples: 1,
                 })
             }
             LightKind::Directional => {
@@ -107,6 +109,8 @@ impl Converter<'_> {
                             angle_deg,
                             colour,
                             intensity,
+                            radius: 0.0,
+                            samples: 1,
                         })
                     }
                     _ => None,

@@ -32,6 +32,8 @@ pub fn default_material() -> Material {
         specular: DVec3::ZERO,
         shininess: 1.0,
         mirror: DVec3::ZERO,
+        transmission: DVec3::ZERO,
+        ior: 1.0,
     }
 }
 
@@ -66,7 +68,7 @@ impl PendingObject {
     pub(super) fn centre(&self) -> DVec3 {
         let unit_centre = match self.shape {
             Shape::Cone => DVec3::new(0.0, 0.0, 0.5),
-            Shape::Sphere | Shape::Plane | Shape::Cube | Shape::Cylinder => DVec3::ZERO,
+            _ => DVec3::ZERO,
         };
         self.transform
             .world_from_object()

@@ -111,7 +111,9 @@ impl<'e> Converter<'e> {
                 broken,
             } => self.light_block(*kind, settings, broken, &parsed.at),
             Block::Material { name, edits } => self.material_block(name, edits, &parsed.at),
-            Block::Object { kind, settings } => self.object_block(*kind, settings, &parsed.at),
+            Block::Object { kind, settings } => {
+                self.object_block(kind.clone(), settings, &parsed.at)
+            }
         }
     }
 
@@ -161,6 +163,7 @@ impl<'e> Converter<'e> {
                 max_depth: self.ray_depth,
                 background: self.background,
                 samples_per_pixel: 1,
+                conventions: Default::default(),
             },
             materials,
             objects,

@@ -25,6 +25,7 @@ pub(super) fn light_ui(ui: &mut Ui, index: usize, light: &Light, commands: &mut 
                 position,
                 colour,
                 intensity,
+                ..
             } => {
                 vec3_row_ui(ui, "position", position, placement_speed, any);
                 (colour, intensity)
@@ -43,6 +44,7 @@ pub(super) fn light_ui(ui: &mut Ui, index: usize, light: &Light, commands: &mut 
                 angle_deg,
                 colour,
                 intensity,
+                ..
             } => {
                 vec3_row_ui(ui, "position", position, placement_speed, any);
                 vec3_row_ui(ui, "direction", direction, 0.01, any);

@@ -36,7 +36,8 @@ pub(super) fn object_ui(
             .selected_text(edited.shape.name())
             .show_ui(ui, |ui| {
                 for shape in Shape::ALL {
-                    ui.selectable_value(&mut edited.shape, shape, shape.name());
+                    let name = shape.name();
+                    ui.selectable_value(&mut edited.shape, shape, name);
                 }
             })
             .response

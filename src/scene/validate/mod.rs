@@ -3,9 +3,11 @@
 
 use glam::DVec3;
 
+mod objects;
+
 use super::error::SceneError;
-use super::model::{Camera, Light, Material, RenderSettings, Scene};
-use super::transform::Transform;
+use super::light::Light;
+use super::model::{Camera, Material, RenderSettings, Scene};
 
 /// The largest accepted image width or height, in pixels.
 pub const MAX_IMAGE_SIDE: u32 = 16384;
@@ -19,6 +21,12 @@ pub const MAX_DEPTH: u32 = 10_000;
 /// The widest spot light: a half-angle of 180 degrees lights every direction. Half-angles
 /// are in (0, `MAX_SPOT_ANGLE_DEG`].
 pub const MAX_SPOT_ANGLE_DEG: f64 = 180.0;
+/// The largest accepted index of refraction: above every real material (diamond is
+/// about 2.4), low enough that Snell's law stays well conditioned.
+pub const MAX_IOR: f64 = 10.0;
+/// The most shadow rays a sphere light may ask for per shading point.
+pub const MAX_LIGHT_SAMPLES: u32 = 1024;
+pub use objects::MAX_TREE_DEPTH;
 
 /// Checks every rule of the contract that parsing alone does not enforce.
 ///
@@ -36,17 +44,7 @@ pub fn validate(scene: &Scene) -> Result<(), SceneError> {
     for (name, material) in &scene.materials {
         check_material(material).map_err(|e| prefixed(&format!("material \"{name}\""), e))?;
     }
-    for (index, object) in scene.objects.iter().enumerate() {
-        let at = format!("objects[{index}] \"{}\"", object.name);
-        if !scene.materials.contains_key(&object.material) {
-            return invalid(format!(
-                "{at}: unknown material \"{}\" (defined: {})",
-                object.material,
-                list_or_none(scene.materials.keys())
-            ));
-        }
-        check_transform(&object.transform).map_err(|e| prefixed(&at, e))?;
-    }
+    objects::check_objects(&scene.objects, &scene.materials)?;
     for (index, light) in scene.lights.iter().enumerate() {
         check_light(light)
             .and_then(|()| check_light_strength(light))
@@ -55,18 +53,18 @@ pub fn validate(scene: &Scene) -> Result<(), SceneError> {
     Ok(())
 }
 
-fn invalid<T>(message: String) -> Result<T, SceneError> {
+pub(super) fn invalid<T>(message: String) -> Result<T, SceneError> {
     Err(SceneError::Invalid(message))
 }
 
-fn prefixed(at: &str, error: SceneError) -> SceneError {
+pub(super) fn prefixed(at: &str, error: SceneError) -> SceneError {
     match error {
         SceneError::Invalid(message) => SceneError::Invalid(format!("{at}: {message}")),
         other => other,
     }
 }
 
-fn list_or_none<'a>(names: impl Iterator<Item = &'a String>) -> String {
+pub(super) fn list_or_none<'a>(names: impl Iterator<Item = &'a String>) -> String {
     let names: Vec<String> = names.map(|n| format!("\"{n}\"")).collect();
     if names.is_empty() {
         "none".to_owned()
@@ -161,6 +159,14 @@ fn check_material(material: &Material) -> Result<(), SceneError> {
     non_negative_colour("diffuse", material.diffuse)?;
     non_negative_colour("specular", material.specular)?;
     non_negative_colour("mirror", material.mirror)?;
+    non_negative_colour("transmission", material.transmission)?;
+    finite("ior", material.ior)?;
+    if !(material.ior > 0.0 && material.ior <= MAX_IOR) {
+        return invalid(format!(
+            "ior is {}; an index of refraction must be in (0, {MAX_IOR}]",
+            material.ior
+        ));
+    }
     finite("shininess", material.shininess)?;
     // 0 is allowed: max(0, r.v)^0 is 1 where r.v > 0 and 0 elsewhere.
     if material.shininess < 0.0 {
@@ -172,46 +178,15 @@ fn check_material(material: &Material) -> Result<(), SceneError> {
     Ok(())
 }
 
-fn check_transform(transform: &Transform) -> Result<(), SceneError> {
-    if let Some(bad) = transform.numbers().into_iter().find(|x| !x.is_finite()) {
-        return invalid(format!(
-            "transform contains {bad}, which is not a finite number"
-        ));
-    }
-    match transform {
-        Transform::Trs(trs) => {
-            if trs.scale.min_element().abs() == 0.0 || trs.scale.abs().min_element() == 0.0 {
-                return invalid(format!(
-                    "transform scale {} has a zero component, so the transform is singular",
-                    trs.scale
-                ));
-            }
-        }
-        Transform::Matrix(_) => {
-            let m = transform.world_from_object().matrix3;
-            let size = m.x_axis.length() * m.y_axis.length() * m.z_axis.length();
-            // Written so that a NaN determinant counts as singular too.
-            let invertible = m.determinant().abs() > 1e-12 * size;
-            if !invertible || size == 0.0 {
-                return invalid(
-                    "transform matrix is singular (its 3x3 part has no inverse)".to_owned(),
-                );
-            }
-        }
-    }
-    let m = transform.world_from_object();
-    if !m.inverse().is_finite() {
-        return invalid("transform cannot be inverted in double precision".to_owned());
-    }
-    Ok(())
-}
-
 fn check_light(light: &Light) -> Result<(), SceneError> {
     non_negative_colour("colour", light.colour())?;
     check_intensity(light.intensity())?;
     match *light {
         Light::Ambient { .. } => Ok(()),
-        Light::Point { position, .. } => finite_vec("position", position),
+        Light::Point { position, .. } => {
+            finite_vec("position", position)?;
+            check_sphere(light)
+        }
         Light::Directional { direction, .. } => check_direction(direction),
         Light::Spot {
             position,
@@ -228,9 +203,32 @@ fn check_light(light: &Light) -> Result<(), SceneError> {
                      (0, {MAX_SPOT_ANGLE_DEG}] degrees"
                 ));
             }
-            Ok(())
+            check_sphere(light)
         }
     }
+}
+
+/// A sphere light's radius and shadow-ray count (both ignored on a point).
+fn check_sphere(light: &Light) -> Result<(), SceneError> {
+    let (Light::Point {
+        radius, samples, ..
+    }
+    | Light::Spot {
+        radius, samples, ..
+    }) = *light
+    else {
+        return Ok(());
+    };
+    finite("radius", radius)?;
+    if radius < 0.0 {
+        return invalid(format!("radius is {radius}; it cannot be negative"));
+    }
+    if samples == 0 || samples > MAX_LIGHT_SAMPLES {
+        return invalid(format!(
+            "samples is {samples}; a light takes 1 to {MAX_LIGHT_SAMPLES} shadow rays"
+        ));
+    }
+    Ok(())
 }
 
 fn check_direction(direction: DVec3) -> Result<(), SceneError> {
