@@ -12,8 +12,9 @@ use glam::DVec3;
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use raylab::scene::{Material, Shape};
-use raylab::trace::world::WorldObject;
-use raylab::trace::{Primitive, Ray, SurfacePoint, World};
+use raylab::trace::WorldObject;
+use raylab::trace::shapes::Primitive;
+use raylab::trace::{Ray, SurfacePoint, World};
 use twofloat::TwoFloat as Dd;
 
 /// The object-space point that `world_from_object` takes exactly to `p_world`, in

@@ -6,7 +6,7 @@ use common::*;
 use glam::DVec3;
 use proptest::prelude::*;
 use raylab::scene::{Material, Shape};
-use raylab::trace::spawn::spawn_ray;
+use raylab::trace::spawn_ray;
 use raylab::trace::{Ray, World};
 
 /// Whether an object-space point is strictly inside a solid unit shape (`None` for the

@@ -6,7 +6,7 @@ use clap::Args;
 
 use crate::scene::Scene;
 use crate::trace::Isolation;
-use crate::trace::isolation::check_indices;
+use crate::trace::check_indices;
 
 /// `--mute-light`, `--solo-light`, `--hide` (flatten into a command's arguments).
 #[derive(Clone, Debug, Default, Args)]

@@ -8,9 +8,9 @@ use glam::DVec3;
 
 use crate::scene::Material;
 use crate::trace::SurfacePoint;
-pub use crate::trace::phong::{LocalLight, phong_power};
+use crate::trace::WorldObject;
 use crate::trace::shapes::Primitive;
-use crate::trace::world::WorldObject;
+pub use crate::trace::{LocalLight, phong_power};
 
 /// A wrong shading normal.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

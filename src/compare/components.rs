@@ -13,7 +13,7 @@ use rayon::prelude::*;
 use super::channels::ChannelSpace;
 use super::recorder::{Context, SampleRecorder, Tally};
 use crate::scene::Scene;
-use crate::trace::sampling::sample_in_pixel;
+use crate::trace::sample_in_pixel;
 use crate::trace::{
     Image, PinholeCamera, RayCounts, RenderProgress, TermSwitches, Tracer, View, World,
 };

@@ -12,13 +12,13 @@ use glam::DVec3;
 use super::bugs::{ClampBug, LocalLight, NormalBug, Part, SpecularBug, local_terms};
 use super::channels::{ChannelSpace, Kind};
 use crate::scene::Material;
-use crate::trace::lights::LightSample;
+use crate::trace::LightSample;
 use crate::trace::shapes::Primitive;
-use crate::trace::spawn::{spawn_ray, spawn_ray_to};
 use crate::trace::{
     LightRecord, NoRecorder, Ray, RayCounts, Recorder, SurfacePoint, TermSwitches, Tracer, View,
     World,
 };
+use crate::trace::{spawn_ray, spawn_ray_to};
 
 /// Per-channel colour sums of one sample or one pixel: a short list, channels unique.
 #[derive(Clone, Debug, Default)]

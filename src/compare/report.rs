@@ -8,7 +8,7 @@ use super::encoding::Encoding;
 use super::explanation::Explanation;
 use super::other_image::OtherImage;
 use crate::trace::Image;
-use crate::trace::image::encode_linear;
+use crate::trace::encode_linear;
 
 /// PSNR reported for images that are identical byte for byte (the true value is
 /// infinite, which JSON cannot hold).

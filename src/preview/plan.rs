@@ -179,7 +179,7 @@ mod tests {
 
     #[test]
     fn every_sample_prefix_the_plan_shows_covers_the_pixel_quadrants_evenly() {
-        use crate::trace::sampling::sample_in_pixel;
+        use crate::trace::sample_in_pixel;
         for target in [2, 4, 6, 12, 16, 48, 64, 1024, 4096] {
             for pass in plan_passes(&options(64, 64, target)) {
                 let Pass::Full { samples, target } = pass else {

@@ -1,65 +1,53 @@
 //! The tracer: pure functions from a compiled [`World`] and a ray to a colour, and from
 //! a world to an image. No threads of its own beyond rayon's, no I/O, no UI.
+//!
+//! In folders by stage, each depending only on the ones before it:
+//!
+//! | folder | what it holds |
+//! |---|---|
+//! | `ray`, `terms`, `ray_counts` | rays, the term switches and views, ray counts |
+//! | [`shapes`] | the unit shapes, their bounds and the quadratic they share |
+//! | `world` | the compiled scene: objects, hierarchies, lights, isolation, spawning |
+//! | `film` | camera, samples, tile grid, frame options and sums, image |
+//! | `cull` | what each tile's camera and shadow rays can meet |
+//! | `shade` | the lighting model, the ray source it asks, the recorder |
+//! | `reshade` | the cache that re-shades an edit without tracing |
+//! | `render` | the drivers: tiles, the tile pass, adaptive, cached passes |
+//! | `inspect` | one pixel taken apart, and its tree of rays |
 
-pub mod adaptive;
-pub mod bounds;
-pub mod bvh;
-pub mod camera;
-mod chains;
-mod dependence;
-pub mod depth_view;
-pub mod hit_cache;
-pub mod image;
-pub mod inspect;
-pub mod isolation;
-mod keep_rule;
-pub mod light_factors;
-pub mod lights;
-mod mirror_chain;
-pub mod object_id;
-pub mod object_set;
-pub mod phong;
-pub mod quadratic;
-mod quick_shade;
-pub mod ray;
-pub mod ray_counts;
-pub mod ray_source;
-pub mod ray_tree;
-pub mod record;
-pub mod render;
-pub mod reshade;
-pub mod sampling;
-pub mod shade;
-pub mod shadow_cull;
+mod cull;
+mod film;
+mod inspect;
+mod ray;
+mod ray_counts;
+mod render;
+mod reshade;
+mod shade;
 pub mod shapes;
-pub mod spawn;
-pub mod terms;
-pub mod tile_cull;
-mod tile_pass;
-mod tile_placement;
-mod tile_rays;
-pub mod tiles;
-pub mod world;
-mod world_batch;
-mod world_trees;
+mod terms;
+mod world;
 
-pub use adaptive::{AdaptiveOptions, AdaptiveRender, render_adaptive};
-pub use camera::PinholeCamera;
-pub use hit_cache::{HitCache, MAX_CACHE_BYTES, RetraceReason, Reuse, cache_fits};
-pub use image::Image;
+pub use film::{
+    Image, PinholeCamera, RenderOptions, RenderProgress, SampleSums, TILE_SIZE, encode_linear,
+    sample_in_pixel,
+};
 pub use inspect::{
-    BounceReport, PixelOutside, PixelReport, inspect_pixel, pick, switches_text, try_inspect_pixel,
+    BounceReport, PixelOutside, PixelReport, RayHit, RayKind, TracedRay, inspect_pixel, pick,
+    switches_text, traced_rays, try_inspect_pixel,
 };
-pub use isolation::IsolationError;
 pub use ray::Ray;
-pub use ray_tree::{RayHit, RayKind, TracedRay, traced_rays};
-pub use record::{LightOutcome, LightSkip, ShadowRay, SkippedLight};
+pub use ray_counts::RayCounts;
 pub use render::{
-    RenderOptions, RenderProgress, SampleSums, render, render_samples, render_samples_into,
+    AdaptiveOptions, AdaptiveRender, CachedPass, render, render_adaptive, render_one_sample_cached,
+    render_samples, render_samples_into,
 };
-pub use reshade::{CachedPass, render_one_sample_cached};
-pub use shade::{LightRecord, NoRecorder, RayCounts, Recorder, Tracer};
-pub use shapes::Primitive;
+pub use reshade::{HitCache, MAX_CACHE_BYTES, RetraceReason, Reuse, cache_fits};
+pub use shade::{
+    LightOutcome, LightRecord, LightSkip, LocalLight, NoRecorder, Recorder, ShadowRay,
+    SkippedLight, Tracer, phong_power,
+};
 pub use terms::{Isolation, Term, TermSwitches, View};
-pub use tiles::TILE_SIZE;
-pub use world::{Acceleration, BVH_MIN_OBJECTS, SurfacePoint, World};
+pub use world::{
+    Acceleration, BVH_MIN_OBJECTS, IsolationError, LightSample, SurfacePoint, World, WorldObject,
+    check_indices, spawn_ray, spawn_ray_to,
+};

@@ -172,7 +172,7 @@ pub struct ActiveTerms {
 /// the isolation switches, as the term switches are for terms. A muted light and a hidden
 /// object are absent from the render (a hidden object casts no shadow, is not reflected
 /// and cannot be picked); while any light is solo, only the solo lights shine. The
-/// background goes with one light's solo (see [`crate::trace::isolation`]) so that the
+/// background goes with one light's solo (see [`crate::trace::world::isolation`]) so that the
 /// solo images of all the lights add up to the full picture.
 #[derive(Clone, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Isolation {

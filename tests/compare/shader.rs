@@ -6,9 +6,10 @@
 use glam::{DVec2, DVec3};
 use raylab::compare::OtherImage;
 use raylab::scene::{Light, Scene};
-use raylab::trace::sampling::sample_in_pixel;
-use raylab::trace::spawn::{spawn_ray, spawn_ray_to};
-use raylab::trace::{PinholeCamera, Primitive, Ray, SurfacePoint, World};
+use raylab::trace::sample_in_pixel;
+use raylab::trace::shapes::Primitive;
+use raylab::trace::{PinholeCamera, Ray, SurfacePoint, World};
+use raylab::trace::{spawn_ray, spawn_ray_to};
 
 /// The bugs to switch on; the default is none.
 #[derive(Clone, Debug, Default)]

@@ -2,8 +2,10 @@
 
 use glam::DVec3;
 
-use super::{ShapeHit, gamma, in_range};
-use crate::trace::bounds::Aabb;
+use super::ShapeHit;
+use super::bounds::Aabb;
+use super::gamma;
+use super::in_range;
 use crate::trace::ray::Ray;
 
 /// Object-space bounds.

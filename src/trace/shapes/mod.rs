@@ -5,17 +5,19 @@
 //! Every `intersect` returns the hit point re-projected onto the exact surface and a
 //! per-component bound on its remaining distance from the surface (see docs/NUMERICS.md).
 
+mod bounds;
 mod cone;
 mod cube;
 mod cylinder;
 mod plane;
+pub(crate) mod quadratic;
 mod sphere;
 
 use glam::DVec3;
 
-use super::bounds::Aabb;
-use super::ray::Ray;
+pub use self::bounds::{Aabb, BoundingSphere};
 use crate::scene::Shape;
+use crate::trace::ray::Ray;
 
 /// The shapes the tracer intersects directly: the scene's leaf shapes in a `Copy` form
 /// the hot loops can match on.

@@ -2,9 +2,11 @@
 
 use glam::DVec3;
 
-use super::{ShapeHit, gamma, in_range};
-use crate::trace::bounds::Aabb;
-use crate::trace::quadratic::unit_ball_roots;
+use super::ShapeHit;
+use super::bounds::Aabb;
+use super::gamma;
+use super::in_range;
+use super::quadratic::unit_ball_roots;
 use crate::trace::ray::Ray;
 
 /// Object-space bounds.

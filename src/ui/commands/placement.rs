@@ -142,7 +142,7 @@ mod tests {
     use super::*;
     use crate::trace::PinholeCamera;
 
-    fn world_bounds(shape: Shape, transform: &Transform) -> crate::trace::bounds::Aabb {
+    fn world_bounds(shape: Shape, transform: &Transform) -> crate::trace::shapes::Aabb {
         shape_bounds(&shape).transformed(&transform.world_from_object())
     }
 

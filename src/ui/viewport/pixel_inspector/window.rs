@@ -326,10 +326,7 @@ fn number_row_ui(ui: &mut egui::Ui, label: &str, value: String) {
 
 fn swatch_ui(ui: &mut egui::Ui, colour: DVec3) {
     let (rect, _) = ui.allocate_exact_size(egui::vec2(14.0, 14.0), egui::Sense::hover());
-    let [r, g, b] = colour
-        .as_vec3()
-        .to_array()
-        .map(crate::trace::image::encode_linear);
+    let [r, g, b] = colour.as_vec3().to_array().map(crate::trace::encode_linear);
     ui.painter()
         .rect_filled(rect, 2.0, Color32::from_rgb(r, g, b));
 }

@@ -1,0 +1,272 @@
+//! The pixel inspector: every number behind one pixel, recorded by the tracer's own
+//! shading code through a [`Recorder`], so what it shows is what the image computed.
+
+use glam::{DVec2, DVec3};
+
+use crate::trace::film::PinholeCamera;
+use crate::trace::film::RenderOptions;
+use crate::trace::ray::Ray;
+use crate::trace::ray_counts::RayCounts;
+use crate::trace::shade::LightOutcome;
+use crate::trace::shade::LightRecord;
+use crate::trace::shade::Recorder;
+use crate::trace::shade::SkippedLight;
+use crate::trace::shade::Tracer;
+use crate::trace::terms::Term;
+use crate::trace::terms::TermSwitches;
+use crate::trace::world::SurfacePoint;
+use crate::trace::world::World;
+
+/// What one ray of the chain (the camera ray, then each mirror bounce) met.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BounceReport {
+    /// 0 for the camera ray, then 1, 2, ... for mirror bounces.
+    pub depth: u32,
+    /// The ray.
+    pub ray: Ray,
+    /// The surface hit, or `None` for a miss.
+    pub hit: Option<SurfacePoint>,
+    /// Colour returned by a miss (background, or black where the switches hide it).
+    pub background: DVec3,
+    /// The ambient term added.
+    pub ambient: DVec3,
+    /// Each light that can reach the point (in front of it or not, inside any spot cone).
+    pub lights: Vec<LightRecord>,
+    /// The lights passed over at the point, and why.
+    pub skipped: Vec<SkippedLight>,
+    /// Where each blocked shadow ray met its blocker: `(scene index of the light, the
+    /// blocker's surface)`.
+    pub blocker_hits: Vec<(usize, SurfacePoint)>,
+    /// `(km, colour of the reflected ray)` when a mirror ray was cast.
+    pub reflection: Option<(DVec3, DVec3)>,
+    /// The colour this ray returned.
+    pub colour: DVec3,
+}
+
+impl BounceReport {
+    fn new(depth: u32, ray: Ray) -> Self {
+        Self {
+            depth,
+            ray,
+            hit: None,
+            background: DVec3::ZERO,
+            ambient: DVec3::ZERO,
+            lights: Vec::new(),
+            skipped: Vec::new(),
+            blocker_hits: Vec::new(),
+            reflection: None,
+            colour: DVec3::ZERO,
+        }
+    }
+
+    /// Every non-ambient light of the scene that the point was shaded with, in the
+    /// scene's order, with what it did: `(scene index, outcome, its record if sampled)`.
+    #[must_use]
+    pub fn light_outcomes(&self) -> Vec<(usize, LightOutcome, Option<&LightRecord>)> {
+        let mut all: Vec<_> = self
+            .lights
+            .iter()
+            .map(|l| (l.scene_index, LightOutcome::of(l), Some(l)))
+            .chain(
+                self.skipped
+                    .iter()
+                    .map(|s| (s.scene_index, LightOutcome::Skipped(s.why), None)),
+            )
+            .collect();
+        all.sort_by_key(|(index, _, _)| *index);
+        all
+    }
+
+    /// Where the shadow ray to scene light `scene_index` met its blocker, if it was blocked.
+    #[must_use]
+    pub fn blocker_hit(&self, scene_index: usize) -> Option<&SurfacePoint> {
+        self.blocker_hits
+            .iter()
+            .find(|(light, _)| *light == scene_index)
+            .map(|(_, hit)| hit)
+    }
+
+    /// The sum of the recorded terms; equals `colour` (checked by the tests).
+    #[must_use]
+    pub fn sum_of_terms(&self) -> DVec3 {
+        let local: DVec3 = self.lights.iter().map(|l| l.diffuse + l.specular).sum();
+        let mirror = self.reflection.map_or(DVec3::ZERO, |(km, c)| km * c);
+        if self.hit.is_some() {
+            self.ambient + local + mirror
+        } else {
+            self.background
+        }
+    }
+}
+
+/// Everything behind one pixel's centre sample.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PixelReport {
+    /// The pixel.
+    pub pixel: (u32, u32),
+    /// The camera ray and each mirror bounce, in order.
+    pub bounces: Vec<BounceReport>,
+    /// The pixel's colour before clamping.
+    pub unclamped: DVec3,
+    /// The colour written: clamped to [0, 1].
+    pub clamped: DVec3,
+}
+
+/// Collects a [`PixelReport`] as the shader runs. The mirror chain is a single path, so
+/// each depth has exactly one ray.
+struct ReportRecorder<'w> {
+    world: &'w World,
+    bounces: Vec<BounceReport>,
+}
+
+impl ReportRecorder<'_> {
+    fn at(&mut self, depth: u32, ray: &Ray) -> &mut BounceReport {
+        let index = depth as usize;
+        if self.bounces.len() <= index {
+            self.bounces.push(BounceReport::new(depth, *ray));
+        }
+        &mut self.bounces[index]
+    }
+}
+
+impl Recorder for ReportRecorder<'_> {
+    fn hit(&mut self, depth: u32, ray: &Ray, hit: &SurfacePoint) {
+        self.at(depth, ray).hit = Some(*hit);
+    }
+    fn miss(&mut self, depth: u32, ray: &Ray, background: DVec3) {
+        self.at(depth, ray).background = background;
+    }
+    fn ambient(&mut self, depth: u32, colour: DVec3) {
+        self.bounces[depth as usize].ambient = colour;
+    }
+    fn light(&mut self, depth: u32, record: &LightRecord) {
+        let bounce = &mut self.bounces[depth as usize];
+        bounce.lights.push(*record);
+        // The renderer only asks whether something is in the way; the record also shows
+        // where the ray meets the blocker (the record names it by its scene index).
+        if let Some(shadow) = record.shadow_ray
+            && let Some(blocker) = shadow.blocked_by
+            && let Some(world_index) = self
+                .world
+                .object_scene_index
+                .iter()
+                .position(|&i| i == blocker)
+            && let Some(hit) = self
+                .world
+                .intersect_object(world_index, &shadow.ray, shadow.t_max)
+        {
+            let hit = SurfacePoint {
+                object: blocker,
+                ..hit
+            };
+            bounce.blocker_hits.push((record.scene_index, hit));
+        }
+    }
+    fn skipped_light(&mut self, depth: u32, skipped: &SkippedLight) {
+        self.bounces[depth as usize].skipped.push(*skipped);
+    }
+    fn reflection(&mut self, depth: u32, km: DVec3, reflected: DVec3) {
+        self.bounces[depth as usize].reflection = Some((km, reflected));
+    }
+    fn result(&mut self, depth: u32, colour: DVec3) {
+        self.bounces[depth as usize].colour = colour;
+    }
+}
+
+/// Inspects the centre of pixel `(px, py)` of an image rendered with `options` (beauty
+/// view with its term switches), through the same code path as the renderer. Object and
+/// light indices in the report are the scene's.
+///
+/// # Panics
+/// When `world` was compiled for other isolation switches than `options.isolation`.
+#[must_use]
+pub fn inspect_pixel(world: &World, options: &RenderOptions, px: u32, py: u32) -> PixelReport {
+    crate::trace::world::assert_compiled_for(world, &options.isolation);
+    let camera = PinholeCamera::new(&world.camera, options.width, options.height);
+    let tracer = Tracer::new(world, options.switches, crate::trace::terms::View::Beauty);
+    let ray = camera.ray(DVec2::new(f64::from(px) + 0.5, f64::from(py) + 0.5));
+    let mut recorder = ReportRecorder {
+        world,
+        bounces: Vec::new(),
+    };
+    let unclamped = tracer.trace_primary(&ray, &mut RayCounts::default(), &mut recorder);
+    PixelReport {
+        pixel: (px, py),
+        bounces: recorder.bounces,
+        unclamped,
+        clamped: unclamped.clamp(DVec3::ZERO, DVec3::ONE),
+    }
+}
+
+/// The switches a report was traced with, in words: "all terms on", or
+/// "off: diffuse, shadows · solo specular" (as `--off` and `--solo` name them).
+#[must_use]
+pub fn switches_text(switches: TermSwitches) -> String {
+    let off: Vec<&str> = Term::ALL
+        .into_iter()
+        .filter(|t| !switches.is_on(*t))
+        .map(Term::name)
+        .collect();
+    let mut parts = Vec::new();
+    if !off.is_empty() {
+        parts.push(format!("off: {}", off.join(", ")));
+    }
+    if let Some(solo) = switches.solo {
+        parts.push(format!("solo {solo}"));
+    }
+    if parts.is_empty() {
+        "all terms on".to_owned()
+    } else {
+        parts.join(" · ")
+    }
+}
+
+/// A pixel that is not in the image, as an error.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
+#[error(
+    "pixel ({x}, {y}) is outside the {width} x {height} image (x runs from 0 to {}, y from 0 to {})",
+    width.saturating_sub(1),
+    height.saturating_sub(1)
+)]
+pub struct PixelOutside {
+    /// The pixel's column.
+    pub x: u32,
+    /// The pixel's row.
+    pub y: u32,
+    /// The image width.
+    pub width: u32,
+    /// The image height.
+    pub height: u32,
+}
+
+/// As [`inspect_pixel`], for a pixel that may lie outside the image.
+///
+/// # Errors
+/// When `(px, py)` is not a pixel of the `options.width` x `options.height` image.
+pub fn try_inspect_pixel(
+    world: &World,
+    options: &RenderOptions,
+    px: u32,
+    py: u32,
+) -> Result<PixelReport, PixelOutside> {
+    if px >= options.width || py >= options.height {
+        return Err(PixelOutside {
+            x: px,
+            y: py,
+            width: options.width,
+            height: options.height,
+        });
+    }
+    Ok(inspect_pixel(world, options, px, py))
+}
+
+/// The scene index of the object under pixel point `(x, y)` (in pixels, fractional) of a
+/// `width` x `height` image: the tracer's own primary ray, so picking is exact (and never
+/// finds an object the world was compiled without).
+#[must_use]
+pub fn pick(world: &World, width: u32, height: u32, point: DVec2) -> Option<usize> {
+    let camera = PinholeCamera::new(&world.camera, width, height);
+    world
+        .intersect(&camera.ray(point), f64::INFINITY)
+        .map(|hit| world.scene_object(hit.object))
+}

@@ -1,0 +1,262 @@
+//! A plain render's batch (one sample of every pixel of a tile), traced depth by depth
+//! instead of one pixel's whole path at a time: the closest hits of all the tile's
+//! camera rays at once ([`World::intersect_batch`]: the tile's objects outer, its rays
+//! inner), then each pixel shaded from its hit by the shader's own code (lights and
+//! shadow rays as before); then the mirror rays that shading cast, the same way, and so
+//! on down the chains, which are folded back at the end. Each batch answer is the single
+//! query's bit for bit, so the colours are the pixel-by-pixel path's (tested below).
+//!
+//! The batches run more instructions (their bookkeeping), yet the frame is faster: an
+//! object's test over neighbouring rays branches alike. Staging each light's samples and
+//! shadow rays the same way lost more to the bookkeeping than it gained, and so did SIMD
+//! lanes for the batches' tests (docs/BENCHMARKS.md, "tiles traced depth by depth").
+
+use glam::{DVec2, DVec3};
+
+use super::samples::camera_sample;
+use super::samples::sample_point;
+use crate::trace::cull::Candidates;
+use crate::trace::cull::TileCull;
+use crate::trace::film::PinholeCamera;
+use crate::trace::film::TileRect;
+use crate::trace::ray::Ray;
+use crate::trace::ray_counts::RayCounts;
+use crate::trace::shade::Bounce;
+use crate::trace::shade::LiveRays;
+use crate::trace::shade::NoRecorder;
+use crate::trace::shade::RaySource;
+use crate::trace::shade::ShadowQuery;
+use crate::trace::shade::Tracer;
+use crate::trace::terms::ActiveTerms;
+use crate::trace::world::ObjectSet;
+use crate::trace::world::SurfacePoint;
+use crate::trace::world::World;
+
+/// Answers the closest hit of the ray at `depth` from the batch that found it, every
+/// other ray live.
+struct KnownHit<'c> {
+    depth: u32,
+    ray: Ray,
+    hit: Option<SurfacePoint>,
+    live: LiveRays<'c>,
+}
+
+impl<'c> KnownHit<'c> {
+    /// `hit` for `ray` at `depth`; the rest asked of the world among `among`, the tile's
+    /// culled sets (as [`LiveRays`] would for any of its pixels).
+    fn new(depth: u32, ray: Ray, hit: Option<SurfacePoint>, among: Candidates<'c>) -> Self {
+        Self {
+            depth,
+            ray,
+            hit,
+            live: LiveRays::among(among),
+        }
+    }
+}
+
+impl RaySource for KnownHit<'_> {
+    #[inline]
+    fn closest_hit(&mut self, world: &World, depth: u32, ray: &Ray) -> Option<SurfacePoint> {
+        if depth == self.depth {
+            debug_assert_eq!(*ray, self.ray, "the batch's hit is this ray's");
+            self.hit
+        } else {
+            self.live.closest_hit(world, depth, ray)
+        }
+    }
+
+    #[inline]
+    fn occluder(
+        &mut self,
+        world: &World,
+        depth: u32,
+        light: usize,
+        except: Option<usize>,
+        query: impl FnOnce() -> ShadowQuery,
+    ) -> Option<usize> {
+        self.live.occluder(world, depth, light, except, query)
+    }
+}
+
+/// What a plain render's tiles share.
+pub(crate) struct TilePass<'a> {
+    pub tracer: &'a Tracer<'a>,
+    pub camera: &'a PinholeCamera,
+    pub cull: &'a TileCull,
+    /// The pixel's sample count (where its samples fall).
+    pub count: u32,
+}
+
+impl TilePass<'_> {
+    /// Sample `index` of every pixel of `rect` (row-major) and the rays traced, or `None`
+    /// where the samples do not share one culled set (then they go pixel by pixel).
+    pub fn tile(&self, rect: TileRect, index: u32) -> Option<(Vec<DVec3>, RayCounts)> {
+        let points: Vec<DVec2> = (rect.y0..rect.y0 + rect.h)
+            .flat_map(|py| (rect.x0..rect.x0 + rect.w).map(move |px| (px, py)))
+            .map(|(px, py)| sample_point(px, py, index, self.count))
+            .collect();
+        let among = self.cull.candidates(*points.first()?);
+        let lights = self.tracer.world().lights.len();
+        let same = |other: Candidates| {
+            other.camera == among.camera && (0..lights).all(|l| other.shadow(l) == among.shadow(l))
+        };
+        if !points
+            .iter()
+            .all(|&point| same(self.cull.candidates(point)))
+        {
+            return None;
+        }
+        let rays: Vec<Ray> = points.iter().map(|&point| self.camera.ray(point)).collect();
+        let mut counts = RayCounts::default();
+        let colours = match self.tracer.beauty_terms() {
+            Some(terms) => self.lit(rays, among, terms, &mut counts),
+            None => self.view(&points, rays, among, &mut counts),
+        };
+        Some((colours, counts))
+    }
+
+    /// The lit picture: each depth of the tile's mirror chains found and shaded, the
+    /// chains folded back as [`Tracer::trace_primary_from`] folds one.
+    fn lit(
+        &self,
+        rays: Vec<Ray>,
+        among: Candidates,
+        (primary, secondary): (ActiveTerms, ActiveTerms),
+        counts: &mut RayCounts,
+    ) -> Vec<DVec3> {
+        let world = self.tracer.world();
+        let count = rays.len();
+        counts.primary += count as u64;
+        // Per depth, the pixels whose chain reaches it and what their rays there add.
+        let mut levels: Vec<(Vec<usize>, Vec<Bounce>)> = Vec::new();
+        let (mut pixels, mut rays): (Vec<usize>, Vec<Ray>) = ((0..count).collect(), rays);
+        let mut depth = 0;
+        while !rays.is_empty() {
+            // As `LiveRays`: camera rays test the tile's culled set, mirror rays all.
+            let (terms, objects) = if depth == 0 {
+                (&primary, among.camera)
+            } else {
+                (&secondary, ObjectSet::ALL)
+            };
+            let hits = world.intersect_batch(&rays, objects);
+            let mut bounces = Vec::with_capacity(rays.len());
+            let (mut next_pixels, mut next_rays) = (Vec::new(), Vec::new());
+            for ((&pixel, ray), hit) in pixels.iter().zip(&rays).zip(hits) {
+                let mut source = KnownHit::new(depth, *ray, hit, among);
+                let (bounce, mirror_ray) =
+                    self.tracer
+                        .shade(ray, depth, terms, &mut source, counts, &mut NoRecorder);
+                bounces.push(bounce);
+                if let Some(mirror_ray) = mirror_ray {
+                    next_pixels.push(pixel);
+                    next_rays.push(mirror_ray);
+                }
+            }
+            levels.push((pixels, bounces));
+            (pixels, rays) = (next_pixels, next_rays);
+            depth += 1;
+        }
+        // Deepest first, through `fold_back`'s own step (`Bounce::fold`).
+        let mut colours = vec![DVec3::ZERO; count];
+        let mut folded = vec![false; count];
+        for (level_pixels, bounces) in levels.iter().rev() {
+            for (&pixel, bounce) in level_pixels.iter().zip(bounces) {
+                colours[pixel] = if folded[pixel] {
+                    bounce.fold(colours[pixel])
+                } else {
+                    bounce.local
+                };
+                folded[pixel] = true;
+            }
+        }
+        colours
+    }
+
+    /// A debug view: the camera rays' hits found at once, each pixel's view from its hit.
+    fn view(
+        &self,
+        points: &[DVec2],
+        rays: Vec<Ray>,
+        among: Candidates,
+        counts: &mut RayCounts,
+    ) -> Vec<DVec3> {
+        let hits = self.tracer.world().intersect_batch(&rays, among.camera);
+        points
+            .iter()
+            .zip(rays)
+            .zip(hits)
+            .map(|((&point, ray), hit)| {
+                let mut source = KnownHit::new(0, ray, hit, among);
+                camera_sample(self.tracer, self.camera, point, &mut source, counts)
+            })
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::examples::EXAMPLE_SCENES;
+    use crate::trace::film::RenderOptions;
+    use crate::trace::film::RenderProgress;
+    use crate::trace::render::render_samples;
+    use crate::trace::render::render_samples_into;
+    use crate::trace::terms::Term;
+    use crate::trace::terms::TermSwitches;
+    use crate::trace::terms::View;
+
+    /// Batches (tile by tile) against each pixel traced alone, with the same culling,
+    /// for every example scene, view and a solo switch: a one-sample pass, and samples
+    /// summed onto sums from before.
+    #[test]
+    fn a_tile_pass_colours_every_pixel_as_the_pixel_by_pixel_path() {
+        let solo_specular = TermSwitches::ALL_ON.with_solo(Some(Term::Specular));
+        for (name, text) in EXAMPLE_SCENES {
+            let scene = crate::scene::parse_scene(text).unwrap();
+            let world = World::new(&scene).unwrap();
+            let views = [View::Beauty, View::Normal, View::ShadowMask, View::Depth];
+            let modes = views
+                .map(|view| (TermSwitches::ALL_ON, view))
+                .into_iter()
+                .chain([(solo_specular, View::Beauty)]);
+            for (switches, view) in modes {
+                let options = RenderOptions {
+                    width: 53,
+                    height: 37,
+                    samples_per_pixel: 3,
+                    switches,
+                    view,
+                    ..RenderOptions::from_scene(&scene)
+                };
+                let progress = RenderProgress::default();
+                // One batch alone (a one-sample pass), then two summed after a first.
+                let one = render_samples(&world, &options, 1..2, &progress).unwrap();
+                let mut three = render_samples(&world, &options, 0..1, &progress).unwrap();
+                render_samples_into(&world, &options, 1..3, &mut three, &progress).unwrap();
+                let camera = PinholeCamera::new(&world.camera, 53, 37);
+                let tracer = Tracer::new(&world, switches, view);
+                let cull = TileCull::new(&world, &camera, 53, 37);
+                let mut rays = [RayCounts::default(), RayCounts::default()];
+                for (i, (one, three)) in one.sums.iter().zip(&three.sums).enumerate() {
+                    let (px, py) = (i as u32 % 53, i as u32 / 53);
+                    let mut sum = DVec3::ZERO;
+                    for index in 0..3 {
+                        let point = sample_point(px, py, index, 3);
+                        let mut live = LiveRays::among(cull.candidates(point));
+                        let counts = &mut rays[usize::from(index == 1)];
+                        let alone = camera_sample(&tracer, &camera, point, &mut live, counts);
+                        if index == 1 {
+                            assert_eq!(*one, alone, "{name} {view:?} pixel ({px}, {py})");
+                        }
+                        sum += alone;
+                    }
+                    assert_eq!(*three, sum, "{name} {view:?} pixel ({px}, {py}), 3 samples");
+                }
+                assert_eq!(one.rays, rays[1], "{name} {view:?}: the same rays counted");
+                let mut all = rays[0];
+                all.add(&rays[1]);
+                assert_eq!(three.rays, all, "{name} {view:?}: the same rays, 3 samples");
+            }
+        }
+    }
+}

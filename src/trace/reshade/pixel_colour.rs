@@ -1,0 +1,41 @@
+//! A pixel's colour as the cache keeps it, with the rays it is made of and the switches
+//! it depends on.
+
+use glam::DVec3;
+
+use super::dependence::TermDependence;
+use crate::trace::ray_counts::RayCounts;
+
+/// A pixel's colour in the pass that filled the cache (as the shader returned it, maybe
+/// non-finite), the rays it is made of and the switches it depends on: kept for a pixel
+/// no edit could change.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct PixelColour {
+    /// The colour.
+    pub colour: DVec3,
+    /// Primary, shadow and reflection rays behind it.
+    pub rays: [u32; 3],
+    /// The switches whose change may change it.
+    pub depends: TermDependence,
+}
+
+impl PixelColour {
+    /// `colour`, made of the rays `rays`, depending on the switches `depends`.
+    pub fn of(colour: DVec3, rays: &RayCounts, depends: TermDependence) -> Self {
+        Self {
+            colour,
+            rays: [rays.primary, rays.shadow, rays.reflection]
+                .map(|n| u32::try_from(n).unwrap_or(u32::MAX)),
+            depends,
+        }
+    }
+
+    /// The rays behind it.
+    pub fn counts(&self) -> RayCounts {
+        RayCounts {
+            primary: u64::from(self.rays[0]),
+            shadow: u64::from(self.rays[1]),
+            reflection: u64::from(self.rays[2]),
+        }
+    }
+}

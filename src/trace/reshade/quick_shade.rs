@@ -1,0 +1,241 @@
+//! The quick re-shade: a pixel's colour from its cached mirror chain, its shadow answers
+//! and what each light gave each hit ([`LitFactors`]), with no ray, no light sample and
+//! no Phong lobe worked out again. An edit of colours (materials other than shininess,
+//! light colours and intensities, ambient, background) or of the term switches needs no
+//! more.
+//!
+//! It takes the shader's steps (`Tracer::shade` for the beauty view, then the fold of
+//! [`crate::trace::shade::fold_back`], deepest entry first, through the same
+//! [`Bounce::fold`] step but with no chain kept) with the shared term functions of
+//! [`crate::trace::shade::phong`], so its colour is
+//! the shader's bit for bit (tests/reshade.rs holds every edit kind to that). Where the
+//! cache lacks something the shader would need (a ray never traced, a shadow ray never
+//! cast, a light's factors unknown, a lobe for another shininess) it gives up, and the
+//! pixel is shaded in full.
+
+use glam::DVec3;
+
+use super::chains::CLEAR;
+use super::chains::NOT_CAST;
+use super::dependence::DependenceRule;
+use super::dependence::EntryTerms;
+use super::dependence::TermDependence;
+use super::light_factors::LightSlot;
+use crate::trace::ray_counts::RayCounts;
+use crate::trace::shade::Bounce;
+use crate::trace::shade::Tracer;
+use crate::trace::shade::diffuse_term;
+use crate::trace::shade::specular_term;
+use crate::trace::terms::ActiveTerms;
+use crate::trace::world::falloff;
+
+/// What an entry on one object needs of its material, looked up once per pass.
+#[derive(Clone, Copy, Debug)]
+struct ObjectShade {
+    /// `ka * ambient`, as the shader works it out.
+    ambient: DVec3,
+    diffuse: DVec3,
+    specular: DVec3,
+    mirror: DVec3,
+    /// A diffuse or specular colour: the shader looks at the lights.
+    has_local: bool,
+    /// The cached lobes are for another shininess.
+    stale_lobes: bool,
+}
+
+/// Shades pixels of one world from their cache entries.
+pub(crate) struct QuickShade<'r> {
+    primary: ActiveTerms,
+    secondary: ActiveTerms,
+    background: DVec3,
+    /// What each entry depends on before its lights.
+    dependence: &'r DependenceRule,
+    max_depth: u32,
+    objects: Vec<ObjectShade>,
+    /// Per light, its strength; `None` for a light of zero strength, which the shader
+    /// does not sample.
+    lights: Vec<Option<DVec3>>,
+}
+
+impl<'r> QuickShade<'r> {
+    /// For what `tracer` shades, with per object whether its cached lobes are stale
+    /// ([`super::light_factors::stale_lobes`]) and the dependence rule of its world;
+    /// `None` for the debug views, which are not the lit picture.
+    pub fn new(
+        tracer: &Tracer,
+        stale_lobes: &[bool],
+        dependence: &'r DependenceRule,
+    ) -> Option<Self> {
+        let (primary, secondary) = tracer.beauty_terms()?;
+        let world = tracer.world();
+        let objects = world
+            .objects
+            .iter()
+            .zip(stale_lobes)
+            .map(|(object, &stale_lobes)| {
+                let material = &world.materials[object.material];
+                ObjectShade {
+                    ambient: material.ambient * world.ambient,
+                    diffuse: material.diffuse,
+                    specular: material.specular,
+                    mirror: material.mirror,
+                    has_local: material.diffuse != DVec3::ZERO || material.specular != DVec3::ZERO,
+                    stale_lobes,
+                }
+            })
+            .collect();
+        let lights = world
+            .lights
+            .iter()
+            .map(|light| Some(light.strength()).filter(|s| *s != DVec3::ZERO))
+            .collect();
+        Some(Self {
+            primary,
+            secondary,
+            background: world.background,
+            dependence,
+            max_depth: world.max_depth,
+            objects,
+            lights,
+        })
+    }
+
+    /// The colour of the pixel whose chain's entries met `objects` (`u32::MAX`: a miss),
+    /// with `lights` light slots per entry in `slots`, and the switches it depends on
+    /// (worked out as it is shaded, as [`super::dependence::DependenceRule`] would); also
+    /// the rays the shader would count for it. `None` where the cache cannot answer.
+    #[inline]
+    pub fn pixel(
+        &self,
+        objects: &[u32],
+        slots: &[LightSlot],
+        lights: usize,
+        counts: &mut RayCounts,
+    ) -> Option<(DVec3, TermDependence)> {
+        // The chain the shader would follow ends at its first entry that casts no
+        // mirror ray; a cached chain without one lacks the next ray.
+        let last = objects
+            .iter()
+            .enumerate()
+            .position(|(depth, &object)| !self.casts_mirror_ray(depth, object))?;
+        let mut own = RayCounts {
+            primary: 1,
+            ..RayCounts::default()
+        };
+        let mut depends = TermDependence::NONE;
+        // Deepest first, each entry folding in the colour of the one after, as
+        // `fold_back` does, with no chain kept.
+        let mut colour = DVec3::ZERO;
+        for depth in (0..=last).rev() {
+            let object = objects[depth];
+            let row = &slots[depth * lights..(depth + 1) * lights];
+            let (local, entry) = self.entry(depth, object, row, &mut own)?;
+            depends.add(depth, entry);
+            colour = if depth < last {
+                // Every entry before the last casts a mirror ray (found above).
+                own.reflection += 1;
+                let km = self.objects[object as usize].mirror;
+                Bounce { local, km }.fold(colour)
+            } else {
+                local
+            };
+        }
+        counts.add(&own);
+        Some((colour, depends))
+    }
+
+    /// The terms on at depth `depth`: the camera ray's (a solo shows them alone) or the
+    /// mirror rays'.
+    #[inline]
+    fn terms(&self, depth: usize) -> &ActiveTerms {
+        if depth == 0 {
+            &self.primary
+        } else {
+            &self.secondary
+        }
+    }
+
+    /// Whether the shader casts a mirror ray from entry `depth` on `object`
+    /// (`u32::MAX`: a miss, which casts none).
+    #[inline]
+    fn casts_mirror_ray(&self, depth: usize, object: u32) -> bool {
+        object != u32::MAX
+            && self.terms(depth).reflection
+            && depth < self.max_depth as usize
+            && self.objects[object as usize].mirror != DVec3::ZERO
+    }
+
+    /// One entry's own colour (its mirror ray's share apart) and what the entry depends
+    /// on. Inlined into [`Self::pixel`], as the shader's `shade` is.
+    #[inline(always)]
+    fn entry(
+        &self,
+        depth: usize,
+        object: u32,
+        row: &[LightSlot],
+        counts: &mut RayCounts,
+    ) -> Option<(DVec3, EntryTerms)> {
+        let terms = self.terms(depth);
+        if object == u32::MAX {
+            let background = if terms.background {
+                self.background
+            } else {
+                DVec3::ZERO
+            };
+            return Some((background, self.dependence.miss_terms()));
+        }
+        let shade = &self.objects[object as usize];
+        if shade.stale_lobes {
+            return None;
+        }
+        let mut entry = self.dependence.hit_terms(object as usize, depth as u32);
+        let mut colour = DVec3::ZERO;
+        if terms.ambient {
+            colour += shade.ambient;
+        }
+        if (terms.diffuse || terms.specular) && shade.has_local {
+            for (light, slot) in self.lights.iter().zip(row) {
+                let Some(strength) = *light else {
+                    continue;
+                };
+                let factors = slot.factors;
+                let n_dot_l = factors.n_dot_l();
+                // Unknown (NaN): shade in full. Unreachable or behind the surface: no term,
+                // as the shader's `n_dot_l > 0` test says.
+                if n_dot_l.is_nan() {
+                    return None;
+                }
+                if n_dot_l <= 0.0 {
+                    continue;
+                }
+                let lobe = factors.lobe();
+                entry.lit(lobe.is_some());
+                if terms.shadows {
+                    if slot.shadow == NOT_CAST {
+                        return None;
+                    }
+                    counts.shadow += 1;
+                    if slot.shadow != CLEAR {
+                        continue;
+                    }
+                }
+                let strength = falloff(strength, factors.distance_squared());
+                let diffuse = if terms.diffuse {
+                    diffuse_term(shade.diffuse, strength, n_dot_l)
+                } else {
+                    DVec3::ZERO
+                };
+                let specular = if terms.specular {
+                    specular_term(shade.specular, strength, lobe)
+                } else {
+                    DVec3::ZERO
+                };
+                colour += diffuse + specular;
+            }
+        } else if shade.has_local {
+            // The lights are not looked at, but would be with another switch.
+            entry.lights(row);
+        }
+        Some((colour, entry))
+    }
+}

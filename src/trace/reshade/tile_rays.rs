@@ -1,0 +1,410 @@
+//! One tile's rays during the one-sample pass ([`crate::trace::render::cached`]): the previous cache's
+//! chains and light slots read in place, and [`PixelRays`], the [`RaySource`] that
+//! answers a pixel's rays from them and traces (and keeps) whatever they lack.
+
+use std::sync::Arc;
+
+use glam::DVec3;
+
+use super::chains::CachedHit;
+use super::chains::Chains;
+use super::chains::NOT_CAST;
+use super::chains::decode_blocker;
+use super::chains::encode_blocker;
+use super::dependence::TermDependence;
+use super::hit_cache::TileHits;
+use super::keep_rule::KeepRule;
+use super::keep_rule::TileSummary;
+use super::light_factors::LightSlot;
+use super::pixel_colour::PixelColour;
+use crate::trace::ray::Ray;
+use crate::trace::ray_counts::RayCounts;
+use crate::trace::shade::LitFactors;
+use crate::trace::shade::LiveRays;
+use crate::trace::shade::RaySource;
+use crate::trace::shade::ShadowQuery;
+use crate::trace::world::SurfacePoint;
+use crate::trace::world::World;
+
+/// One tile's rays during the pass. It reads the previous cache's chains in place, shared,
+/// until a pixel needs a ray the cache lacks; from then on the tile's chains are rebuilt
+/// (the pixels before copied at once, each later one as it comes). Light slots are
+/// written into the shared ones on first change (copied once per tile).
+pub(crate) struct TileRays {
+    chains: Arc<Chains>,
+    slots: Arc<Vec<LightSlot>>,
+    /// The rebuilt chains and slots, once one chain had to grow.
+    grown: Option<(Chains, Vec<LightSlot>)>,
+    /// The pixels' colours in the cache read (none for a fresh tile), and in this pass
+    /// once one of them changed (until then the old ones stand for them).
+    old_colours: Option<Arc<Vec<PixelColour>>>,
+    colours: Option<Vec<PixelColour>>,
+    /// The summary of the tile read, which still holds while its chains and colours do,
+    /// and the one worked out as [`Self::whole_tile`] re-shaded it.
+    old_summary: TileSummary,
+    new_summary: Option<TileSummary>,
+    /// Pixels shaded so far, and of them those shaded from light factors alone.
+    pub shaded: u64,
+    pub quick: u64,
+    /// The pixel being shaded, row-major within the tile, and its chain in the chains
+    /// read.
+    pixel: usize,
+    read_chain: std::ops::Range<usize>,
+    /// Where the pixel's chain starts, read or rebuilt (rebuilding keeps the entries
+    /// before it where they were, so this holds for the whole pixel).
+    entry_start: usize,
+    lights: usize,
+    pub traced: RayCounts,
+}
+
+/// How the light slots of the cache read map onto the lights of the new world.
+pub(crate) struct SlotColumns<'a> {
+    /// Lights per entry in the cache read.
+    pub old_lights: usize,
+    /// Per new light, the old column whose shadow answers stay valid.
+    pub shadows: &'a [Option<usize>],
+    /// Per new light, the old column whose light factors stay valid.
+    pub factors: &'a [Option<usize>],
+}
+
+impl TileRays {
+    /// Reading `old` for a world whose lights keep the old columns `columns` names.
+    pub fn reading(old: &TileHits, columns: &SlotColumns) -> Self {
+        let old_lights = columns.old_lights;
+        let same_lights = columns.shadows.len() == old_lights
+            && (0..old_lights)
+                .all(|i| columns.shadows[i] == Some(i) && columns.factors[i] == Some(i));
+        let slots = if same_lights {
+            Arc::clone(&old.slots)
+        } else {
+            // Entry by entry, not chunks of the old rows: the old world may have had no
+            // light at all.
+            let lights = columns.shadows.len();
+            let mut remapped = Vec::with_capacity(old.chains.len() * lights);
+            for entry in 0..old.chains.len() {
+                let row = &old.slots[entry * old_lights..(entry + 1) * old_lights];
+                for (shadow, factors) in columns.shadows.iter().zip(columns.factors) {
+                    remapped.push(LightSlot {
+                        shadow: shadow.map_or(NOT_CAST, |c| row[c].shadow),
+                        factors: factors.map_or(LitFactors::UNKNOWN, |c| row[c].factors),
+                    });
+                }
+            }
+            Arc::new(remapped)
+        };
+        Self {
+            chains: Arc::clone(&old.chains),
+            slots,
+            grown: None,
+            old_colours: Some(Arc::clone(&old.colours)),
+            colours: None,
+            old_summary: old.summary,
+            new_summary: None,
+            shaded: 0,
+            quick: 0,
+            pixel: 0,
+            read_chain: 0..0,
+            entry_start: 0,
+            lights: columns.shadows.len(),
+            traced: RayCounts::default(),
+        }
+    }
+
+    /// A tile with nothing cached, for a world with `lights` lights, with room for
+    /// `entries` entries: growing a tile's chains reallocates and copies them.
+    pub fn fresh(pixels: usize, lights: usize, entries: usize) -> Self {
+        Self {
+            chains: Arc::new(Chains::empty(pixels)),
+            slots: Arc::new(Vec::new()),
+            grown: Some((
+                Chains::with_capacity(pixels, entries),
+                Vec::with_capacity(entries * lights),
+            )),
+            old_colours: None,
+            colours: Some(Vec::with_capacity(pixels)),
+            old_summary: TileSummary::default(),
+            new_summary: None,
+            shaded: 0,
+            quick: 0,
+            pixel: 0,
+            read_chain: 0..0,
+            entry_start: 0,
+            lights,
+            traced: RayCounts::default(),
+        }
+    }
+
+    /// Starts the next pixel: once rebuilding, copies its cached chain across.
+    pub fn begin_pixel(&mut self) {
+        self.read_chain = self.chains.chain(self.pixel);
+        self.entry_start = self.chain().start;
+        // Nothing to copy for an empty chain (each of a fresh tile's).
+        if let Some((chains, slots)) = self.grown.as_mut().filter(|_| !self.read_chain.is_empty()) {
+            let chain = self.read_chain.clone();
+            let lights = self.lights;
+            slots.extend_from_slice(&self.slots[chain.start * lights..chain.end * lights]);
+            chains.extend_from(&self.chains, chain);
+        }
+    }
+
+    /// The light slot of light `light` at the current pixel's entry at `depth`.
+    #[inline]
+    fn slot_index(&self, depth: u32, light: usize) -> usize {
+        debug_assert_eq!(self.entry_start, self.chain().start);
+        (self.entry_start + depth as usize) * self.lights + light
+    }
+
+    /// The current pixel's cached colour, if `keep` keeps it (and so its rays and colour
+    /// are what they were).
+    pub fn unchanged_colour(&self, keep: &KeepRule) -> Option<PixelColour> {
+        let old = self.old_colours.as_ref()?[self.pixel];
+        keep.keeps(self.pixel_chain().0, old.depends).then_some(old)
+    }
+
+    /// The objects the current pixel's cached chain met (`u32::MAX` for a miss), and
+    /// its entries' light slots (`lights` each).
+    pub fn pixel_chain(&self) -> (&[u32], &[LightSlot]) {
+        let chain = self.chain();
+        let (chains, slots) = match &self.grown {
+            Some((chains, slots)) => (chains, slots),
+            None => (&*self.chains, &*self.slots),
+        };
+        let lights = self.lights;
+        (
+            chains.objects(chain.clone()),
+            &slots[chain.start * lights..chain.end * lights],
+        )
+    }
+
+    /// The whole tile of a cache read, no ray traced: each pixel `keep` keeps keeps its
+    /// colour, the others come from `shade` (given its chain's objects and light slots,
+    /// as [`Self::pixel_chain`]: their colour and dependence). The colours and rays of
+    /// every pixel, row-major; `None`, with the tile as it was, where `shade` cannot
+    /// answer for some pixel.
+    pub fn whole_tile(
+        &mut self,
+        keep: Option<&KeepRule>,
+        shade: impl Fn(&[u32], &[LightSlot], &mut RayCounts) -> Option<(DVec3, TermDependence)>,
+    ) -> Option<(Vec<DVec3>, RayCounts)> {
+        let old = match (&self.grown, &self.old_colours) {
+            (None, Some(old)) if self.pixel == 0 => Arc::clone(old),
+            _ => return None,
+        };
+        if keep.is_some_and(|keep| keep.keeps_tile(&self.old_summary)) {
+            // No pixel to look at: the tile's colours, chains and slots stay shared.
+            self.pixel = old.len();
+            return Some((
+                old.iter().map(|p| p.colour).collect(),
+                self.old_summary.rays,
+            ));
+        }
+        let (chains, slots, lights) = (&*self.chains, &*self.slots, self.lights);
+        let mut colours = Vec::with_capacity(old.len());
+        let mut rays = RayCounts::default();
+        // Written from the first pixel whose colour changed on.
+        let mut new: Option<Vec<PixelColour>> = None;
+        let mut shaded = 0;
+        let mut depends_all = TermDependence::NONE;
+        for (pixel, kept) in old.iter().enumerate() {
+            let chain = chains.chain(pixel);
+            let objects = chains.objects(chain.clone());
+            if keep.is_some_and(|keep| keep.keeps(objects, kept.depends)) {
+                depends_all = depends_all.union(kept.depends);
+                colours.push(kept.colour);
+                rays.add(&kept.counts());
+                if let Some(new) = &mut new {
+                    new.push(*kept);
+                }
+                continue;
+            }
+            let mut own = RayCounts::default();
+            let (colour, depends) = shade(
+                objects,
+                &slots[chain.start * lights..chain.end * lights],
+                &mut own,
+            )?;
+            shaded += 1;
+            depends_all = depends_all.union(depends);
+            colours.push(colour);
+            rays.add(&own);
+            new.get_or_insert_with(|| {
+                // Sized for the whole tile: growing it pixel by pixel reallocated.
+                let mut new = Vec::with_capacity(old.len());
+                new.extend_from_slice(&old[..pixel]);
+                new
+            })
+            .push(PixelColour::of(colour, &own, depends));
+        }
+        self.colours = new;
+        // The chains are those read: so are the objects they met.
+        self.new_summary = Some(self.old_summary.reshaded(depends_all, rays));
+        self.pixel = old.len();
+        self.shaded += shaded;
+        self.quick += shaded;
+        Some((colours, rays))
+    }
+
+    /// Lights per entry.
+    pub fn lights(&self) -> usize {
+        self.lights
+    }
+
+    /// Ends the pixel, which came out `colour` (`kept`: its colour in the cache read,
+    /// [`Self::unchanged_colour`]).
+    pub fn end_pixel(&mut self, colour: PixelColour, kept: bool) {
+        if let Some((chains, _)) = &mut self.grown {
+            chains.end_chain();
+        }
+        match (&mut self.colours, &self.old_colours) {
+            (Some(colours), _) => colours.push(colour),
+            // Every pixel so far kept its colour: the old ones still stand for them.
+            (None, Some(_)) if kept => {}
+            (None, old) => {
+                let mut colours = Vec::with_capacity(old.as_ref().map_or(0, |o| o.len()));
+                colours.extend_from_slice(old.as_ref().map_or(&[][..], |o| &o[..self.pixel]));
+                colours.push(colour);
+                self.colours = Some(colours);
+            }
+        }
+        self.pixel += 1;
+    }
+
+    /// Where the current pixel's chain is, in the chains read or rebuilt.
+    fn chain(&self) -> std::ops::Range<usize> {
+        match &self.grown {
+            Some((chains, _)) => chains.building(),
+            None => self.read_chain.clone(),
+        }
+    }
+
+    /// Starts rebuilding, copying every chain up to and including the current pixel's.
+    fn grow(&mut self) -> &mut (Chains, Vec<LightSlot>) {
+        let (pixel, lights) = (self.pixel, self.lights);
+        let (chains, slots) = (&self.chains, &self.slots);
+        self.grown.get_or_insert_with(|| {
+            let end = chains.chain(pixel).end;
+            (chains.prefix(pixel, end), slots[..end * lights].to_vec())
+        })
+    }
+
+    /// The light slot `index` (entry * lights + light) to write.
+    #[inline(always)]
+    fn slot_mut(&mut self, index: usize) -> &mut LightSlot {
+        match &mut self.grown {
+            Some((_, slots)) => &mut slots[index],
+            // Copied once per tile, while the cache before still holds the original.
+            None => &mut Arc::make_mut(&mut self.slots)[index],
+        }
+    }
+
+    /// The light slot `index` to read.
+    #[inline(always)]
+    fn slot(&self, index: usize) -> LightSlot {
+        match &self.grown {
+            Some((_, slots)) => slots[index],
+            None => self.slots[index],
+        }
+    }
+
+    /// The tile's rays for the new cache.
+    pub fn finish(self) -> TileHits {
+        let unchanged = self.colours.is_none() && self.grown.is_none();
+        let colours = match (self.colours, self.old_colours) {
+            (Some(colours), _) => Arc::new(colours),
+            (None, Some(old)) => old,
+            (None, None) => Arc::new(Vec::new()),
+        };
+        let (chains, slots) = match self.grown {
+            Some((chains, slots)) => (Arc::new(chains), Arc::new(slots)),
+            None => (self.chains, self.slots),
+        };
+        let summary = match self.new_summary {
+            _ if unchanged => self.old_summary,
+            Some(summary) => summary,
+            None => TileSummary::of(&chains, &colours),
+        };
+        TileHits {
+            chains,
+            slots,
+            colours,
+            summary,
+        }
+    }
+}
+
+/// Answers one pixel's rays from its tile, tracing (and keeping) whatever it lacks, and
+/// keeps what each light gives each hit.
+pub(crate) struct PixelRays<'t, 'c, 's> {
+    pub tile: &'t mut TileRays,
+    /// What traces the rays the cache lacks (culled for the camera ray's tile).
+    pub live: LiveRays<'c>,
+    /// Per object, whether the light factors kept for its hits have a stale lobe: they
+    /// are forgotten as the shader reaches the hit, and worked out again where it can.
+    pub stale_lobes: &'s [bool],
+}
+
+impl RaySource for PixelRays<'_, '_, '_> {
+    fn closest_hit(&mut self, world: &World, depth: u32, ray: &Ray) -> Option<SurfacePoint> {
+        let chain = self.tile.chain();
+        let depth = depth as usize;
+        let lights = self.tile.lights;
+        if depth < chain.len() {
+            let entry = chain.start + depth;
+            let hit = match &self.tile.grown {
+                Some((chains, _)) => chains.hit(entry),
+                None => self.tile.chains.hit(entry),
+            };
+            let hit = hit.point();
+            if hit.is_some_and(|h| self.stale_lobes.get(h.object).copied().unwrap_or(false)) {
+                for slot in entry * lights..(entry + 1) * lights {
+                    self.tile.slot_mut(slot).factors = LitFactors::UNKNOWN;
+                }
+            }
+            return hit;
+        }
+        // The chain is walked depth by depth: the missing entry is the next one.
+        debug_assert_eq!(depth, chain.len());
+        if depth == 0 {
+            self.tile.traced.primary += 1;
+        } else {
+            self.tile.traced.reflection += 1;
+        }
+        let hit = self.live.closest_hit(world, depth as u32, ray);
+        let (chains, slots) = self.tile.grow();
+        chains.push(CachedHit::new(hit.as_ref()));
+        slots.resize(slots.len() + lights, LightSlot::NOTHING);
+        hit
+    }
+
+    fn occluder(
+        &mut self,
+        world: &World,
+        depth: u32,
+        light: usize,
+        except: Option<usize>,
+        query: impl FnOnce() -> ShadowQuery,
+    ) -> Option<usize> {
+        let slot = self.tile.slot_index(depth, light);
+        let code = self.tile.slot(slot).shadow;
+        if code != NOT_CAST {
+            return decode_blocker(code);
+        }
+        self.tile.traced.shadow += 1;
+        let blocked_by = self.live.occluder(world, depth, light, except, query);
+        self.tile.slot_mut(slot).shadow = encode_blocker(blocked_by);
+        blocked_by
+    }
+
+    /// Factors kept are valid: those of a stale lobe or a light placed anew were
+    /// forgotten.
+    fn wants_light_factors(&self, depth: u32, light: usize) -> bool {
+        let slot = self.tile.slot_index(depth, light);
+        let factors = self.tile.slot(slot).factors;
+        factors.is_unknown()
+    }
+
+    fn light_factors(&mut self, depth: u32, light: usize, factors: LitFactors) {
+        let slot = self.tile.slot_index(depth, light);
+        self.tile.slot_mut(slot).factors = factors;
+    }
+}

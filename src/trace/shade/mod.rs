@@ -1,0 +1,21 @@
+//! The lighting model of the contract, one ray at a time, in its order: ambient, each
+//! light (with its shadow ray), the mirror term. The shader asks a [`RaySource`] for the
+//! rays it needs and tells it what each light gave each hit; the recorder sees every number.
+
+mod depth_view;
+mod lit_factors;
+mod mirror_chain;
+mod object_id;
+mod phong;
+mod ray_source;
+mod record;
+mod tracer;
+
+pub use lit_factors::LitFactors;
+pub(crate) use mirror_chain::Bounce;
+pub use phong::{LocalLight, diffuse_term, phong_power, specular_term};
+pub use ray_source::{LiveRays, RaySource, ShadowQuery};
+pub use record::{
+    LightOutcome, LightRecord, LightSkip, NoRecorder, Recorder, ShadowRay, SkippedLight,
+};
+pub use tracer::Tracer;

@@ -1,0 +1,114 @@
+//! Where the shader's rays get their answers. The shader ([`super::tracer::Tracer`]) asks
+//! a [`RaySource`] for the closest hit of each ray of a mirror chain and for the object
+//! blocking each shadow ray; [`LiveRays`] asks the world (the only place the shader's rays
+//! meet [`World::intersect`] and [`World::occluder_except`]), and the hit cache of
+//! [`crate::trace::render::cached`] answers from rays it traced before. Both feed the one lighting model,
+//! so a re-shaded pixel is the same arithmetic as a traced one.
+
+use super::lit_factors::LitFactors;
+use crate::trace::cull::Candidates;
+use crate::trace::ray::Ray;
+use crate::trace::world::SurfacePoint;
+use crate::trace::world::World;
+
+/// A shadow ray the shader needs the answer to.
+#[derive(Clone, Copy, Debug)]
+pub struct ShadowQuery {
+    /// The shadow ray, from the hit's offset origin.
+    pub ray: Ray,
+    /// How far it looks.
+    pub t_max: f64,
+}
+
+/// Answers the shader's ray queries for one pixel sample, in the order the shader asks:
+/// depth 0, then each mirror bounce, a hit's shadow rays before the next bounce.
+pub trait RaySource {
+    /// The closest hit of `ray`, the ray at `depth` of the mirror chain.
+    fn closest_hit(&mut self, world: &World, depth: u32, ray: &Ray) -> Option<SurfacePoint>;
+
+    /// The world index of an object blocking the shadow ray from the hit at `depth` to
+    /// light `light` (an index into [`World::lights`]), if any. The ray cannot meet object
+    /// `except` (the one it leaves on its outer side). `query` makes the ray, for a
+    /// source that has to cast it.
+    fn occluder(
+        &mut self,
+        world: &World,
+        depth: u32,
+        light: usize,
+        except: Option<usize>,
+        query: impl FnOnce() -> ShadowQuery,
+    ) -> Option<usize>;
+
+    /// Whether this source keeps what light `light` gives the hit at `depth` and does
+    /// not have it yet ([`RaySource::light_factors`]): the shader then works the factors
+    /// out, whatever the switches.
+    #[inline]
+    fn wants_light_factors(&self, _depth: u32, _light: usize) -> bool {
+        false
+    }
+
+    /// What light `light` gave the hit at `depth`, for a source that keeps it.
+    #[inline]
+    fn light_factors(&mut self, _depth: u32, _light: usize, _factors: LitFactors) {}
+}
+
+/// Traces every ray in the world. The camera ray and the shadow rays from its hit test
+/// only the objects its tile's culling left (see [`crate::trace::cull::tiles`]: exact, so the
+/// answers are those of the full list); mirror rays test every object.
+#[derive(Clone, Copy, Debug)]
+pub struct LiveRays<'c> {
+    among: Candidates<'c>,
+}
+
+impl LiveRays<'static> {
+    /// Every object for every ray.
+    #[must_use]
+    pub fn all() -> Self {
+        Self {
+            among: Candidates::ALL,
+        }
+    }
+}
+
+impl<'c> LiveRays<'c> {
+    /// The camera ray may meet only what `among` names.
+    #[must_use]
+    pub fn among(among: Candidates<'c>) -> Self {
+        Self { among }
+    }
+}
+
+impl RaySource for LiveRays<'_> {
+    #[inline]
+    fn closest_hit(&mut self, world: &World, depth: u32, ray: &Ray) -> Option<SurfacePoint> {
+        if depth == 0 {
+            world.intersect_among(ray, f64::INFINITY, self.among.camera)
+        } else {
+            world.intersect(ray, f64::INFINITY)
+        }
+    }
+
+    #[inline]
+    fn occluder(
+        &mut self,
+        world: &World,
+        depth: u32,
+        light: usize,
+        except: Option<usize>,
+        query: impl FnOnce() -> ShadowQuery,
+    ) -> Option<usize> {
+        if depth == 0 {
+            let among = self.among.shadow(light);
+            // Culling left nothing that could block: no ray to spawn (about a quarter
+            // of the default scene's camera hits' shadow rays).
+            if among.without(except).is_empty_below(world.objects.len()) {
+                return None;
+            }
+            let query = query();
+            world.occluder_except_among(&query.ray, query.t_max, except, among)
+        } else {
+            let query = query();
+            world.occluder_except(&query.ray, query.t_max, except)
+        }
+    }
+}

@@ -1,0 +1,101 @@
+//! Closest hits for a batch of rays that share one culled candidate set, as a tile's
+//! camera rays, or its mirror rays of one depth, do: the objects outer and the rays
+//! inner, so that each object's data and test are set up once per batch instead of once
+//! per ray. Per ray it is the flat list's query (the objects in scene order, each tested
+//! only up to the nearest hit so far), so every answer is [`World::intersect_among`]'s
+//! bit for bit.
+
+use glam::DVec3;
+
+use super::compiled::SurfacePoint;
+use super::compiled::World;
+use super::object_set::ObjectSet;
+use crate::trace::ray::Ray;
+use crate::trace::shapes::ShapeHit;
+
+impl World {
+    /// Whether [`World::intersect_among`] answers a query on `among` from the flat list,
+    /// and so whether [`World::intersect_batch`] can turn its loops around.
+    fn lists(&self, among: ObjectSet) -> bool {
+        self.tail_bvh.is_none() && (self.bvh.is_none() || among != ObjectSet::ALL)
+    }
+
+    /// For each ray of `rays`, its closest hit among the objects of `among` with `t` in
+    /// (0, infinity): the same answers as [`World::intersect_among`], ray by ray.
+    #[must_use]
+    pub fn intersect_batch(&self, rays: &[Ray], among: ObjectSet) -> Vec<Option<SurfacePoint>> {
+        if !self.lists(among) {
+            return rays
+                .iter()
+                .map(|ray| self.intersect_among(ray, f64::INFINITY, among))
+                .collect();
+        }
+        let inv_dirs: Vec<DVec3> = rays.iter().map(|ray| ray.dir.recip()).collect();
+        let mut t_limits = vec![f64::INFINITY; rays.len()];
+        let mut closest: Vec<Option<(usize, ShapeHit)>> = vec![None; rays.len()];
+        for index in among.members_below(self.objects.len()) {
+            let object = &self.objects[index];
+            let per_ray = rays
+                .iter()
+                .zip(&inv_dirs)
+                .zip(&mut t_limits)
+                .zip(&mut closest);
+            for (((ray, &inv_dir), t_limit), closest) in per_ray {
+                if let Some(hit) = object.hit(ray, inv_dir, *t_limit) {
+                    *t_limit = hit.t;
+                    *closest = Some((index, hit));
+                }
+            }
+        }
+        closest
+            .iter()
+            .zip(rays)
+            .map(|(closest, ray)| closest.map(|(index, hit)| self.surface_point(index, ray, &hit)))
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use glam::DVec3;
+
+    use super::*;
+    use crate::scene::examples;
+    use crate::trace::world::Acceleration;
+
+    /// Rays from the default scene's camera over its whole picture, some hitting.
+    fn camera_rays(world: &World) -> Vec<Ray> {
+        let eye = world.camera.position;
+        (0..40)
+            .flat_map(|j| (0..40).map(move |i| (i, j)))
+            .map(|(i, j)| {
+                let target = DVec3::new(-6.0 + 0.3 * f64::from(i), 3.5 - 0.2 * f64::from(j), 0.0);
+                Ray::new(eye, target - eye)
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_batch_answers_as_each_ray_alone_with_and_without_the_tree() {
+        let scene = examples::default_scene();
+        for acceleration in [Acceleration::Flat, Acceleration::Bvh] {
+            let mut world = World::new(&scene).unwrap();
+            world.set_acceleration(acceleration);
+            let rays = camera_rays(&world);
+            let mut some = ObjectSet::none();
+            some.insert(0);
+            some.insert(2);
+            for among in [ObjectSet::ALL, some] {
+                let batch = world.intersect_batch(&rays, among);
+                let hits = batch.iter().filter(|hit| hit.is_some()).count();
+                assert!(
+                    hits > 200 && hits < rays.len(),
+                    "{hits} hits: a mixed batch"
+                );
+                for (ray, answer) in rays.iter().zip(&batch) {
+                    assert_eq!(*answer, world.intersect_among(ray, f64::INFINITY, among));
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,387 @@
+//! The render-ready world: a [`Scene`] compiled once into what the tracer needs per ray
+//! (matrices and their inverses, world bounds, materials by index, lights in unit form).
+
+use glam::{DAffine3, DMat3, DVec3};
+
+use super::bvh::Bvh;
+use super::lights::WorldLight;
+use super::object_set::ObjectSet;
+use crate::scene::{Light, Material, Object, Scene, SceneError, validate};
+use crate::trace::ray::Ray;
+use crate::trace::shapes;
+use crate::trace::shapes::Aabb;
+use crate::trace::shapes::BoundingSphere;
+use crate::trace::shapes::Primitive;
+use crate::trace::shapes::ShapeHit;
+use crate::trace::shapes::gamma;
+use crate::trace::terms::Isolation;
+
+/// One object, placed and ready to intersect.
+#[derive(Clone, Debug)]
+pub struct WorldObject {
+    /// Its name in the scene, for the inspector and errors.
+    pub name: String,
+    /// Which unit shape.
+    pub shape: Primitive,
+    /// Object-to-world transform.
+    pub world_from_object: DAffine3,
+    /// World-to-object transform.
+    pub object_from_world: DAffine3,
+    /// Takes object-space normals to world space: the inverse transpose of the 3x3 part.
+    pub normal_from_object: DMat3,
+    /// World-space bounds, slightly padded.
+    pub bounds: Aabb,
+    /// Index into [`World::materials`].
+    pub material: usize,
+    /// For spheres: a bounding sphere, tighter than the box and tested without
+    /// transforming the ray.
+    bounding_sphere: Option<BoundingSphere>,
+    /// Component-wise absolute values of the two 3x3 parts, for the error bounds.
+    abs_world_from_object: DMat3,
+    abs_object_from_world: DMat3,
+}
+
+impl WorldObject {
+    /// The bounds test: whether the ray may meet the object before `t_max`.
+    #[inline]
+    fn may_be_hit(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> bool {
+        match &self.bounding_sphere {
+            Some(sphere) => sphere.hit_by(ray, t_max),
+            None => self.bounds.hit_by(ray, inv_dir, t_max),
+        }
+    }
+
+    /// The closest hit of a world ray with `t` in (0, t_max), in object space.
+    #[inline(always)]
+    pub(crate) fn hit(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> Option<ShapeHit> {
+        if !self.may_be_hit(ray, inv_dir, t_max) {
+            return None;
+        }
+        shapes::intersect(self.shape, &ray.transformed(&self.object_from_world), t_max)
+    }
+
+    /// Whether a world ray meets the object with `t` in (0, t_max).
+    #[inline(always)]
+    pub(crate) fn blocks(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> bool {
+        self.may_be_hit(ray, inv_dir, t_max)
+            && shapes::occluded(self.shape, &ray.transformed(&self.object_from_world), t_max)
+    }
+}
+
+/// A point on a surface where a ray hit, in world space.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SurfacePoint {
+    /// Index of the object hit in [`World::objects`] (the tracer hands recorders and
+    /// callers the scene's index instead: [`World::scene_object`]).
+    pub object: usize,
+    /// Ray parameter of the hit.
+    pub t: f64,
+    /// The hit point.
+    pub p: DVec3,
+    /// Unit outward normal of the surface.
+    pub n_outward: DVec3,
+    /// Unit normal turned to face the incoming ray (the shading normal).
+    pub n: DVec3,
+    /// Absolute bound on each component of `p`'s distance from the exact surface,
+    /// including the rounding of taking a spawned ray back to object space.
+    pub p_error: DVec3,
+}
+
+/// The compiled scene.
+#[derive(Clone, Debug)]
+pub struct World {
+    /// Objects in scene order, hidden ones left out.
+    pub objects: Vec<WorldObject>,
+    /// Index in the scene's object list of each entry of `objects` (the object id).
+    pub object_scene_index: Vec<usize>,
+    /// Materials, indexed by [`WorldObject::material`].
+    pub materials: Vec<Material>,
+    /// Names of `materials`, same order.
+    pub material_names: Vec<String>,
+    /// Non-ambient lights in scene order, muted ones left out.
+    pub lights: Vec<WorldLight>,
+    /// Index in the scene's light list of each entry of `lights`.
+    pub light_scene_index: Vec<usize>,
+    /// Sum of the ambient lights' strengths (those that shine).
+    pub ambient: DVec3,
+    /// Colour of rays that hit nothing.
+    pub background: DVec3,
+    /// Maximum number of mirror bounces.
+    pub max_depth: u32,
+    /// The scene's camera (the render size may differ from the scene's).
+    pub camera: crate::scene::Camera,
+    /// A length typical of the scene: the camera's distance to its target.
+    pub view_distance: f64,
+    /// The lights and objects left out when compiling ([`World::isolated`]).
+    pub isolation: Isolation,
+    /// The hierarchy over the objects, for scenes large enough to need one.
+    pub(crate) bvh: Option<Bvh>,
+    /// With more objects than culling covers, a hierarchy over the uncovered ones (from
+    /// [`ObjectSet::CULLED_BELOW`] on) for culled queries.
+    pub(crate) tail_bvh: Option<Bvh>,
+}
+
+/// How rays find the objects they may hit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Acceleration {
+    /// Test every object in turn (fastest for small scenes).
+    Flat,
+    /// Walk a bounding volume hierarchy.
+    Bvh,
+}
+
+/// From this many objects on, the world builds a BVH. It serves the queries culling does
+/// not narrow (mirror rays and their shadow rays, and in a world over 64 objects the ones
+/// culling does not cover): in a crowd of mirrors the tree is even with the flat list at
+/// 12 objects (0.99 of its instructions, 1.01 of its time), ahead from 16 (0.96, 0.97;
+/// see docs/BENCHMARKS.md).
+pub const BVH_MIN_OBJECTS: usize = 16;
+
+impl World {
+    /// Validates and compiles a scene, every light and object in it (see
+    /// [`World::isolated`] for fewer).
+    ///
+    /// # Errors
+    /// The scene's first validation problem.
+    pub fn new(scene: &Scene) -> Result<Self, SceneError> {
+        validate(scene)?;
+        let material_names: Vec<String> = scene.materials.keys().cloned().collect();
+        let materials = scene.materials.values().cloned().collect();
+        let objects = scene
+            .objects
+            .iter()
+            .map(|object| {
+                let shape = Primitive::of(&object.shape).ok_or_else(|| not_drawn(object))?;
+                let world_from_object = object.transform.world_from_object();
+                let object_from_world = world_from_object.inverse();
+                let material = material_names
+                    .binary_search(&object.material)
+                    .expect("validated: every material exists");
+                Ok(WorldObject {
+                    name: object.name.clone(),
+                    shape,
+                    world_from_object,
+                    object_from_world,
+                    normal_from_object: world_from_object.matrix3.inverse().transpose(),
+                    bounds: shapes::object_bounds(shape).transformed(&world_from_object),
+                    material,
+                    bounding_sphere: (shape == Primitive::Sphere)
+                        .then(|| BoundingSphere::around_unit_sphere(&world_from_object)),
+                    abs_world_from_object: abs_mat(&world_from_object.matrix3),
+                    abs_object_from_world: abs_mat(&object_from_world.matrix3),
+                })
+            })
+            .collect::<Result<_, SceneError>>()?;
+        let mut lights = Vec::new();
+        let mut light_scene_index = Vec::new();
+        let mut ambient = DVec3::ZERO;
+        for (index, light) in scene.lights.iter().enumerate() {
+            match light {
+                Light::Ambient { .. } => ambient += light.strength(),
+                other => {
+                    lights.push(WorldLight::new(other));
+                    light_scene_index.push(index);
+                }
+            }
+        }
+        let mut world = Self {
+            object_scene_index: (0..scene.objects.len()).collect(),
+            objects,
+            materials,
+            material_names,
+            lights,
+            light_scene_index,
+            ambient,
+            background: scene.render.background,
+            max_depth: scene.render.max_depth,
+            camera: scene.camera.clone(),
+            view_distance: (scene.camera.look_at - scene.camera.position).length(),
+            isolation: Isolation::NONE,
+            bvh: None,
+            tail_bvh: None,
+        };
+        if world.objects.len() >= BVH_MIN_OBJECTS {
+            world.set_acceleration(Acceleration::Bvh);
+        }
+        Ok(world)
+    }
+
+    /// Chooses how rays find objects (the default follows [`BVH_MIN_OBJECTS`]).
+    pub fn set_acceleration(&mut self, acceleration: Acceleration) {
+        let boxes: Vec<Aabb> = self.objects.iter().map(|o| o.bounds).collect();
+        let tree = |from: usize| {
+            (acceleration == Acceleration::Bvh && from < boxes.len())
+                .then(|| Bvh::build(&boxes[from..]))
+        };
+        self.bvh = tree(0);
+        self.tail_bvh = tree(ObjectSet::CULLED_BELOW);
+    }
+
+    /// The closest hit along a world ray with `t` in (0, t_max).
+    #[must_use]
+    pub fn intersect(&self, ray: &Ray, t_max: f64) -> Option<SurfacePoint> {
+        self.intersect_among(ray, t_max, ObjectSet::ALL)
+    }
+
+    /// As [`World::intersect`], testing only the objects of `among`: a culling step's
+    /// answer that the others cannot be hit. The same hit, bit for bit, as testing all of
+    /// them whenever that is so (a tie still goes to the earlier object).
+    #[must_use]
+    pub fn intersect_among(&self, ray: &Ray, t_max: f64, among: ObjectSet) -> Option<SurfacePoint> {
+        let inv_dir = ray.dir.recip();
+        // A culled set names every candidate among the objects culling covers, and
+        // testing those few in the list beats walking the tree.
+        let closest = match &self.bvh {
+            Some(bvh) if among == ObjectSet::ALL => {
+                self.closest_in_tree::<0>(bvh, ray, inv_dir, t_max, among, None)
+            }
+            Some(_) if self.tail_bvh.is_some() => {
+                self.closest_listed_then_tail(ray, inv_dir, t_max, among)
+            }
+            _ => self.closest_in_list(ray, inv_dir, t_max, among, self.objects.len()),
+        };
+        closest.map(|(index, hit)| self.surface_point(index, ray, &hit))
+    }
+
+    /// The flat list's closest hit: the objects of `among` in scene order, each later one
+    /// below `count`, tested only up to the nearest hit so far (so a tie keeps the earlier
+    /// object).
+    #[inline(always)]
+    pub(crate) fn closest_in_list(
+        &self,
+        ray: &Ray,
+        inv_dir: DVec3,
+        t_max: f64,
+        among: ObjectSet,
+        count: usize,
+    ) -> Option<(usize, ShapeHit)> {
+        let mut closest = None;
+        let mut t_limit = t_max;
+        for index in among.members_below(count) {
+            if let Some(hit) = self.objects[index].hit(ray, inv_dir, t_limit) {
+                t_limit = hit.t;
+                closest = Some((index, hit));
+            }
+        }
+        closest
+    }
+
+    /// Where the ray meets object `index` first with `t` in (0, t_max), if it does: for
+    /// the inspector, to show where a shadow ray met the object that blocked it.
+    #[must_use]
+    pub fn intersect_object(&self, index: usize, ray: &Ray, t_max: f64) -> Option<SurfacePoint> {
+        let object = self.objects.get(index)?;
+        let ray_in_object = ray.transformed(&object.object_from_world);
+        let hit = shapes::intersect(object.shape, &ray_in_object, t_max)?;
+        Some(self.surface_point(index, ray, &hit))
+    }
+
+    /// The first object found between the ray's origin and `t_max`, if any.
+    #[must_use]
+    pub fn occluder(&self, ray: &Ray, t_max: f64) -> Option<usize> {
+        self.occluder_except(ray, t_max, None)
+    }
+
+    /// As [`World::occluder`], not testing object `except`: a ray leaving a convex surface
+    /// on its outer side (or leaving a plane) cannot meet that surface again.
+    #[must_use]
+    pub fn occluder_except(&self, ray: &Ray, t_max: f64, except: Option<usize>) -> Option<usize> {
+        self.occluder_except_among(ray, t_max, except, ObjectSet::ALL)
+    }
+
+    /// As [`World::occluder_except`], testing only the objects of `among`: a culling
+    /// step's answer that the others cannot block this ray. The same answer as testing
+    /// all of them whenever that is so (the first blocker in scene order).
+    #[must_use]
+    pub fn occluder_except_among(
+        &self,
+        ray: &Ray,
+        t_max: f64,
+        except: Option<usize>,
+        among: ObjectSet,
+    ) -> Option<usize> {
+        let inv_dir = ray.dir.recip();
+        // As for the closest hit: a culled query tests its candidates in the list.
+        match &self.bvh {
+            Some(bvh) if among == ObjectSet::ALL => bvh.first_blocker(ray, inv_dir, t_max, |i| {
+                Some(i) != except && self.objects[i].blocks(ray, inv_dir, t_max)
+            }),
+            Some(_) if self.tail_bvh.is_some() => {
+                self.blocker_listed_then_tail(ray, inv_dir, t_max, except, among)
+            }
+            _ => self.first_blocker_in_list(ray, inv_dir, t_max, except, among, self.objects.len()),
+        }
+    }
+
+    /// The flat list's first object of `among` below `count`, in scene order, that blocks
+    /// the ray.
+    #[inline(always)]
+    pub(crate) fn first_blocker_in_list(
+        &self,
+        ray: &Ray,
+        inv_dir: DVec3,
+        t_max: f64,
+        except: Option<usize>,
+        among: ObjectSet,
+        count: usize,
+    ) -> Option<usize> {
+        // A loop, not `find`: its closure's fold stayed out of line with two callers.
+        #[allow(clippy::manual_find)]
+        for index in among.members_below(count) {
+            if Some(index) != except && self.objects[index].blocks(ray, inv_dir, t_max) {
+                return Some(index);
+            }
+        }
+        None
+    }
+
+    /// World-space details of an object-space hit.
+    #[inline(always)]
+    pub(crate) fn surface_point(&self, index: usize, ray: &Ray, hit: &ShapeHit) -> SurfacePoint {
+        let object = &self.objects[index];
+        let m = &object.world_from_object;
+        let p = m.transform_point3(hit.p);
+        let n_outward = (object.normal_from_object * hit.n).normalize();
+        let n = if n_outward.dot(ray.dir) > 0.0 {
+            -n_outward
+        } else {
+            n_outward
+        };
+        SurfacePoint {
+            object: index,
+            t: hit.t,
+            p,
+            n_outward,
+            n,
+            p_error: world_error(object, hit, p),
+        }
+    }
+}
+
+/// Bound on the world hit point's distance from the surface: the object-space error
+/// carried through the matrix, the rounding of the transform itself, and the rounding
+/// a spawned ray suffers on its way back to object space (mapped to world units).
+/// Inlined into every hit record: as a call it ran 1.1% more instructions a frame.
+#[inline(always)]
+fn world_error(object: &WorldObject, hit: &ShapeHit, p_world: DVec3) -> DVec3 {
+    let m = object.abs_world_from_object;
+    let inv = object.abs_object_from_world;
+    let carried = m * hit.p_error;
+    let forward = gamma(3) * (m * hit.p.abs() + object.world_from_object.translation.abs());
+    let back_in_object =
+        gamma(3) * (inv * p_world.abs() + object.object_from_world.translation.abs());
+    carried + forward + m * back_in_object
+}
+
+fn abs_mat(m: &DMat3) -> DMat3 {
+    DMat3::from_cols(m.x_axis.abs(), m.y_axis.abs(), m.z_axis.abs())
+}
+
+/// The error for an object the tracer cannot draw yet.
+fn not_drawn(object: &Object) -> SceneError {
+    SceneError::Invalid(format!(
+        "object \"{}\": the tracer cannot draw a {} yet",
+        object.name,
+        object.shape.name()
+    ))
+}

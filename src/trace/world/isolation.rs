@@ -1,0 +1,260 @@
+//! The isolation switches compiled into the world once: a scene with its muted lights and
+//! hidden objects left out, so the tracer's loops never check a switch.
+//!
+//! - A muted light and a hidden object are absent: a hidden object casts no shadow, is not
+//!   reflected and cannot be picked; a muted light lights nothing, seen directly or in a
+//!   mirror.
+//! - While lights are solo, the picture is rendered as if they were the only lights
+//!   (through mirrors too); the term switches still apply on top.
+//! - The background is not any light's, but for the solo images of all the lights to add
+//!   up to the full picture it must go with exactly one light's solo: the first Ambient
+//!   light's (as the ambient term's solo shows it), or, in a scene without an Ambient
+//!   light, the first light's. The other lights' solos show black where rays miss.
+//!   Muting never removes the background.
+//! - Object ids and light indices stay the scene's: [`World::object_scene_index`] and
+//!   [`World::light_scene_index`] map the world's lists back to the scene's.
+
+use glam::DVec3;
+
+use super::compiled::World;
+use crate::scene::{Light, Scene, SceneError, validate};
+use crate::trace::terms::Isolation;
+
+/// Why a scene cannot be rendered with some isolation switches.
+#[derive(Debug, thiserror::Error)]
+pub enum IsolationError {
+    /// The scene itself is invalid.
+    #[error(transparent)]
+    Scene(#[from] SceneError),
+    /// A muted or solo light index past the end of the scene's lights.
+    #[error("there is no light {index}: the scene has {}", count_text(*count, "light"))]
+    NoSuchLight {
+        /// The index asked for.
+        index: usize,
+        /// How many lights the scene has.
+        count: usize,
+    },
+    /// A hidden object index past the end of the scene's objects.
+    #[error("there is no object {index}: the scene has {}", count_text(*count, "object"))]
+    NoSuchObject {
+        /// The index asked for.
+        index: usize,
+        /// How many objects the scene has.
+        count: usize,
+    },
+}
+
+/// "no lights", "1 light (index 0)", "4 lights (indices 0 to 3)".
+fn count_text(count: usize, noun: &str) -> String {
+    match count {
+        0 => format!("no {noun}s"),
+        1 => format!("1 {noun} (index 0)"),
+        n => format!("{n} {noun}s (indices 0 to {})", n - 1),
+    }
+}
+
+/// The light whose solo shows the background: the first Ambient light, else the first
+/// light; `None` in a scene without lights.
+#[must_use]
+pub fn background_light(lights: &[Light]) -> Option<usize> {
+    lights
+        .iter()
+        .position(|l| matches!(l, Light::Ambient { .. }))
+        .or_else(|| (!lights.is_empty()).then_some(0))
+}
+
+/// Whether rays that miss show the background under `isolation`: always without a solo,
+/// else only when the solo lights include [`background_light`].
+#[must_use]
+pub fn shows_background(isolation: &Isolation, lights: &[Light]) -> bool {
+    isolation.solo_lights.is_empty()
+        || background_light(lights).is_some_and(|i| isolation.solo_lights.contains(&i))
+}
+
+/// Checks that every index of `isolation` names a light or object of `scene`.
+///
+/// # Errors
+/// The first index past the end of its list.
+pub fn check_indices(isolation: &Isolation, scene: &Scene) -> Result<(), IsolationError> {
+    let lights = scene.lights.len();
+    if let Some(&index) = isolation
+        .muted_lights
+        .iter()
+        .chain(&isolation.solo_lights)
+        .find(|&&i| i >= lights)
+    {
+        return Err(IsolationError::NoSuchLight {
+            index,
+            count: lights,
+        });
+    }
+    let objects = scene.objects.len();
+    if let Some(&index) = isolation.hidden_objects.iter().find(|&&i| i >= objects) {
+        return Err(IsolationError::NoSuchObject {
+            index,
+            count: objects,
+        });
+    }
+    Ok(())
+}
+
+/// Stops a render whose world was compiled for other isolation switches than its options
+/// ask for: a caller's mistake that would otherwise show the wrong lights in silence.
+///
+/// # Panics
+/// When `world.isolation` differs from `isolation`.
+pub(crate) fn assert_compiled_for(world: &World, isolation: &Isolation) {
+    assert!(
+        world.isolation == *isolation,
+        "the world was compiled with other isolation switches than the render asks for \
+         (compile it with World::isolated)"
+    );
+}
+
+impl World {
+    /// Validates and compiles `scene` without the lights and objects `isolation` leaves
+    /// out. With [`Isolation::NONE`] this is [`World::new`].
+    ///
+    /// # Errors
+    /// The scene's first validation problem (named by the scene's own indices), or an
+    /// index of `isolation` that the scene does not have.
+    pub fn isolated(scene: &Scene, isolation: &Isolation) -> Result<Self, IsolationError> {
+        if isolation.is_none() {
+            return Ok(Self::new(scene)?);
+        }
+        validate(scene)?;
+        check_indices(isolation, scene)?;
+        let kept_objects: Vec<usize> = (0..scene.objects.len())
+            .filter(|&i| isolation.is_object_shown(i))
+            .collect();
+        let kept_lights: Vec<usize> = (0..scene.lights.len())
+            .filter(|&i| isolation.is_light_lit(i))
+            .collect();
+        let filtered = Scene {
+            objects: kept_objects
+                .iter()
+                .map(|&i| scene.objects[i].clone())
+                .collect(),
+            lights: kept_lights
+                .iter()
+                .map(|&i| scene.lights[i].clone())
+                .collect(),
+            ..scene.clone()
+        };
+        let mut world = Self::new(&filtered)?;
+        world.light_scene_index = world
+            .light_scene_index
+            .iter()
+            .map(|&i| kept_lights[i])
+            .collect();
+        world.object_scene_index = kept_objects;
+        if !shows_background(isolation, &scene.lights) {
+            world.background = DVec3::ZERO;
+        }
+        world.isolation = isolation.clone();
+        Ok(world)
+    }
+
+    /// The scene's index of the world's object `index` (the object id).
+    #[must_use]
+    pub fn scene_object(&self, index: usize) -> usize {
+        self.object_scene_index.get(index).copied().unwrap_or(index)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::collections::BTreeSet;
+
+    fn scene() -> Scene {
+        crate::scene::examples::default_scene()
+    }
+
+    #[test]
+    fn the_world_leaves_out_what_is_isolated_and_keeps_the_scene_indices() {
+        let scene = scene();
+        let isolation = Isolation {
+            muted_lights: BTreeSet::from([1]),
+            hidden_objects: BTreeSet::from([0, 2]),
+            ..Isolation::NONE
+        };
+        let world = World::isolated(&scene, &isolation).unwrap();
+        assert_eq!(world.objects.len(), scene.objects.len() - 2);
+        assert_eq!(world.object_scene_index, vec![1, 3, 4, 5]);
+        assert_eq!(world.objects[0].name, scene.objects[1].name);
+        assert_eq!(world.scene_object(2), 4);
+        assert_eq!(world.light_scene_index, vec![2, 3], "light 0 is ambient");
+        assert_eq!(world.ambient, scene.lights[0].strength());
+        assert_eq!(world.background, scene.render.background);
+        assert_eq!(world.isolation, isolation);
+    }
+
+    #[test]
+    fn only_the_first_ambient_light_or_else_the_first_light_carries_the_background() {
+        let mut scene = scene();
+        let solo = |i: usize| Isolation {
+            solo_lights: BTreeSet::from([i]),
+            ..Isolation::NONE
+        };
+        scene.lights.push(scene.lights[0].clone());
+        let background = |scene: &Scene, i| World::isolated(scene, &solo(i)).unwrap().background;
+        assert_eq!(background(&scene, 0), scene.render.background);
+        assert_eq!(background(&scene, 4), DVec3::ZERO, "a second ambient light");
+        assert_eq!(background(&scene, 1), DVec3::ZERO);
+        let solo_point = World::isolated(&scene, &solo(1)).unwrap();
+        assert_eq!(solo_point.ambient, DVec3::ZERO);
+        assert_eq!(solo_point.light_scene_index, vec![1]);
+        scene.lights.retain(|l| !matches!(l, Light::Ambient { .. }));
+        assert_eq!(background_light(&scene.lights), Some(0));
+        assert_eq!(background(&scene, 0), scene.render.background);
+        assert_eq!(background(&scene, 1), DVec3::ZERO);
+        assert_eq!(background_light(&[]), None);
+    }
+
+    #[test]
+    fn an_index_the_scene_lacks_is_a_clear_error() {
+        let scene = scene();
+        let bad_light = Isolation {
+            solo_lights: BTreeSet::from([9]),
+            ..Isolation::NONE
+        };
+        let message = World::isolated(&scene, &bad_light).unwrap_err().to_string();
+        assert_eq!(
+            message,
+            "there is no light 9: the scene has 4 lights (indices 0 to 3)"
+        );
+        let bad_object = Isolation {
+            hidden_objects: BTreeSet::from([6]),
+            ..Isolation::NONE
+        };
+        let message = World::isolated(&scene, &bad_object)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            message.contains("no object 6") && message.contains("0 to 5"),
+            "{message}"
+        );
+    }
+
+    #[test]
+    fn scene_errors_keep_the_scene_indices_and_hiding_everything_is_fine() {
+        let mut scene = scene();
+        scene.objects[3].material = "missing".to_owned();
+        let isolation = Isolation {
+            hidden_objects: BTreeSet::from([0]),
+            ..Isolation::NONE
+        };
+        let message = World::isolated(&scene, &isolation).unwrap_err().to_string();
+        assert!(message.contains("objects[3]"), "{message}");
+        let scene = self::scene();
+        let all = Isolation {
+            hidden_objects: (0..scene.objects.len()).collect(),
+            muted_lights: (0..scene.lights.len()).collect(),
+            ..Isolation::NONE
+        };
+        let world = World::isolated(&scene, &all).unwrap();
+        assert!(world.objects.is_empty() && world.lights.is_empty());
+        assert_eq!(world.background, scene.render.background);
+    }
+}

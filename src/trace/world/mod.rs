@@ -1,0 +1,18 @@
+//! The compiled scene: objects placed and bounded, the hierarchies over them, lights in
+//! unit form, what isolation left out, and the one place secondary rays are spawned.
+
+mod batch;
+mod bvh;
+mod compiled;
+mod isolation;
+mod lights;
+mod object_set;
+mod spawn;
+mod trees;
+
+pub use compiled::{Acceleration, BVH_MIN_OBJECTS, SurfacePoint, World, WorldObject};
+pub(crate) use isolation::assert_compiled_for;
+pub use isolation::{IsolationError, check_indices};
+pub use lights::{LightSample, WorldLight, falloff};
+pub use object_set::ObjectSet;
+pub use spawn::{spawn_ray, spawn_ray_to};
