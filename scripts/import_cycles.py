@@ -1,0 +1,84 @@
+import re,sys,os,glob
+root=sys.argv[1].rstrip('/')
+crate_prefix='crate::'+root.split('src/',1)[1].replace('/','::')
+mods={}
+for f in glob.glob(root+'/**/*.rs',recursive=True):
+    rel=f[len(root)+1:-3]
+    parts=rel.split('/')
+    if parts[-1]=='mod': parts=parts[:-1]
+    mods['::'.join(parts)]=f
+def resolve(cur, path):
+    segs=path.split('::')
+    if segs[0]=='crate':
+        pre=crate_prefix.split('::')
+        if segs[:len(pre)]!=pre: return None
+        segs=segs[len(pre):]; base=[]
+    else:
+        base=cur.split('::') if cur else []
+        isdir = mods.get(cur,'').endswith('mod.rs') or cur==''
+        if not isdir: base=base[:-1]
+        while segs and segs[0] in ('super','self'):
+            if segs[0]=='super': base=base[:-1]
+            segs=segs[1:]
+    full=base+segs
+    # longest prefix that is a module
+    for k in range(len(full),0,-1):
+        m='::'.join(full[:k])
+        if m in mods: return m
+    return None
+edges={}
+for m,f in mods.items():
+    src=open(f).read().split('#[cfg(test)]')[0]
+    src=re.sub(r'//.*','',src)
+    for u in re.finditer(r'\buse\s+((?:crate|super|self)::[^;]*);',src,re.S):
+        body=u.group(1)
+        # expand braces roughly
+        def exp(prefix,tree):
+            tree=tree.strip()
+            mm=re.match(r'([A-Za-z_0-9:]+?)::\{(.*)\}$',tree,re.S)
+            if mm:
+                inner=mm.group(2);depth=0;cur='';out=[]
+                for ch in inner:
+                    if ch=='{':depth+=1
+                    if ch=='}':depth-=1
+                    if ch==',' and depth==0: out+=exp(prefix+mm.group(1)+'::',cur);cur=''
+                    else: cur+=ch
+                if cur.strip(): out+=exp(prefix+mm.group(1)+'::',cur)
+                return out
+            return [prefix+tree.split(' as ')[0].strip()]
+        for p in exp('',body):
+            p=re.sub(r'::self$','',p)
+            t=resolve(m,p)
+            if t is not None and t!=m and t!='':
+                # a child using its own ancestor folder face counts as an edge to that face
+                edges.setdefault(m,set()).add(t)
+    for u in re.finditer(r'(?<![\w:])((?:crate|super)::[A-Za-z_0-9:]+)',src):
+        if re.search(r'\buse\s+[^;]*$',src[:u.start()].split(';')[-1]): continue
+        t=resolve(m,u.group(1))
+        if t is not None and t!=m and t!='' and not t.startswith(m+'::'):
+            edges.setdefault(m,set()).add(t)
+# a folder's face (mod.rs) depends on the children it declares and re-exports
+for m,f in mods.items():
+    if f.endswith('mod.rs'):
+        src=re.sub(r'//.*','',open(f).read().split('#[cfg(test)]')[0])
+        for c in re.findall(r'^\s*(?:pub(?:\([a-z]+\))?\s+)?mod\s+([a-z_0-9]+)\s*;',src,re.M):
+            child=(m+'::'+c) if m else c
+            if child in mods: edges.setdefault(m,set()).add(child)
+# Tarjan SCC
+index={};low={};st=[];on=set();sccs=[];i=[0]
+sys.setrecursionlimit(10000)
+def sc(v):
+    index[v]=low[v]=i[0];i[0]+=1;st.append(v);on.add(v)
+    for w in edges.get(v,()):
+        if w not in index: sc(w);low[v]=min(low[v],low[w])
+        elif w in on: low[v]=min(low[v],index[w])
+    if low[v]==index[v]:
+        comp=[]
+        while True:
+            w=st.pop();on.discard(w);comp.append(w)
+            if w==v:break
+        if len(comp)>1: sccs.append(comp)
+for v in list(mods): 
+    if v not in index: sc(v)
+for c in sccs: print('cycle:', ' '.join(sorted(c)))
+print(f'{len(mods)} modules, {sum(len(e) for e in edges.values())} edges, {len(sccs)} cycles')
