@@ -395,16 +395,18 @@ impl RaySource for PixelRays<'_, '_, '_> {
         blocked_by
     }
 
-    /// Factors kept are valid: those of a stale lobe or a light placed anew were
-    /// forgotten.
-    fn wants_light_factors(&self, depth: u32, light: usize) -> bool {
+    /// Factors kept are valid (those of a stale lobe or a light placed anew were
+    /// forgotten): only unknown ones are worked out and kept.
+    fn keep_light_factors(
+        &mut self,
+        depth: u32,
+        light: usize,
+        factors: impl FnOnce() -> LitFactors,
+    ) {
         let slot = self.tile.slot_index(depth, light);
-        let factors = self.tile.slot(slot).factors;
-        factors.is_unknown()
-    }
-
-    fn light_factors(&mut self, depth: u32, light: usize, factors: LitFactors) {
-        let slot = self.tile.slot_index(depth, light);
-        self.tile.slot_mut(slot).factors = factors;
+        let kept = self.tile.slot(slot).factors;
+        if kept.is_unknown() {
+            self.tile.slot_mut(slot).factors = factors();
+        }
     }
 }

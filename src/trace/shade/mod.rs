@@ -3,12 +3,14 @@
 //! rays it needs and tells it what each light gave each hit; the recorder sees every number.
 
 mod depth_view;
+mod lighting;
 mod lit_factors;
 mod mirror_chain;
 mod object_id;
 mod phong;
 mod ray_source;
 mod record;
+mod shadows;
 mod tracer;
 
 pub use lit_factors::LitFactors;

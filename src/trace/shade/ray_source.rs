@@ -39,17 +39,18 @@ pub trait RaySource {
         query: impl FnOnce() -> ShadowQuery,
     ) -> Option<usize>;
 
-    /// Whether this source keeps what light `light` gives the hit at `depth` and does
-    /// not have it yet ([`RaySource::light_factors`]): the shader then works the factors
-    /// out, whatever the switches.
+    /// Offers what light `light` gave the hit at `depth` (an index into
+    /// [`World::lights`]), for a source that keeps it: the one call through which the
+    /// re-shade cache learns from the shader. `factors` is worked out only if the source
+    /// wants it (it does not have it yet), whatever the switches.
     #[inline]
-    fn wants_light_factors(&self, _depth: u32, _light: usize) -> bool {
-        false
+    fn keep_light_factors(
+        &mut self,
+        _depth: u32,
+        _light: usize,
+        _factors: impl FnOnce() -> LitFactors,
+    ) {
     }
-
-    /// What light `light` gave the hit at `depth`, for a source that keeps it.
-    #[inline]
-    fn light_factors(&mut self, _depth: u32, _light: usize, _factors: LitFactors) {}
 }
 
 /// Traces every ray in the world. The camera ray and the shadow rays from its hit test
