@@ -3,19 +3,12 @@
 
 use glam::{DVec2, DVec3};
 
-use crate::trace::film::PinholeCamera;
-use crate::trace::film::RenderOptions;
+use crate::trace::film::{PinholeCamera, RenderOptions};
 use crate::trace::ray::Ray;
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::shade::LightOutcome;
-use crate::trace::shade::LightRecord;
-use crate::trace::shade::Recorder;
-use crate::trace::shade::SkippedLight;
-use crate::trace::shade::Tracer;
-use crate::trace::terms::Term;
-use crate::trace::terms::TermSwitches;
-use crate::trace::world::SurfacePoint;
-use crate::trace::world::World;
+use crate::trace::shade::{LightOutcome, LightRecord, Recorder, SkippedLight, Tracer};
+use crate::trace::terms::{Term, TermSwitches};
+use crate::trace::world::{SurfacePoint, World};
 
 /// What one ray of the chain (the camera ray, then each mirror bounce) met.
 #[derive(Clone, Debug, PartialEq)]

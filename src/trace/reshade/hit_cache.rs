@@ -20,21 +20,17 @@ use std::sync::Arc;
 
 use glam::{DAffine3, DVec3};
 
-use super::chains::CachedHit;
-use super::chains::Chains;
+use super::chains::{CachedHit, Chains};
 use super::dependence::TermDependence;
-use super::keep_rule::KeepRule;
-use super::keep_rule::TileSummary;
+use super::keep_rule::{KeepRule, TileSummary};
 use super::light_factors;
 use super::light_factors::LightSlot;
 use super::pixel_colour::PixelColour;
 use crate::scene::{Camera, Material};
 use crate::trace::film::RenderOptions;
 use crate::trace::shapes::Primitive;
-use crate::trace::terms::TermSwitches;
-use crate::trace::terms::View;
-use crate::trace::world::World;
-use crate::trace::world::WorldLight;
+use crate::trace::terms::{TermSwitches, View};
+use crate::trace::world::{World, WorldLight};
 
 /// The most memory the preview's cache may take, as [`cache_fits`] estimates it: larger
 /// previews re-trace every edit.

@@ -16,7 +16,7 @@ mod tracer;
 pub use lit_factors::LitFactors;
 pub(crate) use mirror_chain::Bounce;
 pub use phong::{LocalLight, diffuse_term, phong_power, specular_term};
-pub use ray_source::{LiveRays, RaySource, ShadowQuery};
+pub use ray_source::{LiveRays, MakeRay, RaySource, ShadowRequest};
 pub use record::{
     LightOutcome, LightRecord, LightSkip, NoRecorder, Recorder, ShadowRay, SkippedLight,
 };

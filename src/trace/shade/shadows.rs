@@ -2,7 +2,7 @@
 //! `world::spawn`), the object blocking it as the ray source answers, and the shadow-mask
 //! view (the fraction of reaching lights whose shadow ray is clear).
 
-use super::ray_source::{RaySource, ShadowQuery};
+use super::ray_source::{RaySource, ShadowQuery, ShadowRequest};
 use super::tracer::Tracer;
 use crate::trace::ray_counts::RayCounts;
 use crate::trace::shapes::Primitive;
@@ -29,9 +29,12 @@ impl Tracer<'_> {
     ) -> Option<usize> {
         counts.shadow += 1;
         let except = self.shadow_except(hit, sample);
-        rays.occluder(self.world, to.depth, to.index, except, || {
-            self.shadow_query(hit, sample)
-        })
+        let target = ShadowRequest {
+            depth: to.depth,
+            light: to.index,
+            except,
+        };
+        rays.occluder(self.world, target, || self.shadow_query(hit, sample))
     }
 
     /// The object a shadow ray from `hit` to the light of `sample` cannot meet: every

@@ -18,17 +18,13 @@
 use glam::DVec3;
 
 use super::depth_view::DepthRange;
-use super::mirror_chain::Chain;
-use super::mirror_chain::fold_back;
+use super::mirror_chain::{Chain, fold_back};
 use super::object_id::object_id_colour;
-use super::ray_source::LiveRays;
-use super::ray_source::RaySource;
+use super::ray_source::{LiveRays, RaySource};
 use super::record::Recorder;
 use crate::trace::ray::Ray;
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::terms::ActiveTerms;
-use crate::trace::terms::TermSwitches;
-use crate::trace::terms::View;
+use crate::trace::terms::{ActiveTerms, TermSwitches, View};
 use crate::trace::world::World;
 
 /// Traces rays through a world with a fixed set of switches and view.

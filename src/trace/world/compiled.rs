@@ -9,11 +9,7 @@ use super::object_set::ObjectSet;
 use crate::scene::{Light, Material, Object, Scene, SceneError, validate};
 use crate::trace::ray::Ray;
 use crate::trace::shapes;
-use crate::trace::shapes::Aabb;
-use crate::trace::shapes::BoundingSphere;
-use crate::trace::shapes::Primitive;
-use crate::trace::shapes::ShapeHit;
-use crate::trace::shapes::gamma;
+use crate::trace::shapes::{Aabb, BoundingSphere, Primitive, ShapeHit, gamma};
 use crate::trace::terms::Isolation;
 
 /// One object, placed and ready to intersect.
