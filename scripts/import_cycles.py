@@ -25,8 +25,6 @@ def resolve(cur, path):
         segs=segs[len(pre):]; base=[]
     else:
         base=cur.split('::') if cur else []
-        isdir = mods.get(cur,'').endswith('mod.rs') or cur==''
-        if not isdir: base=base[:-1]
         while segs and segs[0] in ('super','self'):
             if segs[0]=='super': base=base[:-1]
             segs=segs[1:]
