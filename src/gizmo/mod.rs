@@ -4,6 +4,7 @@
 //! tracer's own camera) and feeds them to these functions.
 
 pub mod frustum;
+pub mod gesture;
 pub mod handle;
 pub mod handles;
 pub mod navigate;
