@@ -9,7 +9,7 @@
 //! The batches run more instructions (their bookkeeping), yet the frame is faster: an
 //! object's test over neighbouring rays branches alike. Staging each light's samples and
 //! shadow rays the same way lost more to the bookkeeping than it gained, and so did SIMD
-//! lanes for the batches' tests (docs/BENCHMARKS.md, "tiles traced depth by depth").
+//! lanes for the batches' tests (docs/PERFORMANCE_HISTORY.md, "tiles traced depth by depth").
 
 use glam::{DVec2, DVec3};
 
