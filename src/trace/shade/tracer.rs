@@ -191,7 +191,7 @@ impl<'w> Tracer<'w> {
             },
         );
         let world = self.world;
-        let material = &world.materials[world.objects[hit.object].material];
+        let material = &world.materials[world.material_at(&hit)];
         let mut colour = DVec3::ZERO;
 
         // ambient: ka * (sum of ambient lights)
@@ -348,9 +348,10 @@ impl<'w> Tracer<'w> {
     /// leaving a plane, cannot meet the surface it starts on.
     #[inline]
     fn shadow_except(&self, hit: &SurfacePoint, sample: &LightSample) -> Option<usize> {
-        let leaves_outward = self.world.objects[hit.object].shape
-            == crate::trace::shapes::Primitive::Plane
-            || hit.n_outward.dot(sample.to_light) > 0.0;
+        let object = &self.world.objects[hit.object];
+        let leaves_outward = !object.can_meet_itself()
+            && (object.shape == crate::trace::shapes::Primitive::Plane
+                || hit.n_outward.dot(sample.to_light) > 0.0);
         leaves_outward.then_some(hit.object)
     }
 

@@ -1,0 +1,128 @@
+//! Compiling a scene's CSG node into a [`CsgTree`], with a work list instead of
+//! recursion so the depth of the tree never reaches the call stack.
+
+use glam::DAffine3;
+
+use super::{CsgLeaf, CsgTree, Extent, Step, combine_extents};
+use crate::scene::{CsgOp, Object, SceneError, Shape};
+use crate::trace::shapes::Primitive;
+
+/// What is left to do for the node being compiled.
+enum Work<'a> {
+    /// Compile this object, placed in the node's space, with the material it inherits
+    /// and its tree path.
+    Visit {
+        object: &'a Object,
+        node_from_object: DAffine3,
+        material: &'a str,
+        path: String,
+    },
+    /// All operands of a node are compiled: combine them.
+    Emit { op: CsgOp, operands: u32 },
+}
+
+impl CsgTree {
+    /// Compiles a CSG node's operands, `material` being the node's own (inherited by
+    /// operands that name none) and `path` its tree path. A Group among the operands
+    /// stands for the union of its children.
+    ///
+    /// # Errors
+    /// An operand the tracer cannot draw, or a leaf left without a material, named by
+    /// its tree path.
+    pub fn build(
+        op: CsgOp,
+        operands: &[Object],
+        material: &str,
+        path: &str,
+        material_index: &dyn Fn(&str) -> Option<usize>,
+    ) -> Result<Self, SceneError> {
+        let mut tree = CsgTree {
+            leaves: Vec::new(),
+            steps: Vec::new(),
+            extent: Extent::Empty,
+        };
+        let mut extents: Vec<Extent> = Vec::new();
+        let mut work = Vec::new();
+        push_operands(&mut work, op, operands, &DAffine3::IDENTITY, material, path);
+        while let Some(item) = work.pop() {
+            match item {
+                Work::Emit { op, operands } => {
+                    tree.steps.push(Step::Combine { op, operands });
+                    let first = extents.len() - operands as usize;
+                    let combined = combine_extents(op, &extents[first..]);
+                    extents.truncate(first);
+                    extents.push(combined);
+                }
+                Work::Visit {
+                    object,
+                    node_from_object,
+                    material,
+                    path,
+                } => match &object.shape {
+                    Shape::Csg { op, operands } => {
+                        push_operands(&mut work, *op, operands, &node_from_object, material, &path);
+                    }
+                    Shape::Group { children } => {
+                        let union = CsgOp::Union;
+                        push_operands(
+                            &mut work,
+                            union,
+                            children,
+                            &node_from_object,
+                            material,
+                            &path,
+                        );
+                    }
+                    shape => {
+                        let primitive = Primitive::of(shape).ok_or_else(|| {
+                            SceneError::Invalid(format!(
+                                "object \"{path}\": the tracer cannot draw a {} yet",
+                                shape.name()
+                            ))
+                        })?;
+                        let material = material_index(material).ok_or_else(|| {
+                            SceneError::Invalid(format!(
+                                "object \"{path}\": no material (neither its own nor a parent's)"
+                            ))
+                        })?;
+                        let index = u32::try_from(tree.leaves.len()).expect("under 2^32 leaves");
+                        tree.steps.push(Step::Leaf(index));
+                        let leaf = CsgLeaf::new(primitive, path, material, node_from_object);
+                        extents.push(leaf.bounds.map_or(Extent::Unbounded, Extent::Box));
+                        tree.leaves.push(leaf);
+                    }
+                },
+            }
+        }
+        tree.extent = extents.pop().unwrap_or(Extent::Empty);
+        Ok(tree)
+    }
+}
+
+/// Queues a node's operands (first one on top) followed by its combination.
+fn push_operands<'a>(
+    work: &mut Vec<Work<'a>>,
+    op: CsgOp,
+    operands: &'a [Object],
+    node_from_parent: &DAffine3,
+    material: &'a str,
+    path: &str,
+) {
+    let operands_count = u32::try_from(operands.len()).expect("under 2^32 operands");
+    work.push(Work::Emit {
+        op,
+        operands: operands_count,
+    });
+    for operand in operands.iter().rev() {
+        work.push(Work::Visit {
+            object: operand,
+            node_from_object: *node_from_parent * operand.transform.world_from_object(),
+            material: if operand.material.is_empty() {
+                material
+            } else {
+                &operand.material
+            },
+            path: format!("{path}/{}", operand.name),
+        });
+    }
+}

@@ -1,0 +1,294 @@
+//! A CSG node compiled for the tracer: its operand leaves placed in the node's own
+//! object space, and its operators as a post-order program. A ray is answered by
+//! sweeping the leaves' spans together ([`spans`]) with explicit stacks, so a tree
+//! 1,000 levels deep needs no deeper call stack than a flat one.
+
+mod build;
+mod spans;
+
+use std::cell::RefCell;
+
+use glam::{DAffine3, DMat3, DVec3};
+
+use self::spans::{Crossing, Span};
+use crate::scene::CsgOp;
+use crate::trace::ray::Ray;
+use crate::trace::shapes::{self, Aabb, Primitive, ShapeHit, gamma};
+
+/// One operand leaf of a CSG node.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CsgLeaf {
+    /// Which unit shape.
+    pub shape: Primitive,
+    /// Its tree path below the scene's top level, `"die/pip 3"`.
+    pub path: String,
+    /// Index into [`crate::trace::World::materials`] (inherited where it names none).
+    pub material: usize,
+    /// Leaf-to-node transform (the node's object space, not the world).
+    pub node_from_leaf: DAffine3,
+    leaf_from_node: DAffine3,
+    normal_from_leaf: DMat3,
+    abs_node_from_leaf: DMat3,
+    abs_leaf_from_node: DMat3,
+    /// Node-space bounds; `None` for a plane, the half-space z <= 0 in a CSG.
+    bounds: Option<Aabb>,
+}
+
+/// One instruction of the post-order program.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Step {
+    /// Push the spans of this leaf.
+    Leaf(u32),
+    /// Pop the top `operands` span lists and push them combined by `op`, left to right.
+    Combine { op: CsgOp, operands: u32 },
+}
+
+/// How far a node's solid can reach, in the node's space.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Extent {
+    /// Nowhere (an empty Intersection).
+    Empty,
+    /// Within this box.
+    Box(Aabb),
+    /// Without bound (a half-space).
+    Unbounded,
+}
+
+/// A compiled CSG node.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CsgTree {
+    /// The operand leaves, in tree order.
+    pub leaves: Vec<CsgLeaf>,
+    steps: Vec<Step>,
+    /// Where the solid can be, in the node's space: Union joins its operands' extents,
+    /// Intersection overlaps them, Difference keeps the first's.
+    pub extent: Extent,
+}
+
+/// A hit on a CSG node: the surface point in the node's space, facing out of the result.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CsgHit {
+    /// The point, its outward normal (out of the result) and error bound, in node space.
+    pub hit: ShapeHit,
+    /// Which leaf's surface ([`CsgTree::leaves`]).
+    pub leaf: u32,
+    /// Whether the surface is a subtracted operand's (a Difference's cut).
+    pub cut: bool,
+}
+
+/// Per-thread buffers, so a ray allocates nothing once warm.
+#[derive(Default)]
+struct Scratch {
+    crossings: Vec<ShapeHit>,
+    /// The span lists of the evaluation stack, one after another.
+    arena: Vec<Span>,
+    /// Where each list on the stack starts in `arena`.
+    starts: Vec<usize>,
+    combined: Vec<Span>,
+    swap: Vec<Span>,
+}
+
+thread_local! {
+    static SCRATCH: RefCell<Scratch> = RefCell::new(Scratch::default());
+}
+
+impl CsgTree {
+    /// The spans of the whole node along a node-space ray, for the part of the line in
+    /// [0, t_max], handed to `answer` (leaves whose bounds the ray misses there count as
+    /// empty: they cannot change the result in that range).
+    fn with_spans<R>(&self, ray: &Ray, t_max: f64, answer: impl FnOnce(&[Span]) -> R) -> R {
+        SCRATCH.with(|cell| {
+            let mut guard = cell.borrow_mut();
+            let s = &mut *guard;
+            s.arena.clear();
+            s.starts.clear();
+            let inv_dir = ray.dir.recip();
+            for step in &self.steps {
+                match *step {
+                    Step::Leaf(index) => {
+                        s.starts.push(s.arena.len());
+                        let leaf = &self.leaves[index as usize];
+                        if leaf.bounds.is_some_and(|b| !b.hit_by(ray, inv_dir, t_max)) {
+                            continue;
+                        }
+                        let leaf_ray = ray.transformed(&leaf.leaf_from_node);
+                        s.crossings.clear();
+                        shapes::crossings(leaf.shape, &leaf_ray, &mut s.crossings);
+                        let inside = shapes::starts_inside(leaf.shape, &leaf_ray);
+                        spans::leaf_spans(&s.crossings, index, inside, &mut s.arena);
+                    }
+                    Step::Combine { operands: 0, .. } => s.starts.push(s.arena.len()),
+                    Step::Combine { op, operands } => {
+                        let first = s.starts.len() - operands as usize;
+                        let base = s.starts[first];
+                        s.combined.clear();
+                        s.combined.extend_from_slice(
+                            &s.arena
+                                [base..s.starts.get(first + 1).copied().unwrap_or(s.arena.len())],
+                        );
+                        for k in first + 1..s.starts.len() {
+                            let end = s.starts.get(k + 1).copied().unwrap_or(s.arena.len());
+                            s.swap.clear();
+                            spans::combine(
+                                op,
+                                &s.combined,
+                                &s.arena[s.starts[k]..end],
+                                &mut s.swap,
+                            );
+                            std::mem::swap(&mut s.combined, &mut s.swap);
+                        }
+                        s.starts.truncate(first + 1);
+                        s.arena.truncate(base);
+                        s.arena.extend_from_slice(&s.combined);
+                    }
+                }
+            }
+            answer(&s.arena)
+        })
+    }
+
+    /// Whether a crossing lies in (0, t_max), clear of its leaf ray's origin rounding.
+    fn in_range(&self, ray: &Ray, crossing: &Crossing, t_max: f64) -> bool {
+        let Some(leaf) = self.leaves.get(crossing.leaf as usize) else {
+            return false; // an unbounded end
+        };
+        shapes::in_range(
+            &ray.transformed(&leaf.leaf_from_node),
+            crossing.hit.t,
+            t_max,
+        )
+    }
+
+    /// The nearest surface of the node along a node-space ray with `t` in (0, t_max).
+    #[must_use]
+    pub fn intersect(&self, ray: &Ray, t_max: f64) -> Option<CsgHit> {
+        let found = self.with_spans(ray, t_max, |spans| {
+            spans
+                .iter()
+                .flat_map(|s| [(s.enter, true), (s.leave, false)])
+                .find(|(c, _)| self.in_range(ray, c, t_max))
+        })?;
+        let (crossing, entering) = found;
+        Some(self.node_hit(ray, &crossing, entering))
+    }
+
+    /// Whether any surface of the node lies along the ray with `t` in (0, t_max).
+    #[must_use]
+    pub fn occluded(&self, ray: &Ray, t_max: f64) -> bool {
+        self.with_spans(ray, t_max, |spans| {
+            spans
+                .iter()
+                .any(|s| self.in_range(ray, &s.enter, t_max) || self.in_range(ray, &s.leave, t_max))
+        })
+    }
+
+    /// Every surface of the node along the line, in order, for the pixel inspector:
+    /// each with whether the ray enters the result there.
+    #[must_use]
+    pub fn surfaces(&self, ray: &Ray) -> Vec<(CsgHit, bool)> {
+        self.with_spans(ray, f64::INFINITY, |spans| {
+            spans
+                .iter()
+                .flat_map(|s| [(s.enter, true), (s.leave, false)])
+                .filter(|(c, _)| (c.leaf as usize) < self.leaves.len())
+                .collect::<Vec<_>>()
+        })
+        .into_iter()
+        .map(|(c, entering)| (self.node_hit(ray, &c, entering), entering))
+        .collect()
+    }
+
+    /// A crossing in the node's space: the point and normal carried through the leaf's
+    /// placement (its rounding added to the error bound, as `World` does for objects),
+    /// the normal turned to face out of the result (against the ray where it enters).
+    fn node_hit(&self, ray: &Ray, crossing: &Crossing, entering: bool) -> CsgHit {
+        let leaf = &self.leaves[crossing.leaf as usize];
+        let h = &crossing.hit;
+        let p = leaf.node_from_leaf.transform_point3(h.p);
+        let mut n = leaf.normal_from_leaf * h.n;
+        if (n.dot(ray.dir) > 0.0) == entering {
+            n = -n;
+        }
+        let m = leaf.abs_node_from_leaf;
+        let carried = m * h.p_error;
+        let forward = gamma(3) * (m * h.p.abs() + leaf.node_from_leaf.translation.abs());
+        let back =
+            gamma(3) * (leaf.abs_leaf_from_node * p.abs() + leaf.leaf_from_node.translation.abs());
+        CsgHit {
+            hit: ShapeHit {
+                t: h.t,
+                p,
+                n,
+                p_error: carried + forward + m * back,
+            },
+            leaf: crossing.leaf,
+            cut: crossing.cut,
+        }
+    }
+}
+
+impl CsgLeaf {
+    fn new(shape: Primitive, path: String, material: usize, node_from_leaf: DAffine3) -> Self {
+        let leaf_from_node = node_from_leaf.inverse();
+        let abs = |m: &DMat3| DMat3::from_cols(m.x_axis.abs(), m.y_axis.abs(), m.z_axis.abs());
+        Self {
+            shape,
+            path,
+            material,
+            node_from_leaf,
+            leaf_from_node,
+            normal_from_leaf: node_from_leaf.matrix3.inverse().transpose(),
+            abs_node_from_leaf: abs(&node_from_leaf.matrix3),
+            abs_leaf_from_node: abs(&leaf_from_node.matrix3),
+            bounds: (shape != Primitive::Plane)
+                .then(|| shapes::object_bounds(shape).transformed(&node_from_leaf)),
+        }
+    }
+}
+
+/// The extent of a node from its operands'.
+fn combine_extents(op: CsgOp, operands: &[Extent]) -> Extent {
+    let Some((&first, rest)) = operands.split_first() else {
+        return Extent::Empty;
+    };
+    match op {
+        CsgOp::Difference => first,
+        CsgOp::Union => rest.iter().fold(first, |a, &b| match (a, b) {
+            (Extent::Unbounded, _) | (_, Extent::Unbounded) => Extent::Unbounded,
+            (Extent::Empty, x) | (x, Extent::Empty) => x,
+            (Extent::Box(a), Extent::Box(b)) => Extent::Box(a.union(&b)),
+        }),
+        CsgOp::Intersection => rest.iter().fold(first, |a, &b| match (a, b) {
+            (Extent::Empty, _) | (_, Extent::Empty) => Extent::Empty,
+            (Extent::Unbounded, x) | (x, Extent::Unbounded) => x,
+            (Extent::Box(a), Extent::Box(b)) => {
+                let (min, max) = (a.min.max(b.min), a.max.min(b.max));
+                if min.cmple(max).all() {
+                    Extent::Box(Aabb::new(min, max))
+                } else {
+                    Extent::Empty
+                }
+            }
+        }),
+    }
+}
+
+/// Far enough to stand for "without bound" in world bounds, small enough that boxes
+/// built from it stay finite through transforms.
+pub const UNBOUNDED: f64 = 1e30;
+
+impl Extent {
+    /// World bounds for an object placed by `world_from_node`; an empty node gets a
+    /// point at its origin (its tree answers no ray anyway).
+    #[must_use]
+    pub fn world_bounds(&self, world_from_node: &DAffine3) -> Aabb {
+        match self {
+            Extent::Box(b) => b.transformed(world_from_node),
+            Extent::Unbounded => Aabb::new(DVec3::splat(-UNBOUNDED), DVec3::splat(UNBOUNDED)),
+            Extent::Empty => {
+                let o = world_from_node.translation;
+                Aabb::new(o, o)
+            }
+        }
+    }
+}
