@@ -146,14 +146,10 @@ impl Recorder for ReportRecorder<'_> {
         // where the ray meets the blocker (the record names it by its scene index).
         if let Some(shadow) = record.shadow_ray
             && let Some(blocker) = shadow.blocked_by
-            && let Some(world_index) = self
-                .world
-                .object_scene_index
-                .iter()
-                .position(|&i| i == blocker)
-            && let Some(hit) = self
-                .world
-                .intersect_object(world_index, &shadow.ray, shadow.t_max)
+            && let Some(hit) = (0..self.world.objects.len())
+                .filter(|&i| self.world.object_scene_index[i] == blocker)
+                .filter_map(|i| self.world.intersect_object(i, &shadow.ray, shadow.t_max))
+                .min_by(|a, b| a.t.total_cmp(&b.t))
         {
             let hit = SurfacePoint {
                 object: blocker,

@@ -33,6 +33,7 @@ use crate::trace::film::RenderOptions;
 use crate::trace::shapes::Primitive;
 use crate::trace::terms::TermSwitches;
 use crate::trace::terms::View;
+use crate::trace::world::CsgTree;
 use crate::trace::world::World;
 use crate::trace::world::WorldLight;
 
@@ -96,6 +97,15 @@ impl Shading {
     }
 }
 
+/// Whether a CSG object's operands have more than one material between them.
+fn mixes_materials(object: &crate::trace::WorldObject) -> bool {
+    object.csg.as_ref().is_some_and(|tree| {
+        tree.leaves
+            .iter()
+            .any(|leaf| leaf.material != object.material)
+    })
+}
+
 /// Each object's material, by world object index.
 fn object_materials(world: &World) -> Vec<Material> {
     world
@@ -113,6 +123,8 @@ struct RayGeometry {
     height: u32,
     camera: Camera,
     objects: Vec<(Primitive, DAffine3)>,
+    /// The CSG trees, compared by value: a node's operands are its shape.
+    trees: Vec<Option<Arc<CsgTree>>>,
     object_scene_index: Vec<usize>,
 }
 
@@ -127,6 +139,7 @@ impl RayGeometry {
                 .iter()
                 .map(|o| (o.shape, o.world_from_object))
                 .collect(),
+            trees: world.objects.iter().map(|o| o.csg.clone()).collect(),
             object_scene_index: world.object_scene_index.clone(),
         }
     }
@@ -284,7 +297,9 @@ impl HitCache {
         if now.camera != old.camera {
             return Reuse::Retrace(RetraceReason::Camera);
         }
-        if now != *old {
+        // The cache keys materials by object; a CSG object whose operands differ in
+        // material is shaded by operand, so such a world is always traced again.
+        if now != *old || world.objects.iter().any(mixes_materials) {
             return Reuse::Retrace(RetraceReason::Objects);
         }
         let kept_columns = world
