@@ -32,8 +32,8 @@ pub use film::{
     sample_in_pixel,
 };
 pub use inspect::{
-    BounceReport, PixelOutside, PixelReport, RayHit, RayKind, TracedRay, inspect_pixel, pick,
-    switches_text, traced_rays, try_inspect_pixel,
+    BounceReport, HitSurface, PixelOutside, PixelReport, RayHit, RayKind, TracedRay, inspect_pixel,
+    pick, switches_text, traced_rays, try_inspect_pixel,
 };
 pub use ray::Ray;
 pub use ray_counts::RayCounts;
