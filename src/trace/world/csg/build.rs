@@ -19,6 +19,8 @@ enum Work<'a> {
     },
     /// All operands of a node are compiled: combine them.
     Emit { op: CsgOp, operands: u32 },
+    /// A node's first operand is compiled: if it is empty along a ray, skip the rest.
+    Check,
 }
 
 impl CsgTree {
@@ -42,12 +44,23 @@ impl CsgTree {
             extent: Extent::Empty,
         };
         let mut extents: Vec<Extent> = Vec::new();
+        // The SkipIfEmpty steps waiting for their node's end (nodes nest, so a stack).
+        let mut checks: Vec<usize> = Vec::new();
         let mut work = Vec::new();
         push_operands(&mut work, op, operands, &DAffine3::IDENTITY, material, path);
         while let Some(item) = work.pop() {
             match item {
+                Work::Check => {
+                    checks.push(tree.steps.len());
+                    tree.steps.push(Step::SkipIfEmpty { skip_to: 0 });
+                }
                 Work::Emit { op, operands } => {
                     tree.steps.push(Step::Combine { op, operands });
+                    if skips(op, operands) {
+                        let check = checks.pop().expect("a Check precedes its Emit");
+                        let end = u32::try_from(tree.steps.len()).expect("under 2^32 steps");
+                        tree.steps[check] = Step::SkipIfEmpty { skip_to: end };
+                    }
                     let first = extents.len() - operands as usize;
                     let combined = combine_extents(op, &extents[first..]);
                     extents.truncate(first);
@@ -113,7 +126,10 @@ fn push_operands<'a>(
         op,
         operands: operands_count,
     });
-    for operand in operands.iter().rev() {
+    for (k, operand) in operands.iter().enumerate().rev() {
+        if k == 0 && skips(op, operands_count) {
+            work.push(Work::Check);
+        }
         work.push(Work::Visit {
             object: operand,
             node_from_object: *node_from_parent * operand.transform.world_from_object(),
@@ -125,4 +141,10 @@ fn push_operands<'a>(
             path: format!("{path}/{}", operand.name),
         });
     }
+}
+
+/// Whether a node gets a SkipIfEmpty after its first operand: an Intersection or a
+/// Difference is empty wherever its first operand is.
+fn skips(op: CsgOp, operands: u32) -> bool {
+    op != CsgOp::Union && operands >= 2
 }

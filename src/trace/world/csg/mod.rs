@@ -41,6 +41,9 @@ enum Step {
     Leaf(u32),
     /// Pop the top `operands` span lists and push them combined by `op`, left to right.
     Combine { op: CsgOp, operands: u32 },
+    /// After an Intersection's or Difference's first operand: if its list is empty, so
+    /// is the node's, and the program goes on at `skip_to` (past the node's Combine).
+    SkipIfEmpty { skip_to: u32 },
 }
 
 /// How far a node's solid can reach, in the node's space.
@@ -96,15 +99,28 @@ impl CsgTree {
     /// The spans of the whole node along a node-space ray, for the part of the line in
     /// [0, t_max], handed to `answer` (leaves whose bounds the ray misses there count as
     /// empty: they cannot change the result in that range).
-    fn with_spans<R>(&self, ray: &Ray, t_max: f64, answer: impl FnOnce(&[Span]) -> R) -> R {
+    fn with_spans<R>(
+        &self,
+        ray: &Ray,
+        t_max: f64,
+        answer: impl FnOnce(&[Span], &[ShapeHit]) -> R,
+    ) -> R {
         SCRATCH.with(|cell| {
             let mut guard = cell.borrow_mut();
             let s = &mut *guard;
             s.arena.clear();
             s.starts.clear();
+            s.crossings.clear();
             let inv_dir = ray.dir.recip();
-            for step in &self.steps {
+            let mut pc = 0;
+            while let Some(step) = self.steps.get(pc) {
+                pc += 1;
                 match *step {
+                    Step::SkipIfEmpty { skip_to } => {
+                        if s.starts.last() == Some(&s.arena.len()) {
+                            pc = skip_to as usize;
+                        }
+                    }
                     Step::Leaf(index) => {
                         s.starts.push(s.arena.len());
                         let leaf = &self.leaves[index as usize];
@@ -112,29 +128,41 @@ impl CsgTree {
                             continue;
                         }
                         let leaf_ray = ray.transformed(&leaf.leaf_from_node);
-                        s.crossings.clear();
+                        let first = s.crossings.len();
                         shapes::crossings(leaf.shape, &leaf_ray, &mut s.crossings);
                         let inside = shapes::starts_inside(leaf.shape, &leaf_ray);
-                        spans::leaf_spans(&s.crossings, index, inside, &mut s.arena);
+                        let own = &s.crossings[first..];
+                        spans::leaf_spans(own, first, index, inside, &mut s.arena);
                     }
                     Step::Combine { operands: 0, .. } => s.starts.push(s.arena.len()),
                     Step::Combine { op, operands } => {
                         let first = s.starts.len() - operands as usize;
                         let base = s.starts[first];
+                        let end_of = |k: usize, s: &Scratch| {
+                            s.starts.get(k + 1).copied().unwrap_or(s.arena.len())
+                        };
                         s.combined.clear();
-                        s.combined.extend_from_slice(
-                            &s.arena
-                                [base..s.starts.get(first + 1).copied().unwrap_or(s.arena.len())],
-                        );
+                        s.combined
+                            .extend_from_slice(&s.arena[base..end_of(first, s)]);
                         for k in first + 1..s.starts.len() {
-                            let end = s.starts.get(k + 1).copied().unwrap_or(s.arena.len());
+                            let operand = s.starts[k]..end_of(k, s);
+                            // Empty sides settle most combinations without a sweep (a
+                            // die's pips miss most rays).
+                            match (op, s.combined.is_empty(), operand.is_empty()) {
+                                (CsgOp::Intersection | CsgOp::Difference, true, _) => break,
+                                (CsgOp::Union | CsgOp::Difference, _, true) => continue,
+                                (CsgOp::Intersection, _, true) => {
+                                    s.combined.clear();
+                                    break;
+                                }
+                                (CsgOp::Union, true, false) => {
+                                    s.combined.extend_from_slice(&s.arena[operand]);
+                                    continue;
+                                }
+                                _ => {}
+                            }
                             s.swap.clear();
-                            spans::combine(
-                                op,
-                                &s.combined,
-                                &s.arena[s.starts[k]..end],
-                                &mut s.swap,
-                            );
+                            spans::combine(op, &s.combined, &s.arena[operand], &mut s.swap);
                             std::mem::swap(&mut s.combined, &mut s.swap);
                         }
                         s.starts.truncate(first + 1);
@@ -143,7 +171,7 @@ impl CsgTree {
                     }
                 }
             }
-            answer(&s.arena)
+            answer(&s.arena, &s.crossings)
         })
     }
 
@@ -154,7 +182,7 @@ impl CsgTree {
         };
         shapes::in_range(
             &ray.transformed(&leaf.leaf_from_node),
-            crossing.hit.t,
+            crossing.t,
             t_max,
         )
     }
@@ -162,20 +190,19 @@ impl CsgTree {
     /// The nearest surface of the node along a node-space ray with `t` in (0, t_max).
     #[must_use]
     pub fn intersect(&self, ray: &Ray, t_max: f64) -> Option<CsgHit> {
-        let found = self.with_spans(ray, t_max, |spans| {
+        self.with_spans(ray, t_max, |spans, hits| {
             spans
                 .iter()
                 .flat_map(|s| [(s.enter, true), (s.leave, false)])
                 .find(|(c, _)| self.in_range(ray, c, t_max))
-        })?;
-        let (crossing, entering) = found;
-        Some(self.node_hit(ray, &crossing, entering))
+                .map(|(c, entering)| self.node_hit(ray, &c, &hits[c.hit as usize], entering))
+        })
     }
 
     /// Whether any surface of the node lies along the ray with `t` in (0, t_max).
     #[must_use]
     pub fn occluded(&self, ray: &Ray, t_max: f64) -> bool {
-        self.with_spans(ray, t_max, |spans| {
+        self.with_spans(ray, t_max, |spans, _| {
             spans
                 .iter()
                 .any(|s| self.in_range(ray, &s.enter, t_max) || self.in_range(ray, &s.leave, t_max))
@@ -186,24 +213,26 @@ impl CsgTree {
     /// each with whether the ray enters the result there.
     #[must_use]
     pub fn surfaces(&self, ray: &Ray) -> Vec<(CsgHit, bool)> {
-        self.with_spans(ray, f64::INFINITY, |spans| {
+        self.with_spans(ray, f64::INFINITY, |spans, hits| {
             spans
                 .iter()
                 .flat_map(|s| [(s.enter, true), (s.leave, false)])
                 .filter(|(c, _)| (c.leaf as usize) < self.leaves.len())
-                .collect::<Vec<_>>()
+                .map(|(c, entering)| {
+                    (
+                        self.node_hit(ray, &c, &hits[c.hit as usize], entering),
+                        entering,
+                    )
+                })
+                .collect()
         })
-        .into_iter()
-        .map(|(c, entering)| (self.node_hit(ray, &c, entering), entering))
-        .collect()
     }
 
     /// A crossing in the node's space: the point and normal carried through the leaf's
     /// placement (its rounding added to the error bound, as `World` does for objects),
     /// the normal turned to face out of the result (against the ray where it enters).
-    fn node_hit(&self, ray: &Ray, crossing: &Crossing, entering: bool) -> CsgHit {
+    fn node_hit(&self, ray: &Ray, crossing: &Crossing, h: &ShapeHit, entering: bool) -> CsgHit {
         let leaf = &self.leaves[crossing.leaf as usize];
-        let h = &crossing.hit;
         let p = leaf.node_from_leaf.transform_point3(h.p);
         let mut n = leaf.normal_from_leaf * h.n;
         if (n.dot(ray.dir) > 0.0) == entering {

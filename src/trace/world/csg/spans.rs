@@ -5,11 +5,15 @@
 use crate::scene::CsgOp;
 use crate::trace::shapes::ShapeHit;
 
-/// One end of a span: the operand surface the line crosses there, in that leaf's space.
+/// One end of a span: the operand surface the line crosses there. Small (the sweep
+/// copies it): the hit itself stays in the evaluation's list of crossings.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Crossing {
-    /// The crossing on the leaf, in the leaf's object space (`hit.t` is the span end).
-    pub hit: ShapeHit,
+    /// The ray parameter.
+    pub t: f64,
+    /// Index of the crossing's [`ShapeHit`] (in the leaf's object space) in the list
+    /// the leaves' crossings were collected in; `u32::MAX` for an unbounded end.
+    pub hit: u32,
     /// Which leaf of the tree; `u32::MAX` for the open end of an unbounded span.
     pub leaf: u32,
     /// Whether the surface belongs to a subtracted operand (an odd number of times), so
@@ -30,46 +34,44 @@ impl Crossing {
     /// The open end of a span reaching to `t` = +-infinity (a half-space's).
     pub fn unbounded(t: f64) -> Self {
         Self {
-            hit: ShapeHit {
-                t,
-                p: glam::DVec3::ZERO,
-                n: glam::DVec3::ZERO,
-                p_error: glam::DVec3::ZERO,
-            },
+            t,
+            hit: u32::MAX,
             leaf: u32::MAX,
             cut: false,
         }
     }
 
     fn t(&self) -> f64 {
-        self.hit.t
+        self.t
     }
 }
 
-/// The spans of one leaf from its crossings (ascending `t`), starting inside or not at
-/// t = -infinity. Crossings alternate between entering and leaving; spans of zero length
+/// The spans of one leaf from its crossings (ascending `t`; the first one at index
+/// `first` of the evaluation's list), starting inside or not at t = -infinity. Crossings alternate between entering and leaving; spans of zero length
 /// (a line that only touches the solid) are left out: the set operations are
 /// regularised, so a touch is no surface.
 pub(crate) fn leaf_spans(
     crossings: &[ShapeHit],
+    first: usize,
     leaf: u32,
     starts_inside: bool,
     out: &mut Vec<Span>,
 ) {
-    let crossing = |hit: &ShapeHit| Crossing {
-        hit: *hit,
+    let crossing = |k: usize, hit: &ShapeHit| Crossing {
+        t: hit.t,
+        hit: u32::try_from(first + k).expect("under 2^32 crossings"),
         leaf,
         cut: false,
     };
     let mut open = starts_inside.then(|| Crossing::unbounded(f64::NEG_INFINITY));
-    for hit in crossings {
+    for (k, hit) in crossings.iter().enumerate() {
         match open.take() {
-            None => open = Some(crossing(hit)),
+            None => open = Some(crossing(k, hit)),
             Some(enter) => {
                 if hit.t > enter.t() {
                     out.push(Span {
                         enter,
-                        leave: crossing(hit),
+                        leave: crossing(k, hit),
                     });
                 }
             }
@@ -188,7 +190,7 @@ mod tests {
             })
             .collect();
         let mut out = Vec::new();
-        leaf_spans(&hits, leaf, false, &mut out);
+        leaf_spans(&hits, 0, leaf, false, &mut out);
         out
     }
 
