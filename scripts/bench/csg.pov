@@ -2,8 +2,8 @@
 // lights), for scripts/bench_povray_csg.sh. raylab's right-handed coordinates are
 // mirrored in z for POV-Ray's left-handed ones (so rotations about x and y turn the other
 // way); Phong terms map to finish ambient/diffuse/phong/reflection, raylab's 1/d^2
-// light falloff to fade_power 2.
-global_settings { assumed_gamma 1.0 max_trace_level 6 ambient_light rgb <1, 1, 1> }
+// light falloff to fade_power 2; assumed_gamma 2.2 writes the colours as computed, as raylab does.
+global_settings { assumed_gamma 2.2 max_trace_level 6 ambient_light rgb <1, 1, 1> }
 background { rgb <0.05, 0.06, 0.09> }
 camera {
   perspective
