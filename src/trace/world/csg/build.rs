@@ -1,11 +1,11 @@
 //! Compiling a scene's CSG node into a [`CsgTree`], with a work list instead of
 //! recursion so the depth of the tree never reaches the call stack.
 
-use glam::DAffine3;
+use glam::{DAffine3, DVec3};
 
 use super::{CsgLeaf, CsgTree, Extent, Step, combine_extents};
 use crate::scene::{CsgOp, Object, SceneError, Shape};
-use crate::trace::shapes::Primitive;
+use crate::trace::shapes::{self, Aabb, Primitive};
 
 /// What is left to do for the node being compiled.
 enum Work<'a> {
@@ -21,6 +21,10 @@ enum Work<'a> {
     Emit { op: CsgOp, operands: u32 },
     /// A node's first operand is compiled: if it is empty along a ray, skip the rest.
     Check,
+    /// A run of `leaves` leaf operands starts whose boxes together lie in `bounds`.
+    ChunkStart { bounds: Aabb, leaves: u32 },
+    /// That run ends.
+    ChunkEnd,
 }
 
 impl CsgTree {
@@ -46,10 +50,26 @@ impl CsgTree {
         let mut extents: Vec<Extent> = Vec::new();
         // The SkipIfEmpty steps waiting for their node's end (nodes nest, so a stack).
         let mut checks: Vec<usize> = Vec::new();
+        let mut chunks: Vec<usize> = Vec::new();
         let mut work = Vec::new();
         push_operands(&mut work, op, operands, &DAffine3::IDENTITY, material, path);
         while let Some(item) = work.pop() {
             match item {
+                Work::ChunkStart { bounds, leaves } => {
+                    chunks.push(tree.steps.len());
+                    tree.steps.push(Step::SkipIfMissed {
+                        bounds,
+                        lists: leaves,
+                        skip_to: 0,
+                    });
+                }
+                Work::ChunkEnd => {
+                    let start = chunks.pop().expect("a chunk ends after it starts");
+                    let end = u32::try_from(tree.steps.len()).expect("under 2^32 steps");
+                    if let Step::SkipIfMissed { skip_to, .. } = &mut tree.steps[start] {
+                        *skip_to = end;
+                    }
+                }
                 Work::Check => {
                     checks.push(tree.steps.len());
                     tree.steps.push(Step::SkipIfEmpty { skip_to: 0 });
@@ -126,21 +146,91 @@ fn push_operands<'a>(
         op,
         operands: operands_count,
     });
-    for (k, operand) in operands.iter().enumerate().rev() {
-        if k == 0 && skips(op, operands_count) {
+    let visit = |operand: &'a Object| Work::Visit {
+        object: operand,
+        node_from_object: *node_from_parent * operand.transform.world_from_object(),
+        material: if operand.material.is_empty() {
+            material
+        } else {
+            &operand.material
+        },
+        path: format!("{path}/{}", operand.name),
+    };
+    let rest = operands.get(1..).unwrap_or_default();
+    for chunk in chunks(rest, node_from_parent).iter().rev() {
+        let members = &rest[chunk.first..chunk.first + chunk.len];
+        if chunk.len > 1 {
+            work.push(Work::ChunkEnd);
+        }
+        work.extend(members.iter().rev().map(visit));
+        if chunk.len > 1 {
+            work.push(Work::ChunkStart {
+                bounds: chunk.bounds,
+                leaves: u32::try_from(chunk.len).expect("a small chunk"),
+            });
+        }
+    }
+    if let Some(first) = operands.first() {
+        if skips(op, operands_count) {
             work.push(Work::Check);
         }
-        work.push(Work::Visit {
-            object: operand,
-            node_from_object: *node_from_parent * operand.transform.world_from_object(),
-            material: if operand.material.is_empty() {
-                material
-            } else {
-                &operand.material
-            },
-            path: format!("{path}/{}", operand.name),
-        });
+        work.push(visit(first));
     }
+}
+
+/// A run of operands to test as one box first: bounded leaves lying close together.
+struct Chunk {
+    first: usize,
+    len: usize,
+    bounds: Aabb,
+}
+
+/// Most leaves one chunk takes.
+const CHUNK_MAX: usize = 8;
+
+/// Splits operands into runs of bounded leaves that stay together (the box around a run
+/// has no more surface than its members' boxes together, as the pips on one face of a
+/// die) and single operands; a ray that misses a run's box skips all its leaves.
+fn chunks(operands: &[Object], node_from_parent: &DAffine3) -> Vec<Chunk> {
+    let area = |b: &Aabb| {
+        let d = (b.max - b.min).max(DVec3::ZERO);
+        2.0 * (d.x * d.y + d.y * d.z + d.z * d.x)
+    };
+    let mut out: Vec<Chunk> = Vec::new();
+    let mut members_area = 0.0;
+    for (k, operand) in operands.iter().enumerate() {
+        let bounds = Primitive::of(&operand.shape)
+            .filter(|&p| p != Primitive::Plane)
+            .map(|p| {
+                let placed = *node_from_parent * operand.transform.world_from_object();
+                shapes::object_bounds(p).transformed(&placed)
+            });
+        let Some(bounds) = bounds else {
+            out.push(Chunk {
+                first: k,
+                len: 1,
+                bounds: Aabb::new(DVec3::ZERO, DVec3::ZERO),
+            });
+            members_area = f64::INFINITY; // nothing joins a non-leaf
+            continue;
+        };
+        if let Some(last) = out.last_mut() {
+            let joined = last.bounds.union(&bounds);
+            if last.len < CHUNK_MAX && area(&joined) <= members_area + area(&bounds) {
+                last.len += 1;
+                last.bounds = joined;
+                members_area += area(&bounds);
+                continue;
+            }
+        }
+        out.push(Chunk {
+            first: k,
+            len: 1,
+            bounds,
+        });
+        members_area = area(&bounds);
+    }
+    out
 }
 
 /// Whether a node gets a SkipIfEmpty after its first operand: an Intersection or a

@@ -44,6 +44,13 @@ enum Step {
     /// After an Intersection's or Difference's first operand: if its list is empty, so
     /// is the node's, and the program goes on at `skip_to` (past the node's Combine).
     SkipIfEmpty { skip_to: u32 },
+    /// Before a run of `lists` leaves whose boxes lie in `bounds`: a ray that misses the
+    /// box pushes an empty list for each and goes on at `skip_to`.
+    SkipIfMissed {
+        bounds: Aabb,
+        lists: u32,
+        skip_to: u32,
+    },
 }
 
 /// How far a node's solid can reach, in the node's space.
@@ -83,6 +90,8 @@ pub struct CsgHit {
 #[derive(Default)]
 struct Scratch {
     crossings: Vec<ShapeHit>,
+    /// The ray in each leaf's space (valid for the leaves that have crossings).
+    leaf_rays: Vec<Ray>,
     /// The span lists of the evaluation stack, one after another.
     arena: Vec<Span>,
     /// Where each list on the stack starts in `arena`.
@@ -99,23 +108,32 @@ impl CsgTree {
     /// The spans of the whole node along a node-space ray, for the part of the line in
     /// [0, t_max], handed to `answer` (leaves whose bounds the ray misses there count as
     /// empty: they cannot change the result in that range).
-    fn with_spans<R>(
-        &self,
-        ray: &Ray,
-        t_max: f64,
-        answer: impl FnOnce(&[Span], &[ShapeHit]) -> R,
-    ) -> R {
+    fn with_spans<R>(&self, ray: &Ray, t_max: f64, answer: impl FnOnce(&Scratch) -> R) -> R {
         SCRATCH.with(|cell| {
             let mut guard = cell.borrow_mut();
             let s = &mut *guard;
             s.arena.clear();
             s.starts.clear();
             s.crossings.clear();
+            if s.leaf_rays.len() < self.leaves.len() {
+                s.leaf_rays.resize(self.leaves.len(), *ray);
+            }
             let inv_dir = ray.dir.recip();
             let mut pc = 0;
             while let Some(step) = self.steps.get(pc) {
                 pc += 1;
                 match *step {
+                    Step::SkipIfMissed {
+                        bounds,
+                        lists,
+                        skip_to,
+                    } => {
+                        if !bounds.hit_by(ray, inv_dir, t_max) {
+                            let end = s.arena.len();
+                            s.starts.extend(std::iter::repeat_n(end, lists as usize));
+                            pc = skip_to as usize;
+                        }
+                    }
                     Step::SkipIfEmpty { skip_to } => {
                         if s.starts.last() == Some(&s.arena.len()) {
                             pc = skip_to as usize;
@@ -128,6 +146,7 @@ impl CsgTree {
                             continue;
                         }
                         let leaf_ray = ray.transformed(&leaf.leaf_from_node);
+                        s.leaf_rays[index as usize] = leaf_ray;
                         let first = s.crossings.len();
                         shapes::crossings(leaf.shape, &leaf_ray, &mut s.crossings);
                         let inside = shapes::starts_inside(leaf.shape, &leaf_ray);
@@ -171,41 +190,36 @@ impl CsgTree {
                     }
                 }
             }
-            answer(&s.arena, &s.crossings)
+            answer(s)
         })
     }
 
     /// Whether a crossing lies in (0, t_max), clear of its leaf ray's origin rounding.
-    fn in_range(&self, ray: &Ray, crossing: &Crossing, t_max: f64) -> bool {
-        let Some(leaf) = self.leaves.get(crossing.leaf as usize) else {
-            return false; // an unbounded end
-        };
-        shapes::in_range(
-            &ray.transformed(&leaf.leaf_from_node),
-            crossing.t,
-            t_max,
-        )
+    #[inline]
+    fn in_range(s: &Scratch, crossing: &Crossing, t_max: f64) -> bool {
+        crossing.leaf != u32::MAX
+            && shapes::in_range(&s.leaf_rays[crossing.leaf as usize], crossing.t, t_max)
     }
 
     /// The nearest surface of the node along a node-space ray with `t` in (0, t_max).
     #[must_use]
     pub fn intersect(&self, ray: &Ray, t_max: f64) -> Option<CsgHit> {
-        self.with_spans(ray, t_max, |spans, hits| {
-            spans
+        self.with_spans(ray, t_max, |s| {
+            s.arena
                 .iter()
-                .flat_map(|s| [(s.enter, true), (s.leave, false)])
-                .find(|(c, _)| self.in_range(ray, c, t_max))
-                .map(|(c, entering)| self.node_hit(ray, &c, &hits[c.hit as usize], entering))
+                .flat_map(|span| [(span.enter, true), (span.leave, false)])
+                .find(|(c, _)| Self::in_range(s, c, t_max))
+                .map(|(c, entering)| self.node_hit(ray, &c, &s.crossings[c.hit as usize], entering))
         })
     }
 
     /// Whether any surface of the node lies along the ray with `t` in (0, t_max).
     #[must_use]
     pub fn occluded(&self, ray: &Ray, t_max: f64) -> bool {
-        self.with_spans(ray, t_max, |spans, _| {
-            spans
-                .iter()
-                .any(|s| self.in_range(ray, &s.enter, t_max) || self.in_range(ray, &s.leave, t_max))
+        self.with_spans(ray, t_max, |s| {
+            s.arena.iter().any(|span| {
+                Self::in_range(s, &span.enter, t_max) || Self::in_range(s, &span.leave, t_max)
+            })
         })
     }
 
@@ -213,14 +227,14 @@ impl CsgTree {
     /// each with whether the ray enters the result there.
     #[must_use]
     pub fn surfaces(&self, ray: &Ray) -> Vec<(CsgHit, bool)> {
-        self.with_spans(ray, f64::INFINITY, |spans, hits| {
-            spans
+        self.with_spans(ray, f64::INFINITY, |s| {
+            s.arena
                 .iter()
                 .flat_map(|s| [(s.enter, true), (s.leave, false)])
                 .filter(|(c, _)| (c.leaf as usize) < self.leaves.len())
                 .map(|(c, entering)| {
                     (
-                        self.node_hit(ray, &c, &hits[c.hit as usize], entering),
+                        self.node_hit(ray, &c, &s.crossings[c.hit as usize], entering),
                         entering,
                     )
                 })
