@@ -160,33 +160,46 @@ impl CsgTree {
                         let end_of = |k: usize, s: &Scratch| {
                             s.starts.get(k + 1).copied().unwrap_or(s.arena.len())
                         };
-                        s.combined.clear();
-                        s.combined
-                            .extend_from_slice(&s.arena[base..end_of(first, s)]);
+                        // The result so far: the first list where it lies (no copy) until
+                        // a sweep makes a new one in `combined`.
+                        let mut first_end = end_of(first, s);
+                        let mut in_place = true;
                         for k in first + 1..s.starts.len() {
                             let operand = s.starts[k]..end_of(k, s);
+                            let acc_empty = if in_place {
+                                first_end == base
+                            } else {
+                                s.combined.is_empty()
+                            };
                             // Empty sides settle most combinations without a sweep (a
                             // die's pips miss most rays).
-                            match (op, s.combined.is_empty(), operand.is_empty()) {
+                            match (op, acc_empty, operand.is_empty()) {
                                 (CsgOp::Intersection | CsgOp::Difference, true, _) => break,
                                 (CsgOp::Union | CsgOp::Difference, _, true) => continue,
                                 (CsgOp::Intersection, _, true) => {
-                                    s.combined.clear();
+                                    first_end = base;
+                                    in_place = true;
                                     break;
-                                }
-                                (CsgOp::Union, true, false) => {
-                                    s.combined.extend_from_slice(&s.arena[operand]);
-                                    continue;
                                 }
                                 _ => {}
                             }
+                            let acc = if in_place {
+                                &s.arena[base..first_end]
+                            } else {
+                                &s.combined[..]
+                            };
                             s.swap.clear();
-                            spans::combine(op, &s.combined, &s.arena[operand], &mut s.swap);
+                            spans::combine(op, acc, &s.arena[operand], &mut s.swap);
                             std::mem::swap(&mut s.combined, &mut s.swap);
+                            in_place = false;
                         }
                         s.starts.truncate(first + 1);
-                        s.arena.truncate(base);
-                        s.arena.extend_from_slice(&s.combined);
+                        if in_place {
+                            s.arena.truncate(first_end);
+                        } else {
+                            s.arena.truncate(base);
+                            s.arena.extend_from_slice(&s.combined);
+                        }
                     }
                 }
             }
@@ -205,11 +218,18 @@ impl CsgTree {
     #[must_use]
     pub fn intersect(&self, ray: &Ray, t_max: f64) -> Option<CsgHit> {
         self.with_spans(ray, t_max, |s| {
-            s.arena
-                .iter()
-                .flat_map(|span| [(span.enter, true), (span.leave, false)])
-                .find(|(c, _)| Self::in_range(s, c, t_max))
-                .map(|(c, entering)| self.node_hit(ray, &c, &s.crossings[c.hit as usize], entering))
+            for span in &s.arena {
+                for (c, entering) in [(&span.enter, true), (&span.leave, false)] {
+                    if c.t >= t_max {
+                        return None;
+                    }
+                    if Self::in_range(s, c, t_max) {
+                        let hit = &s.crossings[c.hit as usize];
+                        return Some(self.node_hit(ray, c, hit, entering));
+                    }
+                }
+            }
+            None
         })
     }
 
@@ -217,9 +237,17 @@ impl CsgTree {
     #[must_use]
     pub fn occluded(&self, ray: &Ray, t_max: f64) -> bool {
         self.with_spans(ray, t_max, |s| {
-            s.arena.iter().any(|span| {
-                Self::in_range(s, &span.enter, t_max) || Self::in_range(s, &span.leave, t_max)
-            })
+            for span in &s.arena {
+                for c in [&span.enter, &span.leave] {
+                    if c.t >= t_max {
+                        return false;
+                    }
+                    if Self::in_range(s, c, t_max) {
+                        return true;
+                    }
+                }
+            }
+            false
         })
     }
 
