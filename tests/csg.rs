@@ -292,3 +292,42 @@ fn groups_flatten_with_placement_inherited_materials_and_paths() {
     assert_eq!(world.material_at(&body), material(&world, "blue satin"));
     assert_eq!(world.scene_object(body.object), 1);
 }
+
+/// Scene text with `levels` nested one-operand Unions around a sphere.
+fn nested_text(levels: usize) -> String {
+    let mut object = "(name: \"ball\", shape: Sphere, material: \"m\")".to_owned();
+    for level in 0..levels {
+        object = format!("(name: \"l{level}\", shape: Csg(op: Union, operands: [{object}]))");
+    }
+    format!(
+        "Scene(format: 1, camera: (position: (0.0, 0.0, 5.0), look_at: (0.0, 0.0, 0.0), \
+         up: (0.0, 1.0, 0.0), fov_deg: 40.0, width: 8, height: 6), \
+         materials: {{\"m\": (diffuse: (0.5, 0.5, 0.5))}}, lights: [], objects: [{object}])"
+    )
+}
+
+#[test]
+fn a_file_a_thousand_levels_deep_loads_and_deeper_ones_are_clear_errors() {
+    // On a 1 MiB stack: the parser's stack grows on the heap, not the thread's.
+    let handle = std::thread::Builder::new()
+        .stack_size(1024 * 1024)
+        .spawn(|| {
+            let deepest = raylab::scene::parse_scene(&nested_text(MAX_TREE_DEPTH))
+                .expect("a tree of the deepest depth validation takes loads");
+            let hit = World::new(&deepest)
+                .unwrap()
+                .intersect(&down_from(0.0, 0.0, 5.0), f64::INFINITY);
+            assert!(hit.is_some_and(|hit| (hit.t - 4.0).abs() < 1e-12));
+            std::mem::forget(deepest);
+            let error = raylab::scene::parse_scene(&nested_text(MAX_TREE_DEPTH + 1))
+                .unwrap_err()
+                .to_string();
+            assert!(error.contains("1000 levels"), "{error}");
+            let error = raylab::scene::parse_scene(&nested_text(10 * MAX_TREE_DEPTH))
+                .unwrap_err()
+                .to_string();
+            assert!(error.contains("recursion limit"), "{error}");
+        })
+        .unwrap();
+    handle.join().unwrap();
+}
