@@ -331,3 +331,39 @@ fn a_file_a_thousand_levels_deep_loads_and_deeper_ones_are_clear_errors() {
         .unwrap();
     handle.join().unwrap();
 }
+
+#[test]
+fn hiding_a_group_hides_its_members_and_ids_stay_the_scenes() {
+    let group = |name: &str, x: f64| Object {
+        name: name.to_owned(),
+        shape: Shape::Group {
+            children: vec![
+                object("a", Shape::Sphere, DVec3::new(x, 0.0, 0.0), 0.5, ""),
+                object("b", Shape::Sphere, DVec3::new(x, 2.0, 0.0), 0.5, ""),
+            ],
+        },
+        transform: Transform::default(),
+        material: "gold".to_owned(),
+    };
+    let scene = scene_of(vec![
+        group("left", -2.0),
+        group("middle", 0.0),
+        group("right", 2.0),
+    ]);
+    let isolation = raylab::trace::Isolation {
+        hidden_objects: [1].into_iter().collect(),
+        ..raylab::trace::Isolation::NONE
+    };
+    let world = World::isolated(&scene, &isolation).unwrap();
+    assert_eq!(world.object_scene_index, [0, 0, 2, 2]);
+    assert!(
+        world
+            .intersect(&down_from(0.0, 0.0, 5.0), f64::INFINITY)
+            .is_none()
+    );
+    let right = world
+        .intersect(&down_from(2.0, 2.0, 5.0), f64::INFINITY)
+        .unwrap();
+    assert_eq!(world.scene_object(right.object), 2);
+    assert_eq!(world.objects[right.object].name, "right/b");
+}
