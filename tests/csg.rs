@@ -367,3 +367,40 @@ fn hiding_a_group_hides_its_members_and_ids_stay_the_scenes() {
     assert_eq!(world.scene_object(right.object), 2);
     assert_eq!(world.objects[right.object].name, "right/b");
 }
+
+#[test]
+fn each_world_object_can_be_taken_out_of_its_tree() {
+    let snowman = Object {
+        name: "snowman".to_owned(),
+        shape: Shape::Group {
+            children: vec![
+                object("body", Shape::Sphere, DVec3::ZERO, 1.0, ""),
+                csg(
+                    "hat",
+                    CsgOp::Union,
+                    vec![object("brim", Shape::Cube, DVec3::Z, 0.5, "")],
+                ),
+            ],
+        },
+        transform: Transform::default(),
+        material: "gold".to_owned(),
+    };
+    let scene = scene_of(vec![
+        object("ball", Shape::Sphere, DVec3::X * 5.0, 1.0, "gold"),
+        snowman,
+    ]);
+    let world = World::new(&scene).unwrap();
+    for index in 0..world.objects.len() {
+        let without = raylab::trace::scene_without_world_object(&scene, index).unwrap();
+        let names: Vec<String> = World::new(&without)
+            .unwrap()
+            .objects
+            .iter()
+            .map(|o| o.name.clone())
+            .collect();
+        let mut expected: Vec<String> = world.objects.iter().map(|o| o.name.clone()).collect();
+        expected.remove(index);
+        assert_eq!(names, expected);
+    }
+    assert!(raylab::trace::scene_without_world_object(&scene, world.objects.len()).is_none());
+}

@@ -107,3 +107,45 @@ fn not_drawn(path: &str, shape: &Shape) -> SceneError {
         shape.name()
     ))
 }
+
+/// `scene` without the tree node that became world object `world_index` of a world
+/// compiled from it ([`crate::trace::World::new`], every object shown): a leaf, a CSG
+/// node or, at the top level, the object. `None` past the last world object.
+#[must_use]
+pub fn scene_without_world_object(scene: &Scene, world_index: usize) -> Option<Scene> {
+    // The same walk as `flatten`, keeping each node's child indices.
+    let mut work: Vec<(&Object, Vec<usize>)> = scene
+        .objects
+        .iter()
+        .enumerate()
+        .rev()
+        .map(|(i, o)| (o, vec![i]))
+        .collect();
+    let mut seen = 0;
+    let path = loop {
+        let (object, path) = work.pop()?;
+        if let Shape::Group { children } = &object.shape {
+            work.extend(children.iter().enumerate().rev().map(|(i, child)| {
+                let mut child_path = path.clone();
+                child_path.push(i);
+                (child, child_path)
+            }));
+            continue;
+        }
+        if seen == world_index {
+            break path;
+        }
+        seen += 1;
+    };
+    let mut without = scene.clone();
+    let (&last, parents) = path.split_last()?;
+    let mut list = &mut without.objects;
+    for &i in parents {
+        list = match &mut list[i].shape {
+            Shape::Group { children } => children,
+            _ => unreachable!("only groups are walked into"),
+        };
+    }
+    list.remove(last);
+    Some(without)
+}
