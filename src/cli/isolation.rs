@@ -22,8 +22,7 @@ pub struct IsolationArgs {
     pub solo_light: Vec<usize>,
     /// Objects to leave out of the render (no shadow, no reflection), by name,
     /// comma-separated; a name shared by several objects hides them all. A tree path
-    /// (`snowman/body`) hides a group's child or a CSG operand (see
-    /// [`IsolationArgs::without_hidden_children`]).
+    /// (`snowman/body`) hides a group's child or a CSG operand.
     #[arg(long, value_delimiter = ',', value_name = "NAME")]
     pub hide: Vec<String>,
 }
