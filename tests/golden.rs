@@ -106,6 +106,11 @@ fn specular_exponents() {
 }
 
 #[test]
+fn csg() {
+    check("csg");
+}
+
+#[test]
 fn every_example_scene_has_a_golden_image() {
     for entry in std::fs::read_dir(root().join("scenes")).unwrap() {
         let path = entry.unwrap().path();

@@ -95,9 +95,9 @@ struct Row {
 
 /// The scene with object `index` taken out, compiled.
 fn world_without(scene: &Scene, index: usize) -> Option<World> {
-    let mut scene = scene.clone();
-    scene.objects.remove(index);
-    World::new(&scene).ok()
+    // World object `index` is a tree node (a group's member, a CSG node) in scenes with
+    // groups: take out that node.
+    World::new(&crate::trace::scene_without_world_object(scene, index)?).ok()
 }
 
 /// Splits raylab's `width` x `height` picture of `scene` (compiled as `world`) at `spp`

@@ -19,6 +19,9 @@ pub struct BounceReport {
     pub ray: Ray,
     /// The surface hit, or `None` for a miss.
     pub hit: Option<SurfacePoint>,
+    /// Which surface of the object tree that is (its path, and on a CSG object which
+    /// crossing), when the hit is found again in the world.
+    pub surface: Option<HitSurface>,
     /// Colour returned by a miss (background, or black where the switches hide it).
     pub background: DVec3,
     /// The ambient term added.
@@ -42,6 +45,7 @@ impl BounceReport {
             depth,
             ray,
             hit: None,
+            surface: None,
             background: DVec3::ZERO,
             ambient: DVec3::ZERO,
             lights: Vec::new(),
@@ -92,6 +96,47 @@ impl BounceReport {
     }
 }
 
+/// The leaf of the object tree a ray met.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct HitSurface {
+    /// Tree path of the leaf: `"ball"`, `"snowman/body"`, `"die/pip 3.1"`.
+    pub path: String,
+    /// On a CSG object: which of its surfaces along the ray's line this is (0 = the
+    /// first, counting those behind the origin too) and how many there are.
+    pub crossing: Option<(usize, usize)>,
+    /// Whether it is a Difference's cut (a subtracted operand's surface).
+    pub cut: bool,
+}
+
+impl HitSurface {
+    /// Finds the world object (among those of the hit's scene object) and the leaf the
+    /// ray met at `hit.t`.
+    fn find(world: &World, ray: &Ray, hit: &SurfacePoint) -> Option<Self> {
+        let index = (0..world.objects.len()).find(|&i| {
+            world.scene_object(i) == hit.object
+                && world
+                    .intersect_object(i, ray, f64::INFINITY)
+                    .is_some_and(|again| again.t == hit.t)
+        })?;
+        let object = &world.objects[index];
+        let Some(tree) = &object.csg else {
+            return Some(Self {
+                path: object.name.clone(),
+                crossing: None,
+                cut: false,
+            });
+        };
+        let surfaces = tree.surfaces(&ray.transformed(&object.object_from_world));
+        let crossing = surfaces.iter().position(|(s, _)| s.hit.t == hit.t);
+        let leaf = &tree.leaves[hit.part as usize];
+        Some(Self {
+            path: leaf.path.clone(),
+            crossing: crossing.map(|k| (k, surfaces.len())),
+            cut: crossing.is_some_and(|k| surfaces[k].0.cut),
+        })
+    }
+}
+
 /// Everything behind one pixel's centre sample.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PixelReport {
@@ -124,7 +169,10 @@ impl ReportRecorder<'_> {
 
 impl Recorder for ReportRecorder<'_> {
     fn hit(&mut self, depth: u32, ray: &Ray, hit: &SurfacePoint) {
-        self.at(depth, ray).hit = Some(*hit);
+        let surface = HitSurface::find(self.world, ray, hit);
+        let bounce = self.at(depth, ray);
+        bounce.hit = Some(*hit);
+        bounce.surface = surface;
     }
     fn miss(&mut self, depth: u32, ray: &Ray, background: DVec3) {
         self.at(depth, ray).background = background;
@@ -139,14 +187,10 @@ impl Recorder for ReportRecorder<'_> {
         // where the ray meets the blocker (the record names it by its scene index).
         if let Some(shadow) = record.shadow_ray
             && let Some(blocker) = shadow.blocked_by
-            && let Some(world_index) = self
-                .world
-                .object_scene_index
-                .iter()
-                .position(|&i| i == blocker)
-            && let Some(hit) = self
-                .world
-                .intersect_object(world_index, &shadow.ray, shadow.t_max)
+            && let Some(hit) = (0..self.world.objects.len())
+                .filter(|&i| self.world.object_scene_index[i] == blocker)
+                .filter_map(|i| self.world.intersect_object(i, &shadow.ray, shadow.t_max))
+                .min_by(|a, b| a.t.total_cmp(&b.t))
         {
             let hit = SurfacePoint {
                 object: blocker,

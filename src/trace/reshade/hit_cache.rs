@@ -30,7 +30,7 @@ use crate::scene::{Camera, Material};
 use crate::trace::film::RenderOptions;
 use crate::trace::shapes::Primitive;
 use crate::trace::terms::{TermSwitches, View};
-use crate::trace::world::{World, WorldLight};
+use crate::trace::world::{CsgTree, World, WorldLight};
 
 /// The most memory the preview's cache may take, as [`cache_fits`] estimates it: larger
 /// previews re-trace every edit.
@@ -92,6 +92,15 @@ impl Shading {
     }
 }
 
+/// Whether a CSG object's operands have more than one material between them.
+fn mixes_materials(object: &crate::trace::WorldObject) -> bool {
+    object.csg.as_ref().is_some_and(|tree| {
+        tree.leaves
+            .iter()
+            .any(|leaf| leaf.material != object.material)
+    })
+}
+
 /// Each object's material, by world object index.
 fn object_materials(world: &World) -> Vec<Material> {
     world
@@ -109,6 +118,8 @@ struct RayGeometry {
     height: u32,
     camera: Camera,
     objects: Vec<(Primitive, DAffine3)>,
+    /// The CSG trees, compared by value: a node's operands are its shape.
+    trees: Vec<Option<Arc<CsgTree>>>,
     object_scene_index: Vec<usize>,
 }
 
@@ -123,6 +134,7 @@ impl RayGeometry {
                 .iter()
                 .map(|o| (o.shape, o.world_from_object))
                 .collect(),
+            trees: world.objects.iter().map(|o| o.csg.clone()).collect(),
             object_scene_index: world.object_scene_index.clone(),
         }
     }
@@ -280,7 +292,9 @@ impl HitCache {
         if now.camera != old.camera {
             return Reuse::Retrace(RetraceReason::Camera);
         }
-        if now != *old {
+        // The cache keys materials by object; a CSG object whose operands differ in
+        // material is shaded by operand, so such a world is always traced again.
+        if now != *old || world.objects.iter().any(mixes_materials) {
             return Reuse::Retrace(RetraceReason::Objects);
         }
         let kept_columns = world

@@ -68,7 +68,7 @@ impl Tracer<'_> {
             },
         );
         let world = self.world;
-        let material = &world.materials[world.objects[hit.object].material];
+        let material = &world.materials[world.material_at(&hit)];
         let at = ShadingPoint {
             hit: &hit,
             material,

@@ -42,8 +42,9 @@ impl Tracer<'_> {
     /// leaving a plane, cannot meet the surface it starts on.
     #[inline]
     fn shadow_except(&self, hit: &SurfacePoint, sample: &LightSample) -> Option<usize> {
-        let leaves_outward = self.world.objects[hit.object].shape == Primitive::Plane
-            || hit.n_outward.dot(sample.to_light) > 0.0;
+        let object = &self.world.objects[hit.object];
+        let leaves_outward = !object.can_meet_itself()
+            && (object.shape == Primitive::Plane || hit.n_outward.dot(sample.to_light) > 0.0);
         leaves_outward.then_some(hit.object)
     }
 

@@ -38,6 +38,23 @@ pub fn intersect(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
     })
 }
 
+/// The crossing of the whole line with z = 0, for CSG, where the plane is the half-space
+/// z <= 0 (outward normal +z); none for a line parallel to it (see `super::crossings`
+/// for which side such a line is on).
+pub(crate) fn crossings(ray: &Ray, out: &mut Vec<ShapeHit>) {
+    if ray.dir.z == 0.0 {
+        return;
+    }
+    let t = -ray.origin.z / ray.dir.z;
+    let p = ray.at(t);
+    out.push(ShapeHit {
+        t,
+        p: DVec3::new(p.x, p.y, 0.0),
+        n: DVec3::Z,
+        p_error: DVec3::new(gamma(3) * p.x.abs(), gamma(3) * p.y.abs(), 0.0),
+    });
+}
+
 /// Whether any hit has `t` in (0, t_max).
 pub fn occluded(ray: &Ray, t_max: f64) -> bool {
     hit_t(ray, t_max).is_some()

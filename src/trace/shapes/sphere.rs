@@ -39,6 +39,23 @@ pub fn intersect(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
     })
 }
 
+/// Every crossing of the whole line (any `t`), ascending, with outward normals: the
+/// entry and the exit, for CSG (see `super::crossings`).
+pub(crate) fn crossings(ray: &Ray, out: &mut Vec<ShapeHit>) {
+    if let Some(roots) = roots(ray) {
+        out.extend(roots.map(|t| {
+            let p = ray.at(t);
+            let p = p / p.length();
+            ShapeHit {
+                t,
+                p,
+                n: p,
+                p_error: gamma(5) * p.abs(),
+            }
+        }));
+    }
+}
+
 /// Whether any hit has `t` in (0, t_max).
 pub fn occluded(ray: &Ray, t_max: f64) -> bool {
     roots(ray).is_some_and(|[t0, t1]| in_range(ray, t0, t_max) || in_range(ray, t1, t_max))

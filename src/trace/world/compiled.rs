@@ -1,68 +1,18 @@
 //! The render-ready world: a [`Scene`] compiled once into what the tracer needs per ray
 //! (matrices and their inverses, world bounds, materials by index, lights in unit form).
 
-use glam::{DAffine3, DMat3, DVec3};
+use glam::DVec3;
 
 use super::bvh::Bvh;
+use super::flatten::flatten;
 use super::lights::WorldLight;
+use super::object::ObjectHit;
+pub use super::object::WorldObject;
 use super::object_set::ObjectSet;
-use crate::scene::{Light, Material, Object, Scene, SceneError, validate};
+use crate::scene::{Light, Material, Scene, SceneError, validate};
 use crate::trace::ray::Ray;
-use crate::trace::shapes;
-use crate::trace::shapes::{Aabb, BoundingSphere, Primitive, ShapeHit, gamma};
+use crate::trace::shapes::Aabb;
 use crate::trace::terms::Isolation;
-
-/// One object, placed and ready to intersect.
-#[derive(Clone, Debug)]
-pub struct WorldObject {
-    /// Its name in the scene, for the inspector and errors.
-    pub name: String,
-    /// Which unit shape.
-    pub shape: Primitive,
-    /// Object-to-world transform.
-    pub world_from_object: DAffine3,
-    /// World-to-object transform.
-    pub object_from_world: DAffine3,
-    /// Takes object-space normals to world space: the inverse transpose of the 3x3 part.
-    pub normal_from_object: DMat3,
-    /// World-space bounds, slightly padded.
-    pub bounds: Aabb,
-    /// Index into [`World::materials`].
-    pub material: usize,
-    /// For spheres: a bounding sphere, tighter than the box and tested without
-    /// transforming the ray.
-    bounding_sphere: Option<BoundingSphere>,
-    /// Component-wise absolute values of the two 3x3 parts, for the error bounds.
-    abs_world_from_object: DMat3,
-    abs_object_from_world: DMat3,
-}
-
-impl WorldObject {
-    /// The bounds test: whether the ray may meet the object before `t_max`.
-    #[inline]
-    fn may_be_hit(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> bool {
-        match &self.bounding_sphere {
-            Some(sphere) => sphere.hit_by(ray, t_max),
-            None => self.bounds.hit_by(ray, inv_dir, t_max),
-        }
-    }
-
-    /// The closest hit of a world ray with `t` in (0, t_max), in object space.
-    #[inline(always)]
-    pub(crate) fn hit(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> Option<ShapeHit> {
-        if !self.may_be_hit(ray, inv_dir, t_max) {
-            return None;
-        }
-        shapes::intersect(self.shape, &ray.transformed(&self.object_from_world), t_max)
-    }
-
-    /// Whether a world ray meets the object with `t` in (0, t_max).
-    #[inline(always)]
-    pub(crate) fn blocks(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> bool {
-        self.may_be_hit(ray, inv_dir, t_max)
-            && shapes::occluded(self.shape, &ray.transformed(&self.object_from_world), t_max)
-    }
-}
 
 /// A point on a surface where a ray hit, in world space.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -70,6 +20,9 @@ pub struct SurfacePoint {
     /// Index of the object hit in [`World::objects`] (the tracer hands recorders and
     /// callers the scene's index instead: [`World::scene_object`]).
     pub object: usize,
+    /// Which operand leaf of a CSG object the point is on ([`WorldObject::csg`]); 0 on
+    /// other objects.
+    pub part: u32,
     /// Ray parameter of the hit.
     pub t: f64,
     /// The hit point.
@@ -88,7 +41,8 @@ pub struct SurfacePoint {
 pub struct World {
     /// Objects in scene order, hidden ones left out.
     pub objects: Vec<WorldObject>,
-    /// Index in the scene's object list of each entry of `objects` (the object id).
+    /// Index in the scene's object list of each entry of `objects` (the object id): of
+    /// the top-level object a group's member belongs to.
     pub object_scene_index: Vec<usize>,
     /// Materials, indexed by [`WorldObject::material`].
     pub materials: Vec<Material>,
@@ -143,31 +97,7 @@ impl World {
         validate(scene)?;
         let material_names: Vec<String> = scene.materials.keys().cloned().collect();
         let materials = scene.materials.values().cloned().collect();
-        let objects = scene
-            .objects
-            .iter()
-            .map(|object| {
-                let shape = Primitive::of(&object.shape).ok_or_else(|| not_drawn(object))?;
-                let world_from_object = object.transform.world_from_object();
-                let object_from_world = world_from_object.inverse();
-                let material = material_names
-                    .binary_search(&object.material)
-                    .expect("validated: every material exists");
-                Ok(WorldObject {
-                    name: object.name.clone(),
-                    shape,
-                    world_from_object,
-                    object_from_world,
-                    normal_from_object: world_from_object.matrix3.inverse().transpose(),
-                    bounds: shapes::object_bounds(shape).transformed(&world_from_object),
-                    material,
-                    bounding_sphere: (shape == Primitive::Sphere)
-                        .then(|| BoundingSphere::around_unit_sphere(&world_from_object)),
-                    abs_world_from_object: abs_mat(&world_from_object.matrix3),
-                    abs_object_from_world: abs_mat(&object_from_world.matrix3),
-                })
-            })
-            .collect::<Result<_, SceneError>>()?;
+        let (objects, object_scene_index) = flatten(scene, &material_names)?;
         let mut lights = Vec::new();
         let mut light_scene_index = Vec::new();
         let mut ambient = DVec3::ZERO;
@@ -181,7 +111,7 @@ impl World {
             }
         }
         let mut world = Self {
-            object_scene_index: (0..scene.objects.len()).collect(),
+            object_scene_index,
             objects,
             materials,
             material_names,
@@ -250,12 +180,12 @@ impl World {
         t_max: f64,
         among: ObjectSet,
         count: usize,
-    ) -> Option<(usize, ShapeHit)> {
+    ) -> Option<(usize, ObjectHit)> {
         let mut closest = None;
         let mut t_limit = t_max;
         for index in among.members_below(count) {
             if let Some(hit) = self.objects[index].hit(ray, inv_dir, t_limit) {
-                t_limit = hit.t;
+                t_limit = hit.hit.t;
                 closest = Some((index, hit));
             }
         }
@@ -268,7 +198,7 @@ impl World {
     pub fn intersect_object(&self, index: usize, ray: &Ray, t_max: f64) -> Option<SurfacePoint> {
         let object = self.objects.get(index)?;
         let ray_in_object = ray.transformed(&object.object_from_world);
-        let hit = shapes::intersect(object.shape, &ray_in_object, t_max)?;
+        let hit = object.hit_unbounded(&ray_in_object, t_max)?;
         Some(self.surface_point(index, ray, &hit))
     }
 
@@ -331,9 +261,22 @@ impl World {
         None
     }
 
+    /// The index into [`World::materials`] of the surface at `hit`: its object's, or on
+    /// a CSG object its operand's.
+    #[must_use]
+    #[inline]
+    pub fn material_at(&self, hit: &SurfacePoint) -> usize {
+        let object = &self.objects[hit.object];
+        match &object.csg {
+            Some(tree) => tree.leaves[hit.part as usize].material,
+            None => object.material,
+        }
+    }
+
     /// World-space details of an object-space hit.
     #[inline(always)]
-    pub(crate) fn surface_point(&self, index: usize, ray: &Ray, hit: &ShapeHit) -> SurfacePoint {
+    pub(crate) fn surface_point(&self, index: usize, ray: &Ray, hit: &ObjectHit) -> SurfacePoint {
+        let (part, hit) = (hit.part, &hit.hit);
         let object = &self.objects[index];
         let m = &object.world_from_object;
         let p = m.transform_point3(hit.p);
@@ -345,39 +288,12 @@ impl World {
         };
         SurfacePoint {
             object: index,
+            part,
             t: hit.t,
             p,
             n_outward,
             n,
-            p_error: world_error(object, hit, p),
+            p_error: object.world_error(hit, p),
         }
     }
-}
-
-/// Bound on the world hit point's distance from the surface: the object-space error
-/// carried through the matrix, the rounding of the transform itself, and the rounding
-/// a spawned ray suffers on its way back to object space (mapped to world units).
-/// Inlined into every hit record: as a call it ran 1.1% more instructions a frame.
-#[inline(always)]
-fn world_error(object: &WorldObject, hit: &ShapeHit, p_world: DVec3) -> DVec3 {
-    let m = object.abs_world_from_object;
-    let inv = object.abs_object_from_world;
-    let carried = m * hit.p_error;
-    let forward = gamma(3) * (m * hit.p.abs() + object.world_from_object.translation.abs());
-    let back_in_object =
-        gamma(3) * (inv * p_world.abs() + object.object_from_world.translation.abs());
-    carried + forward + m * back_in_object
-}
-
-fn abs_mat(m: &DMat3) -> DMat3 {
-    DMat3::from_cols(m.x_axis.abs(), m.y_axis.abs(), m.z_axis.abs())
-}
-
-/// The error for an object the tracer cannot draw yet.
-fn not_drawn(object: &Object) -> SceneError {
-    SceneError::Invalid(format!(
-        "object \"{}\": the tracer cannot draw a {} yet",
-        object.name,
-        object.shape.name()
-    ))
 }
