@@ -343,14 +343,14 @@ impl<'w> Tracer<'w> {
         })
     }
 
-    /// The object a shadow ray from `hit` to the light of `sample` cannot meet: every
-    /// shape is convex or flat, so a shadow ray leaving a solid on its outer side, or
-    /// leaving a plane, cannot meet the surface it starts on.
+    /// The object a shadow ray from `hit` to the light of `sample` cannot meet: a shadow
+    /// ray leaving a convex solid on its outer side, or leaving a plane, cannot meet the
+    /// surface it starts on (a mesh's may: it is tested like any other).
     #[inline]
     fn shadow_except(&self, hit: &SurfacePoint, sample: &LightSample) -> Option<usize> {
-        let leaves_outward = self.world.objects[hit.object].shape
-            == crate::trace::shapes::Primitive::Plane
-            || hit.n_outward.dot(sample.to_light) > 0.0;
+        let shape = self.world.objects[hit.object].shape;
+        let leaves_outward = shape == crate::trace::shapes::Primitive::Plane
+            || (shape.is_convex() && hit.n_outward.dot(sample.to_light) > 0.0);
         leaves_outward.then_some(hit.object)
     }
 

@@ -1,18 +1,22 @@
 //! The render-ready world: a [`Scene`] compiled once into what the tracer needs per ray
 //! (matrices and their inverses, world bounds, materials by index, lights in unit form).
 
+use std::sync::Arc;
+
 use glam::{DAffine3, DMat3, DVec3};
 
 use super::bvh::Bvh;
 use super::lights::WorldLight;
 use super::object_set::ObjectSet;
-use crate::scene::{Light, Material, Object, Scene, SceneError, validate};
+use crate::scene::{Light, Material, Scene, SceneError, validate};
 use crate::trace::ray::Ray;
 use crate::trace::shapes;
 use crate::trace::shapes::Aabb;
 use crate::trace::shapes::BoundingSphere;
+use crate::trace::shapes::MeshStore;
 use crate::trace::shapes::Primitive;
 use crate::trace::shapes::ShapeHit;
+use crate::trace::shapes::TriangleMesh;
 use crate::trace::shapes::gamma;
 use crate::trace::terms::Isolation;
 
@@ -33,12 +37,14 @@ pub struct WorldObject {
     pub bounds: Aabb,
     /// Index into [`World::materials`].
     pub material: usize,
+    /// For a mesh (`shape` is [`Primitive::Mesh`]): its triangles, shared with the store.
+    pub mesh: Option<Arc<TriangleMesh>>,
     /// For spheres: a bounding sphere, tighter than the box and tested without
     /// transforming the ray.
-    bounding_sphere: Option<BoundingSphere>,
+    pub(super) bounding_sphere: Option<BoundingSphere>,
     /// Component-wise absolute values of the two 3x3 parts, for the error bounds.
-    abs_world_from_object: DMat3,
-    abs_object_from_world: DMat3,
+    pub(super) abs_world_from_object: DMat3,
+    pub(super) abs_object_from_world: DMat3,
 }
 
 impl WorldObject {
@@ -57,14 +63,29 @@ impl WorldObject {
         if !self.may_be_hit(ray, inv_dir, t_max) {
             return None;
         }
-        shapes::intersect(self.shape, &ray.transformed(&self.object_from_world), t_max)
+        self.hit_in_object(&ray.transformed(&self.object_from_world), t_max)
+    }
+
+    /// The closest hit of an object-space ray.
+    #[inline(always)]
+    fn hit_in_object(&self, ray: &Ray, t_max: f64) -> Option<ShapeHit> {
+        match &self.mesh {
+            Some(mesh) => mesh.intersect(ray, t_max),
+            None => shapes::intersect(self.shape, ray, t_max),
+        }
     }
 
     /// Whether a world ray meets the object with `t` in (0, t_max).
     #[inline(always)]
     pub(crate) fn blocks(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> bool {
-        self.may_be_hit(ray, inv_dir, t_max)
-            && shapes::occluded(self.shape, &ray.transformed(&self.object_from_world), t_max)
+        if !self.may_be_hit(ray, inv_dir, t_max) {
+            return false;
+        }
+        let ray = ray.transformed(&self.object_from_world);
+        match &self.mesh {
+            Some(mesh) => mesh.occluded(&ray, t_max),
+            None => shapes::occluded(self.shape, &ray, t_max),
+        }
     }
 }
 
@@ -139,11 +160,21 @@ pub const BVH_MIN_OBJECTS: usize = 16;
 
 impl World {
     /// Validates and compiles a scene, every light and object in it (see
-    /// [`World::isolated`] for fewer).
+    /// [`World::isolated`] for fewer). A scene with meshes needs [`World::with_meshes`].
     ///
     /// # Errors
     /// The scene's first validation problem.
     pub fn new(scene: &Scene) -> Result<Self, SceneError> {
+        Self::with_meshes(scene, &MeshStore::default())
+    }
+
+    /// As [`World::new`], taking each mesh object's triangles from `meshes` (keyed by the
+    /// path as the scene writes it; read with `scene::read_scene_meshes`).
+    ///
+    /// # Errors
+    /// The scene's first validation problem, or a mesh object whose file is not in
+    /// `meshes`.
+    pub fn with_meshes(scene: &Scene, meshes: &MeshStore) -> Result<Self, SceneError> {
         validate(scene)?;
         let material_names: Vec<String> = scene.materials.keys().cloned().collect();
         let materials = scene.materials.values().cloned().collect();
@@ -151,25 +182,10 @@ impl World {
             .objects
             .iter()
             .map(|object| {
-                let shape = Primitive::of(&object.shape).ok_or_else(|| not_drawn(object))?;
-                let world_from_object = object.transform.world_from_object();
-                let object_from_world = world_from_object.inverse();
                 let material = material_names
                     .binary_search(&object.material)
                     .expect("validated: every material exists");
-                Ok(WorldObject {
-                    name: object.name.clone(),
-                    shape,
-                    world_from_object,
-                    object_from_world,
-                    normal_from_object: world_from_object.matrix3.inverse().transpose(),
-                    bounds: shapes::object_bounds(shape).transformed(&world_from_object),
-                    material,
-                    bounding_sphere: (shape == Primitive::Sphere)
-                        .then(|| BoundingSphere::around_unit_sphere(&world_from_object)),
-                    abs_world_from_object: abs_mat(&world_from_object.matrix3),
-                    abs_object_from_world: abs_mat(&object_from_world.matrix3),
-                })
+                super::compile::compile_object(object, material, meshes)
             })
             .collect::<Result<_, SceneError>>()?;
         let mut lights = Vec::new();
@@ -272,8 +288,21 @@ impl World {
     pub fn intersect_object(&self, index: usize, ray: &Ray, t_max: f64) -> Option<SurfacePoint> {
         let object = self.objects.get(index)?;
         let ray_in_object = ray.transformed(&object.object_from_world);
-        let hit = shapes::intersect(object.shape, &ray_in_object, t_max)?;
+        let hit = object.hit_in_object(&ray_in_object, t_max)?;
         Some(self.surface_point(index, ray, &hit))
+    }
+
+    /// For a mesh object: which triangle the ray meets first and where on it.
+    #[must_use]
+    pub fn triangle_hit(
+        &self,
+        index: usize,
+        ray: &Ray,
+        t_max: f64,
+    ) -> Option<crate::trace::shapes::TriangleHit> {
+        let object = self.objects.get(index)?;
+        let ray_in_object = ray.transformed(&object.object_from_world);
+        object.mesh.as_ref()?.triangle_hit(&ray_in_object, t_max)
     }
 
     /// The first object found between the ray's origin and `t_max`, if any.
@@ -371,17 +400,4 @@ fn world_error(object: &WorldObject, hit: &ShapeHit, p_world: DVec3) -> DVec3 {
     let back_in_object =
         gamma(3) * (inv * p_world.abs() + object.object_from_world.translation.abs());
     carried + forward + m * back_in_object
-}
-
-fn abs_mat(m: &DMat3) -> DMat3 {
-    DMat3::from_cols(m.x_axis.abs(), m.y_axis.abs(), m.z_axis.abs())
-}
-
-/// The error for an object the tracer cannot draw yet.
-fn not_drawn(object: &Object) -> SceneError {
-    SceneError::Invalid(format!(
-        "object \"{}\": the tracer cannot draw a {} yet",
-        object.name,
-        object.shape.name()
-    ))
 }

@@ -3,6 +3,7 @@
 
 mod batch;
 mod bvh;
+mod compile;
 mod compiled;
 mod isolation;
 mod lights;
