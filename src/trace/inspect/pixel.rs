@@ -12,6 +12,7 @@ use crate::trace::shade::LightRecord;
 use crate::trace::shade::Recorder;
 use crate::trace::shade::SkippedLight;
 use crate::trace::shade::Tracer;
+use crate::trace::shapes::TriangleHit;
 use crate::trace::terms::Term;
 use crate::trace::terms::TermSwitches;
 use crate::trace::world::SurfacePoint;
@@ -26,6 +27,8 @@ pub struct BounceReport {
     pub ray: Ray,
     /// The surface hit, or `None` for a miss.
     pub hit: Option<SurfacePoint>,
+    /// On a mesh: which triangle of its file the ray met, and the barycentric weights.
+    pub triangle: Option<TriangleHit>,
     /// Colour returned by a miss (background, or black where the switches hide it).
     pub background: DVec3,
     /// The ambient term added.
@@ -49,6 +52,7 @@ impl BounceReport {
             depth,
             ray,
             hit: None,
+            triangle: None,
             background: DVec3::ZERO,
             ambient: DVec3::ZERO,
             lights: Vec::new(),
@@ -131,7 +135,15 @@ impl ReportRecorder<'_> {
 
 impl Recorder for ReportRecorder<'_> {
     fn hit(&mut self, depth: u32, ray: &Ray, hit: &SurfacePoint) {
-        self.at(depth, ray).hit = Some(*hit);
+        let triangle = self
+            .world
+            .object_scene_index
+            .iter()
+            .position(|&i| i == hit.object)
+            .and_then(|index| self.world.triangle_hit(index, ray, f64::INFINITY));
+        let bounce = self.at(depth, ray);
+        bounce.hit = Some(*hit);
+        bounce.triangle = triangle;
     }
     fn miss(&mut self, depth: u32, ray: &Ray, background: DVec3) {
         self.at(depth, ray).background = background;
