@@ -265,3 +265,40 @@ fn rays_spawned_from_a_mesh_do_not_hit_their_own_triangle() {
     }
     assert!(tested > 500);
 }
+
+#[test]
+fn a_material_edit_re_shades_a_mesh_scene_and_new_triangles_re_trace() {
+    use raylab::trace::{RenderOptions, RenderProgress, RetraceReason, Reuse};
+    let scene = parse_scene(SCENE).expect("parses");
+    let mut data = std::collections::BTreeMap::new();
+    data.insert("knot.obj".to_owned(), torus_knot(40, 8, 0.2, true));
+    let store = MeshStore::build(&data);
+    let world = World::with_meshes(&scene, &store).expect("compiles");
+    let options = RenderOptions::from_scene(&scene);
+    let first =
+        raylab::trace::render_one_sample_cached(&world, &options, None, &RenderProgress::default())
+            .expect("not cancelled");
+    let mut edited = scene.clone();
+    edited.materials.get_mut("m").expect("material").diffuse = DVec3::new(0.9, 0.1, 0.1);
+    let same_meshes = World::with_meshes(&edited, &store).expect("compiles");
+    let (w, h) = (options.width, options.height);
+    assert!(first.cache.reuse(&same_meshes, w, h).is_reshade());
+    let pass = raylab::trace::render_one_sample_cached(
+        &same_meshes,
+        &options,
+        Some(&first.cache),
+        &RenderProgress::default(),
+    )
+    .expect("not cancelled");
+    assert!(
+        pass.reused && pass.traced.total() == 0,
+        "traced {:?}",
+        pass.traced
+    );
+    // The same file read again is other triangles as far as the cache can tell.
+    let rebuilt = World::with_meshes(&edited, &MeshStore::build(&data)).expect("compiles");
+    assert_eq!(
+        first.cache.reuse(&rebuilt, w, h),
+        Reuse::Retrace(RetraceReason::Objects)
+    );
+}
