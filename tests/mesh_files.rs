@@ -158,3 +158,31 @@ fn a_scene_names_the_object_whose_file_is_bad_and_the_scene_is_untouched() {
         matches!(&only_good.objects[0].shape, Shape::Mesh { path } if meshes.contains_key(path))
     );
 }
+
+#[test]
+fn normals_indexed_apart_from_positions_get_a_vertex_per_pair() {
+    // Two triangles sharing an edge, the shared corners with different normals in each.
+    let path = write(
+        "normal-indices",
+        "n.obj",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\nvn 0 1 1\n\
+         f 1//1 2//1 3//1\nf 2//2 4//2 3//2\n",
+    );
+    let mesh = load_obj(&path).expect("loads");
+    assert_eq!(mesh.triangles.len(), 2);
+    assert_eq!(
+        mesh.positions.len(),
+        6,
+        "corners 2 and 3 split by their normals"
+    );
+    assert_eq!(mesh.normals.len(), mesh.positions.len());
+    for (triangle, normal) in mesh
+        .triangles
+        .iter()
+        .zip([[0.0, 0.0, 1.0], [0.0, 1.0, 1.0]])
+    {
+        for &corner in triangle {
+            assert_eq!(mesh.normals[corner as usize], normal);
+        }
+    }
+}

@@ -3,7 +3,8 @@
 //! nothing here ever writes an OBJ. Hostile input is refused with the file's name (and
 //! the line, where one can be found); what can be skipped is skipped with a warning.
 
-use std::collections::BTreeMap;
+use std::borrow::Cow;
+use std::collections::{BTreeMap, HashMap};
 use std::io::{BufRead, BufReader, Read};
 use std::path::{Path, PathBuf};
 
@@ -61,7 +62,9 @@ pub fn load_obj(path: &Path) -> Result<MeshData, SceneError> {
     };
     let options = tobj::LoadOptions {
         triangulate: true,
-        single_index: true,
+        // Positions and normals keep their own indices (see `unify`): a file without
+        // normals, or with normals indexed as its positions, is used without copying.
+        single_index: false,
         ..tobj::LoadOptions::default()
     };
     let asked_for_materials = std::cell::Cell::new(false);
@@ -79,12 +82,10 @@ pub fn load_obj(path: &Path) -> Result<MeshData, SceneError> {
             path.display()
         ));
     }
-    let with_normals = !models.is_empty()
-        && models
-            .iter()
-            .all(|m| !m.mesh.normals.is_empty() && m.mesh.normals.len() == m.mesh.positions.len());
-    for model in &models {
-        append_model(path, &model.mesh, with_normals, &mut mesh)?;
+    let unified: Vec<Unified<'_>> = models.iter().map(|m| unify(&m.mesh)).collect();
+    let with_normals = !unified.is_empty() && unified.iter().all(|m| !m.normals.is_empty());
+    for model in &unified {
+        append_model(path, model, with_normals, &mut mesh)?;
     }
     if mesh.triangles.is_empty() {
         return Err(invalid(path, None, "the file has no triangles with area"));
@@ -92,10 +93,57 @@ pub fn load_obj(path: &Path) -> Result<MeshData, SceneError> {
     Ok(mesh)
 }
 
-/// Appends one tobj model's vertices and triangles, checking coordinates and indices.
+/// A model's triangles over one index: per-vertex normals (or none) beside positions.
+struct Unified<'m> {
+    positions: Cow<'m, [f32]>,
+    normals: Cow<'m, [f32]>,
+    indices: Cow<'m, [u32]>,
+}
+
+/// A tobj model with one index for position and normal: borrowed where the file already
+/// indexes them alike (or has no normals), else with a vertex for each pair used.
+fn unify(model: &tobj::Mesh) -> Unified<'_> {
+    let aligned = model.normal_indices.is_empty() || model.normal_indices == model.indices;
+    if model.normals.is_empty() || (aligned && model.normals.len() == model.positions.len()) {
+        return Unified {
+            positions: Cow::Borrowed(&model.positions),
+            normals: Cow::Borrowed(if aligned { &model.normals } else { &[] }),
+            indices: Cow::Borrowed(&model.indices),
+        };
+    }
+    if model.normal_indices.len() != model.indices.len() {
+        // Some corners without a normal: the mesh is shaded flat.
+        return Unified {
+            positions: Cow::Borrowed(&model.positions),
+            normals: Cow::Borrowed(&[]),
+            indices: Cow::Borrowed(&model.indices),
+        };
+    }
+    let mut seen = HashMap::new();
+    let (mut positions, mut normals, mut indices) = (Vec::new(), Vec::new(), Vec::new());
+    for (&p, &n) in model.indices.iter().zip(&model.normal_indices) {
+        let next = u32::try_from(seen.len()).unwrap_or(u32::MAX);
+        let index = *seen.entry((p, n)).or_insert_with(|| {
+            let (p, n) = (p as usize * 3, n as usize * 3);
+            // Out-of-range indices were refused by tobj; guard anyway with NaN, which
+            // the coordinate check then reports.
+            positions.extend(model.positions.get(p..p + 3).unwrap_or(&[f32::NAN; 3]));
+            normals.extend(model.normals.get(n..n + 3).unwrap_or(&[0.0; 3]));
+            next
+        });
+        indices.push(index);
+    }
+    Unified {
+        positions: Cow::Owned(positions),
+        normals: Cow::Owned(normals),
+        indices: Cow::Owned(indices),
+    }
+}
+
+/// Appends one model's vertices and triangles, checking coordinates and indices.
 fn append_model(
     path: &Path,
-    model: &tobj::Mesh,
+    model: &Unified<'_>,
     with_normals: bool,
     mesh: &mut MeshData,
 ) -> Result<(), SceneError> {

@@ -207,27 +207,39 @@ fn split_node(prims: &[Prim], ids: &mut [u32], first: usize) -> (Node, Option<us
 }
 
 /// The axis and bin boundary with the lowest surface-area cost, if splitting there
-/// beats a leaf (or the node is too big to be one).
+/// beats a leaf (or the node is too big to be one). One pass bins all three axes.
 fn best_split(
     prims: &[Prim],
     ids: &[u32],
     bounds: &Box3,
     centres: &Box3,
 ) -> Option<(usize, usize)> {
+    let lo = centres.min;
+    let extent = centres.max - centres.min;
+    let scale = Vec3::select(
+        extent.cmpgt(Vec3::ZERO),
+        Vec3::splat(BINS as f32) / extent,
+        Vec3::ZERO,
+    );
+    let mut boxes = [[Box3::EMPTY; BINS]; 3];
+    let mut counts = [[0_u32; BINS]; 3];
+    for &id in ids {
+        let prim = &prims[id as usize];
+        let bins = ((prim.centre - lo) * scale)
+            .as_uvec3()
+            .min(glam::UVec3::splat(BINS as u32 - 1));
+        for axis in 0..3 {
+            let bin = bins[axis] as usize;
+            boxes[axis][bin].grow(&prim.bounds);
+            counts[axis][bin] += 1;
+        }
+    }
     let mut best: Option<(f32, usize, usize)> = None;
     for axis in 0..3 {
-        if centres.max[axis] <= centres.min[axis] {
+        if extent[axis] <= 0.0 {
             continue;
         }
-        let bin_of = binner(centres, axis);
-        let mut boxes = [Box3::EMPTY; BINS];
-        let mut counts = [0_u32; BINS];
-        for &id in ids {
-            let prim = &prims[id as usize];
-            let bin = bin_of(prim.centre);
-            boxes[bin].grow(&prim.bounds);
-            counts[bin] += 1;
-        }
+        let (boxes, counts) = (&boxes[axis], &counts[axis]);
         // Sweep from the right to get the cost of every right side, then from the left.
         let mut right_area = [0.0_f32; BINS];
         let mut right_count = [0_u32; BINS];
@@ -258,9 +270,10 @@ fn best_split(
 
 /// The bin of a centre along `axis`.
 fn binner(centres: &Box3, axis: usize) -> impl Fn(Vec3) -> usize {
+    // The same arithmetic as `best_split`'s, so a centre lands in the same bin.
     let lo = centres.min[axis];
     let scale = BINS as f32 / (centres.max[axis] - lo);
-    move |c: Vec3| (((c[axis] - lo) * scale) as usize).min(BINS - 1)
+    move |c: Vec3| (((c[axis] - lo) * scale) as u32).min(BINS as u32 - 1) as usize
 }
 
 /// Moves the ids for which `left` holds to the front; returns how many there are.
