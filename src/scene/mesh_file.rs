@@ -233,7 +233,7 @@ fn find_bad_vertex_line(path: &Path) -> Option<usize> {
 }
 
 /// Every mesh file a scene refers to (through trees too), read from the scene's folder,
-/// keyed by the path as written in the scene. Each file is read once.
+/// keyed by the path as written in the scene. Each file is read once, in scene order.
 ///
 /// # Errors
 /// The first file that cannot be read, named with the object that refers to it.
@@ -242,7 +242,9 @@ pub fn read_scene_meshes(
     folder: &Path,
 ) -> Result<BTreeMap<String, MeshData>, SceneError> {
     let mut meshes = BTreeMap::new();
-    let mut work: Vec<&Object> = scene.objects.iter().collect();
+    // Reversed on the stack, so files are read (and the first bad one found) in the
+    // scene's order.
+    let mut work: Vec<&Object> = scene.objects.iter().rev().collect();
     while let Some(object) = work.pop() {
         match &object.shape {
             Shape::Mesh { path } if !meshes.contains_key(path) => {
@@ -251,8 +253,8 @@ pub fn read_scene_meshes(
                 })?;
                 meshes.insert(path.clone(), data);
             }
-            Shape::Csg { operands, .. } => work.extend(operands),
-            Shape::Group { children } => work.extend(children),
+            Shape::Csg { operands, .. } => work.extend(operands.iter().rev()),
+            Shape::Group { children } => work.extend(children.iter().rev()),
             _ => {}
         }
     }
