@@ -302,3 +302,44 @@ fn a_material_edit_re_shades_a_mesh_scene_and_new_triangles_re_trace() {
         Reuse::Retrace(RetraceReason::Objects)
     );
 }
+
+#[test]
+fn a_mesh_shadows_itself() {
+    use raylab::trace::{RenderOptions, inspect_pixel};
+    // One mesh: a floor square at z = 0 and a small square floating at z = 1. The light
+    // (4, 0, 4) throws the small square's shadow on the floor over x in [-2, -0.67]. A
+    // shadow ray leaves the floor on its outer side and still meets the same mesh.
+    let square = |half: f32, z: f32| {
+        [
+            [-half, -half, z],
+            [half, -half, z],
+            [half, half, z],
+            [-half, half, z],
+        ]
+    };
+    let mut data = MeshData::default();
+    data.positions.extend(square(2.0, 0.0));
+    data.positions.extend(square(0.5, 1.0));
+    data.triangles = vec![[0, 1, 2], [0, 2, 3], [4, 5, 6], [4, 6, 7]];
+    let text = r#"Scene(
+        camera: (position: (0.0, 0.0, 5.0), look_at: (0.0, 0.0, 0.0), fov_deg: 60.0, width: 64, height: 64),
+        materials: { "m": (ambient: (0.1, 0.1, 0.1), diffuse: (0.8, 0.8, 0.8)) },
+        objects: [ (name: "two squares", shape: Mesh(path: "squares.obj"), material: "m") ],
+        lights: [ Point(position: (4.0, 0.0, 4.0), colour: (1.0, 1.0, 1.0), intensity: 30.0) ],
+    )"#;
+    let scene = parse_scene(text).expect("parses");
+    let mut files = std::collections::BTreeMap::new();
+    files.insert("squares.obj".to_owned(), data);
+    let world = World::with_meshes(&scene, &MeshStore::build(&files)).expect("compiles");
+    let options = RenderOptions::from_scene(&scene);
+    // Pixel column 18 looks at x ~ -1.2 on the floor (in the shadow), column 50 at
+    // x ~ +1.1 (lit).
+    let outcome = |px: u32| {
+        let report = inspect_pixel(&world, &options, px, 32);
+        let hit = report.bounces[0].hit.expect("the floor");
+        assert!(hit.p.z.abs() < 1e-9, "hit the floor, not {}", hit.p);
+        report.bounces[0].light_outcomes()[0].1
+    };
+    assert_eq!(outcome(18), raylab::trace::LightOutcome::Shadowed(0));
+    assert_eq!(outcome(50), raylab::trace::LightOutcome::Lit);
+}
