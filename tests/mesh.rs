@@ -343,3 +343,41 @@ fn a_mesh_shadows_itself() {
     assert_eq!(outcome(18), raylab::trace::LightOutcome::Shadowed(0));
     assert_eq!(outcome(50), raylab::trace::LightOutcome::Lit);
 }
+
+#[test]
+fn a_closed_mesh_is_a_solid_with_alternating_crossings_and_an_open_one_is_not() {
+    let knot = TriangleMesh::new(&torus_knot(60, 8, 0.2, false));
+    assert!(knot.is_closed());
+    assert!(
+        !TriangleMesh::new(&grid(4)).is_closed(),
+        "a sheet has a border"
+    );
+    // The pyramid's two groups repeat the base corners: matched by position, closed.
+    let pyramid = raylab::scene::load_obj(
+        &std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenes/pyramid.obj"),
+    )
+    .expect("loads");
+    assert!(TriangleMesh::new(&pyramid).is_closed());
+    // A ray straight down through the apex (a vertex of four triangles) and out through
+    // the base's diagonal (an edge of two): one way in, one way out.
+    let mesh = TriangleMesh::new(&pyramid);
+    let mut out = Vec::new();
+    mesh.crossings(&Ray::new(DVec3::new(0.0, 3.0, 0.0), DVec3::NEG_Y), &mut out);
+    let ts: Vec<f64> = out.iter().map(|h| h.t).collect();
+    assert_eq!(ts.len(), 2, "{ts:?}");
+    assert!(
+        (ts[0] - 1.6).abs() < 1e-6 && (ts[1] - 3.0).abs() < 1e-12,
+        "{ts:?}"
+    );
+    assert!(out[0].n.dot(DVec3::NEG_Y) < 0.0 && out[1].n.dot(DVec3::NEG_Y) > 0.0);
+    // Random rays through the knot cross it an even number of times from outside.
+    let mut state = 11_u64;
+    for _ in 0..300 {
+        let origin = random_unit(&mut state) * 4.0;
+        let ray = Ray::new(origin, random_unit(&mut state) * 1.2 - origin);
+        knot.crossings(&ray, &mut out);
+        assert_eq!(out.len() % 2, 0, "{ray:?}");
+        let first = knot.intersect(&ray, f64::INFINITY).map(|h| h.t);
+        assert_eq!(out.first().map(|h| h.t), first);
+    }
+}

@@ -20,11 +20,11 @@ static NEXT_MESH_ID: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64
 /// A mesh with its hierarchy, in object space.
 #[derive(Clone, PartialEq)]
 pub struct TriangleMesh {
-    positions: Vec<[f32; 3]>,
+    pub(super) positions: Vec<[f32; 3]>,
     /// Per-vertex normals, or empty.
     normals: Vec<[f32; 3]>,
     /// Triangles in hierarchy order.
-    triangles: Vec<[u32; 3]>,
+    pub(super) triangles: Vec<[u32; 3]>,
     /// The file's number (0-based, after fanning) of each triangle of `triangles`.
     file_index: Vec<u32>,
     nodes: Vec<Node>,
@@ -32,6 +32,8 @@ pub struct TriangleMesh {
     /// Unique among the meshes built in this process (never reused), so caches can tell
     /// whether two worlds hold the same triangles without comparing them.
     id: u64,
+    /// Whether the surface is closed, worked out on first need (see `mesh_solid`).
+    pub(super) closed: std::sync::OnceLock<bool>,
 }
 
 impl std::fmt::Debug for TriangleMesh {
@@ -71,6 +73,7 @@ impl TriangleMesh {
             nodes,
             bounds: Aabb::new(min, max),
             id: NEXT_MESH_ID.fetch_add(1, std::sync::atomic::Ordering::Relaxed),
+            closed: std::sync::OnceLock::new(),
         }
     }
 
@@ -110,7 +113,7 @@ impl TriangleMesh {
     }
 
     #[inline(always)]
-    fn corners(&self, triangle: usize) -> [DVec3; 3] {
+    pub(super) fn corners(&self, triangle: usize) -> [DVec3; 3] {
         self.triangles[triangle].map(|i| Vec3::from_array(self.positions[i as usize]).as_dvec3())
     }
 
@@ -142,7 +145,7 @@ impl TriangleMesh {
     /// Visits the leaves whose boxes the ray meets before the current limit, nearer
     /// child first. `visit` may lower the limit; it returns true to stop the walk.
     #[inline(always)]
-    fn walk(
+    pub(super) fn walk(
         &self,
         ray: &Ray,
         mut visit: impl FnMut(std::ops::Range<usize>, &mut f64) -> bool,

@@ -13,6 +13,7 @@ mod cube;
 mod cylinder;
 mod mesh;
 mod mesh_bvh;
+mod mesh_solid;
 mod plane;
 pub(crate) mod quadratic;
 mod sphere;
