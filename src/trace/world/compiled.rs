@@ -10,14 +10,9 @@ use super::lights::WorldLight;
 use super::object_set::ObjectSet;
 use crate::scene::{Light, Material, Scene, SceneError, validate};
 use crate::trace::ray::Ray;
-use crate::trace::shapes;
-use crate::trace::shapes::Aabb;
-use crate::trace::shapes::BoundingSphere;
-use crate::trace::shapes::MeshStore;
-use crate::trace::shapes::Primitive;
-use crate::trace::shapes::ShapeHit;
-use crate::trace::shapes::TriangleMesh;
-use crate::trace::shapes::gamma;
+use crate::trace::shapes::{
+    self, Aabb, BoundingSphere, MeshStore, Primitive, ShapeHit, TriangleHit, TriangleMesh, gamma,
+};
 use crate::trace::terms::Isolation;
 
 /// One object, placed and ready to intersect.
@@ -294,12 +289,7 @@ impl World {
 
     /// For a mesh object: which triangle the ray meets first and where on it.
     #[must_use]
-    pub fn triangle_hit(
-        &self,
-        index: usize,
-        ray: &Ray,
-        t_max: f64,
-    ) -> Option<crate::trace::shapes::TriangleHit> {
+    pub fn triangle_hit(&self, index: usize, ray: &Ray, t_max: f64) -> Option<TriangleHit> {
         let object = self.objects.get(index)?;
         let ray_in_object = ray.transformed(&object.object_from_world);
         object.mesh.as_ref()?.triangle_hit(&ray_in_object, t_max)
