@@ -232,8 +232,26 @@ fn find_bad_vertex_line(path: &Path) -> Option<usize> {
     })
 }
 
-/// Every mesh file a scene refers to (through trees too), read from the scene's folder,
-/// keyed by the path as written in the scene. Each file is read once, in scene order.
+/// Every mesh object of a scene (through trees too) with its path as written, in scene
+/// order. No file is touched.
+#[must_use]
+pub fn mesh_objects(scene: &Scene) -> Vec<(&Object, &str)> {
+    let mut found = Vec::new();
+    // Reversed on the stack, so objects come out in the scene's order.
+    let mut work: Vec<&Object> = scene.objects.iter().rev().collect();
+    while let Some(object) = work.pop() {
+        match &object.shape {
+            Shape::Mesh { path } => found.push((object, path.as_str())),
+            Shape::Csg { operands, .. } => work.extend(operands.iter().rev()),
+            Shape::Group { children } => work.extend(children.iter().rev()),
+            _ => {}
+        }
+    }
+    found
+}
+
+/// Every mesh file a scene refers to, read from the scene's folder, keyed by the path as
+/// written in the scene. Each file is read once, in scene order.
 ///
 /// # Errors
 /// The first file that cannot be read, named with the object that refers to it.
@@ -242,21 +260,13 @@ pub fn read_scene_meshes(
     folder: &Path,
 ) -> Result<BTreeMap<String, MeshData>, SceneError> {
     let mut meshes = BTreeMap::new();
-    // Reversed on the stack, so files are read (and the first bad one found) in the
-    // scene's order.
-    let mut work: Vec<&Object> = scene.objects.iter().rev().collect();
-    while let Some(object) = work.pop() {
-        match &object.shape {
-            Shape::Mesh { path } if !meshes.contains_key(path) => {
-                let data = load_obj(&mesh_path(folder, path)).map_err(|error| {
-                    SceneError::Invalid(format!("object \"{}\": {error}", object.name))
-                })?;
-                meshes.insert(path.clone(), data);
-            }
-            Shape::Csg { operands, .. } => work.extend(operands.iter().rev()),
-            Shape::Group { children } => work.extend(children.iter().rev()),
-            _ => {}
+    for (object, path) in mesh_objects(scene) {
+        if meshes.contains_key(path) {
+            continue;
         }
+        let data = load_obj(&mesh_path(folder, path))
+            .map_err(|error| SceneError::Invalid(format!("object \"{}\": {error}", object.name)))?;
+        meshes.insert(path.to_owned(), data);
     }
     Ok(meshes)
 }
