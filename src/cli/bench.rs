@@ -54,7 +54,8 @@ pub fn run(args: &BenchArgs) -> Result<(), String> {
     Ok(())
 }
 
-/// The scenes to measure, by file name: the embedded examples, or a folder's RON files.
+/// The scenes to measure, by file name: the embedded examples, or a folder's RON files
+/// (those without meshes).
 fn example_scenes(folder: Option<&Path>) -> Result<Vec<(String, Scene)>, String> {
     let Some(folder) = folder else {
         return EXAMPLE_SCENES
@@ -79,6 +80,12 @@ fn example_scenes(folder: Option<&Path>) -> Result<Vec<(String, Scene)>, String>
             load_scene(path)
                 .map(|scene| (name.into_owned(), scene))
                 .map_err(|e| format!("{}: {e}", path.display()))
+        })
+        // Scenes with meshes are measured by the mesh section, not per scene.
+        .filter(|loaded| {
+            !loaded
+                .as_ref()
+                .is_ok_and(|(_, scene)| !crate::scene::mesh_objects(scene).is_empty())
         })
         .collect()
 }
