@@ -117,7 +117,8 @@ struct RayGeometry {
     width: u32,
     height: u32,
     camera: Camera,
-    objects: Vec<(Primitive, DAffine3)>,
+    /// Each object's shape, placement and (for a mesh) which triangles.
+    objects: Vec<(Primitive, DAffine3, Option<u64>)>,
     /// The CSG trees, compared by value: a node's operands are its shape.
     trees: Vec<Option<Arc<CsgTree>>>,
     object_scene_index: Vec<usize>,
@@ -132,7 +133,13 @@ impl RayGeometry {
             objects: world
                 .objects
                 .iter()
-                .map(|o| (o.shape, o.world_from_object))
+                .map(|o| {
+                    (
+                        o.shape,
+                        o.world_from_object,
+                        o.mesh.as_ref().map(|m| m.id()),
+                    )
+                })
                 .collect(),
             trees: world.objects.iter().map(|o| o.csg.clone()).collect(),
             object_scene_index: world.object_scene_index.clone(),

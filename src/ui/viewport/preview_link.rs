@@ -85,6 +85,7 @@ impl PreviewLink {
             generation: self.generation,
             scene: std::sync::Arc::new(scene.clone()),
             options,
+            meshes: std::sync::Arc::default(),
         });
     }
 
