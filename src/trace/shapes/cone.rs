@@ -4,8 +4,9 @@
 use glam::{DVec2, DVec3};
 
 use super::bounds::Aabb;
+use super::caps::{cap_point, disc_cap};
+use super::hit::{ShapeHit, gamma, in_range, nearer};
 use super::quadratic::{difference_of_products, solve_quadratic, sorted};
-use super::{ShapeHit, cap_point, disc_cap, gamma, in_range, nearer};
 use crate::trace::ray::Ray;
 
 /// Object-space bounds.
@@ -103,7 +104,7 @@ pub(crate) fn crossings(ray: &Ray, out: &mut Vec<ShapeHit>) {
         }
     }
     candidates[2] = cap_point(ray, 1.0, 1.0);
-    super::first_and_last(candidates.into_iter().flatten(), out);
+    super::hit::first_and_last(candidates.into_iter().flatten(), out);
 }
 
 /// The closest hit with `t` in (0, t_max): side or cap. At the cap rim both agree.

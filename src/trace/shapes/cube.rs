@@ -3,7 +3,7 @@
 use glam::DVec3;
 
 use super::bounds::Aabb;
-use super::{ShapeHit, gamma, in_range};
+use super::hit::{ShapeHit, gamma, in_range};
 use crate::trace::ray::Ray;
 
 /// Object-space bounds.

@@ -3,8 +3,9 @@
 use glam::{DVec2, DVec3};
 
 use super::bounds::Aabb;
+use super::caps::{cap_point, disc_cap};
+use super::hit::{ShapeHit, gamma, in_range, nearer};
 use super::quadratic::unit_ball_roots;
-use super::{ShapeHit, cap_point, disc_cap, gamma, in_range, nearer};
 use crate::trace::ray::Ray;
 
 /// Object-space bounds.
@@ -57,7 +58,7 @@ pub(crate) fn crossings(ray: &Ray, out: &mut Vec<ShapeHit>) {
     }
     candidates[2] = cap_point(ray, 1.0, 1.0);
     candidates[3] = cap_point(ray, -1.0, -1.0);
-    super::first_and_last(candidates.into_iter().flatten(), out);
+    super::hit::first_and_last(candidates.into_iter().flatten(), out);
 }
 
 /// The closest hit with `t` in (0, t_max): side or either cap. At a cap rim both agree.

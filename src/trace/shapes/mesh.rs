@@ -8,9 +8,10 @@ use std::sync::Arc;
 
 use glam::{DVec3, Vec3};
 
+use super::bounds::Aabb;
+use super::hit::{ShapeHit, in_range};
 use super::mesh_bvh::{self, Node};
 use super::triangle::{self, RayShear};
-use super::{Aabb, ShapeHit, in_range};
 use crate::scene::MeshData;
 use crate::trace::ray::Ray;
 
@@ -270,7 +271,7 @@ fn box_entry(node: &Node, ray: &Ray, inv_dir: DVec3, t_max: f64) -> Option<f64> 
     let t0 = (min - ray.origin) * inv_dir;
     let t1 = (max - ray.origin) * inv_dir;
     let near = t0.min(t1).max_element().max(0.0);
-    let far = t0.max(t1).min_element() * (1.0 + 2.0 * super::gamma(3));
+    let far = t0.max(t1).min_element() * (1.0 + 2.0 * super::hit::gamma(3));
     (near <= far.min(t_max) || near.is_nan() || far.is_nan()).then_some(near)
 }
 

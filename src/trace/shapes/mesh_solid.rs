@@ -4,9 +4,9 @@
 
 use std::collections::HashMap;
 
+use super::hit::{ShapeHit, in_range};
 use super::mesh::TriangleMesh;
 use super::triangle::{self, RayShear};
-use super::{ShapeHit, in_range};
 use crate::trace::ray::Ray;
 
 impl TriangleMesh {

@@ -8,9 +8,11 @@
 //! per-component bound on its remaining distance from the surface (see docs/NUMERICS.md).
 
 mod bounds;
+mod caps;
 mod cone;
 mod cube;
 mod cylinder;
+mod hit;
 mod mesh;
 mod mesh_bvh;
 mod mesh_solid;
@@ -22,6 +24,8 @@ mod triangle;
 use glam::DVec3;
 
 pub use self::bounds::{Aabb, BoundingSphere};
+pub(crate) use self::hit::in_range;
+pub use self::hit::{ShapeHit, gamma};
 pub use self::mesh::{MeshStore, TriangleHit, TriangleMesh};
 use crate::scene::Shape;
 use crate::trace::ray::Ray;
@@ -81,39 +85,6 @@ impl Primitive {
     pub fn is_convex(self) -> bool {
         self != Primitive::Mesh
     }
-}
-
-/// A hit on a unit shape, all in object space.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ShapeHit {
-    /// Ray parameter of the hit.
-    pub t: f64,
-    /// The hit point, on the surface up to `p_error`.
-    pub p: DVec3,
-    /// Outward surface normal, not necessarily unit length.
-    pub n: DVec3,
-    /// Absolute bound on each component's distance of `p` from the exact surface.
-    pub p_error: DVec3,
-}
-
-/// `gamma(n) = n u / (1 - n u)` with `u` the unit roundoff: bounds the relative error of
-/// `n` chained floating-point operations.
-#[must_use]
-pub fn gamma(n: u32) -> f64 {
-    let nu = f64::from(n) * (f64::EPSILON * 0.5);
-    nu / (1.0 - nu)
-}
-
-/// Whether `t` lies in (0, t_max) and the hit is farther from the origin than the
-/// rounding error of the origin itself: a ray that starts on a surface does not hit that
-/// surface at t ~ 0. (Spawned rays start well outside this distance; see `spawn`.)
-#[inline]
-pub(crate) fn in_range(ray: &Ray, t: f64, t_max: f64) -> bool {
-    if !(t > 0.0 && t < t_max) {
-        return false;
-    }
-    let origin_rounding = gamma(8) * ray.origin.abs().max_element().max(1.0);
-    t * t * ray.dir.length_squared() > origin_rounding * origin_rounding
 }
 
 /// The object-space bounding box of a unit shape (empty for a mesh: see
@@ -229,69 +200,6 @@ pub(crate) fn starts_inside(shape: Primitive, ray: &Ray) -> bool {
         Primitive::Plane => ray.dir.z > 0.0,
         _ => false,
     }
-}
-
-/// Appends the first and the last of a convex solid's surface points along a line: its
-/// entry and exit.
-fn first_and_last(candidates: impl Iterator<Item = ShapeHit>, out: &mut Vec<ShapeHit>) {
-    let mut span: Option<(ShapeHit, ShapeHit)> = None;
-    for hit in candidates {
-        span = Some(match span {
-            None => (hit, hit),
-            Some((first, last)) => (
-                if hit.t < first.t { hit } else { first },
-                if hit.t > last.t { hit } else { last },
-            ),
-        });
-    }
-    if let Some((first, last)) = span {
-        out.extend([first, last]);
-    }
-}
-
-/// Picks the nearer of two optional hits.
-#[inline]
-fn nearer(a: Option<ShapeHit>, b: Option<ShapeHit>) -> Option<ShapeHit> {
-    match (a, b) {
-        (Some(a), Some(b)) => Some(if b.t < a.t { b } else { a }),
-        (a, None) => a,
-        (None, b) => b,
-    }
-}
-
-/// The hit on a flat disc cap `z = z_cap`, radius 1, with outward normal `(0, 0, z_cap)`
-/// scaled to unit length; shared by the cylinder and the cone.
-#[inline]
-fn disc_cap(ray: &Ray, t_max: f64, z_cap: f64, normal_z: f64) -> Option<ShapeHit> {
-    if ray.dir.z == 0.0 {
-        return None;
-    }
-    let t = (z_cap - ray.origin.z) / ray.dir.z;
-    if !in_range(ray, t, t_max) {
-        return None;
-    }
-    cap_point(ray, z_cap, normal_z)
-}
-
-/// The line's point on the disc cap `z = z_cap` at any `t`, if it lies on the disc.
-#[inline]
-fn cap_point(ray: &Ray, z_cap: f64, normal_z: f64) -> Option<ShapeHit> {
-    if ray.dir.z == 0.0 {
-        return None;
-    }
-    let t = (z_cap - ray.origin.z) / ray.dir.z;
-    let p = ray.at(t);
-    if p.x * p.x + p.y * p.y > 1.0 {
-        return None;
-    }
-    // On the plane exactly; x and y carry the error of one fma each.
-    let p = DVec3::new(p.x, p.y, z_cap);
-    Some(ShapeHit {
-        t,
-        p,
-        n: DVec3::new(0.0, 0.0, normal_z),
-        p_error: DVec3::new(gamma(3) * p.x.abs(), gamma(3) * p.y.abs(), 0.0),
-    })
 }
 
 #[cfg(test)]

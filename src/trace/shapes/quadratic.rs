@@ -73,7 +73,7 @@ pub fn unit_ball_roots<V: RadialVector>(o: V, d: V) -> Option<[f64; 2]> {
     }
     let h = o.dot(d);
     let c = o.length_squared() - 1.0;
-    if c.abs() <= super::gamma(3) * (c + 1.0) {
+    if c.abs() <= super::hit::gamma(3) * (c + 1.0) {
         return Some(sorted(0.0, -2.0 * h / a));
     }
     let closest = o - d * (h / a);

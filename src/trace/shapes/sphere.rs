@@ -3,8 +3,8 @@
 use glam::DVec3;
 
 use super::bounds::Aabb;
+use super::hit::{ShapeHit, gamma, in_range};
 use super::quadratic::unit_ball_roots;
-use super::{ShapeHit, gamma, in_range};
 use crate::trace::ray::Ray;
 
 /// Object-space bounds.

@@ -10,7 +10,7 @@
 
 use glam::DVec3;
 
-use super::gamma;
+use super::hit::gamma;
 use crate::trace::ray::Ray;
 
 /// Per-ray constants of the test: the axis permutation and the shear.
