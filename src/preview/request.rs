@@ -30,12 +30,7 @@ impl PreviewRequest {
     #[must_use]
     pub fn for_scene(generation: u64, scene: Scene) -> Self {
         let options = RenderOptions::from_scene(&scene);
-        Self {
-            generation,
-            scene: Arc::new(scene),
-            options,
-            meshes: Arc::default(),
-        }
+        Self::with_options(generation, scene, options)
     }
 
     /// As [`Self::for_scene`], with the size scaled down (aspect kept) so that the long
@@ -43,6 +38,11 @@ impl PreviewRequest {
     #[must_use]
     pub fn for_scene_capped(generation: u64, scene: Scene, max_long_side: u32) -> Self {
         let options = Self::capped_options(&scene, max_long_side);
+        Self::with_options(generation, scene, options)
+    }
+
+    /// A request for `scene` with `options` and no meshes loaded.
+    fn with_options(generation: u64, scene: Scene, options: RenderOptions) -> Self {
         Self {
             generation,
             scene: Arc::new(scene),

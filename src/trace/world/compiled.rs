@@ -250,8 +250,15 @@ impl World {
             Some(bvh) if among == ObjectSet::ALL => bvh.first_blocker(ray, inv_dir, t_max, |i| {
                 Some(i) != except && self.objects[i].blocks(ray, inv_dir, t_max)
             }),
+            // The covered candidates in the list, then the tree over the rest.
             Some(_) if self.tail_bvh.is_some() => {
-                self.blocker_listed_then_tail(ray, inv_dir, t_max, except, among)
+                let listed = ObjectSet::CULLED_BELOW;
+                self.first_blocker_in_list(ray, inv_dir, t_max, except, among, listed)
+                    .or_else(|| {
+                        self.blocker_in_tail(ray, inv_dir, t_max, |index| {
+                            Some(index) != except && among.contains(index)
+                        })
+                    })
             }
             _ => self.first_blocker_in_list(ray, inv_dir, t_max, except, among, self.objects.len()),
         }

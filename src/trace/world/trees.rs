@@ -33,31 +33,24 @@ impl World {
         )
     }
 
-    /// A culled occlusion query in a world larger than culling covers: the covered
-    /// candidates in the list, then (none of those blocking) the tree over the rest.
+    /// A culled occlusion query in a world larger than culling covers, once none of the
+    /// covered candidates in the list blocks: the first blocker in the tree over the
+    /// rest among the objects `candidate` admits.
     #[inline(never)]
-    pub(crate) fn blocker_listed_then_tail(
+    pub(crate) fn blocker_in_tail(
         &self,
         ray: &Ray,
         inv_dir: DVec3,
         t_max: f64,
-        except: Option<usize>,
-        among: ObjectSet,
+        candidate: impl Fn(usize) -> bool,
     ) -> Option<usize> {
         let offset = ObjectSet::CULLED_BELOW;
-        if let Some(blocker) =
-            self.first_blocker_in_list(ray, inv_dir, t_max, except, among, offset)
-        {
-            return Some(blocker);
-        }
         let local = self
             .tail_bvh
             .as_ref()?
             .first_blocker(ray, inv_dir, t_max, |i| {
                 let index = i + offset;
-                Some(index) != except
-                    && among.contains(index)
-                    && self.objects[index].blocks(ray, inv_dir, t_max)
+                candidate(index) && self.objects[index].blocks(ray, inv_dir, t_max)
             });
         local.map(|i| i + offset)
     }
