@@ -93,11 +93,11 @@ struct Row {
     rays: RayCounts,
 }
 
-/// The scene with object `index` taken out, compiled.
-fn world_without(scene: &Scene, index: usize) -> Option<World> {
+/// The scene with object `index` taken out, compiled (with `world`'s meshes).
+fn world_without(scene: &Scene, world: &World, index: usize) -> Option<World> {
     let mut scene = scene.clone();
     scene.objects.remove(index);
-    World::new(&scene).ok()
+    World::with_meshes(&scene, &world.meshes).ok()
 }
 
 /// Splits raylab's `width` x `height` picture of `scene` (compiled as `world`) at `spp`
@@ -114,7 +114,7 @@ pub fn render_components(
         .into_par_iter()
         .map(|i| {
             (i < MAX_MISSING_OBJECTS)
-                .then(|| world_without(scene, i))
+                .then(|| world_without(scene, world, i))
                 .flatten()
         })
         .collect();
