@@ -107,6 +107,11 @@ fn specular_exponents() {
 }
 
 #[test]
+fn csg() {
+    check("csg");
+}
+
+#[test]
 fn mesh() {
     check("mesh");
 }

@@ -14,8 +14,8 @@ use serde::Serialize;
 use super::isolation::IsolationArgs;
 use crate::scene::{Scene, load_scene};
 use crate::trace::{
-    Isolation, PixelReport, RayKind, RenderOptions, Term, TermSwitches, TracedRay, View, World,
-    switches_text, traced_rays, try_inspect_pixel,
+    HitSurface, Isolation, PixelReport, RayKind, RenderOptions, Term, TermSwitches, TracedRay,
+    View, World, switches_text, traced_rays, try_inspect_pixel,
 };
 
 /// Arguments of `raylab inspect`.
@@ -85,6 +85,8 @@ pub fn run(args: &InspectArgs) -> Result<(), String> {
 /// The scene's validation message, an isolation flag naming a light or object the scene
 /// does not have, or a pixel outside the image.
 pub fn inspect_text(scene: &Scene, args: &InspectArgs) -> Result<String, String> {
+    let pruned = args.isolation.without_hidden_children(scene)?;
+    let scene = &pruned;
     let isolation = args.isolation.isolation(scene)?;
     let meshes = crate::cli::load_meshes(scene, &args.scene)?;
     let world =
@@ -165,7 +167,11 @@ impl JsonReport {
                 t: ray.t,
                 t_max: ray.t_max,
                 hit: ray.hit.map(|hit| JsonHit {
-                    object: name(hit.object),
+                    object: (ray.kind != RayKind::Shadow)
+                        .then(|| report.bounces.get(ray.depth as usize))
+                        .flatten()
+                        .and_then(|b| b.surface.as_ref())
+                        .map_or_else(|| name(hit.object), |s| s.path.clone()),
                     point: hit.point.to_array(),
                     normal: hit.normal.to_array(),
                 }),
@@ -211,6 +217,18 @@ fn lights_off(scene: &Scene, isolation: &Isolation) -> Vec<usize> {
     (0..scene.lights.len())
         .filter(|&i| !isolation.is_light_lit(i))
         .collect()
+}
+
+/// A tree leaf as the report names it: `"die/pip 3.1" (cut, surface 2 of 4 along the
+/// line)`.
+fn surface_text(surface: Option<&HitSurface>) -> Option<String> {
+    let surface = surface?;
+    let mut text = surface.path.clone();
+    if let Some((k, n)) = surface.crossing {
+        let cut = if surface.cut { "cut, " } else { "" };
+        let _ = write!(text, " ({cut}surface {} of {n} along the line)", k + 1);
+    }
+    Some(text)
 }
 
 /// The name of the scene's object `index` (the record's indices are the scene's).
@@ -276,7 +294,7 @@ fn tree_text(scene: &Scene, options: &RenderOptions, report: &PixelReport) -> St
         let _ = writeln!(
             out,
             "{pad}  hits {} at t {:.6}: point {}, normal {}",
-            name(hit.object),
+            surface_text(bounce.surface.as_ref()).unwrap_or_else(|| name(hit.object)),
             own.and_then(|r| r.t).unwrap_or(hit.t),
             v(hit.p),
             v(hit.n)

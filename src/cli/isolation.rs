@@ -4,7 +4,7 @@
 
 use clap::Args;
 
-use crate::scene::Scene;
+use crate::scene::{Object, Scene, Shape};
 use crate::trace::Isolation;
 use crate::trace::check_indices;
 
@@ -21,7 +21,8 @@ pub struct IsolationArgs {
     #[arg(long, value_delimiter = ',', value_name = "I")]
     pub solo_light: Vec<usize>,
     /// Objects to leave out of the render (no shadow, no reflection), by name,
-    /// comma-separated; a name shared by several objects hides them all.
+    /// comma-separated; a name shared by several objects hides them all. A tree path
+    /// (`snowman/body`) hides a group's child or a CSG operand.
     #[arg(long, value_delimiter = ',', value_name = "NAME")]
     pub hide: Vec<String>,
 }
@@ -37,7 +38,7 @@ impl IsolationArgs {
             solo_lights: self.solo_light.iter().copied().collect(),
             ..Isolation::NONE
         };
-        for name in &self.hide {
+        for name in self.hide.iter().filter(|name| !is_tree_path(scene, name)) {
             let named: Vec<usize> = (0..scene.objects.len())
                 .filter(|&i| scene.objects[i].name == name.as_str())
                 .collect();
@@ -49,6 +50,49 @@ impl IsolationArgs {
         // Objects come from names, so only a light index can be out of range here.
         check_indices(&isolation, scene).map_err(|e| format!("--mute-light/--solo-light: {e}"))?;
         Ok(isolation)
+    }
+}
+
+/// Whether `--hide` names a node below the top level: a path with a `/` that is not
+/// also a top-level object's name.
+fn is_tree_path(scene: &Scene, name: &str) -> bool {
+    name.contains('/') && !scene.objects.iter().any(|o| o.name == name)
+}
+
+impl IsolationArgs {
+    /// `scene` without the nodes `--hide` names by tree path (a group's child, or a CSG
+    /// operand, which leaves the node's solid without it); the top-level objects keep
+    /// their indices, so the other flags mean the same. Every node a path names goes.
+    ///
+    /// # Errors
+    /// A path that names no node, with the children its parent has.
+    pub fn without_hidden_children(&self, scene: &Scene) -> Result<Scene, String> {
+        let mut pruned = scene.clone();
+        for path in self.hide.iter().filter(|name| is_tree_path(scene, name)) {
+            let (parent, child) = path.rsplit_once('/').expect("a tree path has a '/'");
+            let mut found = false;
+            let mut level: Vec<&mut Vec<Object>> = vec![&mut pruned.objects];
+            for part in parent.split('/') {
+                level = level
+                    .into_iter()
+                    .flat_map(|list| list.iter_mut().filter(|o| o.name == part))
+                    .filter_map(|o| match &mut o.shape {
+                        Shape::Group { children } => Some(children),
+                        Shape::Csg { operands, .. } => Some(operands),
+                        _ => None,
+                    })
+                    .collect();
+            }
+            for list in level {
+                let before = list.len();
+                list.retain(|o| o.name != child);
+                found |= list.len() != before;
+            }
+            if !found {
+                return Err(format!("--hide: no object at the tree path \"{path}\""));
+            }
+        }
+        Ok(pruned)
     }
 }
 
@@ -122,5 +166,31 @@ mod tests {
             error.starts_with("--hide: no object named \"lamp\" (objects: \"floor\""),
             "{error}"
         );
+    }
+
+    #[test]
+    fn a_tree_path_hides_a_child_and_keeps_the_top_level_indices() {
+        let scene = crate::scene::load_scene(std::path::Path::new(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/scenes/csg.ron"
+        )))
+        .unwrap();
+        let args = parse(&["--hide", "die/pip 1.1,floor"]);
+        let pruned = args.without_hidden_children(&scene).unwrap();
+        let operands = |s: &Scene| match &s.objects[2].shape {
+            Shape::Csg { operands, .. } => operands.len(),
+            _ => panic!("the die is a CSG node"),
+        };
+        assert_eq!(operands(&pruned), operands(&scene) - 1);
+        assert_eq!(pruned.objects.len(), scene.objects.len());
+        let isolation = args.isolation(&pruned).unwrap();
+        assert_eq!(
+            isolation.hidden_objects.iter().copied().collect::<Vec<_>>(),
+            [0]
+        );
+        let error = parse(&["--hide", "die/pip 9"])
+            .without_hidden_children(&scene)
+            .unwrap_err();
+        assert_eq!(error, "--hide: no object at the tree path \"die/pip 9\"");
     }
 }

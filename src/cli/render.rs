@@ -80,6 +80,7 @@ impl RenderArgs {
 /// black, so it can be looked at).
 pub fn run(args: &RenderArgs) -> Result<(), String> {
     let scene = load_scene(&args.scene).map_err(|e| format!("{}: {e}", args.scene.display()))?;
+    let scene = args.isolation.without_hidden_children(&scene)?;
     let options = args.options(&scene)?;
     let meshes = crate::cli::load_meshes(&scene, &args.scene)?;
     let world = World::isolated_with_meshes(&scene, &options.isolation, &meshes)

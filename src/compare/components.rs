@@ -95,8 +95,9 @@ struct Row {
 
 /// The scene with object `index` taken out, compiled (with `world`'s meshes).
 fn world_without(scene: &Scene, world: &World, index: usize) -> Option<World> {
-    let mut scene = scene.clone();
-    scene.objects.remove(index);
+    // World object `index` is a tree node (a group's member, a CSG node) in scenes with
+    // groups: take out that node.
+    let scene = crate::trace::scene_without_world_object(scene, index)?;
     World::with_meshes(&scene, &world.meshes).ok()
 }
 

@@ -5,11 +5,12 @@
 pub const DEFAULT_SCENE_RON: &str = include_str!("../../scenes/default.ron");
 
 /// Every example scene as `(file name, RON text)`, sorted by file name.
-pub const EXAMPLE_SCENES: [(&str, &str); 6] = [
+pub const EXAMPLE_SCENES: [(&str, &str); 7] = [
     (
         "coloured_shadows.ron",
         include_str!("../../scenes/coloured_shadows.ron"),
     ),
+    ("csg.ron", include_str!("../../scenes/csg.ron")),
     ("default.ron", DEFAULT_SCENE_RON),
     (
         "mirror_cap.ron",

@@ -5,14 +5,19 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use ron::extensions::Extensions;
+use serde::Deserialize;
 
 use super::error::SceneError;
 use super::model::Scene;
 use super::text_file::{TextFileError, read_text_file};
 use super::validate::validate;
 
-/// Deepest nesting accepted in a scene file; real scenes need about 6 levels.
-const RECURSION_LIMIT: usize = 64;
+/// Deepest RON nesting accepted in a scene file: enough for object trees of
+/// [`super::MAX_TREE_DEPTH`] levels (each takes 7: the object, its shape, the operand
+/// list, ...) and the scene around them; deeper text is a syntax error naming the
+/// limit. The parser's stack grows on the heap as it nests (`serde_stacker`), so the
+/// limit is about sense, not the thread's stack.
+const RECURSION_LIMIT: usize = 8 * super::MAX_TREE_DEPTH + 64;
 
 /// Parses and validates scene text.
 ///
@@ -23,11 +28,17 @@ pub fn parse_scene(text: &str) -> Result<Scene, SceneError> {
     let options = ron::Options::default()
         .with_default_extension(Extensions::empty())
         .with_recursion_limit(RECURSION_LIMIT);
-    let mut scene: Scene = options.from_str(text).map_err(|e| SceneError::Syntax {
+    let syntax = |e: ron::error::SpannedError| SceneError::Syntax {
         line: e.span.start.line,
         column: e.span.start.col,
         message: e.code.to_string(),
-    })?;
+    };
+    let mut deserializer =
+        ron::Deserializer::from_str_with_options(text, &options).map_err(syntax)?;
+    let parsed = Scene::deserialize(serde_stacker::Deserializer::new(&mut deserializer));
+    let mut scene = parsed
+        .and_then(|scene| deserializer.end().map(|()| scene))
+        .map_err(|e| syntax(deserializer.span_error(e)))?;
     scene.fill_default_names();
     validate(&scene)?;
     Ok(scene)

@@ -32,8 +32,8 @@ pub use film::{
     sample_in_pixel,
 };
 pub use inspect::{
-    BounceReport, PixelOutside, PixelReport, RayHit, RayKind, TracedRay, inspect_pixel, pick,
-    switches_text, traced_rays, try_inspect_pixel,
+    BounceReport, HitSurface, PixelOutside, PixelReport, RayHit, RayKind, TracedRay, inspect_pixel,
+    pick, switches_text, traced_rays, try_inspect_pixel,
 };
 pub use ray::Ray;
 pub use ray_counts::RayCounts;
@@ -49,6 +49,7 @@ pub use shade::{
 pub use shapes::{MeshStore, TriangleHit, TriangleMesh};
 pub use terms::{Isolation, Term, TermSwitches, View};
 pub use world::{
-    Acceleration, BVH_MIN_OBJECTS, IsolationError, LightSample, SurfacePoint, World, WorldObject,
-    check_indices, spawn_ray, spawn_ray_to,
+    Acceleration, BVH_MIN_OBJECTS, CsgHit, CsgLeaf, CsgTree, Extent, IsolationError, LightSample,
+    SurfacePoint, World, WorldObject, check_indices, scene_without_world_object, spawn_ray,
+    spawn_ray_to,
 };

@@ -5,6 +5,7 @@ mod pixel;
 mod ray_tree;
 
 pub use pixel::{
-    BounceReport, PixelOutside, PixelReport, inspect_pixel, pick, switches_text, try_inspect_pixel,
+    BounceReport, HitSurface, PixelOutside, PixelReport, inspect_pixel, pick, switches_text,
+    try_inspect_pixel,
 };
 pub use ray_tree::{RayHit, RayKind, TracedRay, traced_rays};

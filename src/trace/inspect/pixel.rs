@@ -3,20 +3,13 @@
 
 use glam::{DVec2, DVec3};
 
-use crate::trace::film::PinholeCamera;
-use crate::trace::film::RenderOptions;
+use crate::trace::film::{PinholeCamera, RenderOptions};
 use crate::trace::ray::Ray;
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::shade::LightOutcome;
-use crate::trace::shade::LightRecord;
-use crate::trace::shade::Recorder;
-use crate::trace::shade::SkippedLight;
-use crate::trace::shade::Tracer;
+use crate::trace::shade::{LightOutcome, LightRecord, Recorder, SkippedLight, Tracer};
 use crate::trace::shapes::TriangleHit;
-use crate::trace::terms::Term;
-use crate::trace::terms::TermSwitches;
-use crate::trace::world::SurfacePoint;
-use crate::trace::world::World;
+use crate::trace::terms::{Term, TermSwitches};
+use crate::trace::world::{SurfacePoint, World};
 
 /// What one ray of the chain (the camera ray, then each mirror bounce) met.
 #[derive(Clone, Debug, PartialEq)]
@@ -27,6 +20,9 @@ pub struct BounceReport {
     pub ray: Ray,
     /// The surface hit, or `None` for a miss.
     pub hit: Option<SurfacePoint>,
+    /// Which surface of the object tree that is (its path, and on a CSG object which
+    /// crossing), when the hit is found again in the world.
+    pub surface: Option<HitSurface>,
     /// On a mesh: which triangle of its file the ray met, and the barycentric weights.
     pub triangle: Option<TriangleHit>,
     /// Colour returned by a miss (background, or black where the switches hide it).
@@ -52,6 +48,7 @@ impl BounceReport {
             depth,
             ray,
             hit: None,
+            surface: None,
             triangle: None,
             background: DVec3::ZERO,
             ambient: DVec3::ZERO,
@@ -103,6 +100,47 @@ impl BounceReport {
     }
 }
 
+/// The leaf of the object tree a ray met.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct HitSurface {
+    /// Tree path of the leaf: `"ball"`, `"snowman/body"`, `"die/pip 3.1"`.
+    pub path: String,
+    /// On a CSG object: which of its surfaces along the ray's line this is (0 = the
+    /// first, counting those behind the origin too) and how many there are.
+    pub crossing: Option<(usize, usize)>,
+    /// Whether it is a Difference's cut (a subtracted operand's surface).
+    pub cut: bool,
+}
+
+impl HitSurface {
+    /// Finds the world object (among those of the hit's scene object) and the leaf the
+    /// ray met at `hit.t`.
+    fn find(world: &World, ray: &Ray, hit: &SurfacePoint) -> Option<Self> {
+        let index = (0..world.objects.len()).find(|&i| {
+            world.scene_object(i) == hit.object
+                && world
+                    .intersect_object(i, ray, f64::INFINITY)
+                    .is_some_and(|again| again.t == hit.t)
+        })?;
+        let object = &world.objects[index];
+        let Some(tree) = &object.csg else {
+            return Some(Self {
+                path: object.name.clone(),
+                crossing: None,
+                cut: false,
+            });
+        };
+        let surfaces = tree.surfaces(&ray.transformed(&object.object_from_world));
+        let crossing = surfaces.iter().position(|(s, _)| s.hit.t == hit.t);
+        let leaf = &tree.leaves[hit.part as usize];
+        Some(Self {
+            path: leaf.path.clone(),
+            crossing: crossing.map(|k| (k, surfaces.len())),
+            cut: crossing.is_some_and(|k| surfaces[k].0.cut),
+        })
+    }
+}
+
 /// Everything behind one pixel's centre sample.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PixelReport {
@@ -135,6 +173,7 @@ impl ReportRecorder<'_> {
 
 impl Recorder for ReportRecorder<'_> {
     fn hit(&mut self, depth: u32, ray: &Ray, hit: &SurfacePoint) {
+        let surface = HitSurface::find(self.world, ray, hit);
         let triangle = self
             .world
             .object_scene_index
@@ -143,6 +182,7 @@ impl Recorder for ReportRecorder<'_> {
             .and_then(|index| self.world.triangle_hit(index, ray, f64::INFINITY));
         let bounce = self.at(depth, ray);
         bounce.hit = Some(*hit);
+        bounce.surface = surface;
         bounce.triangle = triangle;
     }
     fn miss(&mut self, depth: u32, ray: &Ray, background: DVec3) {
@@ -158,14 +198,10 @@ impl Recorder for ReportRecorder<'_> {
         // where the ray meets the blocker (the record names it by its scene index).
         if let Some(shadow) = record.shadow_ray
             && let Some(blocker) = shadow.blocked_by
-            && let Some(world_index) = self
-                .world
-                .object_scene_index
-                .iter()
-                .position(|&i| i == blocker)
-            && let Some(hit) = self
-                .world
-                .intersect_object(world_index, &shadow.ray, shadow.t_max)
+            && let Some(hit) = (0..self.world.objects.len())
+                .filter(|&i| self.world.object_scene_index[i] == blocker)
+                .filter_map(|i| self.world.intersect_object(i, &shadow.ray, shadow.t_max))
+                .min_by(|a, b| a.t.total_cmp(&b.t))
         {
             let hit = SurfacePoint {
                 object: blocker,

@@ -20,6 +20,8 @@ pub(crate) struct CachedHit {
     p_error: DVec3,
     /// World index of the object hit; `u32::MAX` for a miss.
     object: u32,
+    /// The CSG operand leaf hit ([`SurfacePoint::part`]).
+    part: u32,
     /// Whether the shading normal is `-n_outward`.
     flipped: bool,
 }
@@ -34,6 +36,7 @@ impl CachedHit {
                 n_outward: hit.n_outward,
                 p_error: hit.p_error,
                 object: u32::try_from(hit.object).expect("fewer than 2^32 - 1 objects"),
+                part: hit.part,
                 flipped: hit.n != hit.n_outward,
             },
             None => Self {
@@ -42,6 +45,7 @@ impl CachedHit {
                 n_outward: DVec3::ZERO,
                 p_error: DVec3::ZERO,
                 object: u32::MAX,
+                part: 0,
                 flipped: false,
             },
         }
@@ -51,6 +55,7 @@ impl CachedHit {
     pub fn point(&self) -> Option<SurfacePoint> {
         (self.object != u32::MAX).then(|| SurfacePoint {
             object: self.object as usize,
+            part: self.part,
             t: self.t,
             p: self.p,
             n_outward: self.n_outward,

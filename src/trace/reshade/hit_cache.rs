@@ -20,21 +20,17 @@ use std::sync::Arc;
 
 use glam::{DAffine3, DVec3};
 
-use super::chains::CachedHit;
-use super::chains::Chains;
+use super::chains::{CachedHit, Chains};
 use super::dependence::TermDependence;
-use super::keep_rule::KeepRule;
-use super::keep_rule::TileSummary;
+use super::keep_rule::{KeepRule, TileSummary};
 use super::light_factors;
 use super::light_factors::LightSlot;
 use super::pixel_colour::PixelColour;
 use crate::scene::{Camera, Material};
 use crate::trace::film::RenderOptions;
 use crate::trace::shapes::Primitive;
-use crate::trace::terms::TermSwitches;
-use crate::trace::terms::View;
-use crate::trace::world::World;
-use crate::trace::world::WorldLight;
+use crate::trace::terms::{TermSwitches, View};
+use crate::trace::world::{CsgTree, World, WorldLight};
 
 /// The most memory the preview's cache may take, as [`cache_fits`] estimates it: larger
 /// previews re-trace every edit.
@@ -96,6 +92,15 @@ impl Shading {
     }
 }
 
+/// Whether a CSG object's operands have more than one material between them.
+fn mixes_materials(object: &crate::trace::WorldObject) -> bool {
+    object.csg.as_ref().is_some_and(|tree| {
+        tree.leaves
+            .iter()
+            .any(|leaf| leaf.material != object.material)
+    })
+}
+
 /// Each object's material, by world object index.
 fn object_materials(world: &World) -> Vec<Material> {
     world
@@ -114,6 +119,8 @@ struct RayGeometry {
     camera: Camera,
     /// Each object's shape, placement and (for a mesh) which triangles.
     objects: Vec<(Primitive, DAffine3, Option<u64>)>,
+    /// The CSG trees, compared by value: a node's operands are its shape.
+    trees: Vec<Option<Arc<CsgTree>>>,
     object_scene_index: Vec<usize>,
 }
 
@@ -134,6 +141,7 @@ impl RayGeometry {
                     )
                 })
                 .collect(),
+            trees: world.objects.iter().map(|o| o.csg.clone()).collect(),
             object_scene_index: world.object_scene_index.clone(),
         }
     }
@@ -291,7 +299,9 @@ impl HitCache {
         if now.camera != old.camera {
             return Reuse::Retrace(RetraceReason::Camera);
         }
-        if now != *old {
+        // The cache keys materials by object; a CSG object whose operands differ in
+        // material is shaded by operand, so such a world is always traced again.
+        if now != *old || world.objects.iter().any(mixes_materials) {
             return Reuse::Retrace(RetraceReason::Objects);
         }
         let kept_columns = world

@@ -3,15 +3,9 @@
 
 use glam::{DVec2, DVec3};
 
-use super::ShapeHit;
 use super::bounds::Aabb;
-use super::disc_cap;
-use super::gamma;
-use super::in_range;
-use super::nearer;
-use super::quadratic::difference_of_products;
-use super::quadratic::solve_quadratic;
-use super::quadratic::sorted;
+use super::quadratic::{difference_of_products, solve_quadratic, sorted};
+use super::{ShapeHit, cap_point, disc_cap, gamma, in_range, nearer};
 use crate::trace::ray::Ray;
 
 /// Object-space bounds.
@@ -74,8 +68,12 @@ fn side_hit(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
         let z = ray.at(t).z;
         in_range(ray, t, t_max) && (0.0..=1.0).contains(&z)
     })?;
-    // Re-project onto the line r = z in the point's half-plane: the nearest point of the
-    // cone's generator is at r = z = (r + z) / 2.
+    Some(side_point(ray, t))
+}
+
+/// The side hit at `t`, re-projected onto the line r = z in the point's half-plane: the
+/// nearest point of the cone's generator is at r = z = (r + z) / 2.
+fn side_point(ray: &Ray, t: f64) -> ShapeHit {
     let p = ray.at(t);
     let r = (p.x * p.x + p.y * p.y).sqrt();
     let s = (0.5 * (r + p.z)).clamp(0.0, 1.0);
@@ -84,12 +82,28 @@ fn side_hit(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
     } else {
         DVec3::ZERO // on the axis, a hit on the cone is the apex
     };
-    Some(ShapeHit {
+    ShapeHit {
         t,
         p,
         n: side_normal(p, ray),
         p_error: gamma(6) * p.abs() + DVec3::splat(gamma(6) * s),
-    })
+    }
+}
+
+/// Both crossings of the whole line (entry, exit), for CSG: the solid is convex, so they
+/// are the first and last of its surface points along the line (one point twice where
+/// the line only touches it).
+pub(crate) fn crossings(ray: &Ray, out: &mut Vec<ShapeHit>) {
+    let mut candidates = [None; 3];
+    if let Some(roots) = side_roots(ray) {
+        for (slot, t) in candidates.iter_mut().zip(roots) {
+            *slot = (0.0..=1.0)
+                .contains(&ray.at(t).z)
+                .then(|| side_point(ray, t));
+        }
+    }
+    candidates[2] = cap_point(ray, 1.0, 1.0);
+    super::first_and_last(candidates.into_iter().flatten(), out);
 }
 
 /// The closest hit with `t` in (0, t_max): side or cap. At the cap rim both agree.

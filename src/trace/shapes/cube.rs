@@ -2,10 +2,8 @@
 
 use glam::DVec3;
 
-use super::ShapeHit;
 use super::bounds::Aabb;
-use super::gamma;
-use super::in_range;
+use super::{ShapeHit, gamma, in_range};
 use crate::trace::ray::Ray;
 
 /// Object-space bounds.
@@ -73,6 +71,26 @@ pub fn intersect(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
     let mut p_error = gamma(3) * p.abs();
     p_error[axis] = 0.0;
     Some(ShapeHit { t, p, n, p_error })
+}
+
+/// Both crossings of the whole line (entry, exit), for CSG.
+pub(crate) fn crossings(ray: &Ray, out: &mut Vec<ShapeHit>) {
+    let Some(s) = span(ray) else { return };
+    if !(s.t_near.is_finite() && s.t_far.is_finite()) {
+        return; // a zero direction: no crossing
+    }
+    for (t, axis, entering) in [(s.t_near, s.near_axis, true), (s.t_far, s.far_axis, false)] {
+        // The entry face faces against the ray along its axis, the exit face with it.
+        let along = if ray.dir[axis] > 0.0 { 1.0 } else { -1.0 };
+        let side = if entering { -along } else { along };
+        let mut p = ray.at(t).clamp(DVec3::splat(-1.0), DVec3::splat(1.0));
+        p[axis] = side;
+        let mut n = DVec3::ZERO;
+        n[axis] = side;
+        let mut p_error = gamma(3) * p.abs();
+        p_error[axis] = 0.0;
+        out.push(ShapeHit { t, p, n, p_error });
+    }
 }
 
 /// Whether any hit has `t` in (0, t_max).

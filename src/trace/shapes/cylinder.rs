@@ -2,13 +2,9 @@
 
 use glam::{DVec2, DVec3};
 
-use super::ShapeHit;
 use super::bounds::Aabb;
-use super::disc_cap;
-use super::gamma;
-use super::in_range;
-use super::nearer;
 use super::quadratic::unit_ball_roots;
+use super::{ShapeHit, cap_point, disc_cap, gamma, in_range, nearer};
 use crate::trace::ray::Ray;
 
 /// Object-space bounds.
@@ -30,11 +26,15 @@ fn side_hit(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
     let t = roots
         .into_iter()
         .find(|&t| in_range(ray, t, t_max) && ray.at(t).z.abs() <= 1.0)?;
-    // Re-project radially onto the unit circle; z is unchanged (and within [-1, 1]).
+    Some(side_point(ray, t))
+}
+
+/// The side hit at `t`, re-projected radially onto the unit circle; z is unchanged.
+fn side_point(ray: &Ray, t: f64) -> ShapeHit {
     let p = ray.at(t);
     let r = (p.x * p.x + p.y * p.y).sqrt();
     let p = DVec3::new(p.x / r, p.y / r, p.z);
-    Some(ShapeHit {
+    ShapeHit {
         t,
         p,
         n: DVec3::new(p.x, p.y, 0.0),
@@ -43,7 +43,21 @@ fn side_hit(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
             gamma(5) * p.y.abs(),
             gamma(3) * p.z.abs(),
         ),
-    })
+    }
+}
+
+/// Both crossings of the whole line (entry, exit), for CSG: the solid is convex, so they
+/// are the first and last of its surface points along the line.
+pub(crate) fn crossings(ray: &Ray, out: &mut Vec<ShapeHit>) {
+    let mut candidates = [None; 4];
+    if let Some(roots) = side_roots(ray) {
+        for (slot, t) in candidates.iter_mut().zip(roots) {
+            *slot = (ray.at(t).z.abs() <= 1.0).then(|| side_point(ray, t));
+        }
+    }
+    candidates[2] = cap_point(ray, 1.0, 1.0);
+    candidates[3] = cap_point(ray, -1.0, -1.0);
+    super::first_and_last(candidates.into_iter().flatten(), out);
 }
 
 /// The closest hit with `t` in (0, t_max): side or either cap. At a cap rim both agree.

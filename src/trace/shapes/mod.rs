@@ -108,7 +108,7 @@ pub fn gamma(n: u32) -> f64 {
 /// rounding error of the origin itself: a ray that starts on a surface does not hit that
 /// surface at t ~ 0. (Spawned rays start well outside this distance; see `spawn`.)
 #[inline]
-fn in_range(ray: &Ray, t: f64, t_max: f64) -> bool {
+pub(crate) fn in_range(ray: &Ray, t: f64, t_max: f64) -> bool {
     if !(t > 0.0 && t < t_max) {
         return false;
     }
@@ -198,6 +198,57 @@ pub fn occluded(shape: Primitive, ray: &Ray, t_max: f64) -> bool {
     }
 }
 
+/// Every crossing of an object-space ray's whole line (any `t`, negative too) with the
+/// shape's solid, in ascending `t`, with outward normals, appended to `out`: what CSG
+/// combines (see `crate::trace::world` for the trees). Bounded solids give entry, exit
+/// pairs (a line that only touches one gives the point twice); the plane, the half-space
+/// z <= 0 here, gives one crossing, and [`starts_inside`] says which side the line
+/// starts on.
+#[inline]
+pub(crate) fn crossings(shape: Primitive, ray: &Ray, out: &mut Vec<ShapeHit>) {
+    match shape {
+        Primitive::Sphere => sphere::crossings(ray, out),
+        Primitive::Plane => plane::crossings(ray, out),
+        Primitive::Cube => cube::crossings(ray, out),
+        Primitive::Cylinder => cylinder::crossings(ray, out),
+        Primitive::Cone => cone::crossings(ray, out),
+        // A mesh's crossings need its triangles: `TriangleMesh::crossings`. CSG trees
+        // are built from unit shapes only (see `world::csg`), so none reaches here.
+        Primitive::Mesh => {}
+    }
+}
+
+/// Whether the line of an object-space ray is inside the solid before its first crossing
+/// (at t = -infinity): only ever for the half-space of a plane, which a line going up
+/// leaves, and a line parallel to it never crosses.
+#[must_use]
+#[inline]
+pub(crate) fn starts_inside(shape: Primitive, ray: &Ray) -> bool {
+    match shape {
+        Primitive::Plane if ray.dir.z == 0.0 => ray.origin.z <= 0.0,
+        Primitive::Plane => ray.dir.z > 0.0,
+        _ => false,
+    }
+}
+
+/// Appends the first and the last of a convex solid's surface points along a line: its
+/// entry and exit.
+fn first_and_last(candidates: impl Iterator<Item = ShapeHit>, out: &mut Vec<ShapeHit>) {
+    let mut span: Option<(ShapeHit, ShapeHit)> = None;
+    for hit in candidates {
+        span = Some(match span {
+            None => (hit, hit),
+            Some((first, last)) => (
+                if hit.t < first.t { hit } else { first },
+                if hit.t > last.t { hit } else { last },
+            ),
+        });
+    }
+    if let Some((first, last)) = span {
+        out.extend([first, last]);
+    }
+}
+
 /// Picks the nearer of two optional hits.
 #[inline]
 fn nearer(a: Option<ShapeHit>, b: Option<ShapeHit>) -> Option<ShapeHit> {
@@ -219,6 +270,16 @@ fn disc_cap(ray: &Ray, t_max: f64, z_cap: f64, normal_z: f64) -> Option<ShapeHit
     if !in_range(ray, t, t_max) {
         return None;
     }
+    cap_point(ray, z_cap, normal_z)
+}
+
+/// The line's point on the disc cap `z = z_cap` at any `t`, if it lies on the disc.
+#[inline]
+fn cap_point(ray: &Ray, z_cap: f64, normal_z: f64) -> Option<ShapeHit> {
+    if ray.dir.z == 0.0 {
+        return None;
+    }
+    let t = (z_cap - ray.origin.z) / ray.dir.z;
     let p = ray.at(t);
     if p.x * p.x + p.y * p.y > 1.0 {
         return None;

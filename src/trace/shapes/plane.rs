@@ -2,10 +2,8 @@
 
 use glam::DVec3;
 
-use super::ShapeHit;
 use super::bounds::Aabb;
-use super::gamma;
-use super::in_range;
+use super::{ShapeHit, gamma, in_range};
 use crate::trace::ray::Ray;
 
 /// Object-space bounds (flat in z).
@@ -38,6 +36,23 @@ pub fn intersect(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
         n: DVec3::Z,
         p_error: DVec3::new(gamma(3) * p.x.abs(), gamma(3) * p.y.abs(), 0.0),
     })
+}
+
+/// The crossing of the whole line with z = 0, for CSG, where the plane is the half-space
+/// z <= 0 (outward normal +z); none for a line parallel to it (see `super::crossings`
+/// for which side such a line is on).
+pub(crate) fn crossings(ray: &Ray, out: &mut Vec<ShapeHit>) {
+    if ray.dir.z == 0.0 {
+        return;
+    }
+    let t = -ray.origin.z / ray.dir.z;
+    let p = ray.at(t);
+    out.push(ShapeHit {
+        t,
+        p: DVec3::new(p.x, p.y, 0.0),
+        n: DVec3::Z,
+        p_error: DVec3::new(gamma(3) * p.x.abs(), gamma(3) * p.y.abs(), 0.0),
+    });
 }
 
 /// Whether any hit has `t` in (0, t_max).

@@ -2,11 +2,9 @@
 
 use glam::DVec3;
 
-use super::ShapeHit;
 use super::bounds::Aabb;
-use super::gamma;
-use super::in_range;
 use super::quadratic::unit_ball_roots;
+use super::{ShapeHit, gamma, in_range};
 use crate::trace::ray::Ray;
 
 /// Object-space bounds.
@@ -39,6 +37,23 @@ pub fn intersect(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
         n: p,
         p_error: gamma(5) * p.abs(),
     })
+}
+
+/// Every crossing of the whole line (any `t`), ascending, with outward normals: the
+/// entry and the exit, for CSG (see `super::crossings`).
+pub(crate) fn crossings(ray: &Ray, out: &mut Vec<ShapeHit>) {
+    if let Some(roots) = roots(ray) {
+        out.extend(roots.map(|t| {
+            let p = ray.at(t);
+            let p = p / p.length();
+            ShapeHit {
+                t,
+                p,
+                n: p,
+                p_error: gamma(5) * p.abs(),
+            }
+        }));
+    }
 }
 
 /// Whether any hit has `t` in (0, t_max).

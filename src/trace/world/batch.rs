@@ -7,11 +7,10 @@
 
 use glam::DVec3;
 
-use super::compiled::SurfacePoint;
-use super::compiled::World;
+use super::compiled::{SurfacePoint, World};
+use super::object::ObjectHit;
 use super::object_set::ObjectSet;
 use crate::trace::ray::Ray;
-use crate::trace::shapes::ShapeHit;
 
 impl World {
     /// Whether [`World::intersect_among`] answers a query on `among` from the flat list,
@@ -32,7 +31,7 @@ impl World {
         }
         let inv_dirs: Vec<DVec3> = rays.iter().map(|ray| ray.dir.recip()).collect();
         let mut t_limits = vec![f64::INFINITY; rays.len()];
-        let mut closest: Vec<Option<(usize, ShapeHit)>> = vec![None; rays.len()];
+        let mut closest: Vec<Option<(usize, ObjectHit)>> = vec![None; rays.len()];
         for index in among.members_below(self.objects.len()) {
             let object = &self.objects[index];
             let per_ray = rays
@@ -42,7 +41,7 @@ impl World {
                 .zip(&mut closest);
             for (((ray, &inv_dir), t_limit), closest) in per_ray {
                 if let Some(hit) = object.hit(ray, inv_dir, *t_limit) {
-                    *t_limit = hit.t;
+                    *t_limit = hit.hit.t;
                     *closest = Some((index, hit));
                 }
             }

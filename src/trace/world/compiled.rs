@@ -1,88 +1,18 @@
 //! The render-ready world: a [`Scene`] compiled once into what the tracer needs per ray
 //! (matrices and their inverses, world bounds, materials by index, lights in unit form).
 
-use std::sync::Arc;
-
-use glam::{DAffine3, DMat3, DVec3};
+use glam::DVec3;
 
 use super::bvh::Bvh;
+use super::flatten::flatten;
 use super::lights::WorldLight;
+use super::object::ObjectHit;
+pub use super::object::WorldObject;
 use super::object_set::ObjectSet;
 use crate::scene::{Light, Material, Scene, SceneError, validate};
 use crate::trace::ray::Ray;
-use crate::trace::shapes::{
-    self, Aabb, BoundingSphere, MeshStore, Primitive, ShapeHit, TriangleHit, TriangleMesh, gamma,
-};
+use crate::trace::shapes::{Aabb, MeshStore, TriangleHit};
 use crate::trace::terms::Isolation;
-
-/// One object, placed and ready to intersect.
-#[derive(Clone, Debug)]
-pub struct WorldObject {
-    /// Its name in the scene, for the inspector and errors.
-    pub name: String,
-    /// Which unit shape.
-    pub shape: Primitive,
-    /// Object-to-world transform.
-    pub world_from_object: DAffine3,
-    /// World-to-object transform.
-    pub object_from_world: DAffine3,
-    /// Takes object-space normals to world space: the inverse transpose of the 3x3 part.
-    pub normal_from_object: DMat3,
-    /// World-space bounds, slightly padded.
-    pub bounds: Aabb,
-    /// Index into [`World::materials`].
-    pub material: usize,
-    /// For a mesh (`shape` is [`Primitive::Mesh`]): its triangles, shared with the store.
-    pub mesh: Option<Arc<TriangleMesh>>,
-    /// For spheres: a bounding sphere, tighter than the box and tested without
-    /// transforming the ray.
-    pub(super) bounding_sphere: Option<BoundingSphere>,
-    /// Component-wise absolute values of the two 3x3 parts, for the error bounds.
-    pub(super) abs_world_from_object: DMat3,
-    pub(super) abs_object_from_world: DMat3,
-}
-
-impl WorldObject {
-    /// The bounds test: whether the ray may meet the object before `t_max`.
-    #[inline]
-    fn may_be_hit(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> bool {
-        match &self.bounding_sphere {
-            Some(sphere) => sphere.hit_by(ray, t_max),
-            None => self.bounds.hit_by(ray, inv_dir, t_max),
-        }
-    }
-
-    /// The closest hit of a world ray with `t` in (0, t_max), in object space.
-    #[inline(always)]
-    pub(crate) fn hit(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> Option<ShapeHit> {
-        if !self.may_be_hit(ray, inv_dir, t_max) {
-            return None;
-        }
-        self.hit_in_object(&ray.transformed(&self.object_from_world), t_max)
-    }
-
-    /// The closest hit of an object-space ray.
-    #[inline(always)]
-    fn hit_in_object(&self, ray: &Ray, t_max: f64) -> Option<ShapeHit> {
-        match &self.mesh {
-            Some(mesh) => mesh.intersect(ray, t_max),
-            None => shapes::intersect(self.shape, ray, t_max),
-        }
-    }
-
-    /// Whether a world ray meets the object with `t` in (0, t_max).
-    #[inline(always)]
-    pub(crate) fn blocks(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> bool {
-        if !self.may_be_hit(ray, inv_dir, t_max) {
-            return false;
-        }
-        let ray = ray.transformed(&self.object_from_world);
-        match &self.mesh {
-            Some(mesh) => mesh.occluded(&ray, t_max),
-            None => shapes::occluded(self.shape, &ray, t_max),
-        }
-    }
-}
 
 /// A point on a surface where a ray hit, in world space.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -90,6 +20,9 @@ pub struct SurfacePoint {
     /// Index of the object hit in [`World::objects`] (the tracer hands recorders and
     /// callers the scene's index instead: [`World::scene_object`]).
     pub object: usize,
+    /// Which operand leaf of a CSG object the point is on ([`WorldObject::csg`]); 0 on
+    /// other objects.
+    pub part: u32,
     /// Ray parameter of the hit.
     pub t: f64,
     /// The hit point.
@@ -108,7 +41,8 @@ pub struct SurfacePoint {
 pub struct World {
     /// Objects in scene order, hidden ones left out.
     pub objects: Vec<WorldObject>,
-    /// Index in the scene's object list of each entry of `objects` (the object id).
+    /// Index in the scene's object list of each entry of `objects` (the object id): of
+    /// the top-level object a group's member belongs to.
     pub object_scene_index: Vec<usize>,
     /// Materials, indexed by [`WorldObject::material`].
     pub materials: Vec<Material>,
@@ -157,7 +91,7 @@ pub const BVH_MIN_OBJECTS: usize = 16;
 
 impl World {
     /// Validates and compiles a scene, every light and object in it (see
-    /// [`World::isolated`] for fewer). A scene with meshes needs [`World::with_meshes`].
+    /// [`World::isolated`] for fewer).
     ///
     /// # Errors
     /// The scene's first validation problem.
@@ -175,16 +109,7 @@ impl World {
         validate(scene)?;
         let material_names: Vec<String> = scene.materials.keys().cloned().collect();
         let materials = scene.materials.values().cloned().collect();
-        let objects = scene
-            .objects
-            .iter()
-            .map(|object| {
-                let material = material_names
-                    .binary_search(&object.material)
-                    .expect("validated: every material exists");
-                super::compile::compile_object(object, material, meshes)
-            })
-            .collect::<Result<_, SceneError>>()?;
+        let (objects, object_scene_index) = flatten(scene, &material_names, meshes)?;
         let mut lights = Vec::new();
         let mut light_scene_index = Vec::new();
         let mut ambient = DVec3::ZERO;
@@ -198,7 +123,7 @@ impl World {
             }
         }
         let mut world = Self {
-            object_scene_index: (0..scene.objects.len()).collect(),
+            object_scene_index,
             objects,
             materials,
             material_names,
@@ -268,12 +193,12 @@ impl World {
         t_max: f64,
         among: ObjectSet,
         count: usize,
-    ) -> Option<(usize, ShapeHit)> {
+    ) -> Option<(usize, ObjectHit)> {
         let mut closest = None;
         let mut t_limit = t_max;
         for index in among.members_below(count) {
             if let Some(hit) = self.objects[index].hit(ray, inv_dir, t_limit) {
-                t_limit = hit.t;
+                t_limit = hit.hit.t;
                 closest = Some((index, hit));
             }
         }
@@ -286,7 +211,7 @@ impl World {
     pub fn intersect_object(&self, index: usize, ray: &Ray, t_max: f64) -> Option<SurfacePoint> {
         let object = self.objects.get(index)?;
         let ray_in_object = ray.transformed(&object.object_from_world);
-        let hit = object.hit_in_object(&ray_in_object, t_max)?;
+        let hit = object.hit_unbounded(&ray_in_object, t_max)?;
         Some(self.surface_point(index, ray, &hit))
     }
 
@@ -357,9 +282,22 @@ impl World {
         None
     }
 
+    /// The index into [`World::materials`] of the surface at `hit`: its object's, or on
+    /// a CSG object its operand's.
+    #[must_use]
+    #[inline]
+    pub fn material_at(&self, hit: &SurfacePoint) -> usize {
+        let object = &self.objects[hit.object];
+        match &object.csg {
+            Some(tree) => tree.leaves[hit.part as usize].material,
+            None => object.material,
+        }
+    }
+
     /// World-space details of an object-space hit.
     #[inline(always)]
-    pub(crate) fn surface_point(&self, index: usize, ray: &Ray, hit: &ShapeHit) -> SurfacePoint {
+    pub(crate) fn surface_point(&self, index: usize, ray: &Ray, hit: &ObjectHit) -> SurfacePoint {
+        let (part, hit) = (hit.part, &hit.hit);
         let object = &self.objects[index];
         let m = &object.world_from_object;
         let p = m.transform_point3(hit.p);
@@ -371,26 +309,12 @@ impl World {
         };
         SurfacePoint {
             object: index,
+            part,
             t: hit.t,
             p,
             n_outward,
             n,
-            p_error: world_error(object, hit, p),
+            p_error: object.world_error(hit, p),
         }
     }
-}
-
-/// Bound on the world hit point's distance from the surface: the object-space error
-/// carried through the matrix, the rounding of the transform itself, and the rounding
-/// a spawned ray suffers on its way back to object space (mapped to world units).
-/// Inlined into every hit record: as a call it ran 1.1% more instructions a frame.
-#[inline(always)]
-fn world_error(object: &WorldObject, hit: &ShapeHit, p_world: DVec3) -> DVec3 {
-    let m = object.abs_world_from_object;
-    let inv = object.abs_object_from_world;
-    let carried = m * hit.p_error;
-    let forward = gamma(3) * (m * hit.p.abs() + object.world_from_object.translation.abs());
-    let back_in_object =
-        gamma(3) * (inv * p_world.abs() + object.object_from_world.translation.abs());
-    carried + forward + m * back_in_object
 }

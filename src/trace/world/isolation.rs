@@ -161,7 +161,12 @@ impl World {
             .iter()
             .map(|&i| kept_lights[i])
             .collect();
-        world.object_scene_index = kept_objects;
+        // A group's members carry their top-level object's index in the filtered scene.
+        world.object_scene_index = world
+            .object_scene_index
+            .iter()
+            .map(|&i| kept_objects[i])
+            .collect();
         if !shows_background(isolation, &scene.lights) {
             world.background = DVec3::ZERO;
         }

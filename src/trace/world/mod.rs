@@ -3,15 +3,19 @@
 
 mod batch;
 mod bvh;
-mod compile;
 mod compiled;
+mod csg;
+mod flatten;
 mod isolation;
 mod lights;
+mod object;
 mod object_set;
 mod spawn;
 mod trees;
 
 pub use compiled::{Acceleration, BVH_MIN_OBJECTS, SurfacePoint, World, WorldObject};
+pub use csg::{CsgHit, CsgLeaf, CsgTree, Extent};
+pub use flatten::scene_without_world_object;
 pub(crate) use isolation::assert_compiled_for;
 pub use isolation::{IsolationError, check_indices};
 pub use lights::{LightSample, WorldLight, falloff};

@@ -9,9 +9,9 @@ use glam::DVec3;
 
 use super::bvh::Bvh;
 use super::compiled::World;
+use super::object::ObjectHit;
 use super::object_set::ObjectSet;
 use crate::trace::ray::Ray;
-use crate::trace::shapes::ShapeHit;
 
 impl World {
     /// A culled closest-hit query in a world larger than culling covers: the covered
@@ -23,11 +23,11 @@ impl World {
         inv_dir: DVec3,
         t_max: f64,
         among: ObjectSet,
-    ) -> Option<(usize, ShapeHit)> {
+    ) -> Option<(usize, ObjectHit)> {
         let offset = ObjectSet::CULLED_BELOW;
         let listed = self.closest_in_list(ray, inv_dir, t_max, among, offset);
         let tail = self.tail_bvh.as_ref()?;
-        let t_limit = listed.map_or(t_max, |(_, hit)| hit.t);
+        let t_limit = listed.map_or(t_max, |(_, hit)| hit.hit.t);
         self.closest_in_tree::<{ ObjectSet::CULLED_BELOW }>(
             tail, ray, inv_dir, t_limit, among, listed,
         )
@@ -73,8 +73,8 @@ impl World {
         inv_dir: DVec3,
         t_limit: f64,
         among: ObjectSet,
-        mut closest: Option<(usize, ShapeHit)>,
-    ) -> Option<(usize, ShapeHit)> {
+        mut closest: Option<(usize, ObjectHit)>,
+    ) -> Option<(usize, ObjectHit)> {
         bvh.traverse(ray, inv_dir, t_limit, |local, t_limit| {
             let index = local + OFFSET;
             if !among.contains(index) {
@@ -90,7 +90,7 @@ impl World {
             if let Some(hit) = hit {
                 closest = Some((index, hit));
             }
-            Ok(hit.map(|hit| hit.t))
+            Ok(hit.map(|hit| hit.hit.t))
         });
         closest
     }

@@ -1,0 +1,246 @@
+//! Compiling a scene's CSG node into a [`CsgTree`], with a work list instead of
+//! recursion so the depth of the tree never reaches the call stack.
+
+use glam::{DAffine3, DVec3};
+
+use super::{CsgLeaf, CsgTree, Extent, Step, combine_extents};
+use crate::scene::{CsgOp, Object, SceneError, Shape};
+use crate::trace::shapes::{self, Aabb, Primitive};
+
+/// What is left to do for the node being compiled.
+enum Work<'a> {
+    /// Compile this object, placed in the node's space, with the material it inherits
+    /// and its tree path.
+    Visit {
+        object: &'a Object,
+        node_from_object: DAffine3,
+        material: &'a str,
+        path: String,
+    },
+    /// All operands of a node are compiled: combine them.
+    Emit { op: CsgOp, operands: u32 },
+    /// A node's first operand is compiled: if it is empty along a ray, skip the rest.
+    Check,
+    /// A run of `leaves` leaf operands starts whose boxes together lie in `bounds`.
+    ChunkStart { bounds: Aabb, leaves: u32 },
+    /// That run ends.
+    ChunkEnd,
+}
+
+impl CsgTree {
+    /// Compiles a CSG node's operands, `material` being the node's own (inherited by
+    /// operands that name none) and `path` its tree path. A Group among the operands
+    /// stands for the union of its children.
+    ///
+    /// # Errors
+    /// An operand the tracer cannot draw, or a leaf left without a material, named by
+    /// its tree path.
+    pub fn build(
+        op: CsgOp,
+        operands: &[Object],
+        material: &str,
+        path: &str,
+        material_index: &dyn Fn(&str) -> Option<usize>,
+    ) -> Result<Self, SceneError> {
+        let mut tree = CsgTree {
+            leaves: Vec::new(),
+            steps: Vec::new(),
+            extent: Extent::Empty,
+        };
+        let mut extents: Vec<Extent> = Vec::new();
+        // The SkipIfEmpty steps waiting for their node's end (nodes nest, so a stack).
+        let mut checks: Vec<usize> = Vec::new();
+        let mut chunks: Vec<usize> = Vec::new();
+        let mut work = Vec::new();
+        push_operands(&mut work, op, operands, &DAffine3::IDENTITY, material, path);
+        while let Some(item) = work.pop() {
+            match item {
+                Work::ChunkStart { bounds, leaves } => {
+                    chunks.push(tree.steps.len());
+                    tree.steps.push(Step::SkipIfMissed {
+                        bounds,
+                        lists: leaves,
+                        skip_to: 0,
+                    });
+                }
+                Work::ChunkEnd => {
+                    let start = chunks.pop().expect("a chunk ends after it starts");
+                    let end = u32::try_from(tree.steps.len()).expect("under 2^32 steps");
+                    if let Step::SkipIfMissed { skip_to, .. } = &mut tree.steps[start] {
+                        *skip_to = end;
+                    }
+                }
+                Work::Check => {
+                    checks.push(tree.steps.len());
+                    tree.steps.push(Step::SkipIfEmpty { skip_to: 0 });
+                }
+                Work::Emit { op, operands } => {
+                    tree.steps.push(Step::Combine { op, operands });
+                    if skips(op, operands) {
+                        let check = checks.pop().expect("a Check precedes its Emit");
+                        let end = u32::try_from(tree.steps.len()).expect("under 2^32 steps");
+                        tree.steps[check] = Step::SkipIfEmpty { skip_to: end };
+                    }
+                    let first = extents.len() - operands as usize;
+                    let combined = combine_extents(op, &extents[first..]);
+                    extents.truncate(first);
+                    extents.push(combined);
+                }
+                Work::Visit {
+                    object,
+                    node_from_object,
+                    material,
+                    path,
+                } => match &object.shape {
+                    Shape::Csg { op, operands } => {
+                        push_operands(&mut work, *op, operands, &node_from_object, material, &path);
+                    }
+                    Shape::Group { children } => {
+                        let union = CsgOp::Union;
+                        push_operands(
+                            &mut work,
+                            union,
+                            children,
+                            &node_from_object,
+                            material,
+                            &path,
+                        );
+                    }
+                    Shape::Mesh { .. } => {
+                        return Err(SceneError::Invalid(format!(
+                            "object \"{path}\": a Mesh cannot be a CSG operand yet (meshes \
+                             render on their own and in groups)"
+                        )));
+                    }
+                    shape => {
+                        let primitive = Primitive::of(shape).ok_or_else(|| {
+                            SceneError::Invalid(format!(
+                                "object \"{path}\": the tracer cannot draw a {} yet",
+                                shape.name()
+                            ))
+                        })?;
+                        let material = material_index(material).ok_or_else(|| {
+                            SceneError::Invalid(format!(
+                                "object \"{path}\": no material (neither its own nor a parent's)"
+                            ))
+                        })?;
+                        let index = u32::try_from(tree.leaves.len()).expect("under 2^32 leaves");
+                        tree.steps.push(Step::Leaf(index));
+                        let leaf = CsgLeaf::new(primitive, path, material, node_from_object);
+                        extents.push(leaf.bounds.map_or(Extent::Unbounded, Extent::Box));
+                        tree.leaves.push(leaf);
+                    }
+                },
+            }
+        }
+        tree.extent = extents.pop().unwrap_or(Extent::Empty);
+        Ok(tree)
+    }
+}
+
+/// Queues a node's operands (first one on top) followed by its combination.
+fn push_operands<'a>(
+    work: &mut Vec<Work<'a>>,
+    op: CsgOp,
+    operands: &'a [Object],
+    node_from_parent: &DAffine3,
+    material: &'a str,
+    path: &str,
+) {
+    let operands_count = u32::try_from(operands.len()).expect("under 2^32 operands");
+    work.push(Work::Emit {
+        op,
+        operands: operands_count,
+    });
+    let visit = |operand: &'a Object| Work::Visit {
+        object: operand,
+        node_from_object: *node_from_parent * operand.transform.world_from_object(),
+        material: if operand.material.is_empty() {
+            material
+        } else {
+            &operand.material
+        },
+        path: format!("{path}/{}", operand.name),
+    };
+    let rest = operands.get(1..).unwrap_or_default();
+    for chunk in chunks(rest, node_from_parent).iter().rev() {
+        let members = &rest[chunk.first..chunk.first + chunk.len];
+        if chunk.len > 1 {
+            work.push(Work::ChunkEnd);
+        }
+        work.extend(members.iter().rev().map(visit));
+        if chunk.len > 1 {
+            work.push(Work::ChunkStart {
+                bounds: chunk.bounds,
+                leaves: u32::try_from(chunk.len).expect("a small chunk"),
+            });
+        }
+    }
+    if let Some(first) = operands.first() {
+        if skips(op, operands_count) {
+            work.push(Work::Check);
+        }
+        work.push(visit(first));
+    }
+}
+
+/// A run of operands to test as one box first: bounded leaves lying close together.
+struct Chunk {
+    first: usize,
+    len: usize,
+    bounds: Aabb,
+}
+
+/// Most leaves one chunk takes.
+const CHUNK_MAX: usize = 8;
+
+/// Splits operands into runs of bounded leaves that stay together (the box around a run
+/// has no more surface than its members' boxes together, as the pips on one face of a
+/// die) and single operands; a ray that misses a run's box skips all its leaves.
+fn chunks(operands: &[Object], node_from_parent: &DAffine3) -> Vec<Chunk> {
+    let area = |b: &Aabb| {
+        let d = (b.max - b.min).max(DVec3::ZERO);
+        2.0 * (d.x * d.y + d.y * d.z + d.z * d.x)
+    };
+    let mut out: Vec<Chunk> = Vec::new();
+    let mut members_area = 0.0;
+    for (k, operand) in operands.iter().enumerate() {
+        let bounds = Primitive::of(&operand.shape)
+            .filter(|&p| p != Primitive::Plane)
+            .map(|p| {
+                let placed = *node_from_parent * operand.transform.world_from_object();
+                shapes::object_bounds(p).transformed(&placed)
+            });
+        let Some(bounds) = bounds else {
+            out.push(Chunk {
+                first: k,
+                len: 1,
+                bounds: Aabb::new(DVec3::ZERO, DVec3::ZERO),
+            });
+            members_area = f64::INFINITY; // nothing joins a non-leaf
+            continue;
+        };
+        if let Some(last) = out.last_mut() {
+            let joined = last.bounds.union(&bounds);
+            if last.len < CHUNK_MAX && area(&joined) <= members_area + area(&bounds) {
+                last.len += 1;
+                last.bounds = joined;
+                members_area += area(&bounds);
+                continue;
+            }
+        }
+        out.push(Chunk {
+            first: k,
+            len: 1,
+            bounds,
+        });
+        members_area = area(&bounds);
+    }
+    out
+}
+
+/// Whether a node gets a SkipIfEmpty after its first operand: an Intersection or a
+/// Difference is empty wherever its first operand is.
+fn skips(op: CsgOp, operands: u32) -> bool {
+    op != CsgOp::Union && operands >= 2
+}

@@ -1,0 +1,248 @@
+//! Roth's interval arithmetic (Roth, "Ray casting for modeling solids", 1982): where a
+//! line is inside each operand, as sorted spans of `t`, and the spans of a Union,
+//! Intersection or Difference swept together from its operands'.
+
+use crate::scene::CsgOp;
+use crate::trace::shapes::ShapeHit;
+
+/// One end of a span: the operand surface the line crosses there. Small (the sweep
+/// copies it): the hit itself stays in the evaluation's list of crossings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Crossing {
+    /// The ray parameter.
+    pub t: f64,
+    /// Index of the crossing's [`ShapeHit`] (in the leaf's object space) in the list
+    /// the leaves' crossings were collected in; `u32::MAX` for an unbounded end.
+    pub hit: u32,
+    /// Which leaf of the tree; `u32::MAX` for the open end of an unbounded span.
+    pub leaf: u32,
+    /// Whether the surface belongs to a subtracted operand (an odd number of times), so
+    /// that the result lies on its outer side: a Difference's cut.
+    pub cut: bool,
+}
+
+/// An interval of `t` where the line is inside a solid, with the surfaces at its ends.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Span {
+    /// Where the line enters.
+    pub enter: Crossing,
+    /// Where it leaves.
+    pub leave: Crossing,
+}
+
+impl Crossing {
+    /// The open end of a span reaching to `t` = +-infinity (a half-space's).
+    pub fn unbounded(t: f64) -> Self {
+        Self {
+            t,
+            hit: u32::MAX,
+            leaf: u32::MAX,
+            cut: false,
+        }
+    }
+
+    fn t(&self) -> f64 {
+        self.t
+    }
+}
+
+/// The spans of one leaf from its crossings (ascending `t`; the first one at index
+/// `first` of the evaluation's list), starting inside or not at t = -infinity. Crossings alternate between entering and leaving; spans of zero length
+/// (a line that only touches the solid) are left out: the set operations are
+/// regularised, so a touch is no surface.
+pub(crate) fn leaf_spans(
+    crossings: &[ShapeHit],
+    first: usize,
+    leaf: u32,
+    starts_inside: bool,
+    out: &mut Vec<Span>,
+) {
+    let crossing = |k: usize, hit: &ShapeHit| Crossing {
+        t: hit.t,
+        hit: u32::try_from(first + k).expect("under 2^32 crossings"),
+        leaf,
+        cut: false,
+    };
+    let mut open = starts_inside.then(|| Crossing::unbounded(f64::NEG_INFINITY));
+    for (k, hit) in crossings.iter().enumerate() {
+        match open.take() {
+            None => open = Some(crossing(k, hit)),
+            Some(enter) => {
+                if hit.t > enter.t() {
+                    out.push(Span {
+                        enter,
+                        leave: crossing(k, hit),
+                    });
+                }
+            }
+        }
+    }
+    if let Some(enter) = open {
+        out.push(Span {
+            enter,
+            leave: Crossing::unbounded(f64::INFINITY),
+        });
+    }
+}
+
+/// Whether a point inside `a` (or not) and `b` (or not) is inside `a op b`.
+fn inside(op: CsgOp, a: bool, b: bool) -> bool {
+    match op {
+        CsgOp::Union => a || b,
+        CsgOp::Intersection => a && b,
+        CsgOp::Difference => a && !b,
+    }
+}
+
+/// The next boundary of a span list at or after the sweep position: the span index and
+/// whether it is the span's leaving end.
+struct Cursor<'a> {
+    spans: &'a [Span],
+    index: usize,
+    leaving: bool,
+}
+
+impl Cursor<'_> {
+    fn next(&self) -> Option<Crossing> {
+        let span = self.spans.get(self.index)?;
+        Some(if self.leaving { span.leave } else { span.enter })
+    }
+
+    fn advance(&mut self) {
+        if self.leaving {
+            self.index += 1;
+        }
+        self.leaving = !self.leaving;
+    }
+
+    /// Whether the sweep is inside a span (its entry passed, its exit not).
+    fn is_inside(&self) -> bool {
+        self.leaving
+    }
+}
+
+/// The spans of `a op b`, appended to `out`. All boundaries at one `t` are passed
+/// together, so coincident surfaces (a face shared by both operands) make no span of
+/// zero length; where the result's inside begins or ends, the surface named is `a`'s if
+/// `a` crosses there, else `b`'s (a subtracted one marked as a cut).
+pub(crate) fn combine(op: CsgOp, a: &[Span], b: &[Span], out: &mut Vec<Span>) {
+    let mut ca = Cursor {
+        spans: a,
+        index: 0,
+        leaving: false,
+    };
+    let mut cb = Cursor {
+        spans: b,
+        index: 0,
+        leaving: false,
+    };
+    let mut was_inside = false;
+    let mut open: Option<Crossing> = None;
+    loop {
+        let t = match (ca.next(), cb.next()) {
+            (None, None) => break,
+            (Some(x), None) | (None, Some(x)) => x.t(),
+            (Some(x), Some(y)) => x.t().min(y.t()),
+        };
+        let mut from_a = None;
+        let mut from_b = None;
+        while let Some(x) = ca.next().filter(|x| x.t() == t) {
+            from_a = Some(x);
+            ca.advance();
+        }
+        while let Some(mut x) = cb.next().filter(|x| x.t() == t) {
+            if op == CsgOp::Difference {
+                x.cut = !x.cut;
+            }
+            from_b = Some(x);
+            cb.advance();
+        }
+        let now_inside = inside(op, ca.is_inside(), cb.is_inside());
+        if now_inside == was_inside {
+            continue;
+        }
+        was_inside = now_inside;
+        let surface = from_a.or(from_b).expect("a boundary passed at t");
+        match open.take() {
+            None => open = Some(surface),
+            Some(enter) => out.push(Span {
+                enter,
+                leave: surface,
+            }),
+        }
+    }
+    debug_assert!(open.is_none(), "every span list ends outside");
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spans(ends: &[(f64, f64)], leaf: u32) -> Vec<Span> {
+        let hits: Vec<ShapeHit> = ends
+            .iter()
+            .flat_map(|&(a, b)| [a, b])
+            .map(|t| ShapeHit {
+                t,
+                p: glam::DVec3::ZERO,
+                n: glam::DVec3::X,
+                p_error: glam::DVec3::ZERO,
+            })
+            .collect();
+        let mut out = Vec::new();
+        leaf_spans(&hits, 0, leaf, false, &mut out);
+        out
+    }
+
+    fn ends(op: CsgOp, a: &[(f64, f64)], b: &[(f64, f64)]) -> Vec<(f64, f64, u32, u32)> {
+        let mut out = Vec::new();
+        combine(op, &spans(a, 0), &spans(b, 1), &mut out);
+        out.iter()
+            .map(|s| (s.enter.t(), s.leave.t(), s.enter.leaf, s.leave.leaf))
+            .collect()
+    }
+
+    #[test]
+    fn the_three_operators_on_overlapping_spans() {
+        let (a, b) = ([(0.0, 2.0), (5.0, 6.0)], [(1.0, 3.0)]);
+        assert_eq!(
+            ends(CsgOp::Union, &a, &b),
+            [(0.0, 3.0, 0, 1), (5.0, 6.0, 0, 0)]
+        );
+        assert_eq!(ends(CsgOp::Intersection, &a, &b), [(1.0, 2.0, 1, 0)]);
+        assert_eq!(
+            ends(CsgOp::Difference, &a, &b),
+            [(0.0, 1.0, 0, 1), (5.0, 6.0, 0, 0)]
+        );
+    }
+
+    #[test]
+    fn shared_boundaries_make_no_empty_span() {
+        // b covers a's far end exactly: a - b ends at b's entry, with nothing at 2.
+        assert_eq!(
+            ends(CsgOp::Difference, &[(0.0, 2.0)], &[(1.0, 2.0)]),
+            [(0.0, 1.0, 0, 1)]
+        );
+        // Touching spans: the union is one span, the intersection none.
+        assert_eq!(
+            ends(CsgOp::Union, &[(0.0, 1.0)], &[(1.0, 2.0)]),
+            [(0.0, 2.0, 0, 1)]
+        );
+        assert!(ends(CsgOp::Intersection, &[(0.0, 1.0)], &[(1.0, 2.0)]).is_empty());
+        // Equal spans: a - a is empty.
+        assert!(ends(CsgOp::Difference, &[(0.0, 1.0)], &[(0.0, 1.0)]).is_empty());
+    }
+
+    #[test]
+    fn a_cut_is_marked_and_a_touch_is_no_span() {
+        let mut out = Vec::new();
+        combine(
+            CsgOp::Difference,
+            &spans(&[(0.0, 2.0)], 0),
+            &spans(&[(1.0, 3.0)], 1),
+            &mut out,
+        );
+        assert!(!out[0].enter.cut && out[0].leave.cut);
+        assert!(spans(&[(1.0, 1.0)], 0).is_empty());
+    }
+}
