@@ -361,8 +361,13 @@ fn a_closed_mesh_is_a_solid_with_alternating_crossings_and_an_open_one_is_not() 
     // A ray straight down through the apex (a vertex of four triangles) and out through
     // the base's diagonal (an edge of two): one way in, one way out.
     let mesh = TriangleMesh::new(&pyramid);
+    // Appended after what the list already holds (here a crossing of another ray).
     let mut out = Vec::new();
+    mesh.crossings(&Ray::new(DVec3::new(0.0, 9.0, 0.0), DVec3::NEG_Y), &mut out);
+    let earlier = out.clone();
     mesh.crossings(&Ray::new(DVec3::new(0.0, 3.0, 0.0), DVec3::NEG_Y), &mut out);
+    assert_eq!(out[..earlier.len()], earlier[..]);
+    let out = out.split_off(earlier.len());
     let ts: Vec<f64> = out.iter().map(|h| h.t).collect();
     assert_eq!(ts.len(), 2, "{ts:?}");
     assert!(
@@ -375,6 +380,7 @@ fn a_closed_mesh_is_a_solid_with_alternating_crossings_and_an_open_one_is_not() 
     for _ in 0..300 {
         let origin = random_unit(&mut state) * 4.0;
         let ray = Ray::new(origin, random_unit(&mut state) * 1.2 - origin);
+        let mut out = Vec::new();
         knot.crossings(&ray, &mut out);
         assert_eq!(out.len() % 2, 0, "{ray:?}");
         let first = knot.intersect(&ray, f64::INFINITY).map(|h| h.t);

@@ -96,3 +96,40 @@ fn a_missing_mesh_file_names_the_object_and_the_file() {
     assert!(!dir.join("out.png").exists());
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn diff_names_a_mesh_left_out_of_the_other_image() {
+    let dir = std::env::temp_dir().join(format!("raylab-mesh-cli-diff-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("folder");
+    let other = dir.join("no-knot.png");
+    let render = raylab()
+        .arg("render")
+        .arg(example())
+        .args(["--hide", "knot", "-o"])
+        .arg(&other)
+        .output()
+        .expect("runs");
+    assert!(
+        render.status.success(),
+        "{}",
+        String::from_utf8_lossy(&render.stderr)
+    );
+    let diff = raylab()
+        .arg("diff")
+        .arg(example())
+        .arg(&other)
+        .output()
+        .expect("runs");
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(
+        diff.status.success(),
+        "{}",
+        String::from_utf8_lossy(&diff.stderr)
+    );
+    let text = String::from_utf8_lossy(&diff.stdout);
+    let first = text.lines().nth(1).unwrap_or_default();
+    assert!(
+        first.contains("object knot") && first.contains("missing"),
+        "{text}"
+    );
+}

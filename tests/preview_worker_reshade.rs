@@ -57,6 +57,7 @@ fn edited(
         scene: std::sync::Arc::new(scene),
         options: request.options.clone(),
         meshes: request.meshes.clone(),
+        scene_folder: request.scene_folder.clone(),
     }
 }
 

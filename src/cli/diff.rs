@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 
-use crate::compare::{CompareOptions, OtherImage, compare, write_report_png};
+use crate::compare::{CompareOptions, OtherImage, compare_with_meshes, write_report_png};
 use crate::scene::legacy::import_legacy_file;
 use crate::scene::{Scene, load_scene};
 use crate::trace::RenderProgress;
@@ -59,8 +59,15 @@ pub fn run(args: &DiffArgs) -> Result<(), String> {
     let options = CompareOptions {
         samples_per_pixel: args.spp,
     };
-    let comparison = compare(&scene, &other, &options, &RenderProgress::default())
-        .map_err(|e| format!("{}: {e}", args.other.display()))?;
+    let meshes = crate::cli::load_meshes(&scene, &args.scene)?;
+    let comparison = compare_with_meshes(
+        &scene,
+        &meshes,
+        &other,
+        &options,
+        &RenderProgress::default(),
+    )
+    .map_err(|e| format!("{}: {e}", args.other.display()))?;
     if let Some(path) = &args.output {
         write_report_png(&comparison, path)?;
     }

@@ -93,11 +93,12 @@ struct Row {
     rays: RayCounts,
 }
 
-/// The scene with object `index` taken out, compiled.
-fn world_without(scene: &Scene, index: usize) -> Option<World> {
+/// The scene with object `index` taken out, compiled (with `world`'s meshes).
+fn world_without(scene: &Scene, world: &World, index: usize) -> Option<World> {
     // World object `index` is a tree node (a group's member, a CSG node) in scenes with
     // groups: take out that node.
-    World::new(&crate::trace::scene_without_world_object(scene, index)?).ok()
+    let scene = crate::trace::scene_without_world_object(scene, index)?;
+    World::with_meshes(&scene, &world.meshes).ok()
 }
 
 /// Splits raylab's `width` x `height` picture of `scene` (compiled as `world`) at `spp`
@@ -114,7 +115,7 @@ pub fn render_components(
         .into_par_iter()
         .map(|i| {
             (i < MAX_MISSING_OBJECTS)
-                .then(|| world_without(scene, i))
+                .then(|| world_without(scene, world, i))
                 .flatten()
         })
         .collect();

@@ -37,7 +37,7 @@ pub use report::{Comparison, PSNR_IDENTICAL_DB, PixelValues};
 pub use report_image::{difference_heatmap, report_png, write_report_png};
 
 use crate::scene::Scene;
-use crate::trace::{RenderProgress, World};
+use crate::trace::{MeshStore, RenderProgress, World};
 
 use components::{MISS, render_components};
 use explanation::summary;
@@ -70,6 +70,21 @@ pub fn compare(
     options: &CompareOptions,
     progress: &RenderProgress,
 ) -> Result<Comparison, CompareError> {
+    compare_with_meshes(scene, &MeshStore::default(), other, options, progress)
+}
+
+/// As [`compare`], with the scene's mesh objects' triangles from `meshes`.
+///
+/// # Errors
+/// As [`compare`]; a mesh object whose file is not in `meshes` is a
+/// [`CompareError::Scene`].
+pub fn compare_with_meshes(
+    scene: &Scene,
+    meshes: &MeshStore,
+    other: &OtherImage,
+    options: &CompareOptions,
+    progress: &RenderProgress,
+) -> Result<Comparison, CompareError> {
     let (width, height) = (scene.camera.width, scene.camera.height);
     if (other.width, other.height) != (width, height) {
         return Err(CompareError::SizeMismatch {
@@ -79,7 +94,8 @@ pub fn compare(
             scene_height: height,
         });
     }
-    let world = World::new(scene).map_err(|e| CompareError::Scene(e.to_string()))?;
+    let world =
+        World::with_meshes(scene, meshes).map_err(|e| CompareError::Scene(e.to_string()))?;
     let spp = options
         .samples_per_pixel
         .unwrap_or(scene.render.samples_per_pixel)

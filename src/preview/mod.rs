@@ -14,6 +14,7 @@ mod convergence;
 mod frame;
 mod job;
 mod latency;
+mod meshes;
 mod plan;
 mod probe;
 mod progressive;

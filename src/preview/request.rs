@@ -1,5 +1,6 @@
 //! What the UI asks the worker to render.
 
+use std::path::PathBuf;
 use std::sync::Arc;
 
 use crate::scene::Scene;
@@ -19,6 +20,9 @@ pub struct PreviewRequest {
     /// worker; empty for scenes without meshes). Shared, so a material edit keeps the
     /// same meshes and the hit cache re-shades instead of re-tracing.
     pub meshes: Arc<MeshStore>,
+    /// The folder of the scene's file, where the worker reads the mesh files that
+    /// `meshes` does not hold; `None` for a scene never saved.
+    pub scene_folder: Option<PathBuf>,
 }
 
 /// The longest side the editor's preview renders at; larger scenes are previewed scaled
@@ -48,6 +52,7 @@ impl PreviewRequest {
             scene: Arc::new(scene),
             options,
             meshes: Arc::default(),
+            scene_folder: None,
         }
     }
 

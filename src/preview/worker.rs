@@ -168,6 +168,7 @@ fn lock(mutex: &Mutex<Mailbox>) -> MutexGuard<'_, Mailbox> {
 fn run(shared: &Shared, waker: &Waker) {
     // The rays of the last one-sample pass: an edit that moves nothing re-shades them.
     let mut cache: Option<HitCache> = None;
+    let mut meshes = super::meshes::MeshCache::default();
     while let Some(request) = next_request(shared) {
         let generation = request.generation;
         let publish = |result: Result<Frame, String>| {
@@ -178,11 +179,11 @@ fn run(shared: &Shared, waker: &Waker) {
         // A panic in the tracer must not end the worker: report it and wait for the next
         // request (an edit may well avoid whatever caused it).
         let outcome = run_caught("the renderer", || {
-            match World::isolated_with_meshes(
-                &request.scene,
-                &request.options.isolation,
-                &request.meshes,
-            ) {
+            let world = meshes.for_request(&request).and_then(|store| {
+                World::isolated_with_meshes(&request.scene, &request.options.isolation, &store)
+                    .map_err(|e| e.to_string())
+            });
+            match world {
                 Ok(world) => render_plan_cached(
                     &world,
                     &request.options,
@@ -190,7 +191,7 @@ fn run(shared: &Shared, waker: &Waker) {
                     &mut || start_pass(shared),
                     &mut |frame| publish(Ok(frame)),
                 ),
-                Err(error) => publish(Err(error.to_string())),
+                Err(error) => publish(Err(error)),
             }
         });
         lock(&shared.mailbox).running = None;

@@ -21,12 +21,12 @@ impl TriangleMesh {
     }
 
     /// Every crossing of the ray with the surface at t > 0, nearest first, appended to
-    /// `out` (cleared first), with flat outward normals. Where a ray meets an edge or a
+    /// `out` (as `shapes::crossings` does for the unit shapes), with flat outward normals. Where a ray meets an edge or a
     /// vertex several triangles report the same crossing; of consecutive crossings
     /// with the same direction (in or out) only the first is kept, as crossings of a
     /// closed surface alternate.
     pub fn crossings(&self, ray: &Ray, out: &mut Vec<ShapeHit>) {
-        out.clear();
+        let first = out.len();
         let shear = RayShear::new(ray);
         self.walk(
             ray,
@@ -50,16 +50,18 @@ impl TriangleMesh {
             },
             f64::INFINITY,
         );
-        out.sort_by(|x, y| x.t.total_cmp(&y.t));
+        out[first..].sort_by(|x, y| x.t.total_cmp(&y.t));
         let mut last_entering = None;
-        out.retain(|hit| {
-            let entering = hit.n.dot(ray.dir) < 0.0;
-            let keep = last_entering != Some(entering);
-            if keep {
+        let mut kept = first;
+        for index in first..out.len() {
+            let entering = out[index].n.dot(ray.dir) < 0.0;
+            if last_entering != Some(entering) {
                 last_entering = Some(entering);
+                out[kept] = out[index];
+                kept += 1;
             }
-            keep
-        });
+        }
+        out.truncate(kept);
     }
 }
 

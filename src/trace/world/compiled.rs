@@ -69,6 +69,8 @@ pub struct World {
     /// With more objects than culling covers, a hierarchy over the uncovered ones (from
     /// [`ObjectSet::CULLED_BELOW`] on) for culled queries.
     pub(crate) tail_bvh: Option<Bvh>,
+    /// The meshes compiled in, for compiling variants of the scene (shared, not copied).
+    pub meshes: MeshStore,
 }
 
 /// How rays find the objects they may hit.
@@ -135,6 +137,7 @@ impl World {
             isolation: Isolation::NONE,
             bvh: None,
             tail_bvh: None,
+            meshes: meshes.clone(),
         };
         if world.objects.len() >= BVH_MIN_OBJECTS {
             world.set_acceleration(Acceleration::Bvh);

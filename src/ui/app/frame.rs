@@ -61,6 +61,7 @@ impl EditorApp {
         if let Some(preview) = &mut self.preview {
             preview.sync(
                 self.looking.shown_scene(&self.scene),
+                self.path.as_deref().and_then(std::path::Path::parent),
                 &self.preview_settings,
                 &self.isolation,
             );

@@ -36,6 +36,8 @@ pub struct PreviewLink {
     submitted: Option<Scene>,
     /// The options of the last request (size, samples, switches, view).
     submitted_options: Option<RenderOptions>,
+    /// The scene folder last sent (where mesh files are read).
+    submitted_folder: Option<std::path::PathBuf>,
     generation: u64,
     texture: Option<TextureHandle>,
     /// Whether the texture carries the NaN guard's overlay.
@@ -55,6 +57,7 @@ impl PreviewLink {
             worker: PreviewWorker::spawn(Box::new(move || ctx.request_repaint())),
             submitted: None,
             submitted_options: None,
+            submitted_folder: None,
             generation: 0,
             texture: None,
             texture_guarded: false,
@@ -66,7 +69,14 @@ impl PreviewLink {
 
     /// Sends `scene` with the toolbar's switches and view and the isolation switches to
     /// the worker if any of them differs from what was last sent.
-    pub fn sync(&mut self, scene: &Scene, settings: &PreviewSettings, isolation: &Isolation) {
+    /// `folder` is the scene file's, where the worker finds mesh files.
+    pub fn sync(
+        &mut self,
+        scene: &Scene,
+        folder: Option<&std::path::Path>,
+        settings: &PreviewSettings,
+        isolation: &Isolation,
+    ) {
         let options = RenderOptions {
             switches: settings.switches,
             view: settings.view,
@@ -75,17 +85,20 @@ impl PreviewLink {
         };
         if self.submitted.as_ref() == Some(scene)
             && self.submitted_options.as_ref() == Some(&options)
+            && self.submitted_folder.as_deref() == folder
         {
             return;
         }
         self.generation += 1;
         self.submitted = Some(scene.clone());
         self.submitted_options = Some(options.clone());
+        self.submitted_folder = folder.map(std::path::Path::to_path_buf);
         self.worker.submit(PreviewRequest {
             generation: self.generation,
             scene: std::sync::Arc::new(scene.clone()),
             options,
             meshes: std::sync::Arc::default(),
+            scene_folder: self.submitted_folder.clone(),
         });
     }
 
