@@ -109,13 +109,10 @@ impl WorldObject {
     /// The closest hit of an object-space ray, without the bounds test.
     #[inline(always)]
     pub(crate) fn hit_unbounded(&self, ray: &Ray, t_max: f64) -> Option<ObjectHit> {
-        match &self.csg {
-            None => shapes::intersect(self.shape, ray, t_max).map(|hit| ObjectHit { hit, part: 0 }),
-            Some(tree) => tree.intersect(ray, t_max).map(|h| ObjectHit {
-                hit: h.hit,
-                part: h.leaf,
-            }),
+        if let Some(tree) = &self.csg {
+            return tree_hit(tree, ray, t_max);
         }
+        shapes::intersect(self.shape, ray, t_max).map(|hit| ObjectHit { hit, part: 0 })
     }
 
     /// Whether a world ray meets the object with `t` in (0, t_max).
@@ -125,10 +122,10 @@ impl WorldObject {
             return false;
         }
         let ray = ray.transformed(&self.object_from_world);
-        match &self.csg {
-            None => shapes::occluded(self.shape, &ray, t_max),
-            Some(tree) => tree.occluded(&ray, t_max),
+        if let Some(tree) = &self.csg {
+            return tree_blocks(tree, &ray, t_max);
         }
+        shapes::occluded(self.shape, &ray, t_max)
     }
 
     /// Bound on the world hit point's distance from the surface: the object-space error
@@ -145,6 +142,23 @@ impl WorldObject {
             gamma(3) * (inv * p_world.abs() + self.object_from_world.translation.abs());
         carried + forward + m * back_in_object
     }
+}
+
+/// A CSG object's hit, out of line: the primitives' path stays small where it is inlined.
+#[cold]
+#[inline(never)]
+fn tree_hit(tree: &CsgTree, ray: &Ray, t_max: f64) -> Option<ObjectHit> {
+    tree.intersect(ray, t_max).map(|h| ObjectHit {
+        hit: h.hit,
+        part: h.leaf,
+    })
+}
+
+/// Whether a CSG object blocks a ray, out of line as [`tree_hit`].
+#[cold]
+#[inline(never)]
+fn tree_blocks(tree: &CsgTree, ray: &Ray, t_max: f64) -> bool {
+    tree.occluded(ray, t_max)
 }
 
 fn abs_mat(m: &DMat3) -> DMat3 {
