@@ -13,6 +13,9 @@ mod plane;
 pub(crate) mod quadratic;
 mod sphere;
 
+#[cfg(test)]
+mod crossings_tests;
+
 use glam::DVec3;
 
 pub use self::bounds::{Aabb, BoundingSphere};
