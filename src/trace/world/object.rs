@@ -35,8 +35,8 @@ pub struct WorldObject {
     /// Index into [`super::World::materials`]; for a CSG node its first leaf's (each
     /// surface point has its operand's: [`super::World::material_at`]).
     pub material: usize,
-    /// For spheres: a bounding sphere, tighter than the box and tested without
-    /// transforming the ray.
+    /// For spheres, and CSG nodes held by one of their sphere leaves: a bounding sphere,
+    /// tighter than the box and tested without transforming the ray.
     bounding_sphere: Option<BoundingSphere>,
     /// Component-wise absolute values of the two 3x3 parts, for the error bounds.
     abs_world_from_object: DMat3,
@@ -73,8 +73,13 @@ impl WorldObject {
             normal_from_object: world_from_object.matrix3.inverse().transpose(),
             bounds,
             material,
-            bounding_sphere: (shape == Primitive::Sphere && csg.is_none())
-                .then(|| BoundingSphere::around_unit_sphere(&world_from_object)),
+            bounding_sphere: match &csg {
+                None => (shape == Primitive::Sphere)
+                    .then(|| BoundingSphere::around_unit_sphere(&world_from_object)),
+                Some(tree) => tree.bounding_sphere.map(|node_from_sphere| {
+                    BoundingSphere::around_unit_sphere(&(world_from_object * node_from_sphere))
+                }),
+            },
             csg: csg.map(Arc::new),
             abs_world_from_object: abs_mat(&world_from_object.matrix3),
             abs_object_from_world: abs_mat(&object_from_world.matrix3),

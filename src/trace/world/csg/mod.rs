@@ -73,6 +73,9 @@ pub struct CsgTree {
     /// Where the solid can be, in the node's space: Union joins its operands' extents,
     /// Intersection overlaps them, Difference keeps the first's.
     pub extent: Extent,
+    /// The placement, in the node's space, of a sphere leaf that holds the whole solid
+    /// (as a lens's spheres, a rounded die's), for a tighter bounds test than the box.
+    pub bounding_sphere: Option<DAffine3>,
 }
 
 /// A hit on a CSG node: the surface point in the node's space, facing out of the result.
