@@ -87,10 +87,11 @@ impl WorldObject {
     }
 
     /// Whether a ray leaving the surface on its outer side can meet the object again
-    /// (not for a single convex or flat primitive; possibly for a CSG node).
+    /// (not for a single convex or flat primitive, nor a convex CSG node; possibly for
+    /// other CSG nodes).
     #[must_use]
     pub fn can_meet_itself(&self) -> bool {
-        self.csg.is_some()
+        self.csg.as_ref().is_some_and(|tree| !tree.convex)
     }
 
     /// The bounds test: whether the ray may meet the object before `t_max`.

@@ -47,10 +47,13 @@ impl CsgTree {
             steps: Vec::new(),
             extent: Extent::Empty,
             bounding_sphere: None,
+            convex: false,
         };
         let mut extents: Vec<Extent> = Vec::new();
         // Per operand on the stack, a sphere leaf's placement that holds all of it.
         let mut spheres: Vec<Option<DAffine3>> = Vec::new();
+        // Per operand on the stack, whether its solid is known to be convex.
+        let mut convex: Vec<bool> = Vec::new();
         // The SkipIfEmpty steps waiting for their node's end (nodes nest, so a stack).
         let mut checks: Vec<usize> = Vec::new();
         let mut chunks: Vec<usize> = Vec::new();
@@ -87,6 +90,12 @@ impl CsgTree {
                     let first = extents.len() - operands as usize;
                     let combined = combine_extents(op, &extents[first..]);
                     let sphere = bounding_sphere(op, &spheres[first..]);
+                    // Intersections of convex solids are convex; nothing else here is
+                    // known to be.
+                    let all_convex = convex[first..].iter().all(|&c| c);
+                    let node_convex = all_convex && (op == CsgOp::Intersection || operands == 1);
+                    convex.truncate(first);
+                    convex.push(node_convex);
                     extents.truncate(first);
                     extents.push(combined);
                     spheres.truncate(first);
@@ -129,6 +138,7 @@ impl CsgTree {
                         let leaf = CsgLeaf::new(primitive, path, material, node_from_object);
                         extents.push(leaf.bounds.map_or(Extent::Unbounded, Extent::Box));
                         spheres.push((primitive == Primitive::Sphere).then_some(node_from_object));
+                        convex.push(true);
                         tree.leaves.push(leaf);
                     }
                 },
@@ -136,6 +146,7 @@ impl CsgTree {
         }
         tree.extent = extents.pop().unwrap_or(Extent::Empty);
         tree.bounding_sphere = spheres.pop().flatten();
+        tree.convex = convex.pop().unwrap_or(false);
         Ok(tree)
     }
 }

@@ -76,6 +76,9 @@ pub struct CsgTree {
     /// The placement, in the node's space, of a sphere leaf that holds the whole solid
     /// (as a lens's spheres, a rounded die's), for a tighter bounds test than the box.
     pub bounding_sphere: Option<DAffine3>,
+    /// Whether the solid is known to be convex (an Intersection of primitives, which
+    /// are all convex): then a ray leaving it outward cannot meet it again.
+    pub convex: bool,
 }
 
 /// A hit on a CSG node: the surface point in the node's space, facing out of the result.
