@@ -419,7 +419,9 @@ fn only_intersections_of_primitives_count_as_convex() {
     assert!(bitten_sphere().objects[0].can_meet_itself());
     // A shadow ray leaving the bite's floor sideways meets the rim: not convex.
     let world = bitten_sphere();
-    let floor = world.intersect(&down_from(0.0, 0.0, 5.0), f64::INFINITY).unwrap();
+    let floor = world
+        .intersect(&down_from(0.0, 0.0, 5.0), f64::INFINITY)
+        .unwrap();
     let sideways = spawn_ray(&floor, DVec3::new(1.0, 0.0, 0.3));
     assert_eq!(world.occluder(&sideways, f64::INFINITY), Some(0));
 }
