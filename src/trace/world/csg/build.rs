@@ -3,7 +3,7 @@
 
 use glam::{DAffine3, DVec3};
 
-use super::{CsgLeaf, CsgTree, Extent, Step, combine_extents};
+use super::tree::{CsgLeaf, CsgTree, Extent, Step, combine_extents};
 use crate::scene::{CsgOp, Object, SceneError, Shape};
 use crate::trace::shapes::{self, Aabb, Primitive};
 
