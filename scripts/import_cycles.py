@@ -1,3 +1,13 @@
+#!/usr/bin/env python3
+"""Reports import cycles between the modules of a Rust source folder and exits 1 if any.
+
+    python3 scripts/import_cycles.py src/trace
+
+A module depends on each module it names in a `use` line or an inline path (`crate::`,
+`super::`, `self::`), and a folder's face (its mod.rs) on the children it declares. Test
+modules and comments are left out. Cycles are the strongly connected components of that
+graph with more than one module.
+"""
 import re,sys,os,glob
 root=sys.argv[1].rstrip('/')
 crate_prefix='crate::'+root.split('src/',1)[1].replace('/','::')
@@ -15,8 +25,6 @@ def resolve(cur, path):
         segs=segs[len(pre):]; base=[]
     else:
         base=cur.split('::') if cur else []
-        isdir = mods.get(cur,'').endswith('mod.rs') or cur==''
-        if not isdir: base=base[:-1]
         while segs and segs[0] in ('super','self'):
             if segs[0]=='super': base=base[:-1]
             segs=segs[1:]
@@ -81,4 +89,5 @@ def sc(v):
 for v in list(mods): 
     if v not in index: sc(v)
 for c in sccs: print('cycle:', ' '.join(sorted(c)))
-print(f'{len(mods)} modules, {sum(len(e) for e in edges.values())} edges, {len(sccs)} cycles')
+print(f'{root}: {len(mods)} modules, {sum(len(e) for e in edges.values())} edges, {len(sccs)} cycles')
+sys.exit(1 if sccs else 0)

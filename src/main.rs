@@ -5,7 +5,7 @@ use libmimalloc_sys::{mi_option_get, mi_option_set, mi_option_t};
 /// mimalloc, holding on to freed memory for a while: each preview pass allocates and
 /// frees frame-sized buffers, and memory handed back to the system comes back page fault
 /// by page fault (about 5,000 faults a re-shade pass at 800x600; measured in
-/// docs/BENCHMARKS.md).
+/// docs/PERFORMANCE_HISTORY.md).
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
@@ -23,7 +23,7 @@ fn main() -> std::process::ExitCode {
     // fresh memory may stall on the kernel zeroing (and compacting for) 2 MiB. Moving a
     // light took 74-105 ms with them and 57-64 without; a first colour edit after a
     // re-trace sometimes 30-47 ms instead of 11-13; material edits 8% longer without
-    // (docs/BENCHMARKS.md). A kernel that refuses leaves things as they were: harmless.
+    // (docs/PERFORMANCE_HISTORY.md). A kernel that refuses leaves things as they were: harmless.
     // The allocations before `main` (the runtime's first) are covered by mimalloc's
     // `no_thp` feature (Cargo.toml), which stops it asking for huge pages at all: without
     // it each process zeroed two 2 MiB pages before starting, about 1 ms.

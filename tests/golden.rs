@@ -4,8 +4,8 @@
 
 use std::path::{Path, PathBuf};
 
-use raylab::scene::load_scene;
-use raylab::trace::{RenderOptions, RenderProgress, World, render};
+use raylab::scene::{load_scene, read_scene_meshes};
+use raylab::trace::{MeshStore, RenderOptions, RenderProgress, World, render};
 
 /// Long side of the golden renders, in pixels.
 const GOLDEN_WIDTH: u32 = 160;
@@ -22,7 +22,8 @@ fn root() -> PathBuf {
 
 fn render_small(scene_name: &str) -> image::RgbImage {
     let scene = load_scene(&root().join("scenes").join(format!("{scene_name}.ron"))).unwrap();
-    let world = World::new(&scene).unwrap();
+    let meshes = read_scene_meshes(&scene, &root().join("scenes")).unwrap();
+    let world = World::with_meshes(&scene, &MeshStore::build(&meshes)).unwrap();
     let mut options = RenderOptions::from_scene(&scene);
     options.width = GOLDEN_WIDTH;
     options.height = (f64::from(GOLDEN_WIDTH) * f64::from(scene.camera.height)
@@ -106,9 +107,22 @@ fn specular_exponents() {
 }
 
 #[test]
+fn csg() {
+    check("csg");
+}
+
+#[test]
+fn mesh() {
+    check("mesh");
+}
+
+#[test]
 fn every_example_scene_has_a_golden_image() {
     for entry in std::fs::read_dir(root().join("scenes")).unwrap() {
         let path = entry.unwrap().path();
+        if path.extension().is_none_or(|e| e != "ron") {
+            continue; // the OBJ files of the mesh scene
+        }
         let stem = path.file_stem().unwrap().to_string_lossy().into_owned();
         assert!(
             root()

@@ -60,6 +60,8 @@ fn distance_to_surface(object: &WorldObject, p_world: DVec3) -> f64 {
             parts.push((f64::from(len - one), q64.normalize()));
         }
         Primitive::Plane => parts.push((q64.z, DVec3::Z)),
+        // Mesh hit points are checked in tests/mesh.rs (spawned rays clear their triangle).
+        Primitive::Mesh => unreachable!("the precision scenes have no meshes"),
         Primitive::Cube => {
             for axis in 0..3 {
                 let others_inside = (0..3)

@@ -7,14 +7,15 @@
 mod common;
 
 use std::path::Path;
+use std::sync::Arc;
 use std::time::Duration;
 
 use common::LIGHT_ON_THE_SURFACE;
 use common::cli::{out_dir, raylab};
 use raylab::preview::{PreviewRequest, PreviewWorker};
-use raylab::scene::{load_scene, parse_scene};
+use raylab::scene::{load_scene, parse_scene, read_scene_meshes};
 use raylab::trace::{
-    RenderOptions, RenderProgress, Term, TermSwitches, View, World, render_samples,
+    MeshStore, RenderOptions, RenderProgress, Term, TermSwitches, View, World, render_samples,
 };
 
 /// `raylab render SCENE -o OUT`.
@@ -91,7 +92,8 @@ fn a_light_whose_colour_times_intensity_overflows_is_refused_by_name() {
     assert!(stderr.contains("lights[1] (Point)"), "{stderr}");
 }
 
-fn example_scenes() -> Vec<(String, raylab::scene::Scene)> {
+/// The example scenes by file name, each with the meshes it refers to.
+fn example_scenes() -> Vec<(String, raylab::scene::Scene, Arc<MeshStore>)> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
     let mut scenes: Vec<_> = std::fs::read_dir(&dir)
         .unwrap()
@@ -99,7 +101,9 @@ fn example_scenes() -> Vec<(String, raylab::scene::Scene)> {
         .filter(|p| p.extension().is_some_and(|e| e == "ron"))
         .map(|p| {
             let scene = load_scene(&p).unwrap();
-            (p.file_name().unwrap().to_string_lossy().into_owned(), scene)
+            let meshes = read_scene_meshes(&scene, &dir).unwrap();
+            let name = p.file_name().unwrap().to_string_lossy().into_owned();
+            (name, scene, Arc::new(MeshStore::build(&meshes)))
         })
         .collect();
     scenes.sort_by(|a, b| a.0.cmp(&b.0));
@@ -109,8 +113,8 @@ fn example_scenes() -> Vec<(String, raylab::scene::Scene)> {
 
 #[test]
 fn no_example_scene_has_a_non_finite_sample_in_any_view() {
-    for (name, scene) in example_scenes() {
-        let world = World::new(&scene).unwrap();
+    for (name, scene, meshes) in example_scenes() {
+        let world = World::with_meshes(&scene, &meshes).unwrap();
         let switches = [
             TermSwitches::ALL_ON,
             TermSwitches::ALL_ON.with_solo(Some(Term::Reflection)),
@@ -139,11 +143,14 @@ fn no_example_scene_has_a_non_finite_sample_in_any_view() {
 #[test]
 fn every_preview_frame_of_every_example_scene_reports_zero_non_finite_samples() {
     let mut worker = PreviewWorker::spawn(Box::new(|| {}));
-    for (generation, (name, mut scene)) in (1..).zip(example_scenes()) {
+    for (generation, (name, mut scene, meshes)) in (1..).zip(example_scenes()) {
         scene.camera.width /= 2;
         scene.camera.height /= 2;
         scene.render.samples_per_pixel = 4;
-        worker.submit(PreviewRequest::for_scene(generation, scene));
+        worker.submit(PreviewRequest {
+            meshes,
+            ..PreviewRequest::for_scene(generation, scene)
+        });
         let mut frames = 0;
         loop {
             let message = worker

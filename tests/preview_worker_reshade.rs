@@ -56,6 +56,7 @@ fn edited(
         generation,
         scene: std::sync::Arc::new(scene),
         options: request.options.clone(),
+        meshes: request.meshes.clone(),
     }
 }
 

@@ -16,8 +16,9 @@ use raylab::trace::{
     inspect_pixel,
 };
 use raylab::ui::gizmo::projection::ViewMapping;
+use raylab::ui::state::RayPathSettings;
 use raylab::ui::viewport::pixel_inspector::PixelInspection;
-use raylab::ui::viewport::ray_paths::{RayPathSettings, screen_segments};
+use raylab::ui::viewport::ray_paths::screen_segments;
 
 const LENGTHS: SegmentLengths = SegmentLengths {
     run_off: 50.0,

@@ -10,7 +10,8 @@ use egui_kittest::kittest::Queryable;
 use raylab::gizmo::ray_paths::SegmentKind;
 use raylab::trace::RayKind;
 use raylab::ui::EditorApp;
-use raylab::ui::viewport::ray_paths::{MAX_SPAN_PIXELS, RaySpan, ScreenSegment};
+use raylab::ui::state::{MAX_SPAN_PIXELS, RaySpan};
+use raylab::ui::viewport::ray_paths::ScreenSegment;
 use view_harness::{
     click, harness, move_inspector_away, object_on_screen, orbit, picture, press, scene_pixel,
     segments, toggle,

@@ -11,7 +11,7 @@ use egui_kittest::kittest::Queryable;
 use glam::DVec3;
 use raylab::preview::Pass;
 use raylab::trace::{RenderOptions, RenderProgress, World, render};
-use raylab::ui::viewport::view_camera::free_render_size;
+use raylab::ui::state::free_render_size;
 use raylab::ui::{CAMERA_VIEW_LABEL, EditorApp, Selection, ViewMemory};
 use view_harness::editor_harness::wait_for_final;
 use view_harness::{click, drag, harness, harness_on, orbit, picture, scene_file, screen, view};

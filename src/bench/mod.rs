@@ -5,6 +5,7 @@ pub mod convergence;
 pub mod crossover;
 pub mod diff;
 pub mod edit_latency;
+pub mod mesh;
 pub mod plot;
 pub mod precision;
 pub mod throughput;
@@ -54,4 +55,12 @@ pub struct BenchReport {
     pub bvh_crossover: Vec<CrossoverPoint>,
     /// `raylab diff` of a 500x500 scene with 5 objects and 3 lights, best time.
     pub diff_500_ms: f64,
+    /// Triangles of the generated torus knot of the mesh section.
+    pub mesh_triangles: usize,
+    /// Best time to build the knot's hierarchy, all cores.
+    pub mesh_build_ms: f64,
+    /// Primary rays per second through the knot, all cores, millions.
+    pub mesh_mrays_per_s: f64,
+    /// Memory of the built knot per triangle.
+    pub mesh_bytes_per_triangle: f64,
 }

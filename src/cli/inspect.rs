@@ -88,7 +88,9 @@ pub fn inspect_text(scene: &Scene, args: &InspectArgs) -> Result<String, String>
     let pruned = args.isolation.without_hidden_children(scene)?;
     let scene = &pruned;
     let isolation = args.isolation.isolation(scene)?;
-    let world = World::isolated(scene, &isolation).map_err(|e| e.to_string())?;
+    let meshes = crate::cli::load_meshes(scene, &args.scene)?;
+    let world =
+        World::isolated_with_meshes(scene, &isolation, &meshes).map_err(|e| e.to_string())?;
     let options = RenderOptions {
         switches: args.terms.switches(),
         view: View::Beauty,
@@ -297,6 +299,14 @@ fn tree_text(scene: &Scene, options: &RenderOptions, report: &PixelReport) -> St
             v(hit.p),
             v(hit.n)
         );
+        if let Some(triangle) = &bounce.triangle {
+            let [a, b, c] = triangle.weights;
+            let _ = writeln!(
+                out,
+                "{pad}  triangle {} of the file, barycentric ({a:.4}, {b:.4}, {c:.4})",
+                triangle.triangle
+            );
+        }
         let _ = writeln!(out, "{pad}  ambient {}", v(bounce.ambient));
         for (light, outcome, record) in bounce.light_outcomes() {
             let mut line = format!("{pad}  {}: {}", light_name(light), outcome.text(&name));

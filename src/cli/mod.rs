@@ -80,3 +80,21 @@ fn start_editor(_scene: Option<PathBuf>) -> Result<(), String> {
             .to_owned(),
     )
 }
+
+/// Reads and builds the meshes `scene` (read from `scene_path`) refers to, printing the
+/// loader's warnings.
+///
+/// # Errors
+/// The first mesh file that cannot be read, named with its object and the scene file.
+pub(crate) fn load_meshes(
+    scene: &crate::scene::Scene,
+    scene_path: &std::path::Path,
+) -> Result<crate::trace::MeshStore, String> {
+    let folder = scene_path.parent().unwrap_or(std::path::Path::new("."));
+    let data = crate::scene::read_scene_meshes(scene, folder)
+        .map_err(|e| format!("{}: {e}", scene_path.display()))?;
+    for warning in data.values().flat_map(|mesh| &mesh.warnings) {
+        eprintln!("warning: {warning}");
+    }
+    Ok(crate::trace::MeshStore::build(&data))
+}

@@ -82,7 +82,8 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     let scene = load_scene(&args.scene).map_err(|e| format!("{}: {e}", args.scene.display()))?;
     let scene = args.isolation.without_hidden_children(&scene)?;
     let options = args.options(&scene)?;
-    let world = World::isolated(&scene, &options.isolation)
+    let meshes = crate::cli::load_meshes(&scene, &args.scene)?;
+    let world = World::isolated_with_meshes(&scene, &options.isolation, &meshes)
         .map_err(|e| format!("{}: {e}", args.scene.display()))?;
     let started = Instant::now();
     let sums = render_with_progress_bar(world, options.clone())?;

@@ -4,6 +4,7 @@
 //! tracer's own camera) and feeds them to these functions.
 
 pub mod frustum;
+pub mod gesture;
 pub mod handle;
 pub mod handles;
 pub mod navigate;
@@ -11,6 +12,7 @@ pub mod ray_paths;
 pub mod snap;
 pub mod spot;
 pub mod transform_drag;
+pub mod trs;
 pub mod view;
 
 use glam::DVec3;

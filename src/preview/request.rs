@@ -3,7 +3,7 @@
 use std::sync::Arc;
 
 use crate::scene::Scene;
-use crate::trace::RenderOptions;
+use crate::trace::{MeshStore, RenderOptions};
 
 /// An immutable snapshot to render: the scene, the full-resolution target and its
 /// generation. Generations increase with every submit; the worker drops older ones.
@@ -15,6 +15,10 @@ pub struct PreviewRequest {
     pub scene: Arc<Scene>,
     /// Full-resolution size, anti-aliasing target, term switches and view.
     pub options: RenderOptions,
+    /// The built meshes the scene's mesh objects refer to (read by the caller, off the
+    /// worker; empty for scenes without meshes). Shared, so a material edit keeps the
+    /// same meshes and the hit cache re-shades instead of re-tracing.
+    pub meshes: Arc<MeshStore>,
 }
 
 /// The longest side the editor's preview renders at; larger scenes are previewed scaled
@@ -30,6 +34,7 @@ impl PreviewRequest {
             generation,
             scene: Arc::new(scene),
             options,
+            meshes: Arc::default(),
         }
     }
 
@@ -42,6 +47,7 @@ impl PreviewRequest {
             generation,
             scene: Arc::new(scene),
             options,
+            meshes: Arc::default(),
         }
     }
 

@@ -178,7 +178,11 @@ fn run(shared: &Shared, waker: &Waker) {
         // A panic in the tracer must not end the worker: report it and wait for the next
         // request (an edit may well avoid whatever caused it).
         let outcome = run_caught("the renderer", || {
-            match World::isolated(&request.scene, &request.options.isolation) {
+            match World::isolated_with_meshes(
+                &request.scene,
+                &request.options.isolation,
+                &request.meshes,
+            ) {
                 Ok(world) => render_plan_cached(
                     &world,
                     &request.options,

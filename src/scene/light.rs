@@ -55,10 +55,10 @@ pub enum Light {
         /// Multiplier of `colour`.
         #[serde(default = "default_intensity")]
         intensity: f64,
-        /// Radius of the light's sphere; 0 (the default) is a point.
+        /// As for a point light: 0 (the default) is a point, more a sphere.
         #[serde(default, skip_serializing_if = "is_zero")]
         radius: f64,
-        /// Shadow rays per shading point for a sphere light; default 1.
+        /// As for a point light: shadow rays per shading point; default 1.
         #[serde(default = "default_samples", skip_serializing_if = "is_one")]
         samples: u32,
     },
@@ -135,22 +135,30 @@ impl Light {
     /// The light's colour, before `intensity`.
     #[must_use]
     pub fn colour(&self) -> DVec3 {
-        match *self {
-            Light::Ambient { colour, .. }
-            | Light::Point { colour, .. }
-            | Light::Directional { colour, .. }
-            | Light::Spot { colour, .. } => colour,
-        }
+        self.colour_and_intensity().0
     }
 
     /// The multiplier of the light's colour.
     #[must_use]
     pub fn intensity(&self) -> f64 {
+        self.colour_and_intensity().1
+    }
+
+    /// The two fields every kind of light has.
+    fn colour_and_intensity(&self) -> (DVec3, f64) {
         match *self {
-            Light::Ambient { intensity, .. }
-            | Light::Point { intensity, .. }
-            | Light::Directional { intensity, .. }
-            | Light::Spot { intensity, .. } => intensity,
+            Light::Ambient {
+                colour, intensity, ..
+            }
+            | Light::Point {
+                colour, intensity, ..
+            }
+            | Light::Directional {
+                colour, intensity, ..
+            }
+            | Light::Spot {
+                colour, intensity, ..
+            } => (colour, intensity),
         }
     }
 

@@ -9,6 +9,7 @@ pub mod examples;
 mod file;
 pub mod legacy;
 mod light;
+pub mod mesh_file;
 mod model;
 mod shape;
 mod text_file;
@@ -21,6 +22,7 @@ pub use file::{
     load_scene, parse_scene, save_scene, scene_to_ron, write_atomically, write_atomically_with,
 };
 pub use light::{Light, LightKind};
+pub use mesh_file::{MeshData, load_obj, mesh_objects, read_scene_meshes};
 pub use model::{Camera, FORMAT_VERSION, Material, Object, RenderSettings, Scene};
 pub use shape::{CsgOp, Shape};
 pub use text_file::{MAX_SCENE_FILE_BYTES, TextFileError, read_text_file};

@@ -144,6 +144,20 @@ pub struct Material {
     pub ior: f64,
 }
 
+impl Material {
+    /// The grey plastic that new scenes and new objects start with.
+    #[must_use]
+    pub fn grey() -> Self {
+        Self {
+            ambient: DVec3::splat(0.1),
+            diffuse: DVec3::splat(0.6),
+            specular: DVec3::splat(0.3),
+            shininess: 32.0,
+            ..Self::default()
+        }
+    }
+}
+
 fn default_ior() -> f64 {
     1.0
 }

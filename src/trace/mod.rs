@@ -46,6 +46,7 @@ pub use shade::{
     LightOutcome, LightRecord, LightSkip, LocalLight, NoRecorder, Recorder, ShadowRay,
     SkippedLight, Tracer, phong_power,
 };
+pub use shapes::{MeshStore, TriangleHit, TriangleMesh};
 pub use terms::{Isolation, Term, TermSwitches, View};
 pub use world::{
     Acceleration, BVH_MIN_OBJECTS, CsgHit, CsgLeaf, CsgTree, Extent, IsolationError, LightSample,

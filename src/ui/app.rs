@@ -17,11 +17,11 @@ use crate::ui::document::files;
 use crate::ui::document::native_dialogs::NativeDialogs;
 use crate::ui::document::recent::RecentFiles;
 use crate::ui::screenshot::ScreenshotHook;
+use crate::ui::state::PreviewSettings;
+use crate::ui::state::keep_in_range;
 use crate::ui::stored::Stored;
-use crate::ui::viewport::isolation::keep_in_range;
 use crate::ui::viewport::isolation_memory::IsolationMemory;
 use crate::ui::viewport::preview_link::PreviewLink;
-use crate::ui::viewport::preview_settings::PreviewSettings;
 
 mod apply;
 mod document;

@@ -10,6 +10,7 @@ pub mod gizmo;
 pub mod panels;
 mod screenshot;
 mod shortcuts;
+pub mod state;
 pub mod stored;
 mod style;
 #[cfg(test)]
@@ -20,6 +21,7 @@ use std::path::PathBuf;
 
 use stored::Stored;
 
+pub use crate::gizmo::trs::trs_from_matrix;
 pub use app::{EditorApp, EditorOptions};
 pub use commands::{Command, LightKind, SceneEdit, Selection};
 pub use document::confirm::DiscardAction;
@@ -30,11 +32,12 @@ pub use document::file_dialog::{
 pub use document::native_dialogs::NativeDialogs;
 pub use document::{files, recent};
 pub use gizmo::toolbar::{CAMERA_VIEW_LABEL, SET_CAMERA_LABEL};
-pub use panels::inspector::trs_from_matrix;
-pub use panels::outliner::light_label;
+pub use state::{
+    IsolationToggle, PreviewSettings, RayPathSettings, RaySpan, ViewCamera, isolation_note,
+    light_label, view_label,
+};
 pub use viewport::convergence_plot::CONVERGENCE_EXPLANATION;
 pub use viewport::full_picture_marker::NOT_FULL_PICTURE;
-pub use viewport::isolation::{IsolationToggle, isolation_note};
 pub use viewport::isolation_memory::IsolationMemory;
 pub use viewport::picture::{VIEWPORT_LABEL, letterbox};
 pub use viewport::pixel_inspector::{
@@ -42,10 +45,8 @@ pub use viewport::pixel_inspector::{
     PixelInspection,
 };
 pub use viewport::preview_link::{PreviewLink, ShownFrame, frame_rgba};
-pub use viewport::preview_settings::PreviewSettings;
-pub use viewport::ray_paths::{RAY_PATHS_LABEL, RayPathSettings, RaySpan};
-pub use viewport::toolbar::{NAN_COLOUR, non_finite_text, view_label};
-pub use viewport::view_camera::ViewCamera;
+pub use viewport::ray_paths::RAY_PATHS_LABEL;
+pub use viewport::toolbar::{NAN_COLOUR, non_finite_text};
 pub use viewport::view_memory::ViewMemory;
 
 /// The window and taskbar icon (`assets/icon.png`, rendered by raylab itself).

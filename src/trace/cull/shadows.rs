@@ -14,8 +14,7 @@
 use glam::DVec3;
 
 use crate::trace::shapes::Aabb;
-use crate::trace::world::ObjectSet;
-use crate::trace::world::WorldLight;
+use crate::trace::world::{ObjectSet, WorldLight};
 
 /// Margin, relative to the lengths involved, by which a region must miss a box.
 const RELATIVE_MARGIN: f64 = 1e-8;

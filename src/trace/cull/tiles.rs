@@ -11,12 +11,9 @@
 
 use glam::{DVec2, DVec3};
 
-use super::shadows::CullBox;
-use super::shadows::shadow_set;
-use super::shadows::tile_hit_box;
+use super::shadows::{CullBox, shadow_set, tile_hit_box};
 use crate::trace::film::PinholeCamera;
-use crate::trace::world::ObjectSet;
-use crate::trace::world::World;
+use crate::trace::world::{ObjectSet, World};
 
 /// Side of a culling tile in image pixels (the render's tiles, so one list per tile).
 pub const CULL_TILE: u32 = crate::trace::film::TILE_SIZE;
@@ -197,8 +194,7 @@ mod tests {
     use super::*;
     use crate::scene::examples::default_scene;
     use crate::scene::{Light, Transform};
-    use crate::trace::world::spawn_ray;
-    use crate::trace::world::spawn_ray_to;
+    use crate::trace::world::{spawn_ray, spawn_ray_to};
 
     /// Every camera ray of a render gets bit for bit the hit it gets from all objects,
     /// and every shadow ray from that hit the blocker; returns how many object tests

@@ -9,9 +9,7 @@ use rayon::prelude::*;
 use super::image::Image;
 use crate::scene::Scene;
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::terms::Isolation;
-use crate::trace::terms::TermSwitches;
-use crate::trace::terms::View;
+use crate::trace::terms::{Isolation, TermSwitches, View};
 
 /// What to render.
 #[derive(Clone, Debug, PartialEq, Eq)]

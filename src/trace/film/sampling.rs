@@ -35,7 +35,7 @@ pub fn sequence_sample(px: u32, py: u32, index: u32) -> DVec2 {
     let index = index % SEQUENCE_LENGTH;
     // The first four dimensions at once (the crate's SIMD path): the same values as two
     // calls of `sample` for dimensions 0 and 1, which shuffled the index twice; 15%
-    // fewer instructions (docs/BENCHMARKS.md).
+    // fewer instructions (docs/PERFORMANCE_HISTORY.md).
     let [x, y, _, _] = sobol_burley::sample_4d(index, 0, seed);
     DVec2::new(f64::from(x), f64::from(y))
 }

@@ -3,19 +3,13 @@
 
 use glam::{DVec2, DVec3};
 
-use crate::trace::film::PinholeCamera;
-use crate::trace::film::RenderOptions;
+use crate::trace::film::{PinholeCamera, RenderOptions};
 use crate::trace::ray::Ray;
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::shade::LightOutcome;
-use crate::trace::shade::LightRecord;
-use crate::trace::shade::Recorder;
-use crate::trace::shade::SkippedLight;
-use crate::trace::shade::Tracer;
-use crate::trace::terms::Term;
-use crate::trace::terms::TermSwitches;
-use crate::trace::world::SurfacePoint;
-use crate::trace::world::World;
+use crate::trace::shade::{LightOutcome, LightRecord, Recorder, SkippedLight, Tracer};
+use crate::trace::shapes::TriangleHit;
+use crate::trace::terms::{Term, TermSwitches};
+use crate::trace::world::{SurfacePoint, World};
 
 /// What one ray of the chain (the camera ray, then each mirror bounce) met.
 #[derive(Clone, Debug, PartialEq)]
@@ -29,6 +23,8 @@ pub struct BounceReport {
     /// Which surface of the object tree that is (its path, and on a CSG object which
     /// crossing), when the hit is found again in the world.
     pub surface: Option<HitSurface>,
+    /// On a mesh: which triangle of its file the ray met, and the barycentric weights.
+    pub triangle: Option<TriangleHit>,
     /// Colour returned by a miss (background, or black where the switches hide it).
     pub background: DVec3,
     /// The ambient term added.
@@ -53,6 +49,7 @@ impl BounceReport {
             ray,
             hit: None,
             surface: None,
+            triangle: None,
             background: DVec3::ZERO,
             ambient: DVec3::ZERO,
             lights: Vec::new(),
@@ -177,9 +174,16 @@ impl ReportRecorder<'_> {
 impl Recorder for ReportRecorder<'_> {
     fn hit(&mut self, depth: u32, ray: &Ray, hit: &SurfacePoint) {
         let surface = HitSurface::find(self.world, ray, hit);
+        let triangle = self
+            .world
+            .object_scene_index
+            .iter()
+            .position(|&i| i == hit.object)
+            .and_then(|index| self.world.triangle_hit(index, ray, f64::INFINITY));
         let bounce = self.at(depth, ray);
         bounce.hit = Some(*hit);
         bounce.surface = surface;
+        bounce.triangle = triangle;
     }
     fn miss(&mut self, depth: u32, ray: &Ray, background: DVec3) {
         self.at(depth, ray).background = background;

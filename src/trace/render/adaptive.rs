@@ -10,11 +10,7 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use super::samples::trace_sample;
-use crate::trace::film::Image;
-use crate::trace::film::PinholeCamera;
-use crate::trace::film::RenderOptions;
-use crate::trace::film::RenderProgress;
-use crate::trace::film::sequence_sample;
+use crate::trace::film::{Image, PinholeCamera, RenderOptions, RenderProgress, sequence_sample};
 use crate::trace::ray_counts::RayCounts;
 use crate::trace::shade::Tracer;
 use crate::trace::world::World;

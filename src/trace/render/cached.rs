@@ -13,32 +13,19 @@ use std::sync::OnceLock;
 
 use rayon::prelude::*;
 
-use super::samples::camera_sample;
-use super::samples::sample_point;
-use super::tiles::TileWork;
-use super::tiles::render_tiles_with;
+use super::samples::{camera_sample, sample_point};
+use super::tiles::{TileWork, render_tiles_with};
 use crate::trace::cull::TileCull;
-use crate::trace::film::PinholeCamera;
-use crate::trace::film::RenderOptions;
-use crate::trace::film::RenderProgress;
-use crate::trace::film::SampleSums;
-use crate::trace::film::TileRect;
-use crate::trace::film::tile_count;
+use crate::trace::film::{
+    PinholeCamera, RenderOptions, RenderProgress, SampleSums, TileRect, tile_count,
+};
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::reshade::DependenceRule;
-use crate::trace::reshade::HitCache;
-use crate::trace::reshade::LightSlot;
-use crate::trace::reshade::PixelColour;
-use crate::trace::reshade::PixelRays;
-use crate::trace::reshade::QuickShade;
-use crate::trace::reshade::Reuse;
-use crate::trace::reshade::SlotColumns;
-use crate::trace::reshade::TermDependence;
-use crate::trace::reshade::TileRays;
-use crate::trace::shade::LiveRays;
-use crate::trace::shade::Tracer;
-use crate::trace::world::World;
-use crate::trace::world::assert_compiled_for;
+use crate::trace::reshade::{
+    DependenceRule, HitCache, LightSlot, PixelColour, PixelRays, QuickShade, Reuse, SlotColumns,
+    TermDependence, TileRays,
+};
+use crate::trace::shade::{LiveRays, Tracer};
+use crate::trace::world::{World, assert_compiled_for};
 
 /// What the one-sample pass made.
 #[derive(Clone, Debug)]

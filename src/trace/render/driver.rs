@@ -5,18 +5,14 @@ use std::ops::Range;
 
 use super::samples::{camera_sample, sample_point};
 use super::tile_pass::TilePass;
-use super::tiles::TileWork;
-use super::tiles::render_tiles_with;
+use super::tiles::{TileWork, render_tiles_with};
 use crate::trace::cull::TileCull;
-use crate::trace::film::Image;
-use crate::trace::film::PinholeCamera;
-use crate::trace::film::TileRect;
-use crate::trace::film::{RenderOptions, RenderProgress, SampleSums};
+use crate::trace::film::{
+    Image, PinholeCamera, RenderOptions, RenderProgress, SampleSums, TileRect,
+};
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::shade::LiveRays;
-use crate::trace::shade::Tracer;
-use crate::trace::world::World;
-use crate::trace::world::assert_compiled_for;
+use crate::trace::shade::{LiveRays, Tracer};
+use crate::trace::world::{World, assert_compiled_for};
 
 /// Renders the samples `samples` (of `options.samples_per_pixel`) of every pixel and
 /// returns their sums, or `None` if cancelled.

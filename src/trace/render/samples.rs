@@ -3,13 +3,9 @@
 
 use glam::{DVec2, DVec3};
 
-use crate::trace::film::PinholeCamera;
-use crate::trace::film::sample_in_pixel;
+use crate::trace::film::{PinholeCamera, sample_in_pixel};
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::shade::LiveRays;
-use crate::trace::shade::NoRecorder;
-use crate::trace::shade::RaySource;
-use crate::trace::shade::Tracer;
+use crate::trace::shade::{LiveRays, NoRecorder, RaySource, Tracer};
 
 /// One camera sample at `offset` (in [0, 1)^2) within pixel `(px, py)`. `None` when the
 /// colour came out non-finite: the guard that keeps NaN and infinity out of every pixel

@@ -9,28 +9,20 @@
 //! The batches run more instructions (their bookkeeping), yet the frame is faster: an
 //! object's test over neighbouring rays branches alike. Staging each light's samples and
 //! shadow rays the same way lost more to the bookkeeping than it gained, and so did SIMD
-//! lanes for the batches' tests (docs/BENCHMARKS.md, "tiles traced depth by depth").
+//! lanes for the batches' tests (docs/PERFORMANCE_HISTORY.md, "tiles traced depth by depth").
 
 use glam::{DVec2, DVec3};
 
-use super::samples::camera_sample;
-use super::samples::sample_point;
-use crate::trace::cull::Candidates;
-use crate::trace::cull::TileCull;
-use crate::trace::film::PinholeCamera;
-use crate::trace::film::TileRect;
+use super::samples::{camera_sample, sample_point};
+use crate::trace::cull::{Candidates, TileCull};
+use crate::trace::film::{PinholeCamera, TileRect};
 use crate::trace::ray::Ray;
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::shade::Bounce;
-use crate::trace::shade::LiveRays;
-use crate::trace::shade::NoRecorder;
-use crate::trace::shade::RaySource;
-use crate::trace::shade::ShadowQuery;
-use crate::trace::shade::Tracer;
+use crate::trace::shade::{
+    Bounce, LiveRays, MakeRay, NoRecorder, RaySource, ShadowRequest, Tracer,
+};
 use crate::trace::terms::ActiveTerms;
-use crate::trace::world::ObjectSet;
-use crate::trace::world::SurfacePoint;
-use crate::trace::world::World;
+use crate::trace::world::{ObjectSet, SurfacePoint, World};
 
 /// Answers the closest hit of the ray at `depth` from the batch that found it, every
 /// other ray live.
@@ -66,15 +58,8 @@ impl RaySource for KnownHit<'_> {
     }
 
     #[inline]
-    fn occluder(
-        &mut self,
-        world: &World,
-        depth: u32,
-        light: usize,
-        except: Option<usize>,
-        query: impl FnOnce() -> ShadowQuery,
-    ) -> Option<usize> {
-        self.live.occluder(world, depth, light, except, query)
+    fn occluder(&mut self, world: &World, to: ShadowRequest, ray: impl MakeRay) -> Option<usize> {
+        self.live.occluder(world, to, ray)
     }
 }
 
@@ -197,13 +182,9 @@ impl TilePass<'_> {
 mod tests {
     use super::*;
     use crate::scene::examples::EXAMPLE_SCENES;
-    use crate::trace::film::RenderOptions;
-    use crate::trace::film::RenderProgress;
-    use crate::trace::render::render_samples;
-    use crate::trace::render::render_samples_into;
-    use crate::trace::terms::Term;
-    use crate::trace::terms::TermSwitches;
-    use crate::trace::terms::View;
+    use crate::trace::film::{RenderOptions, RenderProgress};
+    use crate::trace::render::{render_samples, render_samples_into};
+    use crate::trace::terms::{Term, TermSwitches, View};
 
     /// Batches (tile by tile) against each pixel traced alone, with the same culling,
     /// for every example scene, view and a solo switch: a one-sample pass, and samples

@@ -11,10 +11,9 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use super::tile_placement::place_band;
-use crate::trace::film::RenderProgress;
-use crate::trace::film::SampleSums;
-use crate::trace::film::cleared_unless_cancelled;
-use crate::trace::film::{TILE_SIZE, TileRect, tile_count};
+use crate::trace::film::{
+    RenderProgress, SampleSums, TILE_SIZE, TileRect, cleared_unless_cancelled, tile_count,
+};
 use crate::trace::ray_counts::RayCounts;
 
 /// One finished tile: the pixels' sums in row-major order within the tile.

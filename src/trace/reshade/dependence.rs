@@ -241,8 +241,7 @@ impl DependenceRule {
 mod tests {
     use super::super::keep_rule::KeepRule;
     use super::*;
-    use crate::trace::terms::Term;
-    use crate::trace::terms::TermSwitches;
+    use crate::trace::terms::{Term, TermSwitches};
     use crate::trace::world::LightSample;
 
     fn slot(n_dot_l: f64, lobe: Option<f64>) -> LightSlot {

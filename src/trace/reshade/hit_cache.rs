@@ -20,22 +20,17 @@ use std::sync::Arc;
 
 use glam::{DAffine3, DVec3};
 
-use super::chains::CachedHit;
-use super::chains::Chains;
+use super::chains::{CachedHit, Chains};
 use super::dependence::TermDependence;
-use super::keep_rule::KeepRule;
-use super::keep_rule::TileSummary;
+use super::keep_rule::{KeepRule, TileSummary};
 use super::light_factors;
 use super::light_factors::LightSlot;
 use super::pixel_colour::PixelColour;
 use crate::scene::{Camera, Material};
 use crate::trace::film::RenderOptions;
 use crate::trace::shapes::Primitive;
-use crate::trace::terms::TermSwitches;
-use crate::trace::terms::View;
-use crate::trace::world::CsgTree;
-use crate::trace::world::World;
-use crate::trace::world::WorldLight;
+use crate::trace::terms::{TermSwitches, View};
+use crate::trace::world::{CsgTree, World, WorldLight};
 
 /// The most memory the preview's cache may take, as [`cache_fits`] estimates it: larger
 /// previews re-trace every edit.
@@ -122,7 +117,8 @@ struct RayGeometry {
     width: u32,
     height: u32,
     camera: Camera,
-    objects: Vec<(Primitive, DAffine3)>,
+    /// Each object's shape, placement and (for a mesh) which triangles.
+    objects: Vec<(Primitive, DAffine3, Option<u64>)>,
     /// The CSG trees, compared by value: a node's operands are its shape.
     trees: Vec<Option<Arc<CsgTree>>>,
     object_scene_index: Vec<usize>,
@@ -137,7 +133,13 @@ impl RayGeometry {
             objects: world
                 .objects
                 .iter()
-                .map(|o| (o.shape, o.world_from_object))
+                .map(|o| {
+                    (
+                        o.shape,
+                        o.world_from_object,
+                        o.mesh.as_ref().map(|m| m.id()),
+                    )
+                })
                 .collect(),
             trees: world.objects.iter().map(|o| o.csg.clone()).collect(),
             object_scene_index: world.object_scene_index.clone(),

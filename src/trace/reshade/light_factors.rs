@@ -7,8 +7,7 @@
 use super::chains::NOT_CAST;
 use crate::scene::Material;
 use crate::trace::shade::LitFactors;
-use crate::trace::world::World;
-use crate::trace::world::WorldLight;
+use crate::trace::world::{World, WorldLight};
 
 /// What the cache keeps per hit and light: the shadow ray's answer
 /// ([`super::chains::encode_blocker`], or `NOT_CAST`) and the light's factors.

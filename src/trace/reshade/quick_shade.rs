@@ -15,17 +15,11 @@
 
 use glam::DVec3;
 
-use super::chains::CLEAR;
-use super::chains::NOT_CAST;
-use super::dependence::DependenceRule;
-use super::dependence::EntryTerms;
-use super::dependence::TermDependence;
+use super::chains::{CLEAR, NOT_CAST};
+use super::dependence::{DependenceRule, EntryTerms, TermDependence};
 use super::light_factors::LightSlot;
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::shade::Bounce;
-use crate::trace::shade::Tracer;
-use crate::trace::shade::diffuse_term;
-use crate::trace::shade::specular_term;
+use crate::trace::shade::{Bounce, Tracer, diffuse_term, specular_term};
 use crate::trace::terms::ActiveTerms;
 use crate::trace::world::falloff;
 

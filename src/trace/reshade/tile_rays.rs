@@ -6,25 +6,16 @@ use std::sync::Arc;
 
 use glam::DVec3;
 
-use super::chains::CachedHit;
-use super::chains::Chains;
-use super::chains::NOT_CAST;
-use super::chains::decode_blocker;
-use super::chains::encode_blocker;
+use super::chains::{CachedHit, Chains, NOT_CAST, decode_blocker, encode_blocker};
 use super::dependence::TermDependence;
 use super::hit_cache::TileHits;
-use super::keep_rule::KeepRule;
-use super::keep_rule::TileSummary;
+use super::keep_rule::{KeepRule, TileSummary};
 use super::light_factors::LightSlot;
 use super::pixel_colour::PixelColour;
 use crate::trace::ray::Ray;
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::shade::LitFactors;
-use crate::trace::shade::LiveRays;
-use crate::trace::shade::RaySource;
-use crate::trace::shade::ShadowQuery;
-use crate::trace::world::SurfacePoint;
-use crate::trace::world::World;
+use crate::trace::shade::{LitFactors, LiveRays, MakeRay, RaySource, ShadowRequest};
+use crate::trace::world::{SurfacePoint, World};
 
 /// One tile's rays during the pass. It reads the previous cache's chains in place, shared,
 /// until a pixel needs a ray the cache lacks; from then on the tile's chains are rebuilt
@@ -93,20 +84,9 @@ impl TileRays {
             Arc::new(remapped)
         };
         Self {
-            chains: Arc::clone(&old.chains),
-            slots,
-            grown: None,
             old_colours: Some(Arc::clone(&old.colours)),
-            colours: None,
             old_summary: old.summary,
-            new_summary: None,
-            shaded: 0,
-            quick: 0,
-            pixel: 0,
-            read_chain: 0..0,
-            entry_start: 0,
-            lights: columns.shadows.len(),
-            traced: RayCounts::default(),
+            ..Self::at_start(Arc::clone(&old.chains), slots, columns.shadows.len())
         }
     }
 
@@ -114,14 +94,28 @@ impl TileRays {
     /// `entries` entries: growing a tile's chains reallocates and copies them.
     pub fn fresh(pixels: usize, lights: usize, entries: usize) -> Self {
         Self {
-            chains: Arc::new(Chains::empty(pixels)),
-            slots: Arc::new(Vec::new()),
             grown: Some((
                 Chains::with_capacity(pixels, entries),
                 Vec::with_capacity(entries * lights),
             )),
-            old_colours: None,
             colours: Some(Vec::with_capacity(pixels)),
+            ..Self::at_start(
+                Arc::new(Chains::empty(pixels)),
+                Arc::new(Vec::new()),
+                lights,
+            )
+        }
+    }
+
+    /// A tile reading `chains` and `slots`, before its first pixel: nothing grown, no
+    /// colours kept, nothing counted.
+    fn at_start(chains: Arc<Chains>, slots: Arc<Vec<LightSlot>>, lights: usize) -> Self {
+        Self {
+            chains,
+            slots,
+            grown: None,
+            old_colours: None,
+            colours: None,
             old_summary: TileSummary::default(),
             new_summary: None,
             shaded: 0,
@@ -376,35 +370,30 @@ impl RaySource for PixelRays<'_, '_, '_> {
         hit
     }
 
-    fn occluder(
-        &mut self,
-        world: &World,
-        depth: u32,
-        light: usize,
-        except: Option<usize>,
-        query: impl FnOnce() -> ShadowQuery,
-    ) -> Option<usize> {
-        let slot = self.tile.slot_index(depth, light);
+    fn occluder(&mut self, world: &World, to: ShadowRequest, ray: impl MakeRay) -> Option<usize> {
+        let slot = self.tile.slot_index(to.depth, to.light);
         let code = self.tile.slot(slot).shadow;
         if code != NOT_CAST {
             return decode_blocker(code);
         }
         self.tile.traced.shadow += 1;
-        let blocked_by = self.live.occluder(world, depth, light, except, query);
+        let blocked_by = self.live.occluder(world, to, ray);
         self.tile.slot_mut(slot).shadow = encode_blocker(blocked_by);
         blocked_by
     }
 
-    /// Factors kept are valid: those of a stale lobe or a light placed anew were
-    /// forgotten.
-    fn wants_light_factors(&self, depth: u32, light: usize) -> bool {
+    /// Factors kept are valid (those of a stale lobe or a light placed anew were
+    /// forgotten): only unknown ones are worked out and kept.
+    fn keep_light_factors(
+        &mut self,
+        depth: u32,
+        light: usize,
+        factors: impl FnOnce() -> LitFactors,
+    ) {
         let slot = self.tile.slot_index(depth, light);
-        let factors = self.tile.slot(slot).factors;
-        factors.is_unknown()
-    }
-
-    fn light_factors(&mut self, depth: u32, light: usize, factors: LitFactors) {
-        let slot = self.tile.slot_index(depth, light);
-        self.tile.slot_mut(slot).factors = factors;
+        let kept = self.tile.slot(slot).factors;
+        if kept.is_unknown() {
+            self.tile.slot_mut(slot).factors = factors();
+        }
     }
 }

@@ -3,18 +3,20 @@
 //! rays it needs and tells it what each light gave each hit; the recorder sees every number.
 
 mod depth_view;
+mod lighting;
 mod lit_factors;
 mod mirror_chain;
 mod object_id;
 mod phong;
 mod ray_source;
 mod record;
+mod shadows;
 mod tracer;
 
 pub use lit_factors::LitFactors;
 pub(crate) use mirror_chain::Bounce;
 pub use phong::{LocalLight, diffuse_term, phong_power, specular_term};
-pub use ray_source::{LiveRays, RaySource, ShadowQuery};
+pub use ray_source::{LiveRays, MakeRay, RaySource, ShadowRequest};
 pub use record::{
     LightOutcome, LightRecord, LightSkip, NoRecorder, Recorder, ShadowRay, SkippedLight,
 };

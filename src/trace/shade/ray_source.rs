@@ -8,8 +8,7 @@
 use super::lit_factors::LitFactors;
 use crate::trace::cull::Candidates;
 use crate::trace::ray::Ray;
-use crate::trace::world::SurfacePoint;
-use crate::trace::world::World;
+use crate::trace::world::{SurfacePoint, World};
 
 /// A shadow ray the shader needs the answer to.
 #[derive(Clone, Copy, Debug)]
@@ -20,36 +19,47 @@ pub struct ShadowQuery {
     pub t_max: f64,
 }
 
+/// Which shadow ray the shader asks about: from the hit at `depth` of the mirror chain to
+/// light `light` (an index into [`World::lights`]); the ray cannot meet object `except`
+/// (the one it leaves on its outer side).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ShadowRequest {
+    /// Depth in the mirror chain of the hit the ray leaves.
+    pub depth: u32,
+    /// The light it goes to.
+    pub light: usize,
+    /// The object it cannot meet.
+    pub except: Option<usize>,
+}
+
+/// Makes the shadow ray, for a source that has to cast it (a cache that knows the answer
+/// never does).
+pub trait MakeRay: FnOnce() -> ShadowQuery {}
+
+impl<F: FnOnce() -> ShadowQuery> MakeRay for F {}
+
 /// Answers the shader's ray queries for one pixel sample, in the order the shader asks:
 /// depth 0, then each mirror bounce, a hit's shadow rays before the next bounce.
 pub trait RaySource {
     /// The closest hit of `ray`, the ray at `depth` of the mirror chain.
     fn closest_hit(&mut self, world: &World, depth: u32, ray: &Ray) -> Option<SurfacePoint>;
 
-    /// The world index of an object blocking the shadow ray from the hit at `depth` to
-    /// light `light` (an index into [`World::lights`]), if any. The ray cannot meet object
-    /// `except` (the one it leaves on its outer side). `query` makes the ray, for a
-    /// source that has to cast it.
-    fn occluder(
+    /// The world index of an object blocking the shadow ray `to`, if any; `ray` makes
+    /// the ray, for a source that has to cast it.
+    fn occluder(&mut self, world: &World, to: ShadowRequest, ray: impl MakeRay) -> Option<usize>;
+
+    /// Offers what light `light` gave the hit at `depth` (an index into
+    /// [`World::lights`]), for a source that keeps it: the one call through which the
+    /// re-shade cache learns from the shader. `factors` is worked out only if the source
+    /// wants it (it does not have it yet), whatever the switches.
+    #[inline]
+    fn keep_light_factors(
         &mut self,
-        world: &World,
-        depth: u32,
-        light: usize,
-        except: Option<usize>,
-        query: impl FnOnce() -> ShadowQuery,
-    ) -> Option<usize>;
-
-    /// Whether this source keeps what light `light` gives the hit at `depth` and does
-    /// not have it yet ([`RaySource::light_factors`]): the shader then works the factors
-    /// out, whatever the switches.
-    #[inline]
-    fn wants_light_factors(&self, _depth: u32, _light: usize) -> bool {
-        false
+        _depth: u32,
+        _light: usize,
+        _factors: impl FnOnce() -> LitFactors,
+    ) {
     }
-
-    /// What light `light` gave the hit at `depth`, for a source that keeps it.
-    #[inline]
-    fn light_factors(&mut self, _depth: u32, _light: usize, _factors: LitFactors) {}
 }
 
 /// Traces every ray in the world. The camera ray and the shadow rays from its hit test
@@ -89,25 +99,19 @@ impl RaySource for LiveRays<'_> {
     }
 
     #[inline]
-    fn occluder(
-        &mut self,
-        world: &World,
-        depth: u32,
-        light: usize,
-        except: Option<usize>,
-        query: impl FnOnce() -> ShadowQuery,
-    ) -> Option<usize> {
-        if depth == 0 {
-            let among = self.among.shadow(light);
+    fn occluder(&mut self, world: &World, to: ShadowRequest, ray: impl MakeRay) -> Option<usize> {
+        let except = to.except;
+        if to.depth == 0 {
+            let among = self.among.shadow(to.light);
             // Culling left nothing that could block: no ray to spawn (about a quarter
             // of the default scene's camera hits' shadow rays).
             if among.without(except).is_empty_below(world.objects.len()) {
                 return None;
             }
-            let query = query();
+            let query = ray();
             world.occluder_except_among(&query.ray, query.t_max, except, among)
         } else {
-            let query = query();
+            let query = ray();
             world.occluder_except(&query.ray, query.t_max, except)
         }
     }

@@ -6,8 +6,7 @@
 use glam::DVec3;
 
 use crate::trace::ray::Ray;
-use crate::trace::world::SurfacePoint;
-use crate::trace::world::WorldLight;
+use crate::trace::world::{SurfacePoint, WorldLight};
 
 /// One light's part in shading a point, as the inspector shows it.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -6,7 +6,9 @@
 //!        + km * colour(reflected ray)          while depth < max_depth
 //! ```
 //!
-//! The mirror chain is followed in a loop, so the stack stays the same size at any depth.
+//! This file holds the tracer and the mirror chain: a camera ray, then each mirror
+//! bounce, followed in a loop so the stack stays the same size at any depth. One ray's
+//! terms are in `lighting.rs`, its shadow rays in `shadows.rs`.
 //!
 //! Work is only done where a term can contribute: no shadow ray for a light behind the
 //! surface, outside its spot cone, or for a material with no diffuse and no specular; no
@@ -16,47 +18,24 @@
 use glam::DVec3;
 
 use super::depth_view::DepthRange;
-use super::lit_factors::LitFactors;
-use super::mirror_chain::Bounce;
-use super::mirror_chain::Chain;
-use super::mirror_chain::fold_back;
+use super::mirror_chain::{Chain, fold_back};
 use super::object_id::object_id_colour;
-use super::phong::LocalLight;
-use super::ray_source::LiveRays;
-use super::ray_source::RaySource;
-use super::ray_source::ShadowQuery;
-use super::record::LightRecord;
-use super::record::LightSkip;
+use super::ray_source::{LiveRays, RaySource};
 use super::record::Recorder;
-use super::record::ShadowRay;
-use super::record::SkippedLight;
-use super::record::unsampled_reason;
-use crate::scene::Material;
 use crate::trace::ray::Ray;
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::terms::ActiveTerms;
-use crate::trace::terms::TermSwitches;
-use crate::trace::terms::View;
-use crate::trace::world::LightSample;
-use crate::trace::world::SurfacePoint;
+use crate::trace::terms::{ActiveTerms, TermSwitches, View};
 use crate::trace::world::World;
-use crate::trace::world::spawn_ray;
-use crate::trace::world::spawn_ray_to;
-
-/// Which light a shadow ray goes to, from the hit at which depth of the mirror chain.
-#[derive(Clone, Copy, Debug)]
-struct LightAt {
-    depth: u32,
-    index: usize,
-}
 
 /// Traces rays through a world with a fixed set of switches and view.
 #[derive(Clone, Copy, Debug)]
 pub struct Tracer<'w> {
-    world: &'w World,
-    primary: ActiveTerms,
-    secondary: ActiveTerms,
-    view: View,
+    pub(super) world: &'w World,
+    /// The terms of camera rays.
+    pub(super) primary: ActiveTerms,
+    /// The terms of mirror rays (the background shows only to camera rays in a solo).
+    pub(super) secondary: ActiveTerms,
+    pub(super) view: View,
     /// The depth view's grey scale, found once per render.
     depth_range: Option<DepthRange>,
 }
@@ -156,246 +135,5 @@ impl<'w> Tracer<'w> {
             }
         }
         fold_back(&chain, recorder)
-    }
-
-    /// One ray of the mirror chain at `depth`: what it adds itself, and the mirror ray to
-    /// follow, if one is cast. Inlined into both calls in [`Self::radiance`], so the pair
-    /// it returns is not passed through memory (callgrind: about 2% more instructions per
-    /// camera ray when it is not).
-    #[inline(always)]
-    pub(crate) fn shade<R: Recorder>(
-        &self,
-        ray: &Ray,
-        depth: u32,
-        terms: &ActiveTerms,
-        rays: &mut impl RaySource,
-        counts: &mut RayCounts,
-        recorder: &mut R,
-    ) -> (Bounce, Option<Ray>) {
-        let Some(hit) = rays.closest_hit(self.world, depth, ray) else {
-            let background = if terms.background {
-                self.world.background
-            } else {
-                DVec3::ZERO
-            };
-            recorder.miss(depth, ray, background);
-            return (Bounce::local(background), None);
-        };
-        // Recorders see the scene's object index, whatever the world left out.
-        recorder.hit(
-            depth,
-            ray,
-            &SurfacePoint {
-                object: self.world.scene_object(hit.object),
-                ..hit
-            },
-        );
-        let world = self.world;
-        let material = &world.materials[world.material_at(&hit)];
-        let mut colour = DVec3::ZERO;
-
-        // ambient: ka * (sum of ambient lights)
-        if terms.ambient {
-            let ambient = material.ambient * world.ambient;
-            recorder.ambient(depth, ambient);
-            colour += ambient;
-        }
-
-        // diffuse and specular, light by light
-        let has_local = material.diffuse != DVec3::ZERO || material.specular != DVec3::ZERO;
-        if (terms.diffuse || terms.specular) && has_local {
-            // Camera rays are unit length and mirror reflection keeps the length.
-            let view_dir = -ray.dir;
-            for (index, light) in world.lights.iter().enumerate() {
-                let Some(sample) = light.sample(hit.p) else {
-                    // A light of zero strength stays unknown: the factors of a light
-                    // turned up from zero were never worked out.
-                    if light.strength() != DVec3::ZERO && rays.wants_light_factors(depth, index) {
-                        rays.light_factors(depth, index, LitFactors::UNREACHABLE);
-                    }
-                    if R::ACTIVE {
-                        let skipped = SkippedLight {
-                            scene_index: world.light_scene_index[index],
-                            why: unsampled_reason(light, hit.p),
-                        };
-                        recorder.skipped_light(depth, &skipped);
-                    }
-                    continue;
-                };
-                let n_dot_l = hit.n.dot(sample.to_light);
-                if rays.wants_light_factors(depth, index) {
-                    let factors = self.light_factors(&hit, &sample, view_dir, material, n_dot_l);
-                    rays.light_factors(depth, index, factors);
-                }
-                // Plain locals on the hot path; the record is built only for a recorder.
-                let (mut cast, mut blocker) = (false, None);
-                let (mut diffuse, mut specular) = (DVec3::ZERO, DVec3::ZERO);
-                if n_dot_l > 0.0 {
-                    if terms.shadows {
-                        let to = LightAt { depth, index };
-                        blocker = self.shadow_blocker(&hit, &sample, to, rays, counts);
-                        cast = true;
-                    }
-                    if blocker.is_none() {
-                        let local = LocalLight {
-                            n: hit.n,
-                            to_light: sample.to_light,
-                            view: view_dir,
-                            strength: sample.radiance,
-                        };
-                        if terms.diffuse {
-                            diffuse = local.diffuse(material.diffuse, n_dot_l);
-                        }
-                        if terms.specular {
-                            specular =
-                                local.specular(material.specular, material.shininess, n_dot_l);
-                        }
-                        colour += diffuse + specular;
-                    }
-                }
-                if R::ACTIVE {
-                    // The recorders see the scene's index of the blocker, and the shadow
-                    // ray made again (spawning is deterministic).
-                    let blocked_by = blocker.map(|i| world.scene_object(i));
-                    let shadow_ray = cast.then(|| {
-                        let query = self.shadow_query(&hit, &sample);
-                        ShadowRay {
-                            ray: query.ray,
-                            t_max: query.t_max,
-                            blocked_by,
-                        }
-                    });
-                    let record = LightRecord {
-                        scene_index: world.light_scene_index[index],
-                        strength: sample.radiance,
-                        n_dot_l,
-                        blocked_by,
-                        shadow_ray_cast: cast,
-                        shadow_ray,
-                        diffuse,
-                        specular,
-                    };
-                    recorder.light(depth, &record);
-                }
-            }
-        } else if R::ACTIVE {
-            let why = if has_local {
-                LightSkip::TermsOff
-            } else {
-                LightSkip::NoDiffuseOrSpecular
-            };
-            for &scene_index in &world.light_scene_index {
-                recorder.skipped_light(depth, &SkippedLight { scene_index, why });
-            }
-        }
-
-        // mirror: km * colour(reflected ray), added when the chain folds back
-        if terms.reflection && depth < world.max_depth && material.mirror != DVec3::ZERO {
-            let d = ray.dir;
-            let reflected_dir = d - 2.0 * d.dot(hit.n) * hit.n;
-            counts.reflection += 1;
-            let bounce = Bounce {
-                local: colour,
-                km: material.mirror,
-            };
-            return (bounce, Some(spawn_ray(&hit, reflected_dir)));
-        }
-        (Bounce::local(colour), None)
-    }
-
-    /// What the light of `sample` gives `hit`, kept for a quick re-shade: the lobe is
-    /// the one [`LocalLight::specular`] works out, blocked or not, switched on or not.
-    fn light_factors(
-        &self,
-        hit: &SurfacePoint,
-        sample: &LightSample,
-        view: DVec3,
-        material: &Material,
-        n_dot_l: f64,
-    ) -> LitFactors {
-        let lobe = (n_dot_l > 0.0).then(|| {
-            let local = LocalLight {
-                n: hit.n,
-                to_light: sample.to_light,
-                view,
-                strength: sample.radiance,
-            };
-            local.specular_lobe(material.shininess, n_dot_l)
-        });
-        LitFactors::reached(sample, n_dot_l, lobe.flatten())
-    }
-
-    /// The object blocking the shadow ray from `hit` (at `to.depth`) to light
-    /// `to.index`, if any. The ray itself is made only if `rays` has to cast it.
-    #[inline]
-    fn shadow_blocker(
-        &self,
-        hit: &SurfacePoint,
-        sample: &LightSample,
-        to: LightAt,
-        rays: &mut impl RaySource,
-        counts: &mut RayCounts,
-    ) -> Option<usize> {
-        counts.shadow += 1;
-        let except = self.shadow_except(hit, sample);
-        rays.occluder(self.world, to.depth, to.index, except, || {
-            self.shadow_query(hit, sample)
-        })
-    }
-
-    /// The object a shadow ray from `hit` to the light of `sample` cannot meet: every
-    /// shape is convex or flat, so a shadow ray leaving a solid on its outer side, or
-    /// leaving a plane, cannot meet the surface it starts on.
-    #[inline]
-    fn shadow_except(&self, hit: &SurfacePoint, sample: &LightSample) -> Option<usize> {
-        let object = &self.world.objects[hit.object];
-        let leaves_outward = !object.can_meet_itself()
-            && (object.shape == crate::trace::shapes::Primitive::Plane
-                || hit.n_outward.dot(sample.to_light) > 0.0);
-        leaves_outward.then_some(hit.object)
-    }
-
-    /// The shadow ray from `hit` to the light of `sample`.
-    #[inline]
-    fn shadow_query(&self, hit: &SurfacePoint, sample: &LightSample) -> ShadowQuery {
-        let (ray, t_max) = match sample.light_position {
-            Some(position) => spawn_ray_to(hit, position),
-            None => (spawn_ray(hit, sample.to_light), f64::INFINITY),
-        };
-        ShadowQuery { ray, t_max }
-    }
-
-    /// Fraction of the lights that reach `hit` (in front, inside any spot cone) whose
-    /// shadow ray is clear; 0 where no light reaches.
-    fn shadow_mask(
-        &self,
-        hit: &SurfacePoint,
-        rays: &mut impl RaySource,
-        counts: &mut RayCounts,
-    ) -> f64 {
-        let mut reaching = 0u32;
-        let mut visible = 0u32;
-        for (index, light) in self.world.lights.iter().enumerate() {
-            let Some(sample) = light.sample(hit.p) else {
-                continue;
-            };
-            if hit.n.dot(sample.to_light) <= 0.0 {
-                continue;
-            }
-            reaching += 1;
-            let to = LightAt { depth: 0, index };
-            if !self.primary.shadows
-                || self
-                    .shadow_blocker(hit, &sample, to, rays, counts)
-                    .is_none()
-            {
-                visible += 1;
-            }
-        }
-        if reaching == 0 {
-            0.0
-        } else {
-            f64::from(visible) / f64::from(reaching)
-        }
     }
 }

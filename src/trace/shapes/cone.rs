@@ -3,16 +3,9 @@
 
 use glam::{DVec2, DVec3};
 
-use super::ShapeHit;
 use super::bounds::Aabb;
-use super::cap_point;
-use super::disc_cap;
-use super::gamma;
-use super::in_range;
-use super::nearer;
-use super::quadratic::difference_of_products;
-use super::quadratic::solve_quadratic;
-use super::quadratic::sorted;
+use super::quadratic::{difference_of_products, solve_quadratic, sorted};
+use super::{ShapeHit, cap_point, disc_cap, gamma, in_range, nearer};
 use crate::trace::ray::Ray;
 
 /// Object-space bounds.

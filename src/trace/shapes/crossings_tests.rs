@@ -29,6 +29,7 @@ fn contains(shape: Primitive, p: DVec3) -> bool {
         Primitive::Cube => p.abs().max_element() <= 1.0,
         Primitive::Cylinder => r2 <= 1.0 && p.z.abs() <= 1.0,
         Primitive::Cone => r2 <= p.z * p.z && (0.0..=1.0).contains(&p.z),
+        Primitive::Mesh => unreachable!("meshes are not among SHAPES"),
     }
 }
 

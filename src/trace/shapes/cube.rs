@@ -2,10 +2,8 @@
 
 use glam::DVec3;
 
-use super::ShapeHit;
 use super::bounds::Aabb;
-use super::gamma;
-use super::in_range;
+use super::{ShapeHit, gamma, in_range};
 use crate::trace::ray::Ray;
 
 /// Object-space bounds.

@@ -2,14 +2,9 @@
 
 use glam::{DVec2, DVec3};
 
-use super::ShapeHit;
 use super::bounds::Aabb;
-use super::cap_point;
-use super::disc_cap;
-use super::gamma;
-use super::in_range;
-use super::nearer;
 use super::quadratic::unit_ball_roots;
+use super::{ShapeHit, cap_point, disc_cap, gamma, in_range, nearer};
 use crate::trace::ray::Ray;
 
 /// Object-space bounds.

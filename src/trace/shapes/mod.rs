@@ -1,4 +1,6 @@
-//! The five unit shapes, in object space. Each file has the same parts in the same order:
+//! The five unit shapes, in object space, and triangle meshes (`mesh`, `mesh_bvh`,
+//! `triangle`), which carry their own data and are reached through their `TriangleMesh`.
+//! The unit shapes' Each file has the same parts in the same order:
 //! bounds, `intersect` (closest hit with its error bound) and `occluded` (any hit, for
 //! shadow rays). One `match` here forwards to them.
 //!
@@ -9,9 +11,13 @@ mod bounds;
 mod cone;
 mod cube;
 mod cylinder;
+mod mesh;
+mod mesh_bvh;
+mod mesh_solid;
 mod plane;
 pub(crate) mod quadratic;
 mod sphere;
+mod triangle;
 
 #[cfg(test)]
 mod crossings_tests;
@@ -19,6 +25,7 @@ mod crossings_tests;
 use glam::DVec3;
 
 pub use self::bounds::{Aabb, BoundingSphere};
+pub use self::mesh::{MeshStore, TriangleHit, TriangleMesh};
 use crate::scene::Shape;
 use crate::trace::ray::Ray;
 
@@ -36,6 +43,9 @@ pub enum Primitive {
     Cylinder,
     /// The capped unit cone.
     Cone,
+    /// A triangle mesh: its triangles live in the object's `TriangleMesh`, so the free
+    /// functions below see no surface for it (never `Primitive::of` a shape).
+    Mesh,
 }
 
 impl Primitive {
@@ -61,7 +71,18 @@ impl Primitive {
             Primitive::Cube => Shape::Cube,
             Primitive::Cylinder => Shape::Cylinder,
             Primitive::Cone => Shape::Cone,
+            // The path lives with the object, not the primitive.
+            Primitive::Mesh => Shape::Mesh {
+                path: String::new(),
+            },
         }
+    }
+
+    /// Whether the surface bounds a convex solid or is flat, so a ray leaving it on its
+    /// outer side cannot meet it again.
+    #[must_use]
+    pub fn is_convex(self) -> bool {
+        self != Primitive::Mesh
     }
 }
 
@@ -98,7 +119,8 @@ pub(crate) fn in_range(ray: &Ray, t: f64, t_max: f64) -> bool {
     t * t * ray.dir.length_squared() > origin_rounding * origin_rounding
 }
 
-/// The object-space bounding box of a unit shape.
+/// The object-space bounding box of a unit shape (empty for a mesh: see
+/// [`TriangleMesh::bounds`]).
 #[must_use]
 pub fn object_bounds(shape: Primitive) -> Aabb {
     match shape {
@@ -107,6 +129,7 @@ pub fn object_bounds(shape: Primitive) -> Aabb {
         Primitive::Cube => cube::bounds(),
         Primitive::Cylinder => cylinder::bounds(),
         Primitive::Cone => cone::bounds(),
+        Primitive::Mesh => Aabb::new(DVec3::INFINITY, DVec3::NEG_INFINITY),
     }
 }
 
@@ -148,7 +171,8 @@ pub fn shape_bounds(shape: &Shape) -> Aabb {
     }
 }
 
-/// The closest hit of an object-space ray with `t` in (0, t_max).
+/// The closest hit of an object-space ray with `t` in (0, t_max) (none for a mesh: see
+/// [`TriangleMesh::intersect`]).
 #[must_use]
 #[inline]
 pub fn intersect(shape: Primitive, ray: &Ray, t_max: f64) -> Option<ShapeHit> {
@@ -158,10 +182,12 @@ pub fn intersect(shape: Primitive, ray: &Ray, t_max: f64) -> Option<ShapeHit> {
         Primitive::Cube => cube::intersect(ray, t_max),
         Primitive::Cylinder => cylinder::intersect(ray, t_max),
         Primitive::Cone => cone::intersect(ray, t_max),
+        Primitive::Mesh => None,
     }
 }
 
-/// Whether an object-space ray hits the shape with `t` in (0, t_max).
+/// Whether an object-space ray hits the shape with `t` in (0, t_max) (never for a mesh:
+/// see [`TriangleMesh::occluded`]).
 #[must_use]
 #[inline]
 pub fn occluded(shape: Primitive, ray: &Ray, t_max: f64) -> bool {
@@ -171,6 +197,7 @@ pub fn occluded(shape: Primitive, ray: &Ray, t_max: f64) -> bool {
         Primitive::Cube => cube::occluded(ray, t_max),
         Primitive::Cylinder => cylinder::occluded(ray, t_max),
         Primitive::Cone => cone::occluded(ray, t_max),
+        Primitive::Mesh => false,
     }
 }
 
@@ -188,6 +215,9 @@ pub(crate) fn crossings(shape: Primitive, ray: &Ray, out: &mut Vec<ShapeHit>) {
         Primitive::Cube => cube::crossings(ray, out),
         Primitive::Cylinder => cylinder::crossings(ray, out),
         Primitive::Cone => cone::crossings(ray, out),
+        // A mesh's crossings need its triangles: `TriangleMesh::crossings`. CSG trees
+        // are built from unit shapes only (see `world::csg`), so none reaches here.
+        Primitive::Mesh => {}
     }
 }
 

@@ -7,8 +7,7 @@
 
 use glam::DVec3;
 
-use super::compiled::SurfacePoint;
-use super::compiled::World;
+use super::compiled::{SurfacePoint, World};
 use super::object::ObjectHit;
 use super::object_set::ObjectSet;
 use crate::trace::ray::Ray;

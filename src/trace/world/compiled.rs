@@ -11,7 +11,7 @@ pub use super::object::WorldObject;
 use super::object_set::ObjectSet;
 use crate::scene::{Light, Material, Scene, SceneError, validate};
 use crate::trace::ray::Ray;
-use crate::trace::shapes::Aabb;
+use crate::trace::shapes::{Aabb, MeshStore, TriangleHit};
 use crate::trace::terms::Isolation;
 
 /// A point on a surface where a ray hit, in world space.
@@ -94,10 +94,20 @@ impl World {
     /// # Errors
     /// The scene's first validation problem.
     pub fn new(scene: &Scene) -> Result<Self, SceneError> {
+        Self::with_meshes(scene, &MeshStore::default())
+    }
+
+    /// As [`World::new`], taking each mesh object's triangles from `meshes` (keyed by the
+    /// path as the scene writes it; read with `scene::read_scene_meshes`).
+    ///
+    /// # Errors
+    /// The scene's first validation problem, or a mesh object whose file is not in
+    /// `meshes`.
+    pub fn with_meshes(scene: &Scene, meshes: &MeshStore) -> Result<Self, SceneError> {
         validate(scene)?;
         let material_names: Vec<String> = scene.materials.keys().cloned().collect();
         let materials = scene.materials.values().cloned().collect();
-        let (objects, object_scene_index) = flatten(scene, &material_names)?;
+        let (objects, object_scene_index) = flatten(scene, &material_names, meshes)?;
         let mut lights = Vec::new();
         let mut light_scene_index = Vec::new();
         let mut ambient = DVec3::ZERO;
@@ -200,6 +210,14 @@ impl World {
         let ray_in_object = ray.transformed(&object.object_from_world);
         let hit = object.hit_unbounded(&ray_in_object, t_max)?;
         Some(self.surface_point(index, ray, &hit))
+    }
+
+    /// For a mesh object: which triangle the ray meets first and where on it.
+    #[must_use]
+    pub fn triangle_hit(&self, index: usize, ray: &Ray, t_max: f64) -> Option<TriangleHit> {
+        let object = self.objects.get(index)?;
+        let ray_in_object = ray.transformed(&object.object_from_world);
+        object.mesh.as_ref()?.triangle_hit(&ray_in_object, t_max)
     }
 
     /// The first object found between the ray's origin and `t_max`, if any.

@@ -5,12 +5,14 @@
 //! from (its id: hiding, picking and isolation act on whole top-level objects) and its
 //! tree path as its name. A work list, not recursion, walks the trees.
 
+use std::sync::Arc;
+
 use glam::DAffine3;
 
 use super::csg::CsgTree;
-use super::object::WorldObject;
+use super::object::{Body, WorldObject};
 use crate::scene::{Object, Scene, SceneError, Shape};
-use crate::trace::shapes::Primitive;
+use crate::trace::shapes::{MeshStore, Primitive};
 
 /// A node still to compile: the object, its world placement, the material it inherits,
 /// its tree path and the top-level object it belongs to.
@@ -30,6 +32,7 @@ struct Pending<'a> {
 pub(crate) fn flatten(
     scene: &Scene,
     material_names: &[String],
+    meshes: &MeshStore,
 ) -> Result<(Vec<WorldObject>, Vec<usize>), SceneError> {
     let material_index = |name: &str| {
         material_names
@@ -54,7 +57,7 @@ pub(crate) fn flatten(
     while let Some(node) = work.pop() {
         let object = node.object;
         let world_from_object = node.world_from_parent * object.transform.world_from_object();
-        let (shape, csg) = match &object.shape {
+        let (shape, body) = match &object.shape {
             Shape::Group { children } => {
                 work.extend(children.iter().rev().map(|child| Pending {
                     object: child,
@@ -72,16 +75,25 @@ pub(crate) fn flatten(
             Shape::Csg { op, operands } => {
                 let tree =
                     CsgTree::build(*op, operands, node.material, &node.path, &material_index)?;
-                (Primitive::Cube, Some(tree))
+                (Primitive::Cube, Body::Csg(tree))
+            }
+            Shape::Mesh { path } => {
+                let mesh = meshes.get(path).ok_or_else(|| {
+                    SceneError::Invalid(format!(
+                        "object \"{}\": the mesh file \"{path}\" is not loaded",
+                        node.path
+                    ))
+                })?;
+                (Primitive::Mesh, Body::Mesh(Arc::clone(mesh)))
             }
             leaf => (
                 Primitive::of(leaf).ok_or_else(|| not_drawn(&node.path, leaf))?,
-                None,
+                Body::Primitive,
             ),
         };
-        let material = match &csg {
-            Some(tree) => tree.leaves.first().map_or(0, |leaf| leaf.material),
-            None => material_index(node.material).ok_or_else(|| {
+        let material = match &body {
+            Body::Csg(tree) => tree.leaves.first().map_or(0, |leaf| leaf.material),
+            _ => material_index(node.material).ok_or_else(|| {
                 SceneError::Invalid(format!(
                     "object \"{}\": no material (neither its own nor a parent's)",
                     node.path
@@ -91,7 +103,7 @@ pub(crate) fn flatten(
         objects.push(WorldObject::new(
             node.path,
             shape,
-            csg,
+            body,
             world_from_object,
             material,
         ));

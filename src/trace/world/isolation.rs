@@ -14,6 +14,7 @@
 //! - Object ids and light indices stay the scene's: [`World::object_scene_index`] and
 //!   [`World::light_scene_index`] map the world's lists back to the scene's.
 
+use crate::trace::shapes::MeshStore;
 use glam::DVec3;
 
 use super::compiled::World;
@@ -119,8 +120,21 @@ impl World {
     /// The scene's first validation problem (named by the scene's own indices), or an
     /// index of `isolation` that the scene does not have.
     pub fn isolated(scene: &Scene, isolation: &Isolation) -> Result<Self, IsolationError> {
+        Self::isolated_with_meshes(scene, isolation, &MeshStore::default())
+    }
+
+    /// As [`World::isolated`], with mesh objects' triangles from `meshes` (see
+    /// [`World::with_meshes`]).
+    ///
+    /// # Errors
+    /// As [`World::isolated`], or a mesh object whose file is not in `meshes`.
+    pub fn isolated_with_meshes(
+        scene: &Scene,
+        isolation: &Isolation,
+        meshes: &MeshStore,
+    ) -> Result<Self, IsolationError> {
         if isolation.is_none() {
-            return Ok(Self::new(scene)?);
+            return Ok(Self::with_meshes(scene, meshes)?);
         }
         validate(scene)?;
         check_indices(isolation, scene)?;
@@ -141,7 +155,7 @@ impl World {
                 .collect(),
             ..scene.clone()
         };
-        let mut world = Self::new(&filtered)?;
+        let mut world = Self::with_meshes(&filtered, meshes)?;
         world.light_scene_index = world
             .light_scene_index
             .iter()

@@ -7,11 +7,7 @@ use glam::{DAffine3, DMat3, DVec3};
 use super::csg::CsgTree;
 use crate::trace::ray::Ray;
 use crate::trace::shapes;
-use crate::trace::shapes::Aabb;
-use crate::trace::shapes::BoundingSphere;
-use crate::trace::shapes::Primitive;
-use crate::trace::shapes::ShapeHit;
-use crate::trace::shapes::gamma;
+use crate::trace::shapes::{Aabb, BoundingSphere, Primitive, ShapeHit, TriangleMesh, gamma};
 
 /// One object, placed and ready to intersect.
 #[derive(Clone, Debug)]
@@ -24,6 +20,8 @@ pub struct WorldObject {
     pub shape: Primitive,
     /// For a CSG node, its compiled tree (operands in the node's object space).
     pub csg: Option<Arc<CsgTree>>,
+    /// For a mesh (`shape` is [`Primitive::Mesh`]): its triangles, shared with the store.
+    pub mesh: Option<Arc<TriangleMesh>>,
     /// Object-to-world transform.
     pub world_from_object: DAffine3,
     /// World-to-object transform.
@@ -43,6 +41,16 @@ pub struct WorldObject {
     abs_object_from_world: DMat3,
 }
 
+/// What an object is made of besides its placement.
+pub(crate) enum Body {
+    /// A unit shape alone.
+    Primitive,
+    /// A CSG node's tree.
+    Csg(CsgTree),
+    /// A mesh's triangles.
+    Mesh(Arc<TriangleMesh>),
+}
+
 /// An object's hit in its object space, and which leaf of a CSG node it is on (0 for a
 /// primitive).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -52,18 +60,25 @@ pub(crate) struct ObjectHit {
 }
 
 impl WorldObject {
-    /// A primitive, or a CSG node with its tree, placed by `world_from_object`.
+    /// A primitive, a CSG node with its tree or a mesh with its triangles, placed by
+    /// `world_from_object`.
     pub(crate) fn new(
         name: String,
         shape: Primitive,
-        csg: Option<CsgTree>,
+        body: Body,
         world_from_object: DAffine3,
         material: usize,
     ) -> Self {
         let object_from_world = world_from_object.inverse();
-        let bounds = match &csg {
-            Some(tree) => tree.extent.world_bounds(&world_from_object),
-            None => shapes::object_bounds(shape).transformed(&world_from_object),
+        let (csg, mesh) = match body {
+            Body::Primitive => (None, None),
+            Body::Csg(tree) => (Some(tree), None),
+            Body::Mesh(mesh) => (None, Some(mesh)),
+        };
+        let bounds = match (&csg, &mesh) {
+            (Some(tree), _) => tree.extent.world_bounds(&world_from_object),
+            (_, Some(mesh)) => mesh.bounds().transformed(&world_from_object),
+            _ => shapes::object_bounds(shape).transformed(&world_from_object),
         };
         Self {
             name,
@@ -81,6 +96,7 @@ impl WorldObject {
                 }),
             },
             csg: csg.map(Arc::new),
+            mesh,
             abs_world_from_object: abs_mat(&world_from_object.matrix3),
             abs_object_from_world: abs_mat(&object_from_world.matrix3),
         }
@@ -88,10 +104,10 @@ impl WorldObject {
 
     /// Whether a ray leaving the surface on its outer side can meet the object again
     /// (not for a single convex or flat primitive, nor a convex CSG node; possibly for
-    /// other CSG nodes).
+    /// other CSG nodes and meshes).
     #[must_use]
     pub fn can_meet_itself(&self) -> bool {
-        self.csg.as_ref().is_some_and(|tree| !tree.convex)
+        self.mesh.is_some() || self.csg.as_ref().is_some_and(|tree| !tree.convex)
     }
 
     /// The bounds test: whether the ray may meet the object before `t_max`.
@@ -115,6 +131,11 @@ impl WorldObject {
     /// The closest hit of an object-space ray, without the bounds test.
     #[inline(always)]
     pub(crate) fn hit_unbounded(&self, ray: &Ray, t_max: f64) -> Option<ObjectHit> {
+        if let Some(mesh) = &self.mesh {
+            return mesh
+                .intersect(ray, t_max)
+                .map(|hit| ObjectHit { hit, part: 0 });
+        }
         if let Some(tree) = &self.csg {
             return tree_hit(tree, ray, t_max);
         }
@@ -128,6 +149,9 @@ impl WorldObject {
             return false;
         }
         let ray = ray.transformed(&self.object_from_world);
+        if let Some(mesh) = &self.mesh {
+            return mesh.occluded(&ray, t_max);
+        }
         if let Some(tree) = &self.csg {
             return tree_blocks(tree, &ray, t_max);
         }

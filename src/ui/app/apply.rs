@@ -4,8 +4,8 @@
 use crate::ui::commands::{Command, SceneEdit, repair_selection};
 use crate::ui::document::confirm::DiscardAction;
 use crate::ui::document::file_dialog::DialogPurpose;
-use crate::ui::viewport::isolation::{IsolationAnchors, keep_in_range};
-use crate::ui::viewport::view_camera::ViewCamera;
+use crate::ui::state::ViewCamera;
+use crate::ui::state::{IsolationAnchors, keep_in_range};
 
 use super::EditorApp;
 

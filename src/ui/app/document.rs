@@ -13,7 +13,7 @@ use crate::ui::document::autosave::RestoreAnswer;
 use crate::ui::document::confirm::{DiscardAction, DiscardAnswer};
 use crate::ui::document::file_dialog::{DialogOutcome, DialogPurpose};
 use crate::ui::document::files;
-use crate::ui::viewport::isolation::keep_in_range;
+use crate::ui::state::keep_in_range;
 
 impl EditorApp {
     /// Does `action` now, or asks first when it would drop unsaved changes.

@@ -7,11 +7,12 @@ use std::sync::Arc;
 use crate::preview::WorldCache;
 use crate::scene::Scene;
 use crate::trace::{Isolation, TermSwitches};
-use crate::ui::viewport::pick_link::{PickLink, PickRequest};
+use crate::ui::state::PickRequest;
+use crate::ui::state::RayPathSettings;
+use crate::ui::state::ViewCamera;
+use crate::ui::viewport::pick_link::PickLink;
 use crate::ui::viewport::pixel_inspector::link::InspectionLink;
 use crate::ui::viewport::pixel_inspector::{PixelAnchor, PixelInspection};
-use crate::ui::viewport::ray_paths::RayPathSettings;
-use crate::ui::viewport::view_camera::ViewCamera;
 use crate::ui::viewport::view_memory::ViewMemory;
 
 /// The probes, started with the first frame (they repaint its context).

@@ -2,9 +2,9 @@
 //! pixels and their inspections, the ray-path settings, the views remembered per file.
 
 use super::EditorApp;
+use crate::ui::state::RayPathSettings;
+use crate::ui::state::ViewCamera;
 use crate::ui::viewport::pixel_inspector::PixelInspection;
-use crate::ui::viewport::ray_paths::RayPathSettings;
-use crate::ui::viewport::view_camera::ViewCamera;
 use crate::ui::viewport::view_memory::ViewMemory;
 
 impl EditorApp {

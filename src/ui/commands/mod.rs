@@ -118,21 +118,21 @@ pub enum Command {
     /// Put the keyboard focus in the inspector's name field (outliner "Rename").
     FocusName,
     /// Change the preview's switches, view and debug overlays (editor state, not undoable).
-    SetPreviewSettings(crate::ui::viewport::preview_settings::PreviewSettings),
+    SetPreviewSettings(crate::ui::state::PreviewSettings),
     /// Inspect a pixel of the scene camera's image, or close the pixel inspector (`None`).
     InspectPixel(Option<(u32, u32)>),
     /// Cast the ray under a click (off the UI thread) to select or inspect what it meets.
-    Pick(crate::ui::viewport::pick_link::PickRequest),
+    Pick(crate::ui::state::PickRequest),
     /// Move the view camera (editor state: no edit, no undo step).
-    SetView(crate::ui::viewport::view_camera::ViewCamera),
+    SetView(crate::ui::state::ViewCamera),
     /// Look through the scene camera, or back at the view camera.
     ToggleCameraView,
     /// Set the scene camera from the view camera (one undo step), and look through it.
     SetSceneCameraFromView,
     /// Change what the ray-path overlay draws, and the pinned pixels.
-    SetRayPaths(crate::ui::viewport::ray_paths::RayPathSettings),
+    SetRayPaths(crate::ui::state::RayPathSettings),
     /// Mute, solo or hide (editor state, not undoable, not a scene edit).
-    Isolate(crate::ui::viewport::isolation::IsolationToggle),
+    Isolate(crate::ui::state::IsolationToggle),
     /// Show the Compare with Image window.
     ShowCompare,
     /// Compare the scene with another renderer's picture in this file (in the background).

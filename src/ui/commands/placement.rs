@@ -67,7 +67,7 @@ pub fn new_object_transform(scene: &Scene, shape: &Shape) -> Transform {
         _ => target,
     };
     let affine = DAffine3::from_scale_rotation_translation(DVec3::splat(size), rotation, centre);
-    let mut trs = crate::ui::panels::inspector::trs_from_matrix(&affine);
+    let mut trs = crate::gizmo::trs::trs_from_matrix(&affine);
     // Whole degrees stay whole in the inspector (no 89.99999999999999).
     trs.rotate_deg = (trs.rotate_deg * 1e9).round() / 1e9;
     Transform::Trs(trs)

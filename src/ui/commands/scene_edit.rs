@@ -32,7 +32,7 @@ impl SceneEdit {
             }
             SceneEdit::AddMaterial => {
                 let name = unique_name("material", scene.materials.keys());
-                scene.materials.insert(name.clone(), grey_material());
+                scene.materials.insert(name.clone(), Material::grey());
                 *selection = Selection::Material(name);
             }
             SceneEdit::DuplicateSelected => duplicate(scene, selection)?,
@@ -116,18 +116,6 @@ fn new_light(kind: LightKind) -> Light {
     }
 }
 
-fn grey_material() -> Material {
-    Material {
-        ambient: DVec3::splat(0.1),
-        diffuse: DVec3::splat(0.6),
-        specular: DVec3::splat(0.3),
-        shininess: 32.0,
-        mirror: DVec3::ZERO,
-        transmission: DVec3::ZERO,
-        ior: 1.0,
-    }
-}
-
 /// The first material's name; adds a grey "default" material to an empty table.
 fn first_material(scene: &mut Scene) -> String {
     if let Some(name) = scene.materials.keys().next() {
@@ -135,7 +123,7 @@ fn first_material(scene: &mut Scene) -> String {
     }
     scene
         .materials
-        .insert("default".to_owned(), grey_material());
+        .insert("default".to_owned(), Material::grey());
     "default".to_owned()
 }
 

@@ -7,7 +7,7 @@ use egui::{Color32, RichText};
 use crate::compare::{Comparison, Explanation, PSNR_IDENTICAL_DB};
 use crate::scene::Scene;
 use crate::ui::commands::{Command, Selection};
-use crate::ui::panels::outliner::light_label;
+use crate::ui::state::light_label;
 
 use super::session::CompareSession;
 

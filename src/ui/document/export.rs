@@ -12,7 +12,7 @@ use crate::preview::BackgroundJob;
 use crate::scene::{MAX_IMAGE_SIDE, Scene};
 use crate::trace::{Image, Isolation, RenderOptions, World, render};
 use crate::ui::document::files::write_png;
-use crate::ui::viewport::preview_settings::PreviewSettings;
+use crate::ui::state::PreviewSettings;
 
 /// What the viewport shows: its term switches and view, and the mute, solo and hide
 /// switches; "as the viewport shows it" exports with all of them.

@@ -12,7 +12,7 @@ use crate::scene::{MAX_IMAGE_SIDE, Scene};
 use crate::ui::commands::Command;
 use crate::ui::document::export::{ExportState, ViewportLook};
 use crate::ui::document::files::with_png_extension;
-use crate::ui::viewport::isolation::isolation_note;
+use crate::ui::state::isolation_note;
 
 /// The window's width, used to place it centred when it first opens.
 const WIDTH: f32 = 380.0;

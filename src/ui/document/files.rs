@@ -15,18 +15,9 @@ pub use crate::scene::examples::{DEFAULT_SCENE_RON, default_scene};
 #[must_use]
 pub fn new_scene() -> Scene {
     let mut scene = Scene::empty();
-    scene.materials.insert(
-        "default".to_owned(),
-        crate::scene::Material {
-            ambient: DVec3::splat(0.1),
-            diffuse: DVec3::splat(0.6),
-            specular: DVec3::splat(0.3),
-            shininess: 32.0,
-            mirror: DVec3::ZERO,
-            transmission: DVec3::ZERO,
-            ior: 1.0,
-        },
-    );
+    scene
+        .materials
+        .insert("default".to_owned(), crate::scene::Material::grey());
     scene.render.background = DVec3::new(0.05, 0.06, 0.09);
     scene.lights = vec![
         Light::Ambient {

@@ -7,6 +7,9 @@
 use egui::{CursorIcon, Id, Key, Modifiers, PointerButton, Pos2, Rect, Response};
 use glam::DVec2;
 
+use crate::gizmo::gesture::{
+    ClickTarget, Cursor, DragKind, DragTarget, Dragging, PressKeys, click_target, cursor, drag_kind,
+};
 use crate::gizmo::handles::{HandleShape, pick_handle};
 use crate::gizmo::{GizmoMode, HandleId};
 use crate::scene::{Light, Scene, Transform};
@@ -31,14 +34,22 @@ enum Drag {
         grabbed: Box<Grabbed>,
         geometry: DragGeometry,
         start: Pos2,
-        /// What was selected when the drag began, and how many objects and lights there
-        /// were: the drag edits that item only, and ends if either changes.
-        target: (Selection, usize, usize),
+        /// What was selected when the drag began: the drag edits that item only.
+        target: DragTarget<Selection>,
     },
     Camera {
         drag: CameraDrag,
         start: Pos2,
     },
+}
+
+impl Drag {
+    fn dragging(&self) -> Dragging {
+        match self {
+            Drag::Handle { .. } => Dragging::Handle,
+            Drag::Camera { .. } => Dragging::Camera,
+        }
+    }
 }
 
 /// The gizmos' state between frames (egui's temporary memory).
@@ -68,6 +79,15 @@ pub struct GizmoInput<'a> {
     pub navigate_only: bool,
 }
 
+/// The target a handle drag started now would have.
+fn target_now(scene: &Scene, selection: &Selection) -> DragTarget<Selection> {
+    DragTarget {
+        selection: selection.clone(),
+        objects: scene.objects.len(),
+        lights: scene.lights.len(),
+    }
+}
+
 /// Draws the gizmos over the picture (projected through `view`, the camera the viewport
 /// shows) and handles their input and camera navigation. Returns whether a click was
 /// taken (a light or camera marker, a handle), so the viewport does not also pick an
@@ -90,22 +110,7 @@ pub fn gizmo_ui(
     let ctx = ui.ctx().clone();
     let id = Id::unique("raylab gizmo");
     let mut state: GizmoState = ctx.data(|d| d.get_temp(id)).unwrap_or_default();
-
-    if !ctx.text_edit_focused() {
-        let keys = [
-            (Key::W, GizmoMode::Translate),
-            (Key::E, GizmoMode::Rotate),
-            (Key::R, GizmoMode::Scale),
-        ];
-        for (key, mode) in keys {
-            if ctx.input_mut(|i| i.consume_key(Modifiers::NONE, key)) {
-                state.mode = mode;
-            }
-        }
-        if ctx.input_mut(|i| i.consume_key(Modifiers::NONE, Key::F)) {
-            frame_selection(scene, selection, view, commands);
-        }
-    }
+    shortcuts(&ctx, &mut state, scene, selection, view, commands);
 
     let mut elements = gizmo_elements(scene, selection, state.mode, view);
     dim_unlit_markers(&mut elements, isolation);
@@ -127,13 +132,13 @@ pub fn gizmo_ui(
             .input(|i| i.pointer.press_origin())
             .or_else(|| response.interact_pointer_pos());
         if let Some(start) = start.filter(|p| !over_toolbar(*p)) {
-            state.drag = start_drag(response, scene, selection, view, modifiers, start, pick);
+            state.drag = Some(start_drag(
+                response, scene, selection, view, modifiers, start, pick,
+            ));
         }
     }
-    // The selection or the lists changed under the drag (a delete, an undo, another
-    // pick): its index may now name another item, so the drag ends here.
     if let Some(Drag::Handle { target, .. }) = &state.drag
-        && *target != (selection.clone(), scene.objects.len(), scene.lights.len())
+        && !target.still_applies(&target_now(scene, selection))
     {
         state.drag = None;
     }
@@ -143,23 +148,7 @@ pub fn gizmo_ui(
     {
         state.readout = continue_drag(drag, view, now, modifiers.shift, picture, commands);
     }
-    let mut took_click = false;
-    if response.clicked()
-        && let Some(pos) = response.interact_pointer_pos()
-    {
-        match pick(pos) {
-            Some(HandleId::Marker(i)) => {
-                commands.push(Command::Select(Selection::Light(i)));
-                took_click = true;
-            }
-            Some(HandleId::CameraMarker) => {
-                commands.push(Command::Select(Selection::Camera));
-                took_click = true;
-            }
-            Some(_) => took_click = true,
-            None => {}
-        }
-    }
+    let took_click = handle_click(response, pick, commands);
     if response.hovered() {
         zoom_with_wheel(&ctx, &view.shown, commands);
     }
@@ -175,36 +164,8 @@ pub fn gizmo_ui(
     marker_toggles_ui(
         ui, picture, &elements, scene, selection, isolation, commands,
     );
-    if let Selection::Object(i) = selection
-        && let Some(object) = scene.objects.get(*i)
-        && matches!(object.transform, Transform::Matrix(_))
-        && let Some(p) = view.project(object.transform.world_from_object().translation)
-    {
-        paint_matrix_hint(&painter, p);
-    }
-    if let (Some(text), Some(pos)) = (&state.readout, now)
-        && state.drag.is_some()
-    {
-        paint_readout(&painter, pos, text);
-    } else if let Selection::Light(i) = selection
-        && let Some(Light::Spot { angle_deg, .. }) = scene.lights.get(*i)
-        && let Some(rim) = elements.iter().find_map(|e| match e.part {
-            Part::Dot(p, _) if e.handle == Some(HandleId::SpotRim) => Some(p),
-            _ => None,
-        })
-    {
-        // The cone's angle beside its rim handle.
-        paint_readout(&painter, rim, &format!("{angle_deg:.1}°"));
-    }
-    match (&state.drag, hot) {
-        (Some(Drag::Camera { .. }), _) => ctx.set_cursor_icon(CursorIcon::AllScroll),
-        (Some(Drag::Handle { .. }), _) => ctx.set_cursor_icon(CursorIcon::Grabbing),
-        (None, Some(HandleId::Marker(_) | HandleId::CameraMarker)) => {
-            ctx.set_cursor_icon(CursorIcon::PointingHand);
-        }
-        (None, Some(_)) => ctx.set_cursor_icon(CursorIcon::Grab),
-        (None, None) => {}
-    }
+    paint_hints(&painter, &state, now, scene, selection, &elements, view);
+    set_cursor(&ctx, cursor(state.drag.as_ref().map(Drag::dragging), hot));
 
     let camera_view = !crate::ui::gizmo::camera::shows_scene_camera(view, &scene.camera);
     let (action, toolbar) = gizmo_modes_ui(ui, picture, &mut state.mode, camera_view);
@@ -224,8 +185,101 @@ pub fn gizmo_ui(
     took_click
 }
 
-/// What a drag starting at `start` does: a handle drag on a handle (unless Alt orbits),
-/// a pan with the middle button or Shift, an orbit otherwise.
+/// W, E, R pick the mode and F frames the selection, unless a text field has the keys.
+fn shortcuts(
+    ctx: &egui::Context,
+    state: &mut GizmoState,
+    scene: &Scene,
+    selection: &Selection,
+    view: &ViewMapping,
+    commands: &mut Vec<Command>,
+) {
+    if ctx.text_edit_focused() {
+        return;
+    }
+    let keys = [
+        (Key::W, GizmoMode::Translate),
+        (Key::E, GizmoMode::Rotate),
+        (Key::R, GizmoMode::Scale),
+    ];
+    for (key, mode) in keys {
+        if ctx.input_mut(|i| i.consume_key(Modifiers::NONE, key)) {
+            state.mode = mode;
+        }
+    }
+    if ctx.input_mut(|i| i.consume_key(Modifiers::NONE, Key::F)) {
+        frame_selection(scene, selection, view, commands);
+    }
+}
+
+/// A click on a handle: a marker selects its light or the camera; any handle takes the
+/// click from the object pick under it. Returns whether it did.
+fn handle_click(
+    response: &Response,
+    pick: impl Fn(Pos2) -> Option<HandleId>,
+    commands: &mut Vec<Command>,
+) -> bool {
+    let Some(handle) = response
+        .clicked()
+        .then(|| response.interact_pointer_pos())
+        .flatten()
+        .and_then(pick)
+    else {
+        return false;
+    };
+    match click_target(handle) {
+        ClickTarget::Light(i) => commands.push(Command::Select(Selection::Light(i))),
+        ClickTarget::Camera => commands.push(Command::Select(Selection::Camera)),
+        ClickTarget::Nothing => {}
+    }
+    true
+}
+
+/// The hints over the picture: a general matrix's marker, the drag's readout, or a
+/// selected spot light's angle beside its rim handle.
+fn paint_hints(
+    painter: &egui::Painter,
+    state: &GizmoState,
+    now: Option<Pos2>,
+    scene: &Scene,
+    selection: &Selection,
+    elements: &[crate::ui::gizmo::overlay::Element],
+    view: &ViewMapping,
+) {
+    if let Selection::Object(i) = selection
+        && let Some(object) = scene.objects.get(*i)
+        && matches!(object.transform, Transform::Matrix(_))
+        && let Some(p) = view.project(object.transform.world_from_object().translation)
+    {
+        paint_matrix_hint(painter, p);
+    }
+    if let (Some(text), Some(pos)) = (&state.readout, now)
+        && state.drag.is_some()
+    {
+        paint_readout(painter, pos, text);
+    } else if let Selection::Light(i) = selection
+        && let Some(Light::Spot { angle_deg, .. }) = scene.lights.get(*i)
+        && let Some(rim) = elements.iter().find_map(|e| match e.part {
+            Part::Dot(p, _) if e.handle == Some(HandleId::SpotRim) => Some(p),
+            _ => None,
+        })
+    {
+        paint_readout(painter, rim, &format!("{angle_deg:.1}°"));
+    }
+}
+
+fn set_cursor(ctx: &egui::Context, cursor: Cursor) {
+    let icon = match cursor {
+        Cursor::Default => return,
+        Cursor::Move => CursorIcon::AllScroll,
+        Cursor::Grabbing => CursorIcon::Grabbing,
+        Cursor::Grab => CursorIcon::Grab,
+        Cursor::Pointing => CursorIcon::PointingHand,
+    };
+    ctx.set_cursor_icon(icon);
+}
+
+/// The drag a press at `start` begins ([`drag_kind`] decides which).
 fn start_drag(
     response: &Response,
     scene: &Scene,
@@ -234,37 +288,36 @@ fn start_drag(
     modifiers: Modifiers,
     start: Pos2,
     pick: impl Fn(Pos2) -> Option<HandleId>,
-) -> Option<Drag> {
+) -> Drag {
+    let keys = PressKeys {
+        middle: response.drag_started_by(PointerButton::Middle),
+        alt: modifiers.alt,
+        shift: modifiers.shift,
+    };
+    // Only a handle whose target can be grabbed counts (a light marker cannot).
+    let grabbed = pick(start).and_then(|h| grab(scene, selection, h).map(|g| (h, g)));
     let camera = view.shown.clone();
-    if response.drag_started_by(PointerButton::Middle) {
-        return Some(Drag::Camera {
-            drag: CameraDrag::Pan(camera),
-            start,
-        });
-    }
-    if !modifiers.alt
-        && let Some(handle) = pick(start)
-        && let Some(grabbed) = grab(scene, selection, handle)
-    {
-        let geometry = DragGeometry {
-            eye: view.eye(),
-            cone_length: view.cone_length(),
-            sun: view.sun_anchor(),
-        };
-        return Some(Drag::Handle {
+    match (drag_kind(keys, grabbed.as_ref().map(|(h, _)| *h)), grabbed) {
+        (DragKind::Handle(handle), Some((_, grabbed))) => Drag::Handle {
             handle,
             grabbed: Box::new(grabbed),
-            geometry,
+            geometry: DragGeometry {
+                eye: view.eye(),
+                cone_length: view.cone_length(),
+                sun: view.sun_anchor(),
+            },
             start,
-            target: (selection.clone(), scene.objects.len(), scene.lights.len()),
-        });
+            target: target_now(scene, selection),
+        },
+        (DragKind::Pan, _) => Drag::Camera {
+            drag: CameraDrag::Pan(camera),
+            start,
+        },
+        _ => Drag::Camera {
+            drag: CameraDrag::Orbit(camera),
+            start,
+        },
     }
-    let drag = if modifiers.shift && !modifiers.alt {
-        CameraDrag::Pan(camera)
-    } else {
-        CameraDrag::Orbit(camera)
-    };
-    Some(Drag::Camera { drag, start })
 }
 
 /// Pushes the edit of a drag now at `now`; returns the readout to show.

@@ -13,8 +13,8 @@ use crate::gizmo::spot::{rim_handle, rim_points, rim_radial, tip_point};
 use crate::scene::{Light, Scene};
 use crate::trace::Isolation;
 use crate::ui::commands::{Command, Selection};
-use crate::ui::panels::outliner::light_label;
-use crate::ui::viewport::isolation::IsolationToggle;
+use crate::ui::state::IsolationToggle;
+use crate::ui::state::light_label;
 
 /// The marker of one light; a selected spotlight's cone (its handles come later, on top).
 pub(super) fn light_elements(

@@ -7,7 +7,7 @@ use egui::{Align, Layout, RichText, Ui};
 use crate::scene::{Light, Scene, Shape};
 use crate::trace::Isolation;
 use crate::ui::commands::{Command, LightKind, SceneEdit, Selection};
-use crate::ui::viewport::isolation::IsolationToggle;
+use crate::ui::state::{IsolationToggle, light_label};
 
 /// Least width of one isolation toggle at the end of a row.
 const TOGGLE_WIDTH: f32 = 22.0;
@@ -126,12 +126,6 @@ pub fn outliner_ui(
                 });
             });
         });
-}
-
-/// The outliner's name of a light: "Point light 2" (its place in the list, from 1).
-#[must_use]
-pub fn light_label(light: &Light, index: usize) -> String {
-    format!("{} light {}", light.kind_name(), index + 1)
 }
 
 fn shape_icon(shape: &Shape) -> &'static str {

@@ -11,7 +11,7 @@ use crate::gizmo::view::bounding_sphere;
 use crate::scene::{Camera, Light, Scene};
 use crate::ui::commands::{Command, Selection};
 use crate::ui::gizmo::projection::ViewMapping;
-use crate::ui::viewport::view_camera::ViewCamera;
+use crate::ui::state::ViewCamera;
 
 /// A camera drag: what it does and the shown camera when it started.
 #[derive(Clone, Debug, PartialEq)]

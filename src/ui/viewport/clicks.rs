@@ -7,7 +7,6 @@
 use egui::{Pos2, Response, Vec2};
 use glam::{DVec2, DVec3};
 
-use super::pick_link::{PickPurpose, PickRequest};
 use super::picture::ViewportInput;
 use super::pixel_inspector::{PixelInspection, inspected_pixel};
 use crate::scene::Scene;
@@ -15,6 +14,7 @@ use crate::trace::PinholeCamera;
 use crate::ui::commands::{Command, Selection};
 use crate::ui::gizmo::camera::shows_scene_camera;
 use crate::ui::gizmo::projection::ViewMapping;
+use crate::ui::state::{PickPurpose, PickRequest};
 
 /// Pushes what this frame's clicks on the picture ask for.
 pub fn picture_clicks(

@@ -7,7 +7,7 @@ use egui_plot::{Line, Plot, PlotPoints, Points};
 
 use crate::preview::{ConvergenceCurve, Pass};
 use crate::ui::commands::Command;
-use crate::ui::viewport::preview_settings::PreviewSettings;
+use crate::ui::state::PreviewSettings;
 
 /// The plot's title.
 pub const CONVERGENCE_TITLE: &str = "Estimated remaining error";

@@ -11,26 +11,9 @@ use glam::DVec3;
 use super::pixel_inspector::inspected_pixel;
 use crate::preview::{Probe, WorldCache};
 use crate::scene::Scene;
-use crate::trace::{Isolation, PinholeCamera, Ray};
+use crate::trace::{Isolation, PinholeCamera};
 use crate::ui::commands::{Command, Selection};
-
-/// What a click asks for.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PickPurpose {
-    /// Select the object under the cursor (nothing: clear the selection).
-    Select,
-    /// Inspect the scene camera's pixel that sees the point under the cursor.
-    Inspect,
-}
-
-/// A click to answer: the ray under the cursor, and what for.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PickRequest {
-    /// The ray through the clicked pixel of the shown camera.
-    pub ray: Ray,
-    /// What the answer does.
-    pub purpose: PickPurpose,
-}
+use crate::ui::state::{PickPurpose, PickRequest};
 
 /// What the ray met first.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -6,19 +6,20 @@ use egui::{Align2, Color32, CornerRadius, FontId, Pos2, Rect, Sense, Stroke, Vec
 
 use super::clicks::{inspected_anchor, picture_clicks};
 use super::full_picture_marker::full_picture_marker_ui;
-use super::isolation::isolation_note;
 use super::marks::{HEADER_HEIGHT, header_ui, pass_badge, selection_marker};
 use super::pixel_inspector::{PixelAnchor, PixelInspection};
 use super::preview_link::PreviewLink;
-use super::preview_settings::PreviewSettings;
-use super::ray_paths::{RayPathSettings, ray_path_controls_ui, ray_paths_ui, screen_segments};
+use super::ray_paths::{ray_path_controls_ui, ray_paths_ui, screen_segments};
 use super::toolbar::toolbar_ui;
-use super::view_camera::{ViewCamera, free_render_size};
 use crate::scene::Scene;
 use crate::trace::Isolation;
 use crate::ui::commands::{Command, Selection};
 use crate::ui::gizmo::drag::GizmoInput;
 use crate::ui::gizmo::projection::ViewMapping;
+use crate::ui::state::PreviewSettings;
+use crate::ui::state::RayPathSettings;
+use crate::ui::state::isolation_note;
+use crate::ui::state::{ViewCamera, free_render_size};
 
 /// Accessible name of the picture, for tests and screen readers.
 pub const VIEWPORT_LABEL: &str = "Viewport";

@@ -12,7 +12,7 @@ use crate::preview::{
 };
 use crate::scene::Scene;
 use crate::trace::{Isolation, RenderOptions};
-use crate::ui::viewport::preview_settings::PreviewSettings;
+use crate::ui::state::PreviewSettings;
 use crate::ui::viewport::toolbar::NAN_COLOUR;
 
 /// What is on screen: the pass, how long it took, whether more will follow.
@@ -85,6 +85,7 @@ impl PreviewLink {
             generation: self.generation,
             scene: std::sync::Arc::new(scene.clone()),
             options,
+            meshes: std::sync::Arc::default(),
         });
     }
 

@@ -7,8 +7,7 @@ use egui::{Align, Color32, CornerRadius, Layout, Pos2, Rect, RichText, Shape, St
 
 use crate::trace::{Term, View};
 use crate::ui::commands::Command;
-use crate::ui::viewport::isolation::IsolationToggle;
-use crate::ui::viewport::preview_settings::PreviewSettings;
+use crate::ui::state::{IsolationToggle, PreviewSettings, view_label};
 
 /// Height of one row of the toolbar; a narrow viewport wraps it onto more rows.
 pub const TOOLBAR_ROW_HEIGHT: f32 = 24.0;
@@ -168,16 +167,4 @@ fn view_ui(ui: &mut egui::Ui, settings: &mut PreviewSettings) {
         })
         .response
         .accessible_name("view");
-}
-
-/// The view's name in the editor: "beauty", "normal", "depth", "object id", "shadow mask".
-#[must_use]
-pub fn view_label(view: View) -> &'static str {
-    match view {
-        View::Beauty => "beauty",
-        View::Normal => "normal",
-        View::Depth => "depth",
-        View::ObjectId => "object id",
-        View::ShadowMask => "shadow mask",
-    }
 }

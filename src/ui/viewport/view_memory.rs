@@ -6,7 +6,7 @@ use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
-use super::view_camera::ViewCamera;
+use crate::ui::state::ViewCamera;
 use crate::ui::stored::Stored;
 
 /// How many files' views are kept; the least recently stored go first.

@@ -121,6 +121,12 @@ impl CsgTree {
                             &path,
                         );
                     }
+                    Shape::Mesh { .. } => {
+                        return Err(SceneError::Invalid(format!(
+                            "object \"{path}\": a Mesh cannot be a CSG operand yet (meshes \
+                             render on their own and in groups)"
+                        )));
+                    }
                     shape => {
                         let primitive = Primitive::of(shape).ok_or_else(|| {
                             SceneError::Invalid(format!(

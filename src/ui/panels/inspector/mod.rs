@@ -67,5 +67,3 @@ pub(super) fn grid_ui(ui: &mut Ui, id: &str, rows: impl FnOnce(&mut Ui)) {
         .min_col_width(72.0)
         .show(ui, rows);
 }
-
-pub use object::trs_from_matrix;

@@ -14,7 +14,7 @@ use crate::trace::{
     Isolation, LightRecord, PixelReport, RenderOptions, TermSwitches, View, World,
     try_inspect_pixel,
 };
-use crate::ui::panels::outliner::light_label;
+use crate::ui::state::light_label;
 
 pub use compared::{OTHER_VALUE_LABEL, RAYLAB_VALUE_LABEL, compared_rows};
 pub use window::{

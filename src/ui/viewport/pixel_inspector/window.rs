@@ -8,7 +8,7 @@ use glam::DVec3;
 use super::{InspectedBounce, InspectedLight, InspectedPixel, PixelInspection};
 use crate::trace::BounceReport;
 use crate::ui::commands::Command;
-use crate::ui::viewport::ray_paths::RayPathSettings;
+use crate::ui::state::RayPathSettings;
 
 pub use crate::trace::switches_text;
 

@@ -3,8 +3,8 @@
 
 use egui::{Color32, CornerRadius, Layout, Rect, RichText, UiBuilder, Vec2};
 
-use super::{RayPathSettings, RaySpan};
 use crate::ui::commands::Command;
+use crate::ui::state::{RayPathSettings, RaySpan};
 
 /// Accessible name of the controls' frame.
 pub const RAY_PATHS_LABEL: &str = "Ray paths";

@@ -6,7 +6,6 @@
 use egui::{Align2, Color32, FontId, Id, Pos2, Shape, Stroke, Vec2};
 use glam::DVec3;
 
-use super::RayPathSettings;
 use crate::gizmo::handles::distance_to_segment;
 use crate::gizmo::ray_paths::{
     PathSegment, SegmentEnd, SegmentKind, SegmentLengths, clip_in_front, path_segments,
@@ -15,7 +14,8 @@ use crate::scene::Scene;
 use crate::trace::{LightOutcome, LightSkip, RayKind, traced_rays};
 use crate::ui::gizmo::hit::dvec;
 use crate::ui::gizmo::projection::ViewMapping;
-use crate::ui::panels::outliner::light_label;
+use crate::ui::state::RayPathSettings;
+use crate::ui::state::light_label;
 use crate::ui::viewport::pixel_inspector::{PixelInspection, isolation_lines};
 
 /// How close (points) the pointer must be to a segment to show its numbers.

@@ -3,9 +3,9 @@
 //! the switches follow their lights and objects when the lists are reshuffled. Like the
 //! term switches they are debugging state: never in the scene, never an undo step.
 
+use super::labels::light_label;
 use crate::scene::{Light, Object, Scene};
 use crate::trace::Isolation;
-use crate::ui::panels::outliner::light_label;
 
 /// One click on an isolation toggle.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

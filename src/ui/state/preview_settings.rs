@@ -114,10 +114,7 @@ impl PreviewSettings {
             reasons.push(format!("solo {}", term.name()));
         }
         if self.view != View::Beauty {
-            reasons.push(format!(
-                "{} view",
-                crate::ui::viewport::toolbar::view_label(self.view)
-            ));
+            reasons.push(format!("{} view", super::labels::view_label(self.view)));
         }
         reasons
     }
