@@ -46,7 +46,7 @@ pub(crate) enum Body {
     /// A unit shape alone.
     Primitive,
     /// A CSG node's tree.
-    Csg(CsgTree),
+    Csg(Arc<CsgTree>),
     /// A mesh's triangles.
     Mesh(Arc<TriangleMesh>),
 }
@@ -95,7 +95,7 @@ impl WorldObject {
                     BoundingSphere::around_unit_sphere(&(world_from_object * node_from_sphere))
                 }),
             },
-            csg: csg.map(Arc::new),
+            csg,
             mesh,
             abs_world_from_object: abs_mat(&world_from_object.matrix3),
             abs_object_from_world: abs_mat(&object_from_world.matrix3),
