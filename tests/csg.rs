@@ -404,3 +404,24 @@ fn each_world_object_can_be_taken_out_of_its_tree() {
     }
     assert!(raylab::trace::scene_without_world_object(&scene, world.objects.len()).is_none());
 }
+
+#[test]
+fn only_intersections_of_primitives_count_as_convex() {
+    let lens = world_of(vec![csg(
+        "lens",
+        CsgOp::Intersection,
+        vec![
+            object("front", Shape::Sphere, DVec3::Z * 0.5, 1.0, ""),
+            object("back", Shape::Sphere, -DVec3::Z * 0.5, 1.0, ""),
+        ],
+    )]);
+    assert!(!lens.objects[0].can_meet_itself());
+    assert!(bitten_sphere().objects[0].can_meet_itself());
+    // A shadow ray leaving the bite's floor sideways meets the rim: not convex.
+    let world = bitten_sphere();
+    let floor = world
+        .intersect(&down_from(0.0, 0.0, 5.0), f64::INFINITY)
+        .unwrap();
+    let sideways = spawn_ray(&floor, DVec3::new(1.0, 0.0, 0.3));
+    assert_eq!(world.occluder(&sideways, f64::INFINITY), Some(0));
+}

@@ -16,7 +16,7 @@ pub(crate) fn disc_cap(ray: &Ray, t_max: f64, z_cap: f64, normal_z: f64) -> Opti
     if !in_range(ray, t, t_max) {
         return None;
     }
-    cap_point(ray, z_cap, normal_z)
+    cap_point_at(ray, t, z_cap, normal_z)
 }
 
 /// The line's point on the disc cap `z = z_cap` at any `t`, if it lies on the disc.
@@ -25,7 +25,12 @@ pub(crate) fn cap_point(ray: &Ray, z_cap: f64, normal_z: f64) -> Option<ShapeHit
     if ray.dir.z == 0.0 {
         return None;
     }
-    let t = (z_cap - ray.origin.z) / ray.dir.z;
+    cap_point_at(ray, (z_cap - ray.origin.z) / ray.dir.z, z_cap, normal_z)
+}
+
+/// The point at `t` on the plane of a disc cap, if it lies on the disc.
+#[inline(always)]
+fn cap_point_at(ray: &Ray, t: f64, z_cap: f64, normal_z: f64) -> Option<ShapeHit> {
     let p = ray.at(t);
     if p.x * p.x + p.y * p.y > 1.0 {
         return None;

@@ -21,6 +21,9 @@ pub(crate) mod quadratic;
 mod sphere;
 mod triangle;
 
+#[cfg(test)]
+mod crossings_tests;
+
 use glam::DVec3;
 
 pub use self::bounds::{Aabb, BoundingSphere};

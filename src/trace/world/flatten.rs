@@ -75,7 +75,7 @@ pub(crate) fn flatten(
             Shape::Csg { op, operands } => {
                 let tree =
                     CsgTree::build(*op, operands, node.material, &node.path, &material_index)?;
-                (Primitive::Cube, Body::Csg(tree))
+                (Primitive::Cube, Body::Csg(std::sync::Arc::new(tree)))
             }
             Shape::Mesh { path } => {
                 let mesh = meshes.get(path).ok_or_else(|| {

@@ -33,8 +33,8 @@ pub struct WorldObject {
     /// Index into [`super::World::materials`]; for a CSG node its first leaf's (each
     /// surface point has its operand's: [`super::World::material_at`]).
     pub material: usize,
-    /// For spheres: a bounding sphere, tighter than the box and tested without
-    /// transforming the ray.
+    /// For spheres, and CSG nodes held by one of their sphere leaves: a bounding sphere,
+    /// tighter than the box and tested without transforming the ray.
     bounding_sphere: Option<BoundingSphere>,
     /// Component-wise absolute values of the two 3x3 parts, for the error bounds.
     abs_world_from_object: DMat3,
@@ -46,7 +46,7 @@ pub(crate) enum Body {
     /// A unit shape alone.
     Primitive,
     /// A CSG node's tree.
-    Csg(CsgTree),
+    Csg(Arc<CsgTree>),
     /// A mesh's triangles.
     Mesh(Arc<TriangleMesh>),
 }
@@ -88,9 +88,14 @@ impl WorldObject {
             normal_from_object: world_from_object.matrix3.inverse().transpose(),
             bounds,
             material,
-            bounding_sphere: (shape == Primitive::Sphere && csg.is_none())
-                .then(|| BoundingSphere::around_unit_sphere(&world_from_object)),
-            csg: csg.map(Arc::new),
+            bounding_sphere: match &csg {
+                None => (shape == Primitive::Sphere)
+                    .then(|| BoundingSphere::around_unit_sphere(&world_from_object)),
+                Some(tree) => tree.bounding_sphere.map(|node_from_sphere| {
+                    BoundingSphere::around_unit_sphere(&(world_from_object * node_from_sphere))
+                }),
+            },
+            csg,
             mesh,
             abs_world_from_object: abs_mat(&world_from_object.matrix3),
             abs_object_from_world: abs_mat(&object_from_world.matrix3),
@@ -98,10 +103,11 @@ impl WorldObject {
     }
 
     /// Whether a ray leaving the surface on its outer side can meet the object again
-    /// (not for a single convex or flat primitive; possibly for a CSG node or a mesh).
+    /// (not for a single convex or flat primitive, nor a convex CSG node; possibly for
+    /// other CSG nodes and meshes).
     #[must_use]
     pub fn can_meet_itself(&self) -> bool {
-        self.csg.is_some() || self.mesh.is_some()
+        self.mesh.is_some() || self.csg.as_ref().is_some_and(|tree| !tree.convex)
     }
 
     /// The bounds test: whether the ray may meet the object before `t_max`.
@@ -130,13 +136,10 @@ impl WorldObject {
                 .intersect(ray, t_max)
                 .map(|hit| ObjectHit { hit, part: 0 });
         }
-        match &self.csg {
-            None => shapes::intersect(self.shape, ray, t_max).map(|hit| ObjectHit { hit, part: 0 }),
-            Some(tree) => tree.intersect(ray, t_max).map(|h| ObjectHit {
-                hit: h.hit,
-                part: h.leaf,
-            }),
+        if let Some(tree) = &self.csg {
+            return tree_hit(tree, ray, t_max);
         }
+        shapes::intersect(self.shape, ray, t_max).map(|hit| ObjectHit { hit, part: 0 })
     }
 
     /// Whether a world ray meets the object with `t` in (0, t_max).
@@ -146,11 +149,13 @@ impl WorldObject {
             return false;
         }
         let ray = ray.transformed(&self.object_from_world);
-        match (&self.csg, &self.mesh) {
-            (_, Some(mesh)) => mesh.occluded(&ray, t_max),
-            (Some(tree), _) => tree.occluded(&ray, t_max),
-            (None, None) => shapes::occluded(self.shape, &ray, t_max),
+        if let Some(mesh) = &self.mesh {
+            return mesh.occluded(&ray, t_max);
         }
+        if let Some(tree) = &self.csg {
+            return tree_blocks(tree, &ray, t_max);
+        }
+        shapes::occluded(self.shape, &ray, t_max)
     }
 
     /// Bound on the world hit point's distance from the surface: the object-space error
@@ -167,6 +172,23 @@ impl WorldObject {
             gamma(3) * (inv * p_world.abs() + self.object_from_world.translation.abs());
         carried + forward + m * back_in_object
     }
+}
+
+/// A CSG object's hit, out of line: the primitives' path stays small where it is inlined.
+#[cold]
+#[inline(never)]
+fn tree_hit(tree: &CsgTree, ray: &Ray, t_max: f64) -> Option<ObjectHit> {
+    tree.intersect(ray, t_max).map(|h| ObjectHit {
+        hit: h.hit,
+        part: h.leaf,
+    })
+}
+
+/// Whether a CSG object blocks a ray, out of line as [`tree_hit`].
+#[cold]
+#[inline(never)]
+fn tree_blocks(tree: &CsgTree, ray: &Ray, t_max: f64) -> bool {
+    tree.occluded(ray, t_max)
 }
 
 fn abs_mat(m: &DMat3) -> DMat3 {

@@ -3,7 +3,7 @@
 
 use glam::{DAffine3, DVec3};
 
-use super::{CsgLeaf, CsgTree, Extent, Step, combine_extents};
+use super::tree::{CsgLeaf, CsgTree, Extent, Step, combine_extents};
 use crate::scene::{CsgOp, Object, SceneError, Shape};
 use crate::trace::shapes::{self, Aabb, Primitive};
 
@@ -46,8 +46,14 @@ impl CsgTree {
             leaves: Vec::new(),
             steps: Vec::new(),
             extent: Extent::Empty,
+            bounding_sphere: None,
+            convex: false,
         };
         let mut extents: Vec<Extent> = Vec::new();
+        // Per operand on the stack, a sphere leaf's placement that holds all of it.
+        let mut spheres: Vec<Option<DAffine3>> = Vec::new();
+        // Per operand on the stack, whether its solid is known to be convex.
+        let mut convex: Vec<bool> = Vec::new();
         // The SkipIfEmpty steps waiting for their node's end (nodes nest, so a stack).
         let mut checks: Vec<usize> = Vec::new();
         let mut chunks: Vec<usize> = Vec::new();
@@ -83,8 +89,17 @@ impl CsgTree {
                     }
                     let first = extents.len() - operands as usize;
                     let combined = combine_extents(op, &extents[first..]);
+                    let sphere = bounding_sphere(op, &spheres[first..]);
+                    // Intersections of convex solids are convex; nothing else here is
+                    // known to be.
+                    let all_convex = convex[first..].iter().all(|&c| c);
+                    let node_convex = all_convex && (op == CsgOp::Intersection || operands == 1);
+                    convex.truncate(first);
+                    convex.push(node_convex);
                     extents.truncate(first);
                     extents.push(combined);
+                    spheres.truncate(first);
+                    spheres.push(sphere);
                 }
                 Work::Visit {
                     object,
@@ -128,12 +143,16 @@ impl CsgTree {
                         tree.steps.push(Step::Leaf(index));
                         let leaf = CsgLeaf::new(primitive, path, material, node_from_object);
                         extents.push(leaf.bounds.map_or(Extent::Unbounded, Extent::Box));
+                        spheres.push((primitive == Primitive::Sphere).then_some(node_from_object));
+                        convex.push(true);
                         tree.leaves.push(leaf);
                     }
                 },
             }
         }
         tree.extent = extents.pop().unwrap_or(Extent::Empty);
+        tree.bounding_sphere = spheres.pop().flatten();
+        tree.convex = convex.pop().unwrap_or(false);
         Ok(tree)
     }
 }
@@ -243,4 +262,26 @@ fn chunks(operands: &[Object], node_from_parent: &DAffine3) -> Vec<Chunk> {
 /// Difference is empty wherever its first operand is.
 fn skips(op: CsgOp, operands: u32) -> bool {
     op != CsgOp::Union && operands >= 2
+}
+
+/// A sphere leaf that holds a whole node, from its operands' (each `None` or such a
+/// leaf's placement): a Difference's first operand's, the smallest of an Intersection's,
+/// a Union's only if it has one operand.
+fn bounding_sphere(op: CsgOp, operands: &[Option<DAffine3>]) -> Option<DAffine3> {
+    let radius = |m: &DAffine3| {
+        let m = m.matrix3;
+        m.x_axis
+            .length()
+            .max(m.y_axis.length())
+            .max(m.z_axis.length())
+    };
+    match (op, operands) {
+        (CsgOp::Difference, [first, ..]) | (CsgOp::Union, [first]) => *first,
+        (CsgOp::Intersection, _) => operands
+            .iter()
+            .flatten()
+            .min_by(|a, b| radius(a).total_cmp(&radius(b)))
+            .copied(),
+        _ => None,
+    }
 }
