@@ -1,4 +1,5 @@
-//! The course conventions in the editor's render settings: each choice is one click, one
+//! The render settings and object panels on the new scene features. The course
+//! conventions in the render settings: each choice is one click, one
 //! undo step, and says in one line what it does; the presets switch all three.
 
 mod editor_harness;
@@ -54,4 +55,26 @@ fn the_presets_set_all_three() {
     harness.get_by_label("Contract").click();
     harness.run();
     assert!(harness.state().scene().render.conventions.is_default());
+}
+
+#[test]
+fn a_tree_object_shows_what_it_holds_and_offers_no_shape_to_switch_to() {
+    let mut harness = harness();
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/csg.ron");
+    harness.state_mut().push(Command::Open(path));
+    harness.run();
+    let before = harness.state().scene().clone();
+    harness.get_by_label("die").click();
+    harness.run();
+    harness.get_by_label_contains("Csg Difference of");
+    assert!(
+        harness.query_by_label("shape").is_none(),
+        "a CSG object must not offer a unit shape in its place"
+    );
+    assert_eq!(harness.state().scene(), &before, "showing is not editing");
+    // A unit shape still has its shape menu.
+    // "floor" names the object and, after it in the outliner, a material.
+    harness.get_all_by_label("floor").next().unwrap().click();
+    harness.run();
+    harness.get_by_label("shape");
 }

@@ -31,16 +31,23 @@ pub(super) fn object_ui(
         ui.end_row();
 
         ui.label("Shape");
-        egui::ComboBox::from_id_salt("shape")
-            .selected_text(edited.shape.name())
-            .show_ui(ui, |ui| {
-                for shape in Shape::ALL {
-                    let name = shape.name();
-                    ui.selectable_value(&mut edited.shape, shape, name);
-                }
-            })
-            .response
-            .accessible_name("shape");
+        if Shape::ALL.contains(&edited.shape) {
+            egui::ComboBox::from_id_salt("shape")
+                .selected_text(edited.shape.name())
+                .show_ui(ui, |ui| {
+                    for shape in Shape::ALL {
+                        let name = shape.name();
+                        ui.selectable_value(&mut edited.shape, shape, name);
+                    }
+                })
+                .response
+                .accessible_name("shape");
+        } else {
+            // A tree or a mesh is more than a shape: switching it to a unit shape would
+            // drop its operands, children or file in one click.
+            ui.label(tree_or_mesh_summary(&edited.shape))
+                .on_hover_text("Edit this object's parts in the scene file; see the outliner");
+        }
         ui.end_row();
 
         ui.label("Material");
@@ -115,5 +122,15 @@ pub(super) fn transform_ui(ui: &mut Ui, transform: &mut Transform) {
                 ));
             }
         }
+    }
+}
+
+/// What a tree or mesh object holds, in a few words.
+fn tree_or_mesh_summary(shape: &Shape) -> String {
+    match shape {
+        Shape::Csg { op, operands } => format!("Csg {} of {}", op.name(), operands.len()),
+        Shape::Group { children } => format!("Group of {}", children.len()),
+        Shape::Mesh { path } => format!("Mesh {path}"),
+        other => other.name().to_owned(),
     }
 }
