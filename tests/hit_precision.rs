@@ -95,6 +95,14 @@ fn distance_to_surface(object: &WorldObject, p_world: DVec3) -> f64 {
                 parts.push((f64::from(z - one), DVec3::Z));
             }
         }
+        Primitive::Octahedron => {
+            // The face whose sign vector matches the point's: s.q = |x| + |y| + |z|.
+            let sign = |x: Dd| if x.hi() < 0.0 { -x } else { x };
+            let sum = sign(q[0]) + sign(q[1]) + sign(q[2]);
+            let s = DVec3::new(q64.x.signum(), q64.y.signum(), q64.z.signum());
+            let d = (sum - one) / Dd::from(3f64.sqrt());
+            parts.push((f64::from(d), s.normalize()));
+        }
     }
     parts
         .into_iter()

@@ -19,6 +19,7 @@ fn inside(shape: &Shape, p: DVec3) -> Option<bool> {
         Shape::Cylinder => r2 < 1.0 && p.z.abs() < 1.0,
         Shape::Cone => r2 < p.z * p.z && p.z > 0.0 && p.z < 1.0,
         Shape::Plane => return None,
+        Shape::Octahedron => p.abs().element_sum() < 1.0,
         other => panic!("no inside test for {other:?}"),
     })
 }
@@ -45,6 +46,7 @@ fn surface_residual(shape: &Shape, p: DVec3) -> f64 {
             let cap = (p.z - 1.0).abs().max((r - 1.0).max(0.0));
             side.min(cap)
         }
+        Shape::Octahedron => (p.abs().element_sum() - 1.0).abs() / 3f64.sqrt(),
         other => panic!("no surface residual for {other:?}"),
     }
 }

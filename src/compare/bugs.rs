@@ -242,7 +242,9 @@ impl Part {
     #[must_use]
     pub fn of_shape(shape: Primitive) -> &'static [Part] {
         match shape {
-            Primitive::Sphere | Primitive::Cube | Primitive::Mesh => &[Part::Whole],
+            Primitive::Sphere | Primitive::Cube | Primitive::Octahedron | Primitive::Mesh => {
+                &[Part::Whole]
+            }
             Primitive::Plane => &[Part::Front, Part::Back],
             Primitive::Cylinder | Primitive::Cone => &[Part::Side, Part::Caps],
         }
@@ -254,7 +256,9 @@ impl Part {
         let n_object =
             (object.world_from_object.matrix3.transpose() * hit.n_outward).normalize_or_zero();
         match object.shape {
-            Primitive::Sphere | Primitive::Cube | Primitive::Mesh => Part::Whole,
+            Primitive::Sphere | Primitive::Cube | Primitive::Octahedron | Primitive::Mesh => {
+                Part::Whole
+            }
             Primitive::Plane if hit.n_outward.dot(ray_dir) < 0.0 => Part::Front,
             Primitive::Plane => Part::Back,
             // Cap normals are +-z; side normals have |z| of 0 (cylinder) or 1/sqrt 2 (cone,

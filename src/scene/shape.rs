@@ -78,12 +78,13 @@ impl CsgOp {
 
 impl Shape {
     /// The unit shapes the tracer draws, in menu order.
-    pub const ALL: [Shape; 5] = [
+    pub const ALL: [Shape; 6] = [
         Shape::Sphere,
         Shape::Plane,
         Shape::Cube,
         Shape::Cylinder,
         Shape::Cone,
+        Shape::Octahedron,
     ];
 
     /// The name used in files and menus.

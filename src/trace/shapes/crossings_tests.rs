@@ -8,12 +8,13 @@ use proptest::prelude::*;
 use super::{Primitive, ShapeHit, crossings, in_range, intersect, starts_inside};
 use crate::trace::ray::Ray;
 
-const SHAPES: [Primitive; 5] = [
+const SHAPES: [Primitive; 6] = [
     Primitive::Sphere,
     Primitive::Plane,
     Primitive::Cube,
     Primitive::Cylinder,
     Primitive::Cone,
+    Primitive::Octahedron,
 ];
 
 fn vector(range: f64) -> impl Strategy<Value = DVec3> {
@@ -29,6 +30,7 @@ fn contains(shape: Primitive, p: DVec3) -> bool {
         Primitive::Cube => p.abs().max_element() <= 1.0,
         Primitive::Cylinder => r2 <= 1.0 && p.z.abs() <= 1.0,
         Primitive::Cone => r2 <= p.z * p.z && (0.0..=1.0).contains(&p.z),
+        Primitive::Octahedron => p.abs().element_sum() <= 1.0,
         Primitive::Mesh => unreachable!("meshes are not among SHAPES"),
     }
 }

@@ -16,6 +16,7 @@ mod hit;
 mod mesh;
 mod mesh_bvh;
 mod mesh_solid;
+mod octahedron;
 mod plane;
 pub(crate) mod quadratic;
 mod sphere;
@@ -47,6 +48,8 @@ pub enum Primitive {
     Cylinder,
     /// The capped unit cone.
     Cone,
+    /// The unit octahedron |x| + |y| + |z| <= 1.
+    Octahedron,
     /// A triangle mesh: its triangles live in the object's `TriangleMesh`, so the free
     /// functions below see no surface for it (never `Primitive::of` a shape).
     Mesh,
@@ -62,6 +65,7 @@ impl Primitive {
             Shape::Cube => Primitive::Cube,
             Shape::Cylinder => Primitive::Cylinder,
             Shape::Cone => Primitive::Cone,
+            Shape::Octahedron => Primitive::Octahedron,
             _ => return None,
         })
     }
@@ -75,6 +79,7 @@ impl Primitive {
             Primitive::Cube => Shape::Cube,
             Primitive::Cylinder => Shape::Cylinder,
             Primitive::Cone => Shape::Cone,
+            Primitive::Octahedron => Shape::Octahedron,
             // The path lives with the object, not the primitive.
             Primitive::Mesh => Shape::Mesh {
                 path: String::new(),
@@ -100,6 +105,7 @@ pub fn object_bounds(shape: Primitive) -> Aabb {
         Primitive::Cube => cube::bounds(),
         Primitive::Cylinder => cylinder::bounds(),
         Primitive::Cone => cone::bounds(),
+        Primitive::Octahedron => octahedron::bounds(),
         Primitive::Mesh => Aabb::new(DVec3::INFINITY, DVec3::NEG_INFINITY),
     }
 }
@@ -153,6 +159,7 @@ pub fn intersect(shape: Primitive, ray: &Ray, t_max: f64) -> Option<ShapeHit> {
         Primitive::Cube => cube::intersect(ray, t_max),
         Primitive::Cylinder => cylinder::intersect(ray, t_max),
         Primitive::Cone => cone::intersect(ray, t_max),
+        Primitive::Octahedron => octahedron::intersect(ray, t_max),
         Primitive::Mesh => None,
     }
 }
@@ -168,6 +175,7 @@ pub fn occluded(shape: Primitive, ray: &Ray, t_max: f64) -> bool {
         Primitive::Cube => cube::occluded(ray, t_max),
         Primitive::Cylinder => cylinder::occluded(ray, t_max),
         Primitive::Cone => cone::occluded(ray, t_max),
+        Primitive::Octahedron => octahedron::occluded(ray, t_max),
         Primitive::Mesh => false,
     }
 }
@@ -186,6 +194,7 @@ pub(crate) fn crossings(shape: Primitive, ray: &Ray, out: &mut Vec<ShapeHit>) {
         Primitive::Cube => cube::crossings(ray, out),
         Primitive::Cylinder => cylinder::crossings(ray, out),
         Primitive::Cone => cone::crossings(ray, out),
+        Primitive::Octahedron => octahedron::crossings(ray, out),
         // A mesh's crossings need its triangles: `TriangleMesh::crossings`. CSG trees
         // are built from unit shapes only (see `world::csg`), so none reaches here.
         Primitive::Mesh => {}
