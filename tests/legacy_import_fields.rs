@@ -22,10 +22,10 @@ fn full_scene_render_settings_and_camera() {
     let camera = &scene.camera;
     assert_eq!((camera.width, camera.height), (40, 30));
     // Rotate X 180 then Translate 0 1 10: at (0, 1, 10), looking down -Z, +Y up. All
-    // five objects are in view, four centred at depth 10 and the cone at 9.5 (its
-    // bounds' centre is (-3, 0, 0.5)): the target is at their mean depth, 9.9.
+    // six objects are in view, five centred at depth 10 and the cone at 9.5 (its
+    // bounds' centre is (-3, 0, 0.5)): the target is at their mean depth, 9 + 11/12.
     assert_vec(camera.position, DVec3::new(0.0, 1.0, 10.0));
-    assert_vec(camera.look_at, DVec3::new(0.0, 1.0, 0.1));
+    assert_vec(camera.look_at, DVec3::new(0.0, 1.0, 1.0 / 12.0));
     assert_vec(camera.up, DVec3::new(0.0, 1.0, 0.0));
     // tan(fov / 2) = (30 / 40) / 2.
     let expected_fov = 2.0 * 0.375f64.atan().to_degrees();
@@ -135,6 +135,7 @@ fn full_scene_objects_and_transforms() {
             ("Cube 2", Shape::Cube, "red#1 (Cube 2)"),
             ("Cylinder 3", Shape::Cylinder, "default"),
             ("Cone 4", Shape::Cone, "Red (Cone 4)"),
+            ("Octahedron 5", Shape::Octahedron, "Red"),
         ]
     );
     // Scale 2, then Translate 0 -2 0.
@@ -172,15 +173,18 @@ fn full_scene_objects_and_transforms() {
 }
 
 #[test]
-fn octahedron_is_skipped_with_the_only_warning() {
+fn an_octahedron_is_imported_as_students_tracers_draw_it() {
     let import = import_file("full.txt");
-    assert_eq!(import.warnings.len(), 1, "{:?}", import.warnings);
+    assert!(import.warnings.is_empty(), "{:?}", import.warnings);
     assert!(
-        import.warnings[0].starts_with("line 83: "),
+        import
+            .scene
+            .objects
+            .iter()
+            .any(|o| o.shape == Shape::Octahedron),
         "{:?}",
-        import.warnings
+        import.scene.objects
     );
-    assert!(import.warnings[0].contains("Octahedron"));
 }
 
 #[test]

@@ -108,10 +108,8 @@ pub enum LightSetting {
 /// What an Object block draws.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ObjectKind {
-    /// One of the five shapes the project draws.
+    /// One of the unit shapes the project draws (`Shape::ALL`).
     Shape(Shape),
-    /// Parsed by the legacy renderer but never drawn; skipped with a warning.
-    Octahedron,
 }
 
 /// One keyword of an Object block.

@@ -148,16 +148,7 @@ impl Converter<'_> {
                 ObjectSetting::Transform(step) => steps.push(*step),
             }
         }
-        let shape = match kind {
-            ObjectKind::Shape(shape) => shape,
-            ObjectKind::Octahedron => {
-                self.warn(
-                    at.line,
-                    "Octahedron: the legacy renderer parses octahedra but never draws them; skipped",
-                );
-                return;
-            }
-        };
+        let ObjectKind::Shape(shape) = kind;
         if !ok {
             return;
         }

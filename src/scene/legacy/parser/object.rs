@@ -1,4 +1,4 @@
-//! The Object block: `Object SHAPE` (or `Octahedron`, parsed and later skipped), its
+//! The Object block: `Object SHAPE` (one of the shapes raylab draws, the octahedron too), its
 //! material, material overrides and transforms.
 
 use super::super::error::LegacyError;
@@ -35,17 +35,11 @@ pub(super) fn parse_object(
     let kind = Shape::ALL
         .into_iter()
         .find(|shape| header.kind.is(shape.name()))
-        .map(ObjectKind::Shape)
-        .or_else(|| {
-            header
-                .kind
-                .is("Octahedron")
-                .then_some(ObjectKind::Octahedron)
-        });
+        .map(ObjectKind::Shape);
     if kind.is_none() {
         errors.push(error(
             &header.kind,
-            "unknown object type (expected Sphere, Plane, Cube, Cylinder or Cone)",
+            "unknown object type (expected Sphere, Plane, Cube, Cylinder, Cone or Octahedron)",
         ));
     }
     let numbers_ok = no_numbers(&header, errors);
