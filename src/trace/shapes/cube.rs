@@ -4,6 +4,7 @@ use glam::DVec3;
 
 use super::bounds::Aabb;
 use super::hit::{ShapeHit, gamma, in_range};
+use super::slabs::{SlabSpan, slab_span};
 use crate::trace::ray::Ray;
 
 /// Object-space bounds.
@@ -11,54 +12,19 @@ pub fn bounds() -> Aabb {
     Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0))
 }
 
-/// Entry and exit of the ray through the slabs, with the axis of each.
-struct Span {
-    t_near: f64,
-    near_axis: usize,
-    t_far: f64,
-    far_axis: usize,
-}
-
-/// Slab test. A zero direction component is handled explicitly so that an origin on a
-/// face plane never produces 0 * inf = NaN.
-fn span(ray: &Ray) -> Option<Span> {
-    let mut s = Span {
-        t_near: f64::NEG_INFINITY,
-        near_axis: 0,
-        t_far: f64::INFINITY,
-        far_axis: 0,
-    };
-    for axis in 0..3 {
-        let (o, d) = (ray.origin[axis], ray.dir[axis]);
-        if d == 0.0 {
-            if o.abs() > 1.0 {
-                return None;
-            }
-            continue;
-        }
-        let (mut t0, mut t1) = ((-1.0 - o) / d, (1.0 - o) / d);
-        if t0 > t1 {
-            std::mem::swap(&mut t0, &mut t1);
-        }
-        if t0 > s.t_near {
-            s.t_near = t0;
-            s.near_axis = axis;
-        }
-        if t1 < s.t_far {
-            s.t_far = t1;
-            s.far_axis = axis;
-        }
-    }
-    (s.t_near <= s.t_far).then_some(s)
+/// The slab test over the three axes.
+#[inline(always)]
+fn span(ray: &Ray) -> Option<SlabSpan> {
+    slab_span::<3>(ray, |v, axis| v[axis])
 }
 
 /// The closest hit with `t` in (0, t_max): the entry face, or the exit face from inside.
 pub fn intersect(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
     let s = span(ray)?;
     let (t, axis) = if in_range(ray, s.t_near, t_max) {
-        (s.t_near, s.near_axis)
+        (s.t_near, s.near_slab)
     } else if in_range(ray, s.t_far, t_max) {
-        (s.t_far, s.far_axis)
+        (s.t_far, s.far_slab)
     } else {
         return None;
     };
@@ -79,7 +45,7 @@ pub(crate) fn crossings(ray: &Ray, out: &mut Vec<ShapeHit>) {
     if !(s.t_near.is_finite() && s.t_far.is_finite()) {
         return; // a zero direction: no crossing
     }
-    for (t, axis, entering) in [(s.t_near, s.near_axis, true), (s.t_far, s.far_axis, false)] {
+    for (t, axis, entering) in [(s.t_near, s.near_slab, true), (s.t_far, s.far_slab, false)] {
         // The entry face faces against the ray along its axis, the exit face with it.
         let along = if ray.dir[axis] > 0.0 { 1.0 } else { -1.0 };
         let side = if entering { -along } else { along };

@@ -19,6 +19,7 @@ mod mesh_solid;
 mod octahedron;
 mod plane;
 pub(crate) mod quadratic;
+mod slabs;
 mod sphere;
 mod triangle;
 

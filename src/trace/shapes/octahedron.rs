@@ -7,6 +7,7 @@ use glam::DVec3;
 
 use super::bounds::Aabb;
 use super::hit::{ShapeHit, gamma, in_range};
+use super::slabs::{SlabSpan, slab_span};
 use crate::trace::ray::Ray;
 
 /// The four face normals (unnormalised), one per pair of opposite faces.
@@ -22,45 +23,10 @@ pub fn bounds() -> Aabb {
     Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0))
 }
 
-/// Entry and exit of the ray through the slabs, with the slab of each.
-struct Span {
-    t_near: f64,
-    near_slab: usize,
-    t_far: f64,
-    far_slab: usize,
-}
-
-/// Slab test. A ray parallel to a slab is inside it or misses the solid; it never divides
-/// by zero.
-fn span(ray: &Ray) -> Option<Span> {
-    let mut s = Span {
-        t_near: f64::NEG_INFINITY,
-        near_slab: 0,
-        t_far: f64::INFINITY,
-        far_slab: 0,
-    };
-    for (slab, normal) in SLABS.iter().enumerate() {
-        let (o, d) = (normal.dot(ray.origin), normal.dot(ray.dir));
-        if d == 0.0 {
-            if o.abs() > 1.0 {
-                return None;
-            }
-            continue;
-        }
-        let (mut t0, mut t1) = ((-1.0 - o) / d, (1.0 - o) / d);
-        if t0 > t1 {
-            std::mem::swap(&mut t0, &mut t1);
-        }
-        if t0 > s.t_near {
-            s.t_near = t0;
-            s.near_slab = slab;
-        }
-        if t1 < s.t_far {
-            s.t_far = t1;
-            s.far_slab = slab;
-        }
-    }
-    (s.t_near <= s.t_far).then_some(s)
+/// The slab test over the four pairs of opposite faces.
+#[inline(always)]
+fn span(ray: &Ray) -> Option<SlabSpan> {
+    slab_span::<4>(ray, |v, slab| SLABS[slab].dot(v))
 }
 
 /// The hit at `t` on the face of `slab` on the side `side` (+1 or -1): the point moved
