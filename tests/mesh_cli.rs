@@ -3,10 +3,21 @@
 //! is missing is refused naming the object and the file.
 
 use std::path::PathBuf;
-use std::process::Command;
+use std::process::{Command, Output};
 
 fn raylab() -> Command {
     Command::new(env!("CARGO_BIN_EXE_raylab"))
+}
+
+/// Runs `command` and asserts it succeeded, showing its stderr if not.
+fn succeeds(command: &mut Command) -> Output {
+    let run = command.output().expect("runs");
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    run
 }
 
 fn example() -> PathBuf {
@@ -16,17 +27,12 @@ fn example() -> PathBuf {
 #[test]
 fn render_reads_the_meshes_beside_the_scene() {
     let out = std::env::temp_dir().join(format!("raylab-mesh-cli-{}.png", std::process::id()));
-    let run = raylab()
-        .arg("render")
-        .arg(example())
-        .args(["--width", "64", "-o"])
-        .arg(&out)
-        .output()
-        .expect("runs");
-    assert!(
-        run.status.success(),
-        "{}",
-        String::from_utf8_lossy(&run.stderr)
+    let run = succeeds(
+        raylab()
+            .arg("render")
+            .arg(example())
+            .args(["--width", "64", "-o"])
+            .arg(&out),
     );
     let stderr = String::from_utf8_lossy(&run.stderr);
     assert_eq!(
@@ -49,16 +55,11 @@ fn render_reads_the_meshes_beside_the_scene() {
 
 #[test]
 fn inspect_names_the_triangle_and_its_barycentrics() {
-    let run = raylab()
-        .arg("inspect")
-        .arg(example())
-        .args(["--pixel", "140,200"])
-        .output()
-        .expect("runs");
-    assert!(
-        run.status.success(),
-        "{}",
-        String::from_utf8_lossy(&run.stderr)
+    let run = succeeds(
+        raylab()
+            .arg("inspect")
+            .arg(example())
+            .args(["--pixel", "140,200"]),
     );
     let text = String::from_utf8_lossy(&run.stdout);
     assert!(text.contains("hits knot"), "{text}");
@@ -102,17 +103,12 @@ fn diff_names_a_mesh_left_out_of_the_other_image() {
     let dir = std::env::temp_dir().join(format!("raylab-mesh-cli-diff-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("folder");
     let other = dir.join("no-knot.png");
-    let render = raylab()
-        .arg("render")
-        .arg(example())
-        .args(["--hide", "knot", "-o"])
-        .arg(&other)
-        .output()
-        .expect("runs");
-    assert!(
-        render.status.success(),
-        "{}",
-        String::from_utf8_lossy(&render.stderr)
+    succeeds(
+        raylab()
+            .arg("render")
+            .arg(example())
+            .args(["--hide", "knot", "-o"])
+            .arg(&other),
     );
     let diff = raylab()
         .arg("diff")

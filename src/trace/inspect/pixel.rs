@@ -112,32 +112,36 @@ pub struct HitSurface {
     pub cut: bool,
 }
 
+/// The world object a recorded hit lies on: among those of the hit's scene object (a
+/// group's members share it), the one the ray meets again at `hit.t`.
+fn world_object_hit(world: &World, ray: &Ray, hit: &SurfacePoint) -> Option<usize> {
+    (0..world.objects.len()).find(|&i| {
+        world.scene_object(i) == hit.object
+            && world
+                .intersect_object(i, ray, f64::INFINITY)
+                .is_some_and(|again| again.t == hit.t)
+    })
+}
+
 impl HitSurface {
-    /// Finds the world object (among those of the hit's scene object) and the leaf the
-    /// ray met at `hit.t`.
-    fn find(world: &World, ray: &Ray, hit: &SurfacePoint) -> Option<Self> {
-        let index = (0..world.objects.len()).find(|&i| {
-            world.scene_object(i) == hit.object
-                && world
-                    .intersect_object(i, ray, f64::INFINITY)
-                    .is_some_and(|again| again.t == hit.t)
-        })?;
+    /// The leaf of world object `index` that the ray met at `hit.t`.
+    fn find(world: &World, index: usize, ray: &Ray, hit: &SurfacePoint) -> Self {
         let object = &world.objects[index];
         let Some(tree) = &object.csg else {
-            return Some(Self {
+            return Self {
                 path: object.name.clone(),
                 crossing: None,
                 cut: false,
-            });
+            };
         };
         let surfaces = tree.surfaces(&ray.transformed(&object.object_from_world));
         let crossing = surfaces.iter().position(|(s, _)| s.hit.t == hit.t);
         let leaf = &tree.leaves[hit.part as usize];
-        Some(Self {
+        Self {
             path: leaf.path.clone(),
             crossing: crossing.map(|k| (k, surfaces.len())),
             cut: crossing.is_some_and(|k| surfaces[k].0.cut),
-        })
+        }
     }
 }
 
@@ -173,13 +177,10 @@ impl ReportRecorder<'_> {
 
 impl Recorder for ReportRecorder<'_> {
     fn hit(&mut self, depth: u32, ray: &Ray, hit: &SurfacePoint) {
-        let surface = HitSurface::find(self.world, ray, hit);
-        let triangle = self
-            .world
-            .object_scene_index
-            .iter()
-            .position(|&i| i == hit.object)
-            .and_then(|index| self.world.triangle_hit(index, ray, f64::INFINITY));
+        // One search serves both: a group's members share the hit's scene index.
+        let index = world_object_hit(self.world, ray, hit);
+        let surface = index.map(|i| HitSurface::find(self.world, i, ray, hit));
+        let triangle = index.and_then(|i| self.world.triangle_hit(i, ray, f64::INFINITY));
         let bounce = self.at(depth, ray);
         bounce.hit = Some(*hit);
         bounce.surface = surface;

@@ -124,29 +124,26 @@ pub fn shape_bounds(shape: &Shape) -> Aabb {
             Aabb::new(DVec3::new(-r, -r, -minor), DVec3::new(r, r, *minor))
         }
         Shape::Tube { .. } | Shape::Octahedron | Shape::Mesh { .. } => unit_cube,
+        // A Difference lies within its first operand; the others within all operands.
         Shape::Csg { op, operands } => {
-            let placed = |o: &crate::scene::Object| {
-                shape_bounds(&o.shape).transformed(&o.transform.world_from_object())
-            };
             let take = if *op == CsgOp::Difference {
                 1
             } else {
                 operands.len()
             };
-            operands
-                .iter()
-                .take(take)
-                .map(placed)
-                .reduce(|a, b| a.union(&b))
-                .unwrap_or(unit_cube)
+            placed_union(&operands[..take.min(operands.len())]).unwrap_or(unit_cube)
         }
-        Shape::Group { children } => children
-            .iter()
-            .map(|o| shape_bounds(&o.shape).transformed(&o.transform.world_from_object()))
-            .reduce(|a, b| a.union(&b))
-            .unwrap_or(unit_cube),
+        Shape::Group { children } => placed_union(children).unwrap_or(unit_cube),
         leaf => object_bounds(Primitive::of(leaf).expect("every other shape is a primitive")),
     }
+}
+
+/// The box around `objects`, each placed by its transform; `None` for none.
+fn placed_union(objects: &[crate::scene::Object]) -> Option<Aabb> {
+    objects
+        .iter()
+        .map(|o| shape_bounds(&o.shape).transformed(&o.transform.world_from_object()))
+        .reduce(|a, b| a.union(&b))
 }
 
 /// The closest hit of an object-space ray with `t` in (0, t_max) (none for a mesh: see
