@@ -32,8 +32,11 @@ pub(super) fn parse_object(
     errors: &mut Vec<LegacyError>,
 ) -> Option<ParsedBlock> {
     let header = header(word, rest, "a shape, such as `Sphere`", errors)?;
+    // The torus and the tube take their radius on the header line (`Torus 0.3`), which
+    // this reader does not parse yet.
     let kind = Shape::ALL
         .into_iter()
+        .filter(|shape| !matches!(shape, Shape::Torus { .. } | Shape::Tube { .. }))
         .find(|shape| header.kind.is(shape.name()))
         .map(ObjectKind::Shape);
     if kind.is_none() {
