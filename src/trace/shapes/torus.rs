@@ -19,7 +19,7 @@ use glam::DVec3;
 
 use super::bounds::Aabb;
 use super::hit::{ShapeHit, gamma, in_range};
-use super::polynomial::{Polynomial, Roots};
+use super::polynomial::Polynomial;
 use crate::trace::ray::Ray;
 
 /// Object-space bounds.
@@ -84,13 +84,22 @@ impl Frame {
         ])
     }
 
-    /// The roots in `u` between `t_lo` and `t_hi` (world `t`), clipped to the bounding
-    /// sphere's chord.
-    fn roots(&self, minor: f64, t_lo: f64, t_hi: f64) -> Roots {
+    /// The range of `u` between `t_lo` and `t_hi` (world `t`), clipped to the bounding
+    /// sphere's chord and to the slab |z| <= minor; `None` when that leaves nothing.
+    fn range(&self, minor: f64, t_lo: f64, t_hi: f64) -> Option<(f64, f64)> {
         let chord = self.half_chord(minor);
-        let lo = (t_lo * self.len - self.s0).max(-chord);
-        let hi = (t_hi * self.len - self.s0).min(chord);
-        self.quartic(minor).roots_in(lo, hi)
+        let mut lo = (t_lo * self.len - self.s0).max(-chord);
+        let mut hi = (t_hi * self.len - self.s0).min(chord);
+        let slab = minor * (1.0 + 1e-9);
+        if self.dir.z != 0.0 {
+            let a = (-slab - self.origin.z) / self.dir.z;
+            let b = (slab - self.origin.z) / self.dir.z;
+            lo = lo.max(a.min(b));
+            hi = hi.min(a.max(b));
+        } else if self.origin.z.abs() > slab {
+            return None;
+        }
+        (lo <= hi).then_some((lo, hi))
     }
 
     fn t(&self, u: f64) -> f64 {
@@ -154,22 +163,24 @@ fn starts_inside(ray: &Ray, minor: f64) -> bool {
 /// leave from outside is rounding at an origin on the surface, and is passed over.
 pub fn intersect(ray: &Ray, t_max: f64, minor: f64) -> Option<ShapeHit> {
     let frame = Frame::new(ray, minor)?;
-    let roots = frame.roots(minor, 0.0, t_max);
+    let (lo, hi) = frame.range(minor, 0.0, t_max)?;
     let mut origin_inside = None;
-    for root in roots.iter() {
+    let mut found = None;
+    frame.quartic(minor).visit_roots_in(lo, hi, &mut |root| {
         let Some(hit) = hit_at(ray, &frame, root.x, minor) else {
-            continue;
+            return false;
         };
         if !in_range(ray, hit.t, t_max) {
-            continue;
+            return false;
         }
         let inside = *origin_inside.get_or_insert_with(|| starts_inside(ray, minor));
         let leaving = hit.n.dot(ray.dir) > 0.0;
         if root.touch || leaving == inside {
-            return Some(hit);
+            found = Some(hit);
         }
-    }
-    None
+        found.is_some()
+    });
+    found
 }
 
 /// Whether any hit has `t` in (0, t_max).
@@ -184,7 +195,10 @@ pub(crate) fn crossings(ray: &Ray, out: &mut Vec<ShapeHit>, minor: f64) {
         return;
     };
     let start = out.len();
-    for root in frame.roots(minor, f64::NEG_INFINITY, f64::INFINITY).iter() {
+    let Some((lo, hi)) = frame.range(minor, f64::NEG_INFINITY, f64::INFINITY) else {
+        return;
+    };
+    for root in frame.quartic(minor).roots_in(lo, hi).iter() {
         if let Some(hit) = hit_at(ray, &frame, root.x, minor) {
             out.push(hit);
             if root.touch {
