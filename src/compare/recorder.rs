@@ -80,6 +80,7 @@ impl<'w> Context<'w> {
         }
     }
 
+    /// The material of world object `object`.
     fn material(&self, object: usize) -> &'w Material {
         &self.world.materials[self.world.objects[object].material]
     }
@@ -88,7 +89,11 @@ impl<'w> Context<'w> {
 /// One ray of the mirror chain.
 #[derive(Clone, Copy, Debug)]
 struct Bounce {
+    /// The scene object hit (what the channels are per).
     object: Option<usize>,
+    /// The world object hit (a group's member, a CSG node): what its material and shape
+    /// are read from.
+    world_object: Option<usize>,
     hit: Option<SurfacePoint>,
     ray: Ray,
     ray_dir: DVec3,
@@ -144,12 +149,13 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
             Some(before) => {
                 before.throughput
                     * before
-                        .object
+                        .world_object
                         .map_or(DVec3::ZERO, |o| self.ctx.material(o).mirror)
             }
         };
         self.chain.push(Bounce {
             object: hit.map(|h| h.object),
+            world_object: hit.and_then(|h| self.ctx.world.world_object_of_hit(ray, &h)),
             hit,
             ray: *ray,
             ray_dir: ray.dir,
@@ -165,12 +171,17 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
 
     /// Whether a light behind the surface (for raylab's normal) reaches the point: a
     /// closed solid shadows itself; a plane's other side needs a shadow ray.
-    fn reaches_from_behind(&self, hit: &SurfacePoint, sample: &LightSample) -> bool {
+    fn reaches_from_behind(
+        &self,
+        hit: &SurfacePoint,
+        sample: &LightSample,
+        world_object: usize,
+    ) -> bool {
         let world = self.ctx.world;
-        if world.objects[hit.object].shape != Primitive::Plane {
+        if world.objects[world_object].shape != Primitive::Plane {
             return false;
         }
-        let except = Some(hit.object);
+        let except = Some(world_object);
         match sample.light_position {
             Some(position) => {
                 let (ray, t_max) = spawn_ray_to(hit, position);
@@ -191,8 +202,11 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
         sample: &LightSample,
     ) {
         let object = hit.object;
-        let material = self.ctx.material(object);
-        let world_object = &self.ctx.world.objects[object];
+        let Some(world_index) = bounce.world_object else {
+            return;
+        };
+        let material = self.ctx.material(world_index);
+        let world_object = &self.ctx.world.objects[world_index];
         let t = bounce.throughput;
         let light = LocalLight {
             n: hit.n,
@@ -209,7 +223,7 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
             let visible = if record.n_dot_l > 0.0 {
                 record.blocked_by.is_none()
             } else if n.dot(sample.to_light) > 0.0 {
-                *behind.get_or_insert_with(|| self.reaches_from_behind(hit, sample))
+                *behind.get_or_insert_with(|| self.reaches_from_behind(hit, sample, world_index))
             } else {
                 false
             };
@@ -245,8 +259,10 @@ impl SampleRecorder<'_, '_> {
         };
         let tracer = Tracer::new(world, TermSwitches::ALL_ON, View::Beauty);
         let seen = tracer.trace_primary(&bounce.ray, &mut RayCounts::default(), &mut NoRecorder);
-        if seen.is_finite() {
-            let part = Part::at(&self.ctx.world.objects[hit.object], &hit, bounce.ray_dir);
+        if seen.is_finite()
+            && let Some(world_object) = bounce.world_object
+        {
+            let part = Part::at(&self.ctx.world.objects[world_object], &hit, bounce.ray_dir);
             let channel = self.channel(Kind::Missing(part), hit.object);
             self.tally.add(channel, bounce.throughput * (seen - colour));
         }
@@ -292,14 +308,16 @@ impl Recorder for SampleRecorder<'_, '_> {
         let Some(sample) = self.ctx.world.lights[index].sample(hit.p) else {
             return;
         };
-        if record.blocked_by.is_some() {
+        if record.blocked_by.is_some()
+            && let Some(world_object) = bounce.world_object
+        {
             let light = LocalLight {
                 n: hit.n,
                 to_light: sample.to_light,
                 view: -bounce.ray_dir,
                 strength: record.strength,
             };
-            let (diffuse, specular) = local_terms(self.ctx.material(object), &light);
+            let (diffuse, specular) = local_terms(self.ctx.material(world_object), &light);
             self.tally.add(
                 self.channel(Kind::Shadow(index), object),
                 t * (diffuse + specular),

@@ -115,17 +115,6 @@ pub struct HitSurface {
     pub cut: bool,
 }
 
-/// The world object a recorded hit lies on: among those of the hit's scene object (a
-/// group's members share it), the one the ray meets again at `hit.t`.
-fn world_object_hit(world: &World, ray: &Ray, hit: &SurfacePoint) -> Option<usize> {
-    (0..world.objects.len()).find(|&i| {
-        world.scene_object(i) == hit.object
-            && world
-                .intersect_object(i, ray, f64::INFINITY)
-                .is_some_and(|again| again.t == hit.t)
-    })
-}
-
 impl HitSurface {
     /// The leaf of world object `index` that the ray met at `hit.t`.
     fn find(world: &World, index: usize, ray: &Ray, hit: &SurfacePoint) -> Self {
@@ -181,7 +170,7 @@ impl ReportRecorder<'_> {
 impl Recorder for ReportRecorder<'_> {
     fn hit(&mut self, depth: u32, ray: &Ray, hit: &SurfacePoint) {
         // One search serves both: a group's members share the hit's scene index.
-        let index = world_object_hit(self.world, ray, hit);
+        let index = self.world.world_object_of_hit(ray, hit);
         let surface = index.map(|i| HitSurface::find(self.world, i, ray, hit));
         let triangle = index.and_then(|i| self.world.triangle_hit(i, ray, f64::INFINITY));
         let bounce = self.at(depth, ray);

@@ -17,8 +17,9 @@
 use crate::trace::shapes::MeshStore;
 use glam::DVec3;
 
-use super::compiled::World;
+use super::compiled::{SurfacePoint, World};
 use crate::scene::{Light, Scene, SceneError, validate};
+use crate::trace::ray::Ray;
 use crate::trace::terms::Isolation;
 
 /// Why a scene cannot be rendered with some isolation switches.
@@ -179,6 +180,26 @@ impl World {
     pub fn scene_object(&self, index: usize) -> usize {
         self.object_scene_index.get(index).copied().unwrap_or(index)
     }
+
+    /// The world object a hit lies on, for a hit named by its scene index (as recorders
+    /// see it): the one world object of that scene object, or among a group's members
+    /// the one the ray meets at the hit's `t`. `None` when none does.
+    #[must_use]
+    pub fn world_object_of_hit(&self, ray: &Ray, hit: &SurfacePoint) -> Option<usize> {
+        // Scene order is kept, so a scene object's world objects are consecutive.
+        let first = self.object_scene_index.partition_point(|&s| s < hit.object);
+        let end = self
+            .object_scene_index
+            .partition_point(|&s| s <= hit.object);
+        match end - first {
+            0 => None,
+            1 => Some(first),
+            _ => (first..end).find(|&i| {
+                self.intersect_object(i, ray, f64::INFINITY)
+                    .is_some_and(|again| again.t == hit.t)
+            }),
+        }
+    }
 }
 
 #[cfg(test)]
@@ -207,6 +228,50 @@ mod tests {
         assert_eq!(world.ambient, scene.lights[0].strength());
         assert_eq!(world.background, scene.render.background);
         assert_eq!(world.isolation, isolation);
+    }
+
+    #[test]
+    fn a_hit_named_by_its_scene_object_finds_its_world_object() {
+        // Object 0 hidden, object 1 a group of two spheres side by side: world objects
+        // are [sphere a, sphere b, the rest], scene indices [1, 1, 2, ...].
+        let mut scene = scene();
+        let sphere = |x: f64, name: &str| crate::scene::Object {
+            name: name.to_owned(),
+            shape: crate::scene::Shape::Sphere,
+            transform: crate::scene::Transform::Trs(crate::scene::Trs {
+                translate: DVec3::new(x, 50.0, 0.0),
+                ..Default::default()
+            }),
+            material: scene.objects[0].material.clone(),
+        };
+        scene.objects[1] = crate::scene::Object {
+            name: "pair".to_owned(),
+            shape: crate::scene::Shape::Group {
+                children: vec![sphere(-3.0, "a"), sphere(3.0, "b")],
+            },
+            transform: crate::scene::Transform::default(),
+            material: String::new(),
+        };
+        let isolation = Isolation {
+            hidden_objects: BTreeSet::from([0]),
+            ..Isolation::NONE
+        };
+        let world = World::isolated(&scene, &isolation).unwrap();
+        assert_eq!(&world.object_scene_index[..3], &[1, 1, 2]);
+        for (x, expected) in [(-3.0, 0), (3.0, 1)] {
+            let ray = Ray::new(DVec3::new(x, 50.0, 10.0), -DVec3::Z);
+            let mut hit = world.intersect(&ray, f64::INFINITY).unwrap();
+            hit.object = world.scene_object(hit.object);
+            assert_eq!(hit.object, 1);
+            assert_eq!(world.world_object_of_hit(&ray, &hit), Some(expected));
+        }
+        // A scene object that is the only one of its index maps straight to it.
+        let ray = Ray::new(DVec3::new(-3.0, 50.0, 10.0), -DVec3::Z);
+        let mut hit = world.intersect(&ray, f64::INFINITY).unwrap();
+        hit.object = 2;
+        assert_eq!(world.world_object_of_hit(&ray, &hit), Some(2));
+        hit.object = 0;
+        assert_eq!(world.world_object_of_hit(&ray, &hit), None, "hidden");
     }
 
     #[test]
