@@ -1,10 +1,11 @@
 //! Which course framework a file was written for, read from its content.
 //!
 //! The 2016 framework writes CSG as `Object CSG` with its operands inside, has only point
-//! lights, sets the ambient light in the Scene block, and upper-cases whole lines (so
-//! material names match whatever their case); its default material is white. The 2020
-//! framework (and its students' additions) has ambient, directional and spot lights,
-//! `CSG` and `ObjectGroup` blocks of their own, and a magenta default material.
+//! lights, and upper-cases whole lines (so a file may name a material in another case
+//! than its definition); its default material is white. The 2020 framework (and its
+//! students' additions) has ambient, directional and spot lights, `CSG` and
+//! `ObjectGroup` blocks of their own, and a magenta default material. Both read the
+//! Scene block's `ambientLight`, so it tells nothing.
 //!
 //! A file with signs of 2016 and none of 2020 is read as 2016; anything else as 2020 (the
 //! base reading), with a warning when it shows signs of both.
@@ -79,15 +80,6 @@ pub fn detect(blocks: &[ParsedBlock]) -> Detected {
     for block in blocks {
         let line = block.at.line;
         match &block.block {
-            Block::Scene(settings) => {
-                for setting in settings {
-                    if matches!(setting.value, SceneSetting::AmbientLight(_)) {
-                        detected
-                            .signs_2016
-                            .push((setting.at.line, "`ambientLight` in the Scene block".into()));
-                    }
-                }
-            }
             Block::Light { kind, .. } if *kind != LightKind::Point => {
                 detected
                     .signs_2020
