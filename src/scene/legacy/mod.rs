@@ -27,6 +27,7 @@ use std::path::{Path, PathBuf};
 
 pub use convert::{Detected, Dialect};
 pub use error::{LegacyError, LegacyErrors, LegacyImportFileError, Warning};
+pub use parser::MAX_NESTING;
 
 use crate::scene::{Scene, TextFileError, read_text_file};
 

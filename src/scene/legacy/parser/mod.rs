@@ -34,6 +34,7 @@ use super::error::{Diagnostics, LegacyError};
 use super::lexer::{Comments, Token};
 use super::syntax::{At, Block, ParsedBlock};
 use entries::decode;
+pub use tree::MAX_NESTING;
 use values::looks_numeric;
 
 /// The block types, as written in files (matched ignoring case).

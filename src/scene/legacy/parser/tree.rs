@@ -5,7 +5,7 @@
 //! `Object` and `End` tokens. Operands and children are `Object ... End` blocks (which
 //! may be trees again, or `CSG` / `ObjectGroup` blocks); every other token belongs to the
 //! node itself (its transforms, wherever they sit among the operands, in file order).
-//! Nesting deeper than [`MAX_TREE_DEPTH`] is an error at the block that goes too deep.
+//! Nesting deeper than [`MAX_NESTING`] is an error at the block that goes too deep.
 
 use super::super::error::Diagnostics;
 use super::super::lexer::{Comments, Token};
@@ -13,7 +13,13 @@ use super::super::syntax::{CsgForm, ObjectKind, ObjectNode};
 use super::entries::{decode, present};
 use super::object::{OBJECT_WORDS, object_setting, parse_object};
 use super::{at, error};
-use crate::scene::{CsgOp, MAX_TREE_DEPTH};
+use crate::scene::CsgOp;
+
+/// The deepest nesting of trees a legacy file may have: far beyond the few levels
+/// students' files use (a snowman is three), and well inside the scene format's
+/// `MAX_TREE_DEPTH`. The importer reads, converts and names trees recursively, so this
+/// bounds its stack (a thread's default 2 MiB holds it in a debug build).
+pub const MAX_NESTING: usize = 100;
 
 /// Whether `tokens` start a tree: `Object CSG`, `CSG` or `ObjectGroup`.
 pub(super) fn opens_tree(tokens: &[Token<'_>]) -> bool {
@@ -34,10 +40,13 @@ pub(super) fn parse_tree(
     errors: &mut Diagnostics,
 ) -> (Option<ObjectNode>, usize) {
     let first = tokens[0];
-    if depth > MAX_TREE_DEPTH {
+    if depth >= MAX_NESTING {
         errors.push(error(
             &first,
-            format!("objects nest more than {MAX_TREE_DEPTH} levels deep here"),
+            format!(
+                "objects nest more than {MAX_NESTING} levels deep here (the importer's limit; \
+                 students' scenes nest a few)"
+            ),
         ));
         return (
             None,
