@@ -20,6 +20,7 @@
 mod convert;
 mod error;
 mod lexer;
+mod mesh_paths;
 mod parser;
 mod syntax;
 
@@ -27,6 +28,7 @@ use std::path::{Path, PathBuf};
 
 pub use convert::{Detected, Dialect};
 pub use error::{LegacyError, LegacyErrors, LegacyImportFileError, Warning};
+pub use mesh_paths::rebase_mesh_paths;
 pub use parser::MAX_NESTING;
 
 use crate::scene::{Scene, TextFileError, read_text_file};

@@ -13,9 +13,7 @@
 use std::collections::HashSet;
 use std::fmt;
 
-use super::super::syntax::{
-    Block, CsgForm, ObjectKind, ObjectNode, ObjectSetting, ParsedBlock, SceneSetting,
-};
+use super::super::syntax::{Block, CsgForm, ObjectKind, ObjectNode, ObjectSetting, ParsedBlock};
 use crate::scene::LightKind;
 
 /// The course framework a legacy file was written for.
