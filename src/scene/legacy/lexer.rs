@@ -45,6 +45,12 @@ const CODE_WORDS: &[&str] = &[
     "Samples",
 ];
 
+/// Whether `word` is a block word, `End` or a keyword of any block (ignoring case).
+#[must_use]
+pub fn is_grammar_word(word: &str) -> bool {
+    CODE_WORDS.iter().any(|w| word.eq_ignore_ascii_case(w))
+}
+
 /// The longest name taken from a comment, in characters; a longer comment is prose, not
 /// a name.
 pub const MAX_COMMENT_NAME_CHARS: usize = 60;

@@ -31,7 +31,7 @@ mod tree;
 mod values;
 
 use super::error::{Diagnostics, LegacyError};
-use super::lexer::{Comments, Token};
+use super::lexer::{Comments, Token, is_grammar_word};
 use super::syntax::{At, Block, ParsedBlock};
 use entries::decode;
 pub use tree::MAX_NESTING;
@@ -137,6 +137,14 @@ fn parse_block(
                 block: Block::Object(node),
             })
         }
+        // A keyword where a block should start: an `End` too many closed its block.
+        _ if is_grammar_word(first.text) => {
+            errors.push(error(
+                first,
+                "a keyword outside any block: is there an `End` too many before it?",
+            ));
+            None
+        }
         _ => {
             errors.warn(
                 first.line,
@@ -226,6 +234,19 @@ mod tests {
         assert_eq!(warning.line, Some(3));
         assert!(warning.message.contains("`Shiny`"), "{warning}");
         assert_eq!(blocks.len(), 1);
+    }
+
+    #[test]
+    fn a_keyword_where_a_block_should_start_is_an_error() {
+        let (_, errors) =
+            parse_text("Object CSG Union Object Sphere End End\nTranslate 0 1 0\nEnd");
+        assert_eq!(errors.len(), 1, "{errors:?}");
+        assert_eq!((errors[0].line, errors[0].token.as_str()), (2, "Translate"));
+        assert!(
+            errors[0].message.contains("`End` too many"),
+            "{}",
+            errors[0]
+        );
     }
 
     #[test]
