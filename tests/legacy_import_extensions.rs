@@ -96,7 +96,7 @@ fn the_2020_dialect_with_every_students_extension() {
     assert_eq!(import.dialect.dialect, Dialect::Framework2020);
     assert!(
         import.summary().starts_with(
-            "read as the 2020 framework's dialect (a `AmbientLight` at line 13): 5 objects, 2 lights"
+            "read as the 2020 framework's dialect (`Light AmbientLight` at line 13): 5 objects, 2 lights"
         ),
         "{}",
         import.summary()
@@ -255,6 +255,31 @@ fn unknown_kinds_keywords_and_blocks_are_skipped_and_the_rest_imports() {
         matches!(light, Light::Spot { samples: 1024, .. }),
         "{light:?}"
     );
+}
+
+#[test]
+fn material_names_match_exactly_then_one_ignoring_case() {
+    // Material names match exactly first, then ignoring case when only one matches
+    // (the 2016 framework upper-cases lines), with a warning; several matches are an
+    // error at the name.
+    let import =
+        import_text("Material Gold End Material GOLD End\nObject Sphere Material Gold End");
+    assert_eq!(import.scene.objects[0].material, "Gold");
+    assert!(
+        !import.warnings.iter().any(|w| w.contains("material")),
+        "{:?}",
+        import.warnings
+    );
+    let import = import_text("Material Gold End\nObject Sphere Material gold End");
+    assert_eq!(import.scene.objects[0].material, "Gold");
+    assert!(
+        import.warnings[0].starts_with("line 2: material `gold` is taken to be `Gold`"),
+        "{:?}",
+        import.warnings
+    );
+    let errors =
+        errors_of_text("Material Gold End Material GOLD End\nObject Sphere Material gold End");
+    assert_one_error(&errors, 2, "gold", "several match it ignoring case");
 }
 
 #[test]

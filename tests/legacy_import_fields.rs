@@ -282,27 +282,7 @@ fn case_rules_comments_and_number_forms() {
         scene.objects[0].transform,
         trs([1.0, -2.0, 3.0], [0.0, 0.0, -3.0], [1.0; 3])
     );
-    // Material names match exactly first, then ignoring case when only one matches
-    // (the 2016 framework upper-cases lines), with a warning; several matches are an
-    // error at the name.
-    let import =
-        import_text("Material Gold End Material GOLD End\nObject Sphere Material Gold End");
-    assert_eq!(import.scene.objects[0].material, "Gold");
-    assert!(
-        !import.warnings.iter().any(|w| w.contains("material")),
-        "{:?}",
-        import.warnings
-    );
-    let import = import_text("Material Gold End\nObject Sphere Material gold End");
-    assert_eq!(import.scene.objects[0].material, "Gold");
-    assert!(
-        import.warnings[0].starts_with("line 2: material `gold` is taken to be `Gold`"),
-        "{:?}",
-        import.warnings
-    );
-    let errors =
-        errors_of_text("Material Gold End Material GOLD End\nObject Sphere Material gold End");
-    assert_one_error(&errors, 2, "gold", "several match it ignoring case");
+    // Matching names ignoring case: see legacy_import_extensions.rs.
     let errors = errors_of_text("Material Gold End Object Sphere Material silver End");
     assert_one_error(&errors, 1, "silver", "never defined");
 }

@@ -81,7 +81,7 @@ pub fn detect(blocks: &[ParsedBlock]) -> Detected {
             Block::Light { kind, .. } if *kind != LightKind::Point => {
                 detected
                     .signs_2020
-                    .push((line, format!("a `{}`", block.at.token)));
+                    .push((line, format!("`Light {}`", block.at.token)));
             }
             Block::Object(node) => node_signs(node, &names, &mut detected),
             _ => {}

@@ -193,7 +193,8 @@ impl Converter<'_> {
             Some(op) => format!("CSG {}", op.name()),
             None => "ObjectGroup".to_owned(),
         };
-        let steps = self.node_steps(&node.settings, &what);
+        let article = if op.is_some() { "a" } else { "an" };
+        let steps = self.node_steps(&node.settings, &format!("{article} {what}"));
         let imported: Vec<PendingObject> =
             members.iter().filter_map(|m| self.object_node(m)).collect();
         let shape = match op {
@@ -240,8 +241,8 @@ impl Converter<'_> {
                 ObjectSetting::Material(_) | ObjectSetting::Surface(_) => self.warn(
                     setting.at.line,
                     format!(
-                        "`{}` on a {what} node does nothing in the legacy readers (its \
-                         operands keep their own materials): ignored",
+                        "`{}` on {what} node does nothing in the legacy readers (its \
+                         members keep their own materials): ignored",
                         setting.at.token
                     ),
                 ),
