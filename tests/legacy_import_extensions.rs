@@ -187,13 +187,19 @@ fn a_torus_in_a_2016_csg_in_a_group_with_supersampling_imports_to_its_ron() {
 #[test]
 fn meshes_are_found_beside_the_scene_as_written_or_lowercased() {
     let import = import_ext("mesh_scene.txt");
-    assert_eq!(import.scene.objects.len(), 1);
-    assert_eq!(import.scene.objects[0].name, "Pyramid");
+    let meshes: Vec<(&str, &Shape)> = import
+        .scene
+        .objects
+        .iter()
+        .map(|o| (o.name.as_str(), &o.shape))
+        .collect();
+    let mesh = |path: &str| Shape::Mesh { path: path.into() };
     assert_eq!(
-        import.scene.objects[0].shape,
-        Shape::Mesh {
-            path: "meshes/pyramid.obj".into()
-        }
+        meshes,
+        [
+            ("Pyramid", &mesh("meshes/pyramid.obj")),
+            ("Pyramid again", &mesh("../legacy_ext/meshes/pyramid.obj")),
+        ]
     );
     assert_warnings(
         &import,
@@ -202,7 +208,7 @@ fn meshes_are_found_beside_the_scene_as_written_or_lowercased() {
     // Text alone has no folder: paths are kept as written.
     let text = std::fs::read_to_string(ext_path("mesh_scene.txt")).unwrap();
     let import = import_legacy(&text).unwrap();
-    assert_eq!(import.scene.objects.len(), 2);
+    assert_eq!(import.scene.objects.len(), 3);
 }
 
 #[test]

@@ -49,8 +49,9 @@ pub(super) fn parse_object(
     } else if kind_token.is("Torus") || kind_token.is("Tube") {
         size_parameter(&kind_token, header.numbers, errors)
     } else if kind_token.is("Mesh") {
-        numbers_ok = no_numbers(&header, errors);
-        match body.split_first() {
+        // The path is the next token whatever it looks like (`../scenes/x.obj` starts
+        // like a number).
+        match rest[1..].split_first() {
             Some((path, after)) => {
                 body = after;
                 Some(ObjectKind::Mesh(path.text.to_owned()))
