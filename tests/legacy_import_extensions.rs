@@ -91,6 +91,20 @@ fn the_2016_dialect_nested_csg_white_default_and_names_in_any_case() {
 }
 
 #[test]
+fn the_2016_snowman_renders_in_its_operands_material() {
+    let scene = import_ext("snowman_2016.txt").scene;
+    let image = common::legacy::render_scene(&scene);
+    // The body's centre is in the middle of the picture: lit snow (0.9, 0.9, 1), not the
+    // red the node's ignored `Colour` asks for, nor the background.
+    let centre = image.get(scene.camera.width / 2, scene.camera.height / 2);
+    assert!(centre.z > 0.2, "{centre}");
+    assert!(
+        centre.z >= centre.x && centre.y >= 0.8 * centre.x,
+        "{centre}"
+    );
+}
+
+#[test]
 fn the_2020_dialect_with_every_students_extension() {
     let import = import_ext("workshop_2020.txt");
     assert_eq!(import.dialect.dialect, Dialect::Framework2020);

@@ -129,3 +129,39 @@ fn node_signs(node: &ObjectNode, names: &HashSet<&str>, detected: &mut Detected)
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::super::error::Diagnostics;
+    use super::super::super::lexer::{Comments, tokenize};
+    use super::super::super::parser::parse;
+    use super::*;
+
+    fn detected(text: &str) -> Detected {
+        let mut diagnostics = Diagnostics::default();
+        let blocks = parse(&tokenize(text), &Comments::of(text), &mut diagnostics);
+        assert!(diagnostics.errors.is_empty(), "{diagnostics:?}");
+        detect(&blocks)
+    }
+
+    #[test]
+    fn signs_of_2016_alone_read_as_2016() {
+        let d = detected("Material Red End\nObject Sphere Material RED End");
+        assert_eq!(d.dialect, Dialect::Framework2016);
+        assert_eq!(d.signs_2016[0].0, 2);
+        let d = detected("Object CSG Union Object Sphere End Object Cube End End");
+        assert_eq!(d.dialect, Dialect::Framework2016);
+    }
+
+    #[test]
+    fn signs_of_2020_or_of_both_or_none_read_as_2020() {
+        for text in [
+            "Light SpotLight End",
+            "ObjectGroup End",
+            "Object CSG Union Object Sphere End Object Cube End End Light AmbientLight End",
+            "Scene ambientLight 1 1 1 End Object Sphere End",
+        ] {
+            assert_eq!(detected(text).dialect, Dialect::Framework2020, "{text}");
+        }
+    }
+}
