@@ -112,6 +112,11 @@ fn csg() {
 }
 
 #[test]
+fn more_shapes() {
+    check("more_shapes");
+}
+
+#[test]
 fn mesh() {
     check("mesh");
 }

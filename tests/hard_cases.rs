@@ -356,6 +356,70 @@ fn cone_with_its_apex_on_the_floor_has_no_acne() {
 }
 
 #[test]
+fn tori_lying_and_standing_on_the_floor_have_no_acne() {
+    // Lying flat (axis up, resting on its underside) and standing on its rim; and a
+    // spindle torus, whose surface meets itself at the axis.
+    let lying = object(
+        Shape::Torus { minor: 0.3 },
+        DVec3::new(-1.2, 0.3, 0.0),
+        DVec3::new(-90.0, 0.0, 0.0),
+        DVec3::ONE,
+    );
+    let standing = object(
+        Shape::Torus { minor: 0.25 },
+        DVec3::new(1.2, 0.75 * 1.25, 0.0),
+        DVec3::new(0.0, 30.0, 0.0),
+        DVec3::splat(0.75),
+    );
+    let spindle = object(
+        Shape::Torus { minor: 1.4 },
+        DVec3::new(0.0, 0.56, -1.5),
+        DVec3::new(-90.0, 0.0, 0.0),
+        DVec3::splat(0.4),
+    );
+    assert_clean(
+        "tori on the floor",
+        &contact_scene(vec![floor(0.0, 6.0), lying, standing, spindle]),
+    );
+}
+
+#[test]
+fn tubes_standing_and_lying_on_the_floor_have_no_acne() {
+    // Standing on a ring, seen into its hole; lying on its outer barrel, its hole wide
+    // enough to span several pixels (a one-pixel view into a dark hole is not acne).
+    let standing = object(
+        Shape::Tube { inner: 0.6 },
+        DVec3::new(-1.0, 0.6, 0.0),
+        DVec3::new(-90.0, 0.0, 0.0),
+        DVec3::new(0.8, 0.8, 0.6),
+    );
+    let lying = object(
+        Shape::Tube { inner: 0.7 },
+        DVec3::new(1.2, 0.5, 0.0),
+        DVec3::new(0.0, 60.0, 0.0),
+        DVec3::new(0.5, 0.5, 0.9),
+    );
+    assert_clean(
+        "tubes on the floor",
+        &contact_scene(vec![floor(0.0, 6.0), standing, lying]),
+    );
+}
+
+#[test]
+fn an_octahedron_on_its_vertex_has_no_acne() {
+    let octahedron = object(
+        Shape::Octahedron,
+        DVec3::new(0.0, 0.9, 0.0),
+        DVec3::new(0.0, 20.0, 0.0),
+        DVec3::splat(0.9),
+    );
+    assert_clean(
+        "octahedron on its vertex",
+        &contact_scene(vec![floor(0.0, 6.0), octahedron]),
+    );
+}
+
+#[test]
 fn two_planes_a_ten_thousandth_apart_never_fight() {
     let mut top = floor(1e-4, 1.2);
     top.material = "top".into();

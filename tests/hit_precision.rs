@@ -95,6 +95,23 @@ fn distance_to_surface(object: &WorldObject, p_world: DVec3) -> f64 {
                 parts.push((f64::from(z - one), DVec3::Z));
             }
         }
+        Primitive::Torus { minor } => {
+            // Distance to the circle's nearest point, less the tube radius.
+            let from_circle = ((radius - one) * (radius - one) + z * z).sqrt();
+            let centre = DVec3::new(q64.x, q64.y, 0.0).normalize_or(DVec3::X);
+            let n = (q64 - centre).normalize_or(DVec3::Z);
+            parts.push((f64::from(from_circle - Dd::from(minor)), n));
+        }
+        Primitive::Tube { inner } => {
+            let radial_n = DVec3::new(q64.x, q64.y, 0.0).normalize_or_zero();
+            if near(q64.z.abs(), 1.0) {
+                parts.push((f64::from(radius - one), radial_n));
+                parts.push((f64::from(radius - Dd::from(inner)), radial_n));
+            }
+            if near(radius.hi(), 1.0) && radius.hi() >= inner * (1.0 - 1e-9) {
+                parts.push((f64::from(z.abs() - one), DVec3::Z));
+            }
+        }
         Primitive::Octahedron => {
             // The face whose sign vector matches the point's: s.q = |x| + |y| + |z|.
             let sign = |x: Dd| if x.hi() < 0.0 { -x } else { x };
@@ -160,8 +177,20 @@ fn case(shape: Shape) -> impl Strategy<Value = (World, Ray)> {
         )
 }
 
+/// Every unit shape, and the torus also thin, horn and spindle, the tube also thin-walled.
+fn measured_shapes() -> Vec<Shape> {
+    let mut shapes = Shape::ALL.to_vec();
+    shapes.extend(
+        [0.02, 1.0, 1.6]
+            .map(|minor| Shape::Torus { minor })
+            .into_iter()
+            .chain([Shape::Tube { inner: 0.97 }]),
+    );
+    shapes
+}
+
 fn any_case() -> impl Strategy<Value = (World, Ray)> {
-    prop::sample::select(Shape::ALL.to_vec()).prop_flat_map(case)
+    prop::sample::select(measured_shapes()).prop_flat_map(case)
 }
 
 proptest! {
@@ -186,7 +215,7 @@ fn print_error_table() {
         "| shape | hits | max error (ulps of |p|) | mean error (ulps of |p|) | mean bound (ulps of |p|) |"
     );
     println!("|---|---|---|---|---|");
-    for shape in Shape::ALL {
+    for shape in measured_shapes() {
         let strategy = case(shape.clone());
         let (mut hits, mut max, mut sum, mut bound_sum) = (0u32, 0f64, 0f64, 0f64);
         for _ in 0..20_000 {
@@ -203,9 +232,13 @@ fn print_error_table() {
             bound_sum += reported_bound(&hit) / ulp;
         }
         let n = f64::from(hits);
+        let name = match shape {
+            Shape::Torus { minor } => format!("Torus (minor {minor})"),
+            Shape::Tube { inner } => format!("Tube (inner {inner})"),
+            _ => shape.name().to_owned(),
+        };
         println!(
-            "| {} | {hits} | {max:.2} | {:.3} | {:.1} |",
-            shape.name(),
+            "| {name} | {hits} | {max:.2} | {:.3} | {:.1} |",
             sum / n,
             bound_sum / n
         );

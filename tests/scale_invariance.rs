@@ -1,6 +1,7 @@
 //! Scale and place invariance: the default scene (every shape and light kind, mirrors,
-//! shadows, objects resting on the floor) scaled by 1e-3, 1e3 and 1e5, or moved 1e6 units
-//! away with its camera, renders the same picture.
+//! shadows, objects resting on the floor) and the eight-shape scene (tori, tubes and
+//! octahedra too, on a mirror floor) scaled by 1e-3, 1e3 and 1e5, or moved 1e6 units
+//! away with their camera, render the same picture.
 
 use std::path::Path;
 
@@ -64,8 +65,16 @@ fn render_rgb(scene: &Scene) -> Vec<u8> {
 }
 
 fn assert_same_picture(label: &str, scale: f64, offset: DVec3) {
-    let original =
-        load_scene(&Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/default.ron")).unwrap();
+    for scene in ["default.ron", "more_shapes.ron"] {
+        assert_same_picture_of(scene, label, scale, offset);
+    }
+}
+
+fn assert_same_picture_of(scene: &str, label: &str, scale: f64, offset: DVec3) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join(scene);
+    let original = load_scene(&path).unwrap();
     let reference = render_rgb(&original);
     let changed = render_rgb(&scaled_and_moved(&original, scale, offset));
     let pixels = reference.len() / 4;
@@ -77,7 +86,7 @@ fn assert_same_picture(label: &str, scale: f64, offset: DVec3) {
     let fraction = within as f64 / pixels as f64;
     assert!(
         fraction >= 0.995,
-        "{label}: only {:.3}% of pixels within 2/255",
+        "{scene} {label}: only {:.3}% of pixels within 2/255",
         fraction * 100.0
     );
 }

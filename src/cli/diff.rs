@@ -27,6 +27,9 @@ pub struct DiffArgs {
     /// without anti-aliasing).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=4096))]
     pub spp: Option<u32>,
+    /// The course's conventions raylab's picture is made with, over the scene's.
+    #[command(flatten)]
+    pub conventions: super::ConventionArgs,
 }
 
 /// Loads a RON scene, or imports a legacy `.txt` scene (warnings to stderr).
@@ -54,7 +57,7 @@ pub fn load_any_scene(path: &Path) -> Result<Scene, String> {
 /// A message naming what went wrong: the scene, the image (unreadable, not an image, not
 /// 8-bit, another size), or the report's write.
 pub fn run(args: &DiffArgs) -> Result<(), String> {
-    let scene = load_any_scene(&args.scene)?;
+    let scene = args.conventions.applied(load_any_scene(&args.scene)?);
     let other = OtherImage::load(&args.other).map_err(|e| e.to_string())?;
     let options = CompareOptions {
         samples_per_pixel: args.spp,

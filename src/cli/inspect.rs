@@ -35,6 +35,9 @@ pub struct InspectArgs {
     /// Lights muted or solo, objects hidden.
     #[command(flatten)]
     pub isolation: IsolationArgs,
+    /// The course's conventions, over the scene's.
+    #[command(flatten)]
+    pub conventions: super::ConventionArgs,
 }
 
 /// The term switches, as `raylab render` takes them.
@@ -86,7 +89,7 @@ pub fn run(args: &InspectArgs) -> Result<(), String> {
 /// does not have, or a pixel outside the image.
 pub fn inspect_text(scene: &Scene, args: &InspectArgs) -> Result<String, String> {
     let pruned = args.isolation.without_hidden_children(scene)?;
-    let scene = &pruned;
+    let scene = &args.conventions.applied(pruned);
     let isolation = args.isolation.isolation(scene)?;
     let meshes = crate::cli::load_meshes(scene, &args.scene)?;
     let world =
@@ -337,6 +340,13 @@ fn tree_text(scene: &Scene, options: &RenderOptions, report: &PixelReport) -> St
                 v(km),
                 v(reflected),
                 v(km * reflected)
+            );
+        }
+        if let Some(unclamped) = bounce.unclamped {
+            let _ = writeln!(
+                out,
+                "{pad}  clamped to [0, 1] (each ray) from {}",
+                v(unclamped)
             );
         }
         let _ = writeln!(out, "{pad}  colour {}", v(bounce.colour));

@@ -3,6 +3,7 @@
 //! renderer. `main.rs` only calls [`run`].
 
 mod bench;
+mod conventions;
 mod diff;
 mod import;
 mod inspect;
@@ -15,6 +16,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 pub use bench::BenchArgs;
+pub use conventions::ConventionArgs;
 pub use diff::DiffArgs;
 pub use import::ImportArgs;
 pub use inspect::{InspectArgs, TermArgs, inspect_text};

@@ -6,6 +6,7 @@ use std::time::{Duration, Instant};
 
 use clap::Args;
 
+use super::conventions::ConventionArgs;
 use super::isolation::IsolationArgs;
 use crate::preview::BackgroundJob;
 use crate::scene::Scene;
@@ -41,6 +42,9 @@ pub struct RenderArgs {
     /// Lights muted or solo, objects hidden.
     #[command(flatten)]
     pub isolation: IsolationArgs,
+    /// The course's conventions, over the scene's.
+    #[command(flatten)]
+    pub conventions: ConventionArgs,
 }
 
 impl RenderArgs {
@@ -80,6 +84,7 @@ impl RenderArgs {
 /// black, so it can be looked at).
 pub fn run(args: &RenderArgs) -> Result<(), String> {
     let scene = load_scene(&args.scene).map_err(|e| format!("{}: {e}", args.scene.display()))?;
+    let scene = args.conventions.applied(scene);
     let scene = args.isolation.without_hidden_children(&scene)?;
     let options = args.options(&scene)?;
     let meshes = crate::cli::load_meshes(&scene, &args.scene)?;
@@ -90,7 +95,8 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     let elapsed = started.elapsed();
     let image = sums.average(options.samples_per_pixel);
     let rays = sums.rays;
-    write_atomically(&args.output, &image.png_bytes())
+    let quantise = scene.render.conventions.quantise;
+    write_atomically(&args.output, &image.png_bytes_as(quantise))
         .map_err(|e| format!("cannot write {}: {e}", args.output.display()))?;
     eprintln!(
         "{}: {}x{} at {} spp in {:.1} ms, {} rays ({:.2} Mrays/s)",

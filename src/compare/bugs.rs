@@ -228,9 +228,9 @@ pub enum Part {
     Front,
     /// A plane seen from behind.
     Back,
-    /// The curved side of a cylinder or cone.
+    /// The curved side of a cylinder, cone or tube.
     Side,
-    /// The disc caps of a cylinder or cone.
+    /// The disc caps of a cylinder or cone, or a tube's rings.
     Caps,
 }
 
@@ -242,11 +242,15 @@ impl Part {
     #[must_use]
     pub fn of_shape(shape: Primitive) -> &'static [Part] {
         match shape {
-            Primitive::Sphere | Primitive::Cube | Primitive::Octahedron | Primitive::Mesh => {
-                &[Part::Whole]
-            }
+            Primitive::Sphere
+            | Primitive::Cube
+            | Primitive::Octahedron
+            | Primitive::Torus { .. }
+            | Primitive::Mesh => &[Part::Whole],
             Primitive::Plane => &[Part::Front, Part::Back],
-            Primitive::Cylinder | Primitive::Cone => &[Part::Side, Part::Caps],
+            Primitive::Cylinder | Primitive::Cone | Primitive::Tube { .. } => {
+                &[Part::Side, Part::Caps]
+            }
         }
     }
 
@@ -256,16 +260,19 @@ impl Part {
         let n_object =
             (object.world_from_object.matrix3.transpose() * hit.n_outward).normalize_or_zero();
         match object.shape {
-            Primitive::Sphere | Primitive::Cube | Primitive::Octahedron | Primitive::Mesh => {
-                Part::Whole
-            }
+            Primitive::Sphere
+            | Primitive::Cube
+            | Primitive::Octahedron
+            | Primitive::Torus { .. }
+            | Primitive::Mesh => Part::Whole,
             Primitive::Plane if hit.n_outward.dot(ray_dir) < 0.0 => Part::Front,
             Primitive::Plane => Part::Back,
             // Cap normals are +-z; side normals have |z| of 0 (cylinder) or 1/sqrt 2 (cone,
             // pointing to -z).
-            Primitive::Cylinder if n_object.z.abs() > 0.9 => Part::Caps,
+            // A tube's rings are caps, its two barrels its side.
+            Primitive::Cylinder | Primitive::Tube { .. } if n_object.z.abs() > 0.9 => Part::Caps,
             Primitive::Cone if n_object.z > 0.9 => Part::Caps,
-            Primitive::Cylinder | Primitive::Cone => Part::Side,
+            Primitive::Cylinder | Primitive::Cone | Primitive::Tube { .. } => Part::Side,
         }
     }
 

@@ -5,7 +5,7 @@
 pub const DEFAULT_SCENE_RON: &str = include_str!("../../scenes/default.ron");
 
 /// Every example scene as `(file name, RON text)`, sorted by file name.
-pub const EXAMPLE_SCENES: [(&str, &str); 7] = [
+pub const EXAMPLE_SCENES: [(&str, &str); 8] = [
     (
         "coloured_shadows.ron",
         include_str!("../../scenes/coloured_shadows.ron"),
@@ -15,6 +15,10 @@ pub const EXAMPLE_SCENES: [(&str, &str); 7] = [
     (
         "mirror_cap.ron",
         include_str!("../../scenes/mirror_cap.ron"),
+    ),
+    (
+        "more_shapes.ron",
+        include_str!("../../scenes/more_shapes.ron"),
     ),
     ("shapes.ron", include_str!("../../scenes/shapes.ron")),
     (

@@ -77,15 +77,32 @@ impl CsgOp {
 }
 
 impl Shape {
-    /// The unit shapes the tracer draws, in menu order.
-    pub const ALL: [Shape; 6] = [
+    /// The unit shapes the tracer draws, in menu order; the torus and the tube with the
+    /// parameter a new one starts with.
+    pub const ALL: [Shape; 8] = [
         Shape::Sphere,
         Shape::Plane,
         Shape::Cube,
         Shape::Cylinder,
         Shape::Cone,
+        Shape::Torus { minor: 0.25 },
+        Shape::Tube { inner: 0.5 },
         Shape::Octahedron,
     ];
+
+    /// Whether this is one of [`Shape::ALL`]'s kinds, whatever its parameter: a leaf the
+    /// tracer draws from its definition alone (not a mesh, whose file holds it, nor a
+    /// tree).
+    #[must_use]
+    pub fn is_unit_shape(&self) -> bool {
+        Shape::ALL.iter().any(|unit| unit.same_kind(self))
+    }
+
+    /// Whether both are the same kind of shape, parameters aside.
+    #[must_use]
+    pub fn same_kind(&self, other: &Shape) -> bool {
+        std::mem::discriminant(self) == std::mem::discriminant(other)
+    }
 
     /// The name used in files and menus.
     #[must_use]

@@ -36,6 +36,7 @@ pub fn cli_options(scene: &Scene, off: &[Term], solo: Option<Term>, view: View) 
         solo,
         view,
         isolation: Default::default(),
+        conventions: Default::default(),
     };
     args.options(scene).unwrap()
 }

@@ -3,6 +3,8 @@
 use glam::Vec3;
 use image::ImageEncoder as _;
 
+use crate::scene::Quantise;
+
 /// A linear RGB image, unclamped, row-major from the top-left.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Image {
@@ -43,14 +45,19 @@ impl Image {
         bytes
     }
 
-    /// Encodes the image as PNG (8-bit RGB, linear `round(255 c)`).
+    /// Encodes the image as PNG (8-bit RGB, linear, each channel clamped to [0, 1] and
+    /// made a byte as `quantise` says: `round(255 c)` or the course's `int(255 c)`).
     ///
     /// # Errors
     /// The encoder's error (only on I/O problems of the writer).
-    pub fn write_png(&self, writer: impl std::io::Write) -> image::ImageResult<()> {
+    pub fn write_png(
+        &self,
+        writer: impl std::io::Write,
+        quantise: Quantise,
+    ) -> image::ImageResult<()> {
         let mut rgb = Vec::with_capacity(self.pixels.len() * 3);
         for p in &self.pixels {
-            rgb.extend_from_slice(&p.to_array().map(encode_linear));
+            rgb.extend_from_slice(&p.to_array().map(|c| encode(c, quantise)));
         }
         image::codecs::png::PngEncoder::new(writer).write_image(
             &rgb,
@@ -60,13 +67,32 @@ impl Image {
         )
     }
 
-    /// The PNG file's bytes.
+    /// The PNG file's bytes, rounded (`round(255 c)`).
     #[must_use]
     pub fn png_bytes(&self) -> Vec<u8> {
+        self.png_bytes_as(Quantise::Round)
+    }
+
+    /// The PNG file's bytes, each channel made a byte as `quantise` says.
+    #[must_use]
+    pub fn png_bytes_as(&self, quantise: Quantise) -> Vec<u8> {
         let mut bytes = Vec::new();
-        self.write_png(&mut bytes)
+        self.write_png(&mut bytes, quantise)
             .expect("encoding to memory cannot fail");
         bytes
+    }
+}
+
+/// One channel as `quantise` says: clamped to [0, 1], then rounded ([`encode_linear`])
+/// or truncated (`floor(255 c)`, the course's `int(255 c)`). Non-finite values become 0.
+#[must_use]
+#[inline]
+pub fn encode(c: f32, quantise: Quantise) -> u8 {
+    match quantise {
+        Quantise::Round => encode_linear(c),
+        // The cast truncates and is exact: 255 c has at most 24 significant bits.
+        Quantise::Truncate if c.is_finite() => (f64::from(c.clamp(0.0, 1.0)) * 255.0) as u8,
+        Quantise::Truncate => 0,
     }
 }
 
@@ -87,7 +113,20 @@ pub fn encode_linear(c: f32) -> u8 {
 
 #[cfg(test)]
 mod tests {
-    use super::encode_linear;
+    use super::{Quantise, encode, encode_linear};
+
+    #[test]
+    fn truncation_floors_and_rounding_rounds_at_every_byte() {
+        for k in 0..255u8 {
+            let just_below_next = ((f64::from(k) + 0.99) / 255.0) as f32;
+            assert_eq!(encode(just_below_next, Quantise::Truncate), k);
+            assert_eq!(encode(just_below_next, Quantise::Round), k + 1);
+        }
+        assert_eq!(encode(1.0, Quantise::Truncate), 255);
+        assert_eq!(encode(7.5, Quantise::Truncate), 255);
+        assert_eq!(encode(-0.2, Quantise::Truncate), 0);
+        assert_eq!(encode(f32::NAN, Quantise::Truncate), 0);
+    }
 
     #[test]
     fn encoding_rounds_exactly_like_f32_round_next_to_every_half() {

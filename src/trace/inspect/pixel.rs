@@ -40,6 +40,8 @@ pub struct BounceReport {
     pub reflection: Option<(DVec3, DVec3)>,
     /// The colour this ray returned.
     pub colour: DVec3,
+    /// Its colour before the `EachRay` convention clamped it, where the clamp changed it.
+    pub unclamped: Option<DVec3>,
 }
 
 impl BounceReport {
@@ -57,6 +59,7 @@ impl BounceReport {
             blocker_hits: Vec::new(),
             reflection: None,
             colour: DVec3::ZERO,
+            unclamped: None,
         }
     }
 
@@ -219,6 +222,9 @@ impl Recorder for ReportRecorder<'_> {
     }
     fn result(&mut self, depth: u32, colour: DVec3) {
         self.bounces[depth as usize].colour = colour;
+    }
+    fn clamped(&mut self, depth: u32, unclamped: DVec3) {
+        self.bounces[depth as usize].unclamped = Some(unclamped);
     }
 }
 

@@ -19,7 +19,7 @@ use crate::trace::film::{PinholeCamera, TileRect};
 use crate::trace::ray::Ray;
 use crate::trace::ray_counts::RayCounts;
 use crate::trace::shade::{
-    Bounce, LiveRays, MakeRay, NoRecorder, RaySource, ShadowRequest, Tracer,
+    Bounce, LiveRays, MakeRay, NoRecorder, RaySource, ShadowRequest, Tracer, ray_colour,
 };
 use crate::trace::terms::ActiveTerms;
 use crate::trace::world::{ObjectSet, SurfacePoint, World};
@@ -141,16 +141,18 @@ impl TilePass<'_> {
             (pixels, rays) = (next_pixels, next_rays);
             depth += 1;
         }
-        // Deepest first, through `fold_back`'s own step (`Bounce::fold`).
+        // Deepest first, through `fold_back`'s own steps (`Bounce::fold`, `ray_colour`).
+        let conventions = &world.conventions;
         let mut colours = vec![DVec3::ZERO; count];
         let mut folded = vec![false; count];
         for (level_pixels, bounces) in levels.iter().rev() {
             for (&pixel, bounce) in level_pixels.iter().zip(bounces) {
-                colours[pixel] = if folded[pixel] {
-                    bounce.fold(colours[pixel])
+                let colour = if folded[pixel] {
+                    bounce.fold(colours[pixel], conventions)
                 } else {
                     bounce.local
                 };
+                colours[pixel] = ray_colour(colour, conventions);
                 folded[pixel] = true;
             }
         }

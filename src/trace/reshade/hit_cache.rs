@@ -77,6 +77,9 @@ struct Shading {
     ambient: DVec3,
     background: DVec3,
     max_depth: u32,
+    /// How colours combine and clamp: a change shades every pixel again (from the
+    /// cache's rays, none traced).
+    conventions: crate::scene::Conventions,
 }
 
 impl Shading {
@@ -88,6 +91,7 @@ impl Shading {
             ambient: world.ambient,
             background: world.background,
             max_depth: world.max_depth,
+            conventions: world.conventions,
         }
     }
 }

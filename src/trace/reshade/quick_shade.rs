@@ -19,7 +19,7 @@ use super::chains::{CLEAR, NOT_CAST};
 use super::dependence::{DependenceRule, EntryTerms, TermDependence};
 use super::light_factors::LightSlot;
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::shade::{Bounce, Tracer, diffuse_term, specular_term};
+use crate::trace::shade::{Bounce, Tracer, diffuse_term, ray_colour, specular_term};
 use crate::trace::terms::ActiveTerms;
 use crate::trace::world::falloff;
 
@@ -45,6 +45,8 @@ pub(crate) struct QuickShade<'r> {
     /// What each entry depends on before its lights.
     dependence: &'r DependenceRule,
     max_depth: u32,
+    /// How mirror colours combine and where they are clamped.
+    conventions: crate::scene::Conventions,
     objects: Vec<ObjectShade>,
     /// Per light, its strength; `None` for a light of zero strength, which the shader
     /// does not sample.
@@ -89,6 +91,7 @@ impl<'r> QuickShade<'r> {
             background: world.background,
             dependence,
             max_depth: world.max_depth,
+            conventions: world.conventions,
             objects,
             lights,
         })
@@ -125,14 +128,18 @@ impl<'r> QuickShade<'r> {
             let row = &slots[depth * lights..(depth + 1) * lights];
             let (local, entry) = self.entry(depth, object, row, &mut own)?;
             depends.add(depth, entry);
-            colour = if depth < last {
-                // Every entry before the last casts a mirror ray (found above).
-                own.reflection += 1;
-                let km = self.objects[object as usize].mirror;
-                Bounce { local, km }.fold(colour)
-            } else {
-                local
-            };
+            let conventions = &self.conventions;
+            colour = ray_colour(
+                if depth < last {
+                    // Every entry before the last casts a mirror ray (found above).
+                    own.reflection += 1;
+                    let km = self.objects[object as usize].mirror;
+                    Bounce { local, km }.fold(colour, conventions)
+                } else {
+                    local
+                },
+                conventions,
+            );
         }
         counts.add(&own);
         Some((colour, depends))

@@ -1,12 +1,14 @@
 //! A camera ray's chain of mirror bounces: what each ray adds itself and the weight of
 //! what its mirror ray brings back, folded from the deepest ray as
-//! `colour(d) = local(d) + km(d) * colour(d + 1)`. The shader and the quick re-shade
+//! `colour(d) = local(d) + km(d) * colour(d + 1)` (or the course's blend, and each ray
+//! clamped, as the scene's conventions say). The shader and the quick re-shade
 //! ([`crate::trace::reshade::quick_shade`]) fold alike, so their sums agree bit for bit.
 
 use glam::DVec3;
 use smallvec::SmallVec;
 
 use super::record::Recorder;
+use crate::scene::{ClampConvention, Conventions, MirrorConvention};
 
 /// What one ray of the mirror chain contributes: its own colour (ambient, diffuse and
 /// specular at a hit, the background at a miss) and the weight of the colour its mirror
@@ -19,10 +21,14 @@ pub(crate) struct Bounce {
 
 impl Bounce {
     /// This ray's colour, given the colour its mirror ray brought back: the one step of
-    /// every fold.
+    /// every fold. `Add`: local + km * reflected; `Blend`: (1 - km) * local + km *
+    /// reflected, per channel. Not yet clamped: see [`ray_colour`].
     #[inline]
-    pub fn fold(&self, brought_back: DVec3) -> DVec3 {
-        self.local + self.km * brought_back
+    pub fn fold(&self, brought_back: DVec3, conventions: &Conventions) -> DVec3 {
+        match conventions.mirror {
+            MirrorConvention::Add => self.local + self.km * brought_back,
+            MirrorConvention::Blend => (DVec3::ONE - self.km) * self.local + self.km * brought_back,
+        }
     }
 
     /// A ray that casts no mirror ray.
@@ -31,6 +37,17 @@ impl Bounce {
             local: colour,
             km: DVec3::ZERO,
         }
+    }
+}
+
+/// The colour a ray returns, as the conventions say: clamped to [0, 1] with `EachRay`
+/// (the course skeleton's `clip()`), as it is with `Pixel` (only the pixel is clamped,
+/// when it is written).
+#[inline]
+pub(crate) fn ray_colour(colour: DVec3, conventions: &Conventions) -> DVec3 {
+    match conventions.clamp {
+        ClampConvention::Pixel => colour,
+        ClampConvention::EachRay => colour.clamp(DVec3::ZERO, DVec3::ONE),
     }
 }
 
@@ -44,16 +61,40 @@ pub(crate) type Chain = SmallVec<[Bounce; INLINE_BOUNCES]>;
 /// each one before it adds km times the colour of the one after. The recorder sees each
 /// ray's `reflection` and `result` after everything deeper, as a recursion would.
 #[inline]
-pub(crate) fn fold_back(chain: &[Bounce], recorder: &mut impl Recorder) -> DVec3 {
+pub(crate) fn fold_back(
+    chain: &[Bounce],
+    conventions: &Conventions,
+    recorder: &mut impl Recorder,
+) -> DVec3 {
     let mut depth = chain.len() - 1;
-    let mut colour = chain[depth].local;
-    recorder.result(depth as u32, colour);
+    let mut colour = returned(depth as u32, chain[depth].local, conventions, recorder);
     while depth > 0 {
         depth -= 1;
         let bounce = &chain[depth];
         recorder.reflection(depth as u32, bounce.km, colour);
-        colour = bounce.fold(colour);
-        recorder.result(depth as u32, colour);
+        colour = returned(
+            depth as u32,
+            bounce.fold(colour, conventions),
+            conventions,
+            recorder,
+        );
     }
     colour
+}
+
+/// The colour the ray at `depth` returns, from its colour before any clamp; the recorder
+/// sees both where a clamp changed it.
+#[inline]
+pub(crate) fn returned(
+    depth: u32,
+    colour: DVec3,
+    conventions: &Conventions,
+    recorder: &mut impl Recorder,
+) -> DVec3 {
+    let clamped = ray_colour(colour, conventions);
+    if clamped != colour {
+        recorder.clamped(depth, colour);
+    }
+    recorder.result(depth, clamped);
+    clamped
 }

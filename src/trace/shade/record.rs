@@ -49,6 +49,9 @@ pub trait Recorder {
     fn reflection(&mut self, _depth: u32, _km: DVec3, _reflected: DVec3) {}
     /// The colour returned for the ray at `depth`.
     fn result(&mut self, _depth: u32, _colour: DVec3) {}
+    /// The ray's colour before the `EachRay` convention clamped it (only where the clamp
+    /// changed it), before its `result`.
+    fn clamped(&mut self, _depth: u32, _unclamped: DVec3) {}
 }
 
 /// A recorder that records nothing.

@@ -18,7 +18,7 @@
 use glam::DVec3;
 
 use super::depth_view::DepthRange;
-use super::mirror_chain::{Chain, fold_back};
+use super::mirror_chain::{Chain, fold_back, returned};
 use super::object_id::object_id_colour;
 use super::ray_source::{LiveRays, RaySource};
 use super::record::Recorder;
@@ -106,8 +106,8 @@ impl<'w> Tracer<'w> {
     ///
     /// A loop, not a recursion, so any `max_depth` runs in constant stack: the chain is
     /// walked forward, keeping each ray's local colour and mirror weight, then folded back
-    /// from the deepest ray as `colour(d) = local(d) + km(d) * colour(d + 1)`. That is the
-    /// same arithmetic, and the same recorder calls in the same order, as the recursive
+    /// from the deepest ray as `colour(d) = local(d) + km(d) * colour(d + 1)` (as the
+    /// scene's conventions combine and clamp). That is the same arithmetic, and the same recorder calls in the same order, as the recursive
     /// form (a ray's `reflection` and `result` after everything deeper).
     fn radiance(
         &self,
@@ -118,9 +118,9 @@ impl<'w> Tracer<'w> {
     ) -> DVec3 {
         let (camera_bounce, mirror_ray) = self.shade(ray, 0, &self.primary, rays, counts, recorder);
         // Most camera rays meet no mirror: no chain to keep.
+        let conventions = &self.world.conventions;
         let Some(mut ray) = mirror_ray else {
-            recorder.result(0, camera_bounce.local);
-            return camera_bounce.local;
+            return returned(0, camera_bounce.local, conventions, recorder);
         };
         let mut chain = Chain::new();
         chain.push(camera_bounce);
@@ -134,6 +134,6 @@ impl<'w> Tracer<'w> {
                 None => break,
             }
         }
-        fold_back(&chain, recorder)
+        fold_back(&chain, conventions, recorder)
     }
 }

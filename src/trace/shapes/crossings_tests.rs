@@ -1,4 +1,4 @@
-//! The five shapes' `crossings` against their own `intersect`: for any ray, the first
+//! The unit shapes' `crossings` against their own `intersect`: for any ray, the first
 //! crossing in (0, infinity) is the closest hit, crossings ascend, and each normal faces
 //! out of the solid (against the ray where it enters, with it where it leaves).
 
@@ -8,13 +8,17 @@ use proptest::prelude::*;
 use super::{Primitive, ShapeHit, crossings, in_range, intersect, starts_inside};
 use crate::trace::ray::Ray;
 
-const SHAPES: [Primitive; 6] = [
+const SHAPES: [Primitive; 10] = [
     Primitive::Sphere,
     Primitive::Plane,
     Primitive::Cube,
     Primitive::Cylinder,
     Primitive::Cone,
     Primitive::Octahedron,
+    Primitive::Torus { minor: 0.25 },
+    Primitive::Torus { minor: 1.0 },
+    Primitive::Torus { minor: 1.7 },
+    Primitive::Tube { inner: 0.6 },
 ];
 
 fn vector(range: f64) -> impl Strategy<Value = DVec3> {
@@ -31,6 +35,8 @@ fn contains(shape: Primitive, p: DVec3) -> bool {
         Primitive::Cylinder => r2 <= 1.0 && p.z.abs() <= 1.0,
         Primitive::Cone => r2 <= p.z * p.z && (0.0..=1.0).contains(&p.z),
         Primitive::Octahedron => p.abs().element_sum() <= 1.0,
+        Primitive::Torus { minor } => (r2.sqrt() - 1.0).hypot(p.z) <= minor,
+        Primitive::Tube { inner } => r2 <= 1.0 && r2 >= inner * inner && p.z.abs() <= 1.0,
         Primitive::Mesh => unreachable!("meshes are not among SHAPES"),
     }
 }

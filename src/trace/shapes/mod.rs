@@ -1,6 +1,7 @@
-//! The five unit shapes, in object space, and triangle meshes (`mesh`, `mesh_bvh`,
-//! `triangle`), which carry their own data and are reached through their `TriangleMesh`.
-//! The unit shapes' Each file has the same parts in the same order:
+//! The unit shapes, in object space (the course's five, the octahedron, and the torus and
+//! the tube with their parameter), and triangle meshes (`mesh`, `mesh_bvh`, `triangle`),
+//! which carry their own data and are reached through their `TriangleMesh`. Each unit
+//! shape's file has the same parts in the same order:
 //! bounds, `intersect` (closest hit with its error bound) and `occluded` (any hit, for
 //! shadow rays). One `match` here forwards to them.
 //!
@@ -18,10 +19,13 @@ mod mesh_bvh;
 mod mesh_solid;
 mod octahedron;
 mod plane;
+mod polynomial;
 pub(crate) mod quadratic;
 mod slabs;
 mod sphere;
+mod torus;
 mod triangle;
+mod tube;
 
 #[cfg(test)]
 mod crossings_tests;
@@ -37,7 +41,7 @@ use crate::trace::ray::Ray;
 
 /// The shapes the tracer intersects directly: the scene's leaf shapes in a `Copy` form
 /// the hot loops can match on.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Primitive {
     /// The unit sphere.
     Sphere,
@@ -51,6 +55,16 @@ pub enum Primitive {
     Cone,
     /// The unit octahedron |x| + |y| + |z| <= 1.
     Octahedron,
+    /// The torus around the unit circle in z = 0, with tube radius `minor`.
+    Torus {
+        /// The tube's radius.
+        minor: f64,
+    },
+    /// The unit cylinder's solid with the hole of radius `inner` taken out.
+    Tube {
+        /// The hole's radius.
+        inner: f64,
+    },
     /// A triangle mesh: its triangles live in the object's `TriangleMesh`, so the free
     /// functions below see no surface for it (never `Primitive::of` a shape).
     Mesh,
@@ -67,6 +81,8 @@ impl Primitive {
             Shape::Cylinder => Primitive::Cylinder,
             Shape::Cone => Primitive::Cone,
             Shape::Octahedron => Primitive::Octahedron,
+            Shape::Torus { minor } => Primitive::Torus { minor: *minor },
+            Shape::Tube { inner } => Primitive::Tube { inner: *inner },
             _ => return None,
         })
     }
@@ -81,6 +97,8 @@ impl Primitive {
             Primitive::Cylinder => Shape::Cylinder,
             Primitive::Cone => Shape::Cone,
             Primitive::Octahedron => Shape::Octahedron,
+            Primitive::Torus { minor } => Shape::Torus { minor },
+            Primitive::Tube { inner } => Shape::Tube { inner },
             // The path lives with the object, not the primitive.
             Primitive::Mesh => Shape::Mesh {
                 path: String::new(),
@@ -92,7 +110,10 @@ impl Primitive {
     /// outer side cannot meet it again.
     #[must_use]
     pub fn is_convex(self) -> bool {
-        self != Primitive::Mesh
+        !matches!(
+            self,
+            Primitive::Mesh | Primitive::Torus { .. } | Primitive::Tube { .. }
+        )
     }
 }
 
@@ -107,6 +128,8 @@ pub fn object_bounds(shape: Primitive) -> Aabb {
         Primitive::Cylinder => cylinder::bounds(),
         Primitive::Cone => cone::bounds(),
         Primitive::Octahedron => octahedron::bounds(),
+        Primitive::Torus { minor } => torus::bounds(minor),
+        Primitive::Tube { .. } => tube::bounds(),
         Primitive::Mesh => Aabb::new(DVec3::INFINITY, DVec3::NEG_INFINITY),
     }
 }
@@ -119,11 +142,7 @@ pub fn shape_bounds(shape: &Shape) -> Aabb {
     use crate::scene::CsgOp;
     let unit_cube = Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0));
     match shape {
-        Shape::Torus { minor } => {
-            let r = 1.0 + minor;
-            Aabb::new(DVec3::new(-r, -r, -minor), DVec3::new(r, r, *minor))
-        }
-        Shape::Tube { .. } | Shape::Octahedron | Shape::Mesh { .. } => unit_cube,
+        Shape::Mesh { .. } => unit_cube,
         // A Difference lies within its first operand; the others within all operands.
         Shape::Csg { op, operands } => {
             let take = if *op == CsgOp::Difference {
@@ -158,6 +177,8 @@ pub fn intersect(shape: Primitive, ray: &Ray, t_max: f64) -> Option<ShapeHit> {
         Primitive::Cylinder => cylinder::intersect(ray, t_max),
         Primitive::Cone => cone::intersect(ray, t_max),
         Primitive::Octahedron => octahedron::intersect(ray, t_max),
+        Primitive::Torus { minor } => torus::intersect(ray, t_max, minor),
+        Primitive::Tube { inner } => tube::intersect(ray, t_max, inner),
         Primitive::Mesh => None,
     }
 }
@@ -174,6 +195,8 @@ pub fn occluded(shape: Primitive, ray: &Ray, t_max: f64) -> bool {
         Primitive::Cylinder => cylinder::occluded(ray, t_max),
         Primitive::Cone => cone::occluded(ray, t_max),
         Primitive::Octahedron => octahedron::occluded(ray, t_max),
+        Primitive::Torus { minor } => torus::occluded(ray, t_max, minor),
+        Primitive::Tube { inner } => tube::occluded(ray, t_max, inner),
         Primitive::Mesh => false,
     }
 }
@@ -193,6 +216,8 @@ pub(crate) fn crossings(shape: Primitive, ray: &Ray, out: &mut Vec<ShapeHit>) {
         Primitive::Cylinder => cylinder::crossings(ray, out),
         Primitive::Cone => cone::crossings(ray, out),
         Primitive::Octahedron => octahedron::crossings(ray, out),
+        Primitive::Torus { minor } => torus::crossings(ray, out, minor),
+        Primitive::Tube { inner } => tube::crossings(ray, out, inner),
         // A mesh's crossings need its triangles: `TriangleMesh::crossings`. CSG trees
         // are built from unit shapes only (see `world::csg`), so none reaches here.
         Primitive::Mesh => {}

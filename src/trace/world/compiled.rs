@@ -58,6 +58,9 @@ pub struct World {
     pub background: DVec3,
     /// Maximum number of mirror bounces.
     pub max_depth: u32,
+    /// How mirror colours combine, and where colour is clamped (the course's habits, or
+    /// the contract's).
+    pub conventions: crate::scene::Conventions,
     /// The scene's camera (the render size may differ from the scene's).
     pub camera: crate::scene::Camera,
     /// A length typical of the scene: the camera's distance to its target.
@@ -132,6 +135,7 @@ impl World {
             ambient,
             background: scene.render.background,
             max_depth: scene.render.max_depth,
+            conventions: scene.render.conventions,
             camera: scene.camera.clone(),
             view_distance: (scene.camera.look_at - scene.camera.position).length(),
             isolation: Isolation::NONE,

@@ -60,6 +60,8 @@ pub struct ExportState {
     pub path: String,
     job: Option<ExportJob>,
     kept: Option<Image>,
+    /// How the kept render's pixels become bytes (its scene's conventions).
+    kept_quantise: crate::scene::Quantise,
     /// The outcome of the last export: a message, or an error.
     pub status: Option<Result<String, String>>,
     /// Bytes an export may use (tests set it; by default the memory available now).
@@ -147,11 +149,13 @@ impl ExportState {
             .map_err(|e| format!("cannot render this scene: {e}"))?;
         let target = path.to_owned();
         let ctx = ctx.clone();
+        let quantise = scene.render.conventions.quantise;
+        self.kept_quantise = quantise;
         let job = BackgroundJob::spawn(
             "export",
             move |progress| {
                 let (image, _) = render(&world, &options, progress)?;
-                let written = write_png(&image, &target);
+                let written = write_png(&image, &target, quantise);
                 Some(Written { image, written })
             },
             move || ctx.request_repaint(),
@@ -207,10 +211,11 @@ impl ExportState {
         };
         let target = path.to_owned();
         let ctx = ctx.clone();
+        let quantise = self.kept_quantise;
         let job = BackgroundJob::spawn(
             "export",
             move |_| {
-                let written = write_png(&image, &target);
+                let written = write_png(&image, &target, quantise);
                 Some(Written { image, written })
             },
             move || ctx.request_repaint(),

@@ -67,12 +67,17 @@ pub fn import_legacy(path: &Path) -> Result<(Scene, String, Vec<String>), String
         .map_err(|e| e.to_string())
 }
 
-/// Writes an image as PNG atomically.
+/// Writes an image as PNG atomically, each channel made a byte as `quantise` says (the
+/// scene's conventions).
 ///
 /// # Errors
 /// The file cannot be written; the message names it.
-pub fn write_png(image: &Image, path: &Path) -> Result<(), String> {
-    write_atomically(path, &image.png_bytes())
+pub fn write_png(
+    image: &Image,
+    path: &Path,
+    quantise: crate::scene::Quantise,
+) -> Result<(), String> {
+    write_atomically(path, &image.png_bytes_as(quantise))
         .map_err(|e| format!("cannot write {}: {e}", path.display()))
 }
 

@@ -43,7 +43,12 @@ pub(super) fn parse_object(
     let kind_token = header.kind;
     let mut body = header.body;
     let mut numbers_ok = true;
-    let kind = if let Some(shape) = Shape::ALL.into_iter().find(|s| kind_token.is(s.name())) {
+    // The torus and the tube take R on the header line, read below.
+    let plain_shape = Shape::ALL
+        .into_iter()
+        .filter(|shape| !matches!(shape, Shape::Torus { .. } | Shape::Tube { .. }))
+        .find(|shape| kind_token.is(shape.name()));
+    let kind = if let Some(shape) = plain_shape {
         numbers_ok = no_numbers(&header, errors);
         Some(ObjectKind::Shape(shape))
     } else if kind_token.is("Torus") || kind_token.is("Tube") {

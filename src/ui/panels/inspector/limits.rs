@@ -82,6 +82,19 @@ pub(super) const SPOT_ANGLE_DEG: Limits = Limits {
 /// The Phong exponent: any value >= 0, however large (0 lights where r.v > 0).
 pub(super) const SHININESS: Limits = Limits::NON_NEGATIVE;
 
+/// A torus's tube radius: any finite number above 0 (from 1 on, a horn or spindle torus).
+pub(super) const TORUS_MINOR: Limits = Limits {
+    min_open: true,
+    ..Limits::closed(0.0, f64::INFINITY)
+};
+
+/// A tube's hole radius: strictly between 0 and the outer radius 1.
+pub(super) const TUBE_INNER: Limits = Limits {
+    min_open: true,
+    max_open: true,
+    ..Limits::closed(0.0, 1.0)
+};
+
 /// Output width and height in pixels.
 pub(super) const IMAGE_SIDE: RangeInclusive<u32> = 1..=crate::scene::MAX_IMAGE_SIDE;
 

@@ -3,8 +3,8 @@
 
 use egui::Ui;
 
-use super::fields::vec3_row_ui;
-use super::limits::Limits;
+use super::fields::{number_row_ui, vec3_row_ui};
+use super::limits::{self, Limits};
 use super::material::material_rows_ui;
 use super::{grid_ui, heading_ui};
 use crate::scene::*;
@@ -31,24 +31,29 @@ pub(super) fn object_ui(
         ui.end_row();
 
         ui.label("Shape");
-        if Shape::ALL.contains(&edited.shape) {
+        if edited.shape.is_unit_shape() {
             egui::ComboBox::from_id_salt("shape")
                 .selected_text(edited.shape.name())
                 .show_ui(ui, |ui| {
                     for shape in Shape::ALL {
-                        let name = shape.name();
-                        ui.selectable_value(&mut edited.shape, shape, name);
+                        let current = shape.same_kind(&edited.shape);
+                        // Choosing the kind it already is keeps its parameter.
+                        if ui.selectable_label(current, shape.name()).clicked() && !current {
+                            edited.shape = shape;
+                        }
                     }
                 })
                 .response
                 .accessible_name("shape");
+            ui.end_row();
+            shape_parameter_ui(ui, &mut edited.shape);
         } else {
             // A tree or a mesh is more than a shape: switching it to a unit shape would
             // drop its operands, children or file in one click.
             ui.label(tree_or_mesh_summary(&edited.shape))
                 .on_hover_text("Edit this object's parts in the scene file; see the outliner");
+            ui.end_row();
         }
-        ui.end_row();
 
         ui.label("Material");
         egui::ComboBox::from_id_salt("material")
@@ -88,6 +93,19 @@ pub(super) fn object_ui(
                 )));
             }
         });
+    }
+}
+
+/// The torus's and the tube's parameter, as a field on its own row.
+fn shape_parameter_ui(ui: &mut Ui, shape: &mut Shape) {
+    match shape {
+        Shape::Torus { minor } => {
+            number_row_ui(ui, "minor radius", minor, 0.005, limits::TORUS_MINOR);
+        }
+        Shape::Tube { inner } => {
+            number_row_ui(ui, "inner radius", inner, 0.005, limits::TUBE_INNER);
+        }
+        _ => {}
     }
 }
 

@@ -261,6 +261,9 @@ fn bounce_ui(ui: &mut egui::Ui, bounce: &BounceReport, names: &InspectedBounce) 
                     ui.end_row();
                 }
             }
+            if let Some(unclamped) = bounce.unclamped {
+                number_row_ui(ui, "before each-ray clamp", colour_text(unclamped));
+            }
             number_row_ui(ui, "colour", colour_text(bounce.colour));
         });
 }
