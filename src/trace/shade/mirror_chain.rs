@@ -85,14 +85,14 @@ pub(crate) fn fold_back(
 /// The colour the ray at `depth` returns, from its colour before any clamp; the recorder
 /// sees both where a clamp changed it.
 #[inline]
-pub(crate) fn returned(
+pub(crate) fn returned<R: Recorder>(
     depth: u32,
     colour: DVec3,
     conventions: &Conventions,
-    recorder: &mut impl Recorder,
+    recorder: &mut R,
 ) -> DVec3 {
     let clamped = ray_colour(colour, conventions);
-    if clamped != colour {
+    if R::ACTIVE && clamped != colour {
         recorder.clamped(depth, colour);
     }
     recorder.result(depth, clamped);
