@@ -13,12 +13,12 @@ use raylab::trace::{MeshStore, RenderOptions, RenderProgress, World, render_samp
 fn corpus() -> Vec<String> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut texts = Vec::new();
-    for folder in ["scenes", "tests/legacy"] {
+    for folder in ["scenes", "tests/legacy", "tests/legacy_ext"] {
         let mut paths: Vec<_> = std::fs::read_dir(root.join(folder))
             .unwrap()
             .map(|e| e.unwrap().path())
-            // The mesh scene's OBJ files are no input of these loaders.
-            .filter(|p| p.extension().is_none_or(|e| e != "obj"))
+            // The mesh scenes' OBJ files (and their folders) are no input of these loaders.
+            .filter(|p| p.is_file() && p.extension().is_none_or(|e| !e.eq_ignore_ascii_case("obj")))
             .collect();
         paths.sort();
         texts.extend(paths.iter().map(|p| std::fs::read_to_string(p).unwrap()));
@@ -65,6 +65,21 @@ const TOKENS: &[&str] = &[
     "Scene(",
     "transform:",
     "angle_deg: 95.0",
+    // The legacy extensions (issue 38).
+    "Object CSG Union",
+    "CSG Difference",
+    "ObjectGroup",
+    "Object Torus 0.5",
+    "Object Tube 1.9",
+    "Object Mesh meshes/pyramid.obj",
+    "FSAA 1e9",
+    "Samples 1e9",
+    "Radius 0.5",
+    "Opacity 0.3",
+    "RefractiveIndex 1.5",
+    "scaleResolution 1e9",
+    "Supersampling",
+    "End End",
 ];
 
 #[derive(Clone, Debug)]
@@ -120,6 +135,15 @@ fn apply(text: &str, mutations: &[Mutation]) -> String {
 
 /// Both loaders on one input; a loaded scene must also compile and render finitely.
 /// Returns whether either loader accepted it.
+/// The compiled world of a loaded scene, which must compile.
+fn compiled(
+    scene: &raylab::scene::Scene,
+    meshes: &std::collections::BTreeMap<String, raylab::scene::MeshData>,
+) -> World {
+    World::with_meshes(scene, &MeshStore::build(meshes))
+        .unwrap_or_else(|e| panic!("a loaded scene compiles: {e}"))
+}
+
 fn check_input(text: &str) -> bool {
     let mut loaded = false;
     if let Ok(scene) = parse_scene(text) {
@@ -128,8 +152,7 @@ fn check_input(text: &str) -> bool {
         // mutated path is refused by the mesh loader with an error, not compiled.
         let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
         if let Ok(meshes) = read_scene_meshes(&scene, &folder) {
-            let world = World::with_meshes(&scene, &MeshStore::build(&meshes))
-                .expect("a loaded scene compiles");
+            let world = compiled(&scene, &meshes);
             let options = RenderOptions {
                 width: 6,
                 height: 4,
@@ -142,7 +165,12 @@ fn check_input(text: &str) -> bool {
     }
     if let Ok(import) = import_legacy(text) {
         loaded = true;
-        World::new(&import.scene).expect("an imported scene is valid");
+        // Text alone keeps mesh paths as written: those of the extension scenes resolve
+        // in their folder; any other is refused by the mesh loader, as for RON.
+        let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/legacy_ext");
+        if let Ok(meshes) = read_scene_meshes(&import.scene, &folder) {
+            compiled(&import.scene, &meshes);
+        }
     }
     loaded
 }

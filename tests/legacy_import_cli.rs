@@ -61,3 +61,34 @@ fn cli_lists_every_problem_and_writes_nothing() {
     }
     assert!(!output.exists());
 }
+
+#[test]
+fn cli_says_which_dialect_it_read_and_keeps_mesh_paths_working_from_the_output() {
+    let legacy = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/legacy_ext/mesh_scene.txt");
+    let folder = Path::new(env!("CARGO_TARGET_TMPDIR")).join("legacy_mesh_out");
+    std::fs::create_dir_all(&folder).unwrap();
+    let output = folder.join("mesh_scene.ron");
+    let run = raylab()
+        .arg("import")
+        .arg(&legacy)
+        .arg("-o")
+        .arg(&output)
+        .output()
+        .expect("run raylab");
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(run.status.success(), "{stderr}");
+    assert!(
+        stderr.contains("read as the 2020 framework's dialect")
+            && stderr.contains("line 14: Mesh `missing.obj`"),
+        "{stderr}"
+    );
+    let loaded = load_scene(&output).expect("the written scene loads");
+    let raylab::scene::Shape::Mesh { path } = &loaded.objects[0].shape else {
+        panic!("{loaded:?}")
+    };
+    assert!(
+        folder.join(path).is_file(),
+        "{path} is not found from {folder:?}"
+    );
+    raylab::scene::read_scene_meshes(&loaded, &folder).expect("the mesh reads");
+}

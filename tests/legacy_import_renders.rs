@@ -146,9 +146,21 @@ fn round_trip_through_ron_renders_identical_pixels() {
 fn two_facing_perfect_mirrors_bounce_a_hundred_times_and_a_thousand() {
     // Hand-computed in the file: the centre ray and 100 mirror rays each add 0.001.
     let text = legacy_text("mirrors_depth_100.txt");
-    for (depth, expected) in [(100u32, 0.101), (1000, 1.001)] {
-        let scene = import_text(&text.replace("rayDepth 100", &format!("rayDepth {depth}"))).scene;
+    for (depth, expected) in [(100u32, 0.101f64), (1000, 1.001)] {
+        let mut scene =
+            import_text(&text.replace("rayDepth 100", &format!("rayDepth {depth}"))).scene;
         assert_eq!(scene.render.max_depth, depth);
+        // Imports carry the course's conventions, which clamp each ray's colour: 1.001
+        // comes back as 1. The sums below are the contract's model, without them.
+        let course = World::new(&scene).expect("valid");
+        let clamped = inspect_pixel(&course, &RenderOptions::from_scene(&scene), 10, 10);
+        assert!(
+            (clamped.unclamped - DVec3::splat(expected.min(1.0)))
+                .abs()
+                .max_element()
+                < 1e-12
+        );
+        scene.render.conventions = Default::default();
         let world = World::new(&scene).expect("valid");
         let report = inspect_pixel(&world, &RenderOptions::from_scene(&scene), 10, 10);
         assert_eq!(report.bounces.len(), depth as usize + 1);
@@ -184,8 +196,14 @@ fn spot_lights_wider_than_ninety_degrees_light_what_their_angle_says() {
     // |x| >= sqrt(3) is lit, at 180 degrees everything.
     let lit = |x: f64| 2.0 / (x * x + 1.0f64).powf(1.5);
     let text = legacy_text("spot_wide.txt");
-    let wide = import_text(&text).scene;
-    let all = import_text(&text.replace("Angle 120", "Angle 180")).scene;
+    // The contract's model: imports carry the course's each-ray clamp, which would cut
+    // the lit colour at 1 (checked at the end).
+    let contract = |mut scene: raylab::scene::Scene| {
+        scene.render.conventions = Default::default();
+        scene
+    };
+    let wide = contract(import_text(&text).scene);
+    let all = contract(import_text(&text.replace("Angle 120", "Angle 180")).scene);
     for (x, at_120) in [
         (0.0, false),
         (1.0, false),
@@ -205,6 +223,11 @@ fn spot_lights_wider_than_ninety_degrees_light_what_their_angle_says() {
             "180, x = {x}: {colour}"
         );
     }
+    let course = import_text(&text.replace("Angle 120", "Angle 180")).scene;
+    assert_eq!(
+        trace(&course, down_at(0.0), TermSwitches::ALL_ON),
+        DVec3::ONE
+    );
 }
 
 #[test]

@@ -191,7 +191,7 @@ fn import_legacy_goes_through_the_adapter_and_keeps_the_scene_on_failure() {
     harness.run();
     let expected = raylab::ui::files::import_legacy(&path);
     match expected {
-        Ok((scene, _)) => assert_eq!(harness.state().scene(), &scene),
+        Ok((scene, _, _)) => assert_eq!(harness.state().scene(), &scene),
         Err(error) => {
             assert_eq!(harness.state().scene(), &default_scene());
             let shown = harness.state().error().expect("the error is shown");
@@ -210,6 +210,8 @@ fn import_legacy_replaces_the_scene_with_the_imported_one() {
     assert_eq!(harness.state().scene(), &imported.scene);
     // The status line names the imported file, not the last file saved.
     harness.get_by_label_contains("full.txt (not saved yet)");
+    // ... and which framework's dialect was read.
+    harness.get_by_label_contains("read as the 2020 framework's dialect");
     // full.txt imports cleanly (its octahedron too); a file with something to warn about
     // shows it as a warning, in its own banner, not as a failure.
     assert!(imported.warnings.is_empty(), "{:?}", imported.warnings);

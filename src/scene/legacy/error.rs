@@ -36,6 +36,65 @@ impl fmt::Display for LegacyError {
 
 impl std::error::Error for LegacyError {}
 
+/// Something imported with a caveat, or skipped: told to the user, the rest imports.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Warning {
+    /// 1-based line it is about, if it is about one.
+    pub line: Option<usize>,
+    /// What was skipped or changed, and why.
+    pub message: String,
+}
+
+impl fmt::Display for Warning {
+    /// `line N: message`, or the message alone.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.line {
+            Some(line) => write!(f, "line {line}: {}", self.message),
+            None => f.write_str(&self.message),
+        }
+    }
+}
+
+/// What the stages found so far: errors refuse the whole file, warnings do not.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Diagnostics {
+    /// Problems that stop the import.
+    pub errors: Vec<LegacyError>,
+    /// Things skipped or changed.
+    pub warnings: Vec<Warning>,
+}
+
+impl Diagnostics {
+    /// Records an error.
+    pub fn push(&mut self, error: LegacyError) {
+        self.errors.push(error);
+    }
+
+    /// Records a warning about `line`.
+    pub fn warn(&mut self, line: usize, message: impl Into<String>) {
+        self.warnings.push(Warning {
+            line: Some(line),
+            message: message.into(),
+        });
+    }
+
+    /// Records a warning about the whole file.
+    pub fn warn_file(&mut self, message: impl Into<String>) {
+        self.warnings.push(Warning {
+            line: None,
+            message: message.into(),
+        });
+    }
+
+    /// The warnings in line order (file-wide ones last), as the user reads them.
+    #[must_use]
+    pub fn warning_lines(&self) -> Vec<String> {
+        let mut warnings = self.warnings.clone();
+        warnings.sort_by_key(|w| w.line.unwrap_or(usize::MAX));
+        warnings.iter().map(ToString::to_string).collect()
+    }
+}
+
 /// Every problem found in a legacy file, in line order. Never empty when returned.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct LegacyErrors(pub Vec<LegacyError>);

@@ -4,6 +4,57 @@
 //! begins a comment that runs to the end of the line; a `#` inside a token is part of it.
 //! Line breaks are LF, CR LF, or a lone CR. A leading byte-order mark is skipped.
 
+use std::collections::HashMap;
+
+/// The words that start commented-out code rather than a name: block words, `End` and
+/// the keywords of every block.
+const CODE_WORDS: &[&str] = &[
+    "Scene",
+    "Camera",
+    "Light",
+    "Material",
+    "Object",
+    "CSG",
+    "ObjectGroup",
+    "End",
+    "renderSize",
+    "backgroundColour",
+    "ambientLight",
+    "rayDepth",
+    "filename",
+    "Translate",
+    "Rotate",
+    "Scale",
+    "Scale3",
+    "Colour",
+    "Ambient",
+    "Diffuse",
+    "Specular",
+    "Mirror",
+    "Location",
+    "Direction",
+    "Angle",
+    "Opacity",
+    "RefractiveIndex",
+    "DisableBoundingBox",
+    "Supersampling",
+    "FSAA",
+    "scaleResolution",
+    "renderNormals",
+    "Radius",
+    "Samples",
+];
+
+/// Whether `word` is a block word, `End` or a keyword of any block (ignoring case).
+#[must_use]
+pub fn is_grammar_word(word: &str) -> bool {
+    CODE_WORDS.iter().any(|w| word.eq_ignore_ascii_case(w))
+}
+
+/// The longest name taken from a comment, in characters; a longer comment is prose, not
+/// a name.
+pub const MAX_COMMENT_NAME_CHARS: usize = 60;
+
 /// One token and the 1-based line it is on.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Token<'a> {
@@ -62,6 +113,62 @@ fn push_token<'a>(tokens: &mut Vec<Token<'a>>, text: &'a str, line: usize, in_co
     }
 }
 
+/// The whole-line comments of a file (lines whose first token starts with `#`), by line,
+/// for naming the block that follows.
+#[derive(Clone, Debug, Default)]
+pub struct Comments<'a> {
+    by_line: HashMap<usize, &'a str>,
+}
+
+impl<'a> Comments<'a> {
+    /// Collects the whole-line comments of `text`, with the lines counted as
+    /// [`tokenize`] counts them (LF, CR LF or a lone CR).
+    #[must_use]
+    pub fn of(text: &'a str) -> Self {
+        let mut rest = text.strip_prefix('\u{feff}').unwrap_or(text);
+        let mut by_line = HashMap::new();
+        let mut line = 1;
+        loop {
+            let end = rest.find(['\n', '\r']).unwrap_or(rest.len());
+            let content = rest[..end].trim_matches(|c: char| c.is_ascii_whitespace());
+            if let Some(comment) = content.strip_prefix('#') {
+                by_line.insert(line, comment);
+            }
+            if end == rest.len() {
+                break;
+            }
+            let skip = if rest[end..].starts_with("\r\n") {
+                2
+            } else {
+                1
+            };
+            rest = &rest[end + skip..];
+            line += 1;
+        }
+        Self { by_line }
+    }
+
+    /// The name a comment on the line right before `line` gives the block starting
+    /// there (`# Snowman's body` names it "Snowman's body"): `None` when there is no
+    /// such comment, it is empty or too long, or it is commented-out code. A `/`
+    /// (the separator of tree paths) becomes `-`.
+    #[must_use]
+    pub fn name_before(&self, line: usize) -> Option<String> {
+        let comment = self.by_line.get(&line.checked_sub(1)?)?;
+        let text = comment
+            .trim_start_matches('#')
+            .trim_matches(|c: char| c.is_ascii_whitespace());
+        let first_word = text.split_ascii_whitespace().next()?;
+        let is_code = CODE_WORDS
+            .iter()
+            .any(|w| first_word.eq_ignore_ascii_case(w));
+        if is_code || text.chars().count() > MAX_COMMENT_NAME_CHARS {
+            return None;
+        }
+        Some(text.replace('/', "-"))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -103,6 +210,25 @@ mod tests {
     #[test]
     fn lone_cr_is_a_line_break_and_bom_is_skipped() {
         assert_eq!(texts("\u{feff}a\rb\r\rc"), [("a", 1), ("b", 2), ("c", 4)]);
+    }
+
+    #[test]
+    fn a_whole_line_comment_right_before_a_block_names_it() {
+        let comments = Comments::of("# Snowman's body\r\nObject Sphere End\n\n## base ##\nx\n");
+        assert_eq!(comments.name_before(2).as_deref(), Some("Snowman's body"));
+        assert_eq!(comments.name_before(5).as_deref(), Some("base ##"));
+        // A blank line between the comment and the block breaks the link.
+        assert_eq!(comments.name_before(3), None);
+        assert_eq!(comments.name_before(1), None);
+    }
+
+    #[test]
+    fn commented_out_code_and_trailing_comments_name_nothing() {
+        let comments =
+            Comments::of("#Translate 0 1 0\nObject Cube End # trailing\nObject Cone\n#\nEnd");
+        assert_eq!(comments.name_before(2), None);
+        assert_eq!(comments.name_before(3), None);
+        assert_eq!(comments.name_before(5), None);
     }
 
     #[test]

@@ -7,51 +7,94 @@
 //! Every stage collects its errors instead of stopping, so a broken file reports all of
 //! its problems at once, each with its line and token, and nothing is imported from it.
 //!
-//! Imports set `samples_per_pixel: 1`, as the legacy renderer has no anti-aliasing, so
-//! an imported scene renders the legacy picture (the editor can raise it).
+//! Both course frameworks' dialects are read (the 2016 one and the 2020 one with its
+//! students' extensions: CSG, groups, torus, tube, octahedron, meshes, refraction,
+//! supersampling, sphere lights); which one a file is in is read off its content and
+//! told in [`LegacyImport::summary`]. An unknown block, object kind or keyword is skipped
+//! with a warning; a syntax error refuses the file.
+//!
+//! Imports set `samples_per_pixel: 1` unless the file asks for `Supersampling` or
+//! `FSAA N`, as the legacy renderer has no anti-aliasing otherwise, and carry the course's
+//! conventions (`Conventions::COURSE`), so an imported scene renders the legacy picture.
 
 mod convert;
 mod error;
 mod lexer;
+mod mesh_paths;
 mod parser;
 mod syntax;
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
-pub use error::{LegacyError, LegacyErrors, LegacyImportFileError};
+pub use convert::{Detected, Dialect};
+pub use error::{LegacyError, LegacyErrors, LegacyImportFileError, Warning};
+pub use mesh_paths::rebase_mesh_paths;
+pub use parser::MAX_NESTING;
 
 use crate::scene::{Scene, TextFileError, read_text_file};
 
-/// A successful import: the scene, and warnings about what was skipped or changed.
+/// A successful import: the scene, the dialect it was read in, and warnings about what
+/// was skipped or changed.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LegacyImport {
     /// The imported scene; it passes [`crate::scene::validate`].
     pub scene: Scene,
-    /// One line each, "line N: ...", for the user to read.
+    /// The framework dialect the file was read in, and the constructs that told.
+    pub dialect: Detected,
+    /// One line each, "line N: ...", in line order, for the user to read.
     pub warnings: Vec<String>,
 }
 
-/// Imports legacy scene text.
+impl LegacyImport {
+    /// One line for the user: what was read and how, for example "read as the 2016
+    /// framework's dialect (`Object CSG` at line 3): 4 objects, 1 light, 2 materials".
+    #[must_use]
+    pub fn summary(&self) -> String {
+        let count = |n: usize, what: &str| {
+            let plural = if n == 1 { "" } else { "s" };
+            format!("{n} {what}{plural}")
+        };
+        format!(
+            "read as {}: {}, {}, {}",
+            self.dialect.describe(),
+            count(self.scene.objects.len(), "object"),
+            count(self.scene.lights.len(), "light"),
+            count(self.scene.materials.len(), "material")
+        )
+    }
+}
+
+/// Imports legacy scene text. `Mesh` paths are kept as written (there is no folder to
+/// look in); [`import_legacy_file`] checks them.
 ///
 /// # Errors
 /// Every problem in the text, in line order, each with its line and token.
 pub fn import_legacy(text: &str) -> Result<LegacyImport, LegacyErrors> {
+    import_text(text, None)
+}
+
+fn import_text(text: &str, folder: Option<PathBuf>) -> Result<LegacyImport, LegacyErrors> {
     let tokens = lexer::tokenize(text);
-    let mut errors = Vec::new();
-    let blocks = parser::parse(&tokens, &mut errors);
-    let converted = convert::convert(&blocks, &mut errors);
-    if errors.is_empty() {
+    let comments = lexer::Comments::of(text);
+    let mut diagnostics = error::Diagnostics::default();
+    let blocks = parser::parse(&tokens, &comments, &mut diagnostics);
+    let converted = convert::convert(&blocks, folder, &mut diagnostics);
+    if diagnostics.errors.is_empty() {
         Ok(LegacyImport {
             scene: converted.scene,
-            warnings: converted.warnings,
+            dialect: converted.dialect,
+            warnings: diagnostics.warning_lines(),
         })
     } else {
+        let mut errors = diagnostics.errors;
         errors.sort_by_key(|e| e.line);
         Err(LegacyErrors(errors))
     }
 }
 
-/// Reads and imports a legacy scene file.
+/// Reads and imports a legacy scene file. `Mesh` paths are looked up in the file's
+/// folder and kept relative to it (a scene written elsewhere needs them rebased: see
+/// [`rebase_mesh_paths`]).
 ///
 /// # Errors
 /// [`LegacyImportFileError::Read`] when the file cannot be read,
@@ -71,7 +114,8 @@ pub fn import_legacy_file(path: &Path) -> Result<LegacyImport, LegacyImportFileE
             line,
         },
     })?;
-    import_legacy(&text).map_err(|errors| LegacyImportFileError::Legacy {
+    let folder = path.parent().map(Path::to_path_buf).unwrap_or_default();
+    import_text(&text, Some(folder)).map_err(|errors| LegacyImportFileError::Legacy {
         path: path.to_owned(),
         errors,
     })

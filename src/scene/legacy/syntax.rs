@@ -3,7 +3,7 @@
 
 use glam::DVec3;
 
-use crate::scene::{LightKind, Shape};
+use crate::scene::{CsgOp, LightKind, Shape};
 
 /// Where an item came from: the 1-based line and the token that names it.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -70,6 +70,10 @@ pub enum SurfaceEdit {
     },
     /// `Mirror R G B`.
     Mirror(DVec3),
+    /// `Opacity a`, in [0, 1]: the transmission is 1 - a (grey).
+    Opacity(f64),
+    /// `RefractiveIndex n`: the index of refraction inside.
+    RefractiveIndex(f64),
 }
 
 /// One keyword of the Scene block.
@@ -90,6 +94,10 @@ pub enum SceneSetting {
     RayDepth(f64),
     /// `filename NAME`: the legacy output image; not used by the import.
     Filename(String),
+    /// `Supersampling` (4) or `FSAA N` (N * N), already capped to what raylab renders.
+    SamplesPerPixel(u32),
+    /// `scaleResolution s`: the size so far times `s`, truncated.
+    ScaleResolution(f64),
 }
 
 /// One keyword of a Light block.
@@ -103,13 +111,59 @@ pub enum LightSetting {
     Direction(DVec3),
     /// `Angle deg`.
     Angle(f64),
+    /// `Radius r`: a sphere light of radius r.
+    Radius(f64),
+    /// `Samples N`: shadow rays per shading point, already capped.
+    Samples(u32),
 }
 
 /// What an Object block draws.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ObjectKind {
-    /// One of the unit shapes the project draws (`Shape::ALL`).
+    /// One of the unit shapes without parameters (`Shape::ALL`).
     Shape(Shape),
+    /// `Torus R`: the legacy unit torus (minor radius 0.5) scaled by R.
+    Torus(f64),
+    /// `Tube R`: the hole's radius is sqrt(R / 2).
+    Tube(f64),
+    /// `Mesh PATH`: the path as written.
+    Mesh(String),
+    /// `Object CSG OP` or a top-level `CSG OP` block.
+    Csg {
+        /// How the operands combine.
+        op: CsgOp,
+        /// Which of the two ways it was written.
+        form: CsgForm,
+        /// The operands, in file order.
+        operands: Vec<ObjectNode>,
+    },
+    /// `ObjectGroup ... End`.
+    Group(Vec<ObjectNode>),
+    /// A kind that draws nothing here (an unknown kind, `Parabaloid`); warned already.
+    Skipped,
+}
+
+/// The two ways students write CSG.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CsgForm {
+    /// `Object CSG OP` (the 2016 framework): operands first, the node's keywords after.
+    Object2016,
+    /// `CSG OP ... End` as a block of its own (students' addition to the 2020 one).
+    TopLevel,
+}
+
+/// An object and everything below it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ObjectNode {
+    /// What it draws.
+    pub kind: ObjectKind,
+    /// Its own keywords, in file order (for a tree node, wherever they sit among its
+    /// operands or children).
+    pub settings: Vec<Item<ObjectSetting>>,
+    /// The name from a comment on the line right before it, if any.
+    pub name: Option<String>,
+    /// The token that names its kind, for messages.
+    pub at: At,
 }
 
 /// One keyword of an Object block.
@@ -152,13 +206,8 @@ pub enum Block {
         /// Its keywords, in file order.
         edits: Vec<Item<SurfaceEdit>>,
     },
-    /// `Object SHAPE ... End`.
-    Object {
-        /// What it draws.
-        kind: ObjectKind,
-        /// Its keywords, in file order.
-        settings: Vec<Item<ObjectSetting>>,
-    },
+    /// `Object SHAPE ... End`, `CSG ... End` or `ObjectGroup ... End`.
+    Object(ObjectNode),
 }
 
 /// A parsed block and the token that names it (`Scene`, the camera type, the light

@@ -157,13 +157,16 @@ impl EditorApp {
 
     fn import(&mut self, path: &Path) {
         match files::import_legacy(path) {
-            Ok((scene, warnings)) => {
+            Ok((scene, summary, warnings)) => {
                 self.replace_scene(scene, None);
                 self.unnamed = "imported scene";
                 // An imported scene has no file yet: everything is unsaved.
                 self.saved = files::new_scene();
                 // Not the last file saved or opened: this one, which has no file yet.
-                self.message = Some(format!("Imported {} (not saved yet)", path.display()));
+                self.message = Some(format!(
+                    "Imported {} (not saved yet), {summary}",
+                    path.display()
+                ));
                 if !warnings.is_empty() {
                     self.warning = Some(format!("Imported with warnings: {}", warnings.join("; ")));
                 }

@@ -55,13 +55,15 @@ pub fn save_scene_to(scene: &Scene, path: &Path) -> Result<(), String> {
     })
 }
 
-/// Imports a legacy COSC342 text scene: the scene and the importer's warnings.
+/// Imports a legacy COSC342 text scene: the scene, the import's one-line summary (which
+/// framework dialect was read, and what came in) and its warnings.
 ///
 /// # Errors
 /// The importer's message.
-pub fn import_legacy(path: &Path) -> Result<(Scene, Vec<String>), String> {
+pub fn import_legacy(path: &Path) -> Result<(Scene, String, Vec<String>), String> {
     crate::scene::legacy::import_legacy_file(path)
-        .map(|import| (import.scene, import.warnings))
+        .map(|import| (import.summary(), import))
+        .map(|(summary, import)| (import.scene, summary, import.warnings))
         .map_err(|e| e.to_string())
 }
 

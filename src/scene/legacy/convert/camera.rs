@@ -57,10 +57,9 @@ impl Converter<'_> {
         let (width, height) = self.render_size;
         let content: Vec<DVec3> = self.objects.iter().map(|o| o.centre()).collect();
         let Some((focal_length, world_from_camera, at)) = self.camera.clone() else {
-            self.warnings.push(
+            self.errors.warn_file(
                 "no Camera block: the legacy unit camera is used (at the origin, looking \
-                 along +Z, focal length 1)"
-                    .to_owned(),
+                 along +Z, focal length 1)",
             );
             return scene_camera(
                 DEFAULT_FOCAL_LENGTH,

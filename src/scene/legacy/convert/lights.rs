@@ -2,7 +2,9 @@
 //! spot lights, `Direction` for directional and spot lights); keywords a kind does not
 //! use are ignored with a warning. A spot light without `Angle` lights nothing in the
 //! legacy renderer, so it is imported as one that lights nothing (intensity 0), with a
-//! warning. Older files' `ambientLight` becomes the first light.
+//! warning. Older files' `ambientLight` becomes the first light. `Radius r` and `Samples N`
+//! on a point or spot light make it a sphere light (legacy: N lights of colour/N at random
+//! points of the sphere, fixed at load; raylab samples the sphere instead).
 
 use super::super::error::LegacyError;
 use super::super::syntax::{At, Item, LightSetting};
@@ -25,6 +27,8 @@ impl Converter<'_> {
         at: &At,
     ) {
         let (mut colour, mut location, mut direction, mut angle) = (None, None, None, None);
+        let (mut radius, mut samples) = (0.0, 1);
+        let is_positional = matches!(kind, LightKind::Point | LightKind::Spot);
         for setting in settings {
             let used = match setting.value {
                 LightSetting::Colour(c) => {
@@ -42,6 +46,14 @@ impl Converter<'_> {
                 LightSetting::Angle(a) => {
                     angle = Some(a);
                     kind == LightKind::Spot
+                }
+                LightSetting::Radius(r) => {
+                    radius = r;
+                    is_positional
+                }
+                LightSetting::Samples(n) => {
+                    samples = n;
+                    is_positional
                 }
             };
             if !used {
@@ -66,8 +78,8 @@ impl Converter<'_> {
                     position,
                     colour,
                     intensity: 1.0,
-                    radius: 0.0,
-                    samples: 1,
+                    radius,
+                    samples,
                 })
             }
             LightKind::Directional => {
@@ -109,8 +121,8 @@ impl Converter<'_> {
                             angle_deg,
                             colour,
                             intensity,
-                            radius: 0.0,
-                            samples: 1,
+                            radius,
+                            samples,
                         })
                     }
                     _ => None,

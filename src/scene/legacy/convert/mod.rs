@@ -2,42 +2,70 @@
 //! composed, lights and the camera converted, and the result checked against the scene
 //! rules so an import always loads again.
 //!
-//! This file is the whole-file driver: it walks the blocks in file order, keeps the Scene
-//! block's settings and assembles the scene at the end. Each concern has its own file:
-//! `materials` (material blocks, objects and the names of their materials), `lights`,
+//! This file is the whole-file driver: it reads the dialect off the blocks, walks them in
+//! file order, keeps the Scene block's settings and assembles the scene at the end, with
+//! the course's conventions (`Conventions::COURSE`). Each concern has its own file:
+//! `dialect` (2016 or 2020 framework), `materials` (material blocks and lookups),
+//! `objects` (objects and trees), `naming` (names of objects and materials), `lights`,
 //! `camera`, and `transform` (composing transform steps into a scene transform).
 
 mod camera;
+mod dialect;
 mod lights;
 mod materials;
+mod naming;
+mod objects;
 mod transform;
 
 use std::collections::HashMap;
+use std::path::PathBuf;
 
 use glam::{DAffine3, DVec3};
 
-use super::error::LegacyError;
+use super::error::{Diagnostics, LegacyError};
 use super::syntax::{At, Block, Item, ParsedBlock, SceneSetting};
-use crate::scene::{FORMAT_VERSION, Light, MAX_DEPTH, RenderSettings, Scene, validate};
-use materials::{Definition, PendingObject};
+use crate::scene::{
+    Conventions, FORMAT_VERSION, Light, MAX_DEPTH, MAX_IMAGE_SIDE, RenderSettings, Scene, validate,
+};
+pub use dialect::{Detected, Dialect};
+use materials::Definition;
+use objects::PendingObject;
 
 /// Legacy default image size.
 pub const DEFAULT_RENDER_SIZE: (u32, u32) = (800, 600);
 /// Legacy default mirror depth.
 pub const DEFAULT_RAY_DEPTH: u32 = 3;
 
-/// A converted scene and the warnings met on the way ("line N: ...").
+/// A converted scene and the dialect it was read in.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Converted {
     /// The scene; meaningful only when no errors were pushed.
     pub scene: Scene,
-    /// Things imported with a caveat, or skipped.
-    pub warnings: Vec<String>,
+    /// The dialect read, and why.
+    pub dialect: Detected,
 }
 
-/// Converts parsed blocks, pushing every semantic error.
-pub fn convert(blocks: &[ParsedBlock], errors: &mut Vec<LegacyError>) -> Converted {
-    let mut converter = Converter::new(blocks, errors);
+/// Converts parsed blocks, pushing every semantic error and warning. `folder` is the
+/// scene file's folder, where `Mesh` files are looked for (none for text alone).
+pub fn convert(
+    blocks: &[ParsedBlock],
+    folder: Option<PathBuf>,
+    errors: &mut Diagnostics,
+) -> Converted {
+    let dialect = dialect::detect(blocks);
+    if dialect.dialect == Dialect::Framework2020
+        && let Some((line, what)) = dialect.signs_2016.first()
+    {
+        errors.warn(
+            *line,
+            format!(
+                "{what} belongs to the 2016 framework, but the file also has {} (line {}): \
+                 read as the 2020 framework's dialect (magenta default material)",
+                dialect.signs_2020[0].1, dialect.signs_2020[0].0
+            ),
+        );
+    }
+    let mut converter = Converter::new(blocks, dialect, folder, errors);
     for block in blocks {
         converter.block(block);
     }
@@ -46,8 +74,12 @@ pub fn convert(blocks: &[ParsedBlock], errors: &mut Vec<LegacyError>) -> Convert
 
 /// What the blocks read so far add up to.
 struct Converter<'e> {
-    errors: &'e mut Vec<LegacyError>,
-    warnings: Vec<String>,
+    errors: &'e mut Diagnostics,
+    /// The dialect read, and why.
+    dialect: Detected,
+    /// Where `Mesh` files are looked for.
+    folder: Option<PathBuf>,
+    samples_per_pixel: u32,
     /// First line where each material name is defined, for "used before" messages.
     first_definition: HashMap<String, usize>,
     render_size: (u32, u32),
@@ -67,7 +99,12 @@ struct Converter<'e> {
 }
 
 impl<'e> Converter<'e> {
-    fn new(blocks: &[ParsedBlock], errors: &'e mut Vec<LegacyError>) -> Self {
+    fn new(
+        blocks: &[ParsedBlock],
+        dialect: Detected,
+        folder: Option<PathBuf>,
+        errors: &'e mut Diagnostics,
+    ) -> Self {
         let mut first_definition = HashMap::new();
         for block in blocks {
             if let Block::Material { name, .. } = &block.block {
@@ -78,7 +115,9 @@ impl<'e> Converter<'e> {
         }
         Self {
             errors,
-            warnings: Vec::new(),
+            dialect,
+            folder,
+            samples_per_pixel: 1,
             first_definition,
             render_size: DEFAULT_RENDER_SIZE,
             background: DVec3::ZERO,
@@ -93,9 +132,8 @@ impl<'e> Converter<'e> {
         }
     }
 
-    fn warn(&mut self, line: usize, message: impl AsRef<str>) {
-        self.warnings
-            .push(format!("line {line}: {}", message.as_ref()));
+    fn warn(&mut self, line: usize, message: impl Into<String>) {
+        self.errors.warn(line, message);
     }
 
     fn block(&mut self, parsed: &ParsedBlock) {
@@ -111,9 +149,7 @@ impl<'e> Converter<'e> {
                 broken,
             } => self.light_block(*kind, settings, broken, &parsed.at),
             Block::Material { name, edits } => self.material_block(name, edits, &parsed.at),
-            Block::Object { kind, settings } => {
-                self.object_block(kind.clone(), settings, &parsed.at)
-            }
+            Block::Object(node) => self.object_block(node),
         }
     }
 
@@ -130,6 +166,8 @@ impl<'e> Converter<'e> {
                 }
                 // The legacy output file name; raylab names images when it renders.
                 SceneSetting::Filename(_) => {}
+                SceneSetting::SamplesPerPixel(samples) => self.samples_per_pixel = *samples,
+                SceneSetting::ScaleResolution(scale) => self.scale_resolution(*scale, &setting.at),
             }
         }
     }
@@ -152,6 +190,26 @@ impl<'e> Converter<'e> {
         MAX_DEPTH
     }
 
+    /// `scaleResolution s`: the size so far times s, truncated (a later `renderSize`
+    /// replaces it); kept within 1 ..= [`MAX_IMAGE_SIDE`], with a warning.
+    fn scale_resolution(&mut self, scale: f64, at: &At) {
+        let side = |side: u32| (f64::from(side) * scale).trunc();
+        let (width, height) = (side(self.render_size.0), side(self.render_size.1));
+        let limit = f64::from(MAX_IMAGE_SIDE);
+        if width < 1.0 || height < 1.0 || width > limit || height > limit {
+            self.warn(
+                at.line,
+                format!(
+                    "scaleResolution {scale} makes the image {width} x {height}; each side is \
+                     kept within 1 to {MAX_IMAGE_SIDE} pixels"
+                ),
+            );
+        }
+        // Clamped to the accepted range, so the conversion is exact.
+        let fit = |side: f64| side.clamp(1.0, limit) as u32;
+        self.render_size = (fit(width), fit(height));
+    }
+
     fn finish(mut self) -> Converted {
         let camera = self.camera();
         let (materials, objects) = self.materials_and_objects();
@@ -162,8 +220,8 @@ impl<'e> Converter<'e> {
             render: RenderSettings {
                 max_depth: self.ray_depth,
                 background: self.background,
-                samples_per_pixel: 1,
-                conventions: Default::default(),
+                samples_per_pixel: self.samples_per_pixel,
+                conventions: Conventions::COURSE,
             },
             materials,
             objects,
@@ -171,7 +229,7 @@ impl<'e> Converter<'e> {
         };
         Converted {
             scene,
-            warnings: self.warnings,
+            dialect: self.dialect,
         }
     }
 

@@ -1,6 +1,6 @@
 //! The Camera block: `Camera PinholeCamera F` and the camera's transforms.
 
-use super::super::error::LegacyError;
+use super::super::error::Diagnostics;
 use super::super::lexer::Token;
 use super::super::syntax::{Block, ParsedBlock};
 use super::entries::decode;
@@ -12,7 +12,7 @@ use super::{Header, at, error, header};
 pub(super) fn parse_camera(
     word: &Token<'_>,
     rest: &[Token<'_>],
-    errors: &mut Vec<LegacyError>,
+    errors: &mut Diagnostics,
 ) -> Option<ParsedBlock> {
     let header = header(word, rest, "a camera type: `PinholeCamera F`", errors)?;
     let known = header.kind.is("PinholeCamera");
@@ -37,7 +37,7 @@ pub(super) fn parse_camera(
     })
 }
 
-fn focal_length(header: &Header<'_, '_>, errors: &mut Vec<LegacyError>) -> Option<f64> {
+fn focal_length(header: &Header<'_, '_>, errors: &mut Diagnostics) -> Option<f64> {
     let [token] = header.numbers else {
         errors.push(error(
             &header.kind,

@@ -2,7 +2,7 @@
 //! tokens it takes. Unknown keywords are reported here, once each, and skipped with the
 //! numbers after them.
 
-use super::super::error::LegacyError;
+use super::super::error::{Diagnostics, LegacyError};
 use super::super::lexer::Token;
 use super::super::syntax::{At, Item};
 use super::values::looks_numeric;
@@ -29,6 +29,15 @@ pub(super) enum Word {
     Direction,
     Angle,
     Material,
+    Opacity,
+    RefractiveIndex,
+    DisableBoundingBox,
+    Supersampling,
+    Fsaa,
+    ScaleResolution,
+    RenderNormals,
+    Radius,
+    Samples,
 }
 
 impl Word {
@@ -53,6 +62,15 @@ impl Word {
             Word::Direction => "Direction",
             Word::Angle => "Angle",
             Word::Material => "Material",
+            Word::Opacity => "Opacity",
+            Word::RefractiveIndex => "RefractiveIndex",
+            Word::DisableBoundingBox => "DisableBoundingBox",
+            Word::Supersampling => "Supersampling",
+            Word::Fsaa => "FSAA",
+            Word::ScaleResolution => "scaleResolution",
+            Word::RenderNormals => "renderNormals",
+            Word::Radius => "Radius",
+            Word::Samples => "Samples",
         }
     }
 
@@ -74,6 +92,12 @@ impl Word {
             Word::Scale3 => "sx sy sz",
             Word::Specular => "R G B EXP",
             Word::Angle => "deg",
+            Word::Opacity => "a",
+            Word::RefractiveIndex => "n",
+            Word::DisableBoundingBox | Word::Supersampling | Word::RenderNormals => "",
+            Word::Fsaa | Word::Samples => "N",
+            Word::ScaleResolution => "s",
+            Word::Radius => "r",
         }
     }
 
@@ -106,37 +130,56 @@ fn item<T>(value: T, entry: &Entry<'_, '_>) -> Item<T> {
     }
 }
 
+/// The items that are there: keywords that are read but dropped (with a warning) are
+/// `None`.
+pub(super) fn present<T>(items: Vec<Item<Option<T>>>) -> Vec<Item<T>> {
+    items
+        .into_iter()
+        .filter_map(|item| item.value.map(|value| Item { value, at: item.at }))
+        .collect()
+}
+
 /// Decodes every entry of a block body with `decode_entry`, reporting errors in token
-/// order. Returns the decoded items and the keywords that failed (as the grammar spells
-/// them).
+/// order. An unknown keyword is skipped with a warning (with the numbers after it); a
+/// block word where a keyword should be is an error (a missing `End`). Returns the
+/// decoded items and the keywords that failed (as the grammar spells them).
 pub(super) fn decode<T>(
     body: &[Token<'_>],
     words: &[Word],
     block: &Token<'_>,
-    errors: &mut Vec<LegacyError>,
-    decode_entry: fn(&Entry<'_, '_>, &mut Vec<LegacyError>) -> Option<T>,
+    errors: &mut Diagnostics,
+    decode_entry: fn(&Entry<'_, '_>, &mut Diagnostics) -> Option<T>,
 ) -> (Vec<Item<T>>, Vec<String>) {
     let mut items = Vec::new();
     let mut broken = Vec::new();
-    for entry in entries(body, words, block) {
+    for entry in entries(body, words) {
         match entry {
             Ok(entry) => match decode_entry(&entry, errors) {
                 Some(value) => items.push(item(value, &entry)),
                 None => broken.push(entry.word.name().to_owned()),
             },
-            Err(error) => errors.push(error),
+            Err(token) if block_word(&token).is_some() => {
+                errors.push(unknown_keyword(&token, words, block));
+            }
+            Err(token) => {
+                let block_name = block_word(block).unwrap_or(block.text);
+                errors.warn(
+                    token.line,
+                    format!(
+                        "unknown keyword `{}` in this {block_name} block: skipped (with the \
+                         numbers after it)",
+                        token.text
+                    ),
+                );
+            }
         }
     }
     (items, broken)
 }
 
-/// Splits a block body into keyword entries, and errors for unknown keywords (which are
-/// skipped with the numbers after them).
-fn entries<'t, 'a>(
-    body: &'t [Token<'a>],
-    words: &[Word],
-    block: &Token<'_>,
-) -> Vec<Result<Entry<'t, 'a>, LegacyError>> {
+/// Splits a block body into keyword entries, and the tokens that are no keyword of this
+/// block (each skipped with the numbers after it).
+fn entries<'t, 'a>(body: &'t [Token<'a>], words: &[Word]) -> Vec<Result<Entry<'t, 'a>, Token<'a>>> {
     let mut out = Vec::new();
     let mut i = 0;
     while let Some(token) = body.get(i) {
@@ -146,7 +189,7 @@ fn entries<'t, 'a>(
         // type, takes the next token whatever it looks like.
         let takes_name = match word {
             Some(word) => word.takes_name(),
-            None => block_word(token).is_some_and(|w| w != "Scene"),
+            None => block_word(token).is_some_and(|w| !matches!(w, "Scene" | "ObjectGroup")),
         };
         if takes_name && j < body.len() {
             j += 1;
@@ -160,7 +203,7 @@ fn entries<'t, 'a>(
                 keyword: *token,
                 args: &body[i + 1..j],
             }),
-            None => Err(unknown_keyword(token, words, block)),
+            None => Err(*token),
         });
         i = j;
     }

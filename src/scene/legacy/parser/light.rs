@@ -1,16 +1,24 @@
 //! The Light block: `Light AmbientLight | PointLight | DirectionalLight | SpotLight` and
-//! its colour, location, direction and angle.
+//! its colour, location, direction and angle, and a sphere light's `Radius` and
+//! `Samples`.
 
-use super::super::error::LegacyError;
+use super::super::error::Diagnostics;
 use super::super::lexer::Token;
 use super::super::syntax::{Block, LightSetting, ParsedBlock};
 use super::entries::{Entry, Word, decode};
-use super::values::{colour, numbers, vector};
+use super::values::{capped_count, colour, numbers, vector};
 use super::{at, error, header, no_numbers};
-use crate::scene::{LightKind, MAX_SPOT_ANGLE_DEG};
+use crate::scene::{LightKind, MAX_LIGHT_SAMPLES, MAX_SPOT_ANGLE_DEG};
 
 /// The keywords of a Light block.
-const LIGHT_WORDS: &[Word] = &[Word::Colour, Word::Location, Word::Direction, Word::Angle];
+const LIGHT_WORDS: &[Word] = &[
+    Word::Colour,
+    Word::Location,
+    Word::Direction,
+    Word::Angle,
+    Word::Radius,
+    Word::Samples,
+];
 
 /// The type word of a light kind in legacy files: `PointLight` for `Point`.
 fn type_word(kind: LightKind) -> String {
@@ -21,7 +29,7 @@ fn type_word(kind: LightKind) -> String {
 pub(super) fn parse_light(
     word: &Token<'_>,
     rest: &[Token<'_>],
-    errors: &mut Vec<LegacyError>,
+    errors: &mut Diagnostics,
 ) -> Option<ParsedBlock> {
     let header = header(word, rest, "a light type, such as `PointLight`", errors)?;
     let kind = LightKind::ALL
@@ -46,7 +54,7 @@ pub(super) fn parse_light(
     })
 }
 
-fn light_setting(entry: &Entry<'_, '_>, errors: &mut Vec<LegacyError>) -> Option<LightSetting> {
+fn light_setting(entry: &Entry<'_, '_>, errors: &mut Diagnostics) -> Option<LightSetting> {
     match entry.word {
         Word::Colour => colour(entry, errors).map(LightSetting::Colour),
         Word::Location => vector(entry, errors).map(LightSetting::Location),
@@ -60,6 +68,25 @@ fn light_setting(entry: &Entry<'_, '_>, errors: &mut Vec<LegacyError>) -> Option
                 return None;
             }
             Some(LightSetting::Direction(direction))
+        }
+        Word::Radius => {
+            let v = numbers(entry, errors)?;
+            if v[0] < 0.0 {
+                errors.push(error(&entry.args[0], "a light's radius cannot be negative"));
+                return None;
+            }
+            Some(LightSetting::Radius(v[0]))
+        }
+        Word::Samples => {
+            let v = numbers(entry, errors)?;
+            capped_count(
+                &entry.args[0],
+                v[0],
+                MAX_LIGHT_SAMPLES,
+                "shadow rays",
+                errors,
+            )
+            .map(LightSetting::Samples)
         }
         _ => {
             let v = numbers(entry, errors)?;

@@ -1,14 +1,15 @@
 //! The Material block, `Material NAME`, and the material keywords it shares with objects
-//! (`Colour`, `Ambient`, `Diffuse`, `Specular`, `Mirror`).
+//! (`Colour`, `Ambient`, `Diffuse`, `Specular`, `Mirror`, `Opacity`, `RefractiveIndex`).
 
 use glam::DVec3;
 
-use super::super::error::LegacyError;
+use super::super::error::Diagnostics;
 use super::super::lexer::Token;
 use super::super::syntax::{Block, ParsedBlock, SurfaceEdit};
 use super::entries::{Entry, Word, decode};
 use super::values::{colour, non_negative, numbers};
 use super::{at, error, header, no_numbers};
+use crate::scene::MAX_IOR;
 
 /// The keywords of a Material block.
 const MATERIAL_WORDS: &[Word] = &[
@@ -17,13 +18,15 @@ const MATERIAL_WORDS: &[Word] = &[
     Word::Diffuse,
     Word::Specular,
     Word::Mirror,
+    Word::Opacity,
+    Word::RefractiveIndex,
 ];
 
 /// A Material block: the word `Material` and the tokens after it.
 pub(super) fn parse_material(
     word: &Token<'_>,
     rest: &[Token<'_>],
-    errors: &mut Vec<LegacyError>,
+    errors: &mut Diagnostics,
 ) -> Option<ParsedBlock> {
     let header = header(word, rest, "a name: `Material NAME`", errors)?;
     let numbers_ok = no_numbers(&header, errors);
@@ -39,15 +42,34 @@ pub(super) fn parse_material(
 }
 
 /// One material keyword, in a Material block or overriding an object's copy.
-pub(super) fn surface_edit(
-    entry: &Entry<'_, '_>,
-    errors: &mut Vec<LegacyError>,
-) -> Option<SurfaceEdit> {
+pub(super) fn surface_edit(entry: &Entry<'_, '_>, errors: &mut Diagnostics) -> Option<SurfaceEdit> {
     match entry.word {
         Word::Colour => colour(entry, errors).map(SurfaceEdit::Colour),
         Word::Ambient => colour(entry, errors).map(SurfaceEdit::Ambient),
         Word::Diffuse => colour(entry, errors).map(SurfaceEdit::Diffuse),
         Word::Mirror => colour(entry, errors).map(SurfaceEdit::Mirror),
+        Word::Opacity => {
+            let v = numbers(entry, errors)?;
+            if !(0.0..=1.0).contains(&v[0]) {
+                errors.push(error(
+                    &entry.args[0],
+                    "an opacity must be from 0 (clear) to 1 (opaque)",
+                ));
+                return None;
+            }
+            Some(SurfaceEdit::Opacity(v[0]))
+        }
+        Word::RefractiveIndex => {
+            let v = numbers(entry, errors)?;
+            if !(v[0] > 0.0 && v[0] <= MAX_IOR) {
+                errors.push(error(
+                    &entry.args[0],
+                    format!("a refractive index must be more than 0 and at most {MAX_IOR}"),
+                ));
+                return None;
+            }
+            Some(SurfaceEdit::RefractiveIndex(v[0]))
+        }
         _ => {
             let v = numbers(entry, errors)?;
             let mut ok = non_negative(entry, &v[..3], errors);

@@ -3,7 +3,7 @@
 
 use glam::DVec3;
 
-use super::super::error::LegacyError;
+use super::super::error::Diagnostics;
 use super::super::syntax::{Axis, TransformStep};
 use super::entries::{Entry, Word};
 use super::error;
@@ -16,7 +16,7 @@ pub(super) const TRANSFORM_WORDS: &[Word] =
 /// One transform keyword.
 pub(super) fn transform_step(
     entry: &Entry<'_, '_>,
-    errors: &mut Vec<LegacyError>,
+    errors: &mut Diagnostics,
 ) -> Option<TransformStep> {
     match entry.word {
         Word::Translate => vector(entry, errors).map(TransformStep::Translate),
@@ -33,7 +33,7 @@ pub(super) fn transform_step(
     }
 }
 
-fn non_zero_scales(entry: &Entry<'_, '_>, values: &[f64], errors: &mut Vec<LegacyError>) -> bool {
+fn non_zero_scales(entry: &Entry<'_, '_>, values: &[f64], errors: &mut Diagnostics) -> bool {
     let mut ok = true;
     for (value, token) in values.iter().zip(entry.args) {
         if *value == 0.0 {
@@ -47,7 +47,7 @@ fn non_zero_scales(entry: &Entry<'_, '_>, values: &[f64], errors: &mut Vec<Legac
     ok
 }
 
-fn rotate(entry: &Entry<'_, '_>, errors: &mut Vec<LegacyError>) -> Option<TransformStep> {
+fn rotate(entry: &Entry<'_, '_>, errors: &mut Diagnostics) -> Option<TransformStep> {
     let [axis_token, angle_token] = entry.args else {
         errors.push(error(
             &entry.keyword,

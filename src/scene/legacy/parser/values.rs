@@ -4,7 +4,7 @@
 
 use glam::DVec3;
 
-use super::super::error::LegacyError;
+use super::super::error::Diagnostics;
 use super::super::lexer::Token;
 use super::entries::Entry;
 use super::error;
@@ -32,7 +32,7 @@ fn parse_number(text: &str) -> Result<f64, &'static str> {
 }
 
 /// One token as a number, or an error at it.
-pub(super) fn number(token: &Token<'_>, errors: &mut Vec<LegacyError>) -> Option<f64> {
+pub(super) fn number(token: &Token<'_>, errors: &mut Diagnostics) -> Option<f64> {
     parse_number(token.text)
         .map_err(|message| errors.push(error(token, message)))
         .ok()
@@ -40,7 +40,7 @@ pub(super) fn number(token: &Token<'_>, errors: &mut Vec<LegacyError>) -> Option
 
 /// Checks the entry has as many arguments as its usage names and parses them all as
 /// numbers.
-pub(super) fn numbers(entry: &Entry<'_, '_>, errors: &mut Vec<LegacyError>) -> Option<Vec<f64>> {
+pub(super) fn numbers(entry: &Entry<'_, '_>, errors: &mut Diagnostics) -> Option<Vec<f64>> {
     let usage = entry.word.usage();
     let count = usage.split_whitespace().count();
     if entry.args.len() != count {
@@ -60,12 +60,12 @@ pub(super) fn numbers(entry: &Entry<'_, '_>, errors: &mut Vec<LegacyError>) -> O
 }
 
 /// Three numbers as a vector.
-pub(super) fn vector(entry: &Entry<'_, '_>, errors: &mut Vec<LegacyError>) -> Option<DVec3> {
+pub(super) fn vector(entry: &Entry<'_, '_>, errors: &mut Diagnostics) -> Option<DVec3> {
     numbers(entry, errors).map(|v| DVec3::new(v[0], v[1], v[2]))
 }
 
 /// A colour: three numbers, none negative.
-pub(super) fn colour(entry: &Entry<'_, '_>, errors: &mut Vec<LegacyError>) -> Option<DVec3> {
+pub(super) fn colour(entry: &Entry<'_, '_>, errors: &mut Diagnostics) -> Option<DVec3> {
     let value = vector(entry, errors)?;
     non_negative(entry, &value.to_array(), errors).then_some(value)
 }
@@ -75,7 +75,7 @@ pub(super) fn colour(entry: &Entry<'_, '_>, errors: &mut Vec<LegacyError>) -> Op
 pub(super) fn non_negative(
     entry: &Entry<'_, '_>,
     values: &[f64],
-    errors: &mut Vec<LegacyError>,
+    errors: &mut Diagnostics,
 ) -> bool {
     let mut ok = true;
     for (value, token) in values.iter().zip(entry.args) {
@@ -93,7 +93,7 @@ pub(super) fn whole(
     value: f64,
     range: std::ops::RangeInclusive<u32>,
     what: &str,
-    errors: &mut Vec<LegacyError>,
+    errors: &mut Diagnostics,
 ) -> Option<u32> {
     let in_range = value.fract() == 0.0
         && value >= f64::from(*range.start())
@@ -113,8 +113,35 @@ pub(super) fn whole(
     Some(value as u32)
 }
 
+/// A whole number of at least 1 (`Samples N`, `FSAA N`): above `max` it is capped, with
+/// a warning naming the token, as raylab takes at most `max` `what`.
+pub(super) fn capped_count(
+    token: &Token<'_>,
+    value: f64,
+    max: u32,
+    what: &str,
+    errors: &mut Diagnostics,
+) -> Option<u32> {
+    if !(value.fract() == 0.0 && value >= 1.0) {
+        errors.push(error(token, "a count must be a whole number, 1 or more"));
+        return None;
+    }
+    if value > f64::from(max) {
+        errors.warn(
+            token.line,
+            format!(
+                "`{}`: raylab takes at most {max} {what}, so it imports {max}",
+                token.text
+            ),
+        );
+        return Some(max);
+    }
+    // Whole and in 1..=max, so the conversion is exact.
+    Some(value as u32)
+}
+
 /// The single name token of `Material NAME` or `filename NAME`.
-pub(super) fn name(entry: &Entry<'_, '_>, errors: &mut Vec<LegacyError>) -> Option<String> {
+pub(super) fn name(entry: &Entry<'_, '_>, errors: &mut Diagnostics) -> Option<String> {
     if let [token] = entry.args {
         return Some(token.text.to_owned());
     }
