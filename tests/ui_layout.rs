@@ -150,3 +150,99 @@ fn a_light_marker_under_the_gizmo_buttons_does_not_take_their_presses() {
         "a press on the button neither drags the light nor orbits the camera"
     );
 }
+
+/// The inspector's left edge and the viewport's picture, where a person sees them.
+fn layout_marks(harness: &Harness<'_, EditorApp>) -> (f32, Rect) {
+    let inspector = harness.get_by_label("INSPECTOR").rect().min.x;
+    let picture = harness.get_by_label(VIEWPORT_LABEL).rect();
+    (inspector, picture)
+}
+
+#[test]
+fn selecting_anything_keeps_the_inspector_width_and_the_picture_still() {
+    for size in [Vec2::new(1280.0, 800.0), Vec2::new(900.0, 600.0)] {
+        let mut harness = editor_harness(EditorOptions::default(), size, 64);
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/more_shapes.ron");
+        harness.state_mut().push(Command::Open(path));
+        harness.run();
+        let before = layout_marks(&harness);
+        let scene = harness.state().scene().clone();
+        let mut selections = vec![Selection::Camera, Selection::Render];
+        selections.extend((0..scene.objects.len()).map(Selection::Object));
+        selections.extend((0..scene.lights.len()).map(Selection::Light));
+        selections.extend(scene.materials.keys().cloned().map(Selection::Material));
+        for selection in selections {
+            harness.state_mut().push(Command::Select(selection.clone()));
+            harness.run();
+            let now = layout_marks(&harness);
+            assert_eq!(
+                now.0, before.0,
+                "{size:?}: the inspector moved for {selection:?}"
+            );
+            assert_eq!(
+                now.1, before.1,
+                "{size:?}: the picture moved for {selection:?}"
+            );
+        }
+    }
+}
+
+/// At the usual window sizes (a narrower inspector than its default still scrolls
+/// sideways rather than widening: see the test above).
+#[test]
+fn every_inspector_field_fits_inside_the_panel() {
+    for size in [Vec2::new(1280.0, 800.0), Vec2::new(1100.0, 700.0)] {
+        let mut harness = editor_harness(EditorOptions::default(), size, 64);
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/more_shapes.ron");
+        harness.state_mut().push(Command::Open(path));
+        harness.run();
+        for selection in [Selection::Object(6), Selection::Render, Selection::Light(2)] {
+            harness.state_mut().push(Command::Select(selection.clone()));
+            harness.run();
+            let labels: Vec<String> = [
+                "ambient",
+                "diffuse",
+                "background",
+                "colour",
+                "translate",
+                "position",
+            ]
+            .iter()
+            .flat_map(|l| ["r", "g", "b", "x", "y", "z"].map(|c| format!("{l} {c}")))
+            .collect();
+            for label in &labels {
+                for node in harness.query_all_by_label(label) {
+                    let rect = node.rect();
+                    assert!(
+                        rect.max.x <= size.x - 4.0,
+                        "{size:?} {selection:?}: {label} ends at {} beyond the window",
+                        rect.max.x
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn a_huge_typed_value_shows_in_the_fields_width_and_moves_nothing() {
+    let mut harness = editor_harness(EditorOptions::default(), Vec2::new(1280.0, 800.0), 64);
+    harness
+        .state_mut()
+        .push(Command::Select(Selection::Object(1)));
+    harness.run();
+    let before = layout_marks(&harness);
+    let field = harness.get_by_label("translate x").rect();
+    harness
+        .get_by_label("translate x")
+        .set_value_accesskit(1e30);
+    harness.run();
+    harness.run();
+    assert_eq!(layout_marks(&harness), before, "the layout moved");
+    let after = harness.get_by_label("translate x").rect();
+    assert_eq!(after.width(), field.width(), "the field changed width");
+    // Selecting something else leaves the layout as it was, too.
+    harness.state_mut().push(Command::Select(Selection::Render));
+    harness.run();
+    assert_eq!(layout_marks(&harness), before);
+}

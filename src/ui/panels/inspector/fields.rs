@@ -25,7 +25,9 @@ pub(super) fn vec3_row_ui(ui: &mut Ui, label: &str, value: &mut DVec3, speed: f6
                 .zip([&mut value.x, &mut value.y, &mut value.z])
         {
             number_ui(ui, component, limits, Some(width), |drag| {
-                drag.speed(speed).prefix(format!("{axis} ")).suffix(suffix)
+                drag.speed(speed)
+                    .prefix(axis_prefix(axis, width))
+                    .suffix(suffix)
             })
             .accessible_name(format!("{label} {axis}"));
         }
@@ -33,10 +35,49 @@ pub(super) fn vec3_row_ui(ui: &mut Ui, label: &str, value: &mut DVec3, speed: f6
     ui.end_row();
 }
 
-/// The width of one of `count` fields sharing a row after `reserved` points.
+/// A field's "x " or "r " prefix, left out where the field is too narrow for it and its
+/// number (the row's order and the field's accessible name still say which it is), so a
+/// row never grows past the panel.
+fn axis_prefix(axis: &str, width: f32) -> String {
+    if width >= 58.0 {
+        format!("{axis} ")
+    } else {
+        String::new()
+    }
+}
+
+/// `value` in at most the characters a field `width` points wide has room for (beside
+/// its prefix, if it has one): up to three decimals, fewer where they do not fit, and
+/// scientific notation where even the whole number does not.
+fn fitted_number(value: f64, width: f32) -> String {
+    // About 7 points a character at the body size; the prefix ("x ") takes two.
+    let prefix = if width >= 58.0 { 2.0 } else { 0.0 };
+    let room = (((width - 10.0) / 7.0).floor() - prefix).max(4.0) as usize;
+    for decimals in (0..=3).rev() {
+        let text = format!("{value:.decimals$}");
+        if text.len() <= room {
+            // A tiny negative shown as zero is zero: no "-0.000".
+            let zero = text
+                .trim_start_matches('-')
+                .chars()
+                .all(|c| c == '0' || c == '.');
+            return if zero {
+                text.trim_start_matches('-').to_owned()
+            } else {
+                text
+            };
+        }
+    }
+    format!("{value:.0e}")
+}
+
+/// The width of one of `count` fields sharing a row after `reserved` points: what is
+/// left of the row, less a margin for the scroll bar that floats over the right edge,
+/// so the row fits in the panel (a row wider than the panel would be cut off).
 pub(super) fn field_width(ui: &Ui, count: usize, reserved: f32) -> f32 {
     let spacing = ui.spacing().item_spacing.x * (count as f32 - 1.0);
-    ((ui.available_width() - reserved - spacing) / count as f32).clamp(44.0, 96.0)
+    let margin = ui.spacing().scroll.bar_width + ui.spacing().item_spacing.x;
+    ((ui.available_width() - reserved - spacing - margin) / count as f32).clamp(34.0, 96.0)
 }
 
 /// A linear-RGB colour: a swatch plus the three numbers, which are authoritative. The
@@ -58,7 +99,7 @@ pub(super) fn colour_row_ui(ui: &mut Ui, label: &str, colour: &mut DVec3) {
                 .zip([&mut colour.x, &mut colour.y, &mut colour.z])
         {
             number_ui(ui, component, Limits::NON_NEGATIVE, Some(width), |drag| {
-                drag.speed(0.005).prefix(format!("{channel} "))
+                drag.speed(0.005).prefix(axis_prefix(channel, width))
             })
             .accessible_name(format!("{label} {channel}"));
         }
@@ -135,6 +176,12 @@ fn number_ui(
         .range(limits.range())
         .clamp_existing_to_range(false)
         .max_decimals(3);
+    // A fixed-width field shows what fits: fewer decimals, then scientific notation, so a
+    // huge or tiny value never widens it (the value itself is untouched).
+    let drag = match width {
+        Some(width) => drag.custom_formatter(move |v, _| fitted_number(v, width)),
+        None => drag,
+    };
     let drag = look(drag);
     let response = match width {
         Some(width) => ui.add_sized([width, ui.spacing().interact_size.y], drag),
@@ -147,4 +194,26 @@ fn number_ui(
         *value = taken;
     }
     response
+}
+
+#[cfg(test)]
+mod tests {
+    use super::fitted_number;
+
+    #[test]
+    fn numbers_fit_their_field_with_fewer_decimals_then_in_scientific_notation() {
+        assert_eq!(fitted_number(0.25, 96.0), "0.250");
+        assert_eq!(fitted_number(-1234.5678, 60.0), "-1235");
+        assert_eq!(fitted_number(1e30, 60.0), "1e30");
+        assert_eq!(fitted_number(-2.5e-7, 96.0), "0.000", "no negative zero");
+        for value in [1e30, -1e300, 123456789.0, 0.1, -0.5] {
+            for width in [34.0, 44.0, 60.0, 96.0] {
+                let room = (((width - 10.0) / 7.0_f32).floor()
+                    - if width >= 58.0 { 2.0 } else { 0.0 })
+                .max(4.0) as usize;
+                let text = fitted_number(value, width);
+                assert!(text.len() <= room.max(6), "{value} at {width}: {text}");
+            }
+        }
+    }
 }

@@ -23,7 +23,9 @@ pub fn inspector_ui(
     focus_name: &mut bool,
     commands: &mut Vec<Command>,
 ) {
-    egui::ScrollArea::vertical()
+    // Both ways: a row wider than the panel scrolls inside it rather than widening the
+    // panel, so selecting something never moves the picture under the cursor.
+    egui::ScrollArea::both()
         .auto_shrink([false, false])
         .show(ui, |ui| match selection {
             Selection::None => {
