@@ -69,7 +69,10 @@ fn save_then_open_round_trips_and_clears_the_unsaved_marker() {
     assert_eq!(harness.state().path(), Some(path.as_path()));
     assert_eq!(harness.state().title(), "edited.ron — raylab");
     assert_eq!(&load_scene(&path).unwrap(), harness.state().scene());
-    assert_eq!(&open_scene(&path).unwrap(), harness.state().scene());
+    let Ok(raylab::ui::files::Opened::Scene(opened)) = open_scene(&path) else {
+        panic!("a saved scene opens as a scene");
+    };
+    assert_eq!(opened.as_ref(), harness.state().scene());
     assert_eq!(
         harness.state().recent().paths()[0],
         std::fs::canonicalize(&path).unwrap()
@@ -290,4 +293,36 @@ fn a_recent_file_that_fails_to_open_stays_in_the_list_marked() {
     harness.run();
     assert_eq!(harness.state().scene(), &new_scene());
     assert!(!harness.state().recent().has_failed(&listed));
+}
+
+#[test]
+fn open_on_a_course_text_scene_imports_it_and_other_files_get_a_plain_message() {
+    // Ctrl+O, as a newcomer does, on the course's .txt (and on one renamed .scene: the
+    // content decides, not the name).
+    let source = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/legacy/full.txt");
+    let imported = raylab::scene::legacy::import_legacy_file(&source).unwrap();
+    let dir = temp_dir("open_txt");
+    let renamed = dir.join("full.scene");
+    std::fs::copy(&source, &renamed).unwrap();
+    for path in [source.clone(), renamed] {
+        let mut harness = harness();
+        harness.state_mut().push(Command::Open(path.clone()));
+        harness.run();
+        assert_eq!(harness.state().error(), None);
+        assert_eq!(harness.state().scene().objects, imported.scene.objects);
+        harness.get_by_label_contains("(not saved yet)");
+    }
+    // A README is neither: the message says what raylab opens, not a parser's words alone.
+    let readme = dir.join("README.md");
+    std::fs::write(&readme, "# My tracer\n\nRun make, then ./ray scene.txt\n").unwrap();
+    let mut harness = harness();
+    harness.state_mut().push(Command::Open(readme));
+    harness.run();
+    let error = harness
+        .state()
+        .error()
+        .expect("an error is shown")
+        .to_owned();
+    assert!(error.contains("is not a scene raylab can open"), "{error}");
+    assert!(error.contains("File > Import Legacy"), "{error}");
 }

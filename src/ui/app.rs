@@ -78,6 +78,9 @@ pub struct EditorApp {
     /// unsaved-changes question of an untitled scene).
     after_save: Option<DiscardAction>,
     file_dialogs: FileDialogs,
+    /// The folder of the last file picked in a dialog: the next dialog starts there when
+    /// the scene has no file of its own (an import, a new scene).
+    last_folder: Option<std::path::PathBuf>,
     error: Option<String>,
     /// Something the user should know that is not a failure (an import's warnings).
     warning: Option<String>,
@@ -118,6 +121,7 @@ impl EditorApp {
             pending: None,
             after_save: None,
             file_dialogs: FileDialogs::new(options.native_dialogs.resolve(), options.dialog_folder),
+            last_folder: None,
             error: None,
             warning: None,
             message: None,

@@ -64,6 +64,38 @@ impl LegacyImport {
     }
 }
 
+/// Whether `text` reads like a course scene rather than a RON one: its first line that
+/// is neither blank nor a comment starts with one of the course format's block words
+/// (`Scene`, `Camera`, `Light`, `Material`, `Object`, `CSG`, `ObjectGroup`, in any case,
+/// as the 2016 framework upper-cases lines) followed by a space or the line's end, not
+/// by a parenthesis as RON's `Scene(` is. Decides by content, whatever the file's name.
+#[must_use]
+pub fn looks_like_legacy(text: &str) -> bool {
+    const BLOCKS: [&str; 7] = [
+        "scene",
+        "camera",
+        "light",
+        "material",
+        "object",
+        "csg",
+        "objectgroup",
+    ];
+    let Some(line) = text
+        .lines()
+        .map(str::trim)
+        .find(|l| !l.is_empty() && !l.starts_with('#') && !l.starts_with("//"))
+    else {
+        return false;
+    };
+    let word = line
+        .split(|c: char| c.is_whitespace() || c == '(')
+        .next()
+        .unwrap_or("");
+    let after = &line[word.len()..];
+    BLOCKS.contains(&word.to_ascii_lowercase().as_str())
+        && (after.is_empty() || after.starts_with(char::is_whitespace))
+}
+
 /// Imports legacy scene text. `Mesh` paths are kept as written (there is no folder to
 /// look in); [`import_legacy_file`] checks them.
 ///
@@ -119,4 +151,25 @@ pub fn import_legacy_file(path: &Path) -> Result<LegacyImport, LegacyImportFileE
         path: path.to_owned(),
         errors,
     })
+}
+
+#[cfg(test)]
+mod sniff_tests {
+    use super::looks_like_legacy;
+
+    #[test]
+    fn course_scenes_are_told_from_ron_ones_by_their_first_word() {
+        assert!(looks_like_legacy(
+            "# a comment\n\nScene\n  renderSize 80 60\nEnd\n"
+        ));
+        assert!(looks_like_legacy("OBJECT SPHERE\nEND"));
+        assert!(looks_like_legacy("Camera PinholeCamera 1\nEnd"));
+        assert!(!looks_like_legacy("// RON\nScene(\n  camera: (),\n)"));
+        assert!(!looks_like_legacy("(camera: ())"));
+        assert!(!looks_like_legacy(
+            "# raylab\n\nThis README explains the scenes."
+        ));
+        assert!(!looks_like_legacy(""));
+        assert!(!looks_like_legacy("Scenery is nice"));
+    }
 }

@@ -80,7 +80,8 @@ impl EditorApp {
                 .as_deref()
                 .and_then(Path::parent)
                 .map(Path::to_owned)
-        });
+        })
+        .or_else(|| self.last_folder.clone());
         let name = match purpose {
             DialogPurpose::ExportPng => PathBuf::from(self.export.path.trim())
                 .file_name()
@@ -109,7 +110,10 @@ impl EditorApp {
             None
         };
         let path = match outcome {
-            DialogOutcome::Picked(path) => path,
+            DialogOutcome::Picked(path) => {
+                self.last_folder = path.parent().map(Path::to_owned);
+                path
+            }
             DialogOutcome::Cancelled => return,
             DialogOutcome::Failed(error) => {
                 self.error = Some(format!("the file dialog failed: {error}"));
@@ -141,8 +145,9 @@ impl EditorApp {
     /// Opens a scene file; on failure the error is shown and the scene stays as it was.
     pub(super) fn open(&mut self, path: &Path) {
         match files::open_scene(path) {
-            Ok(scene) => {
-                self.replace_scene(scene, Some(path.to_owned()));
+            Ok(files::Opened::Legacy) => self.import(path),
+            Ok(files::Opened::Scene(scene)) => {
+                self.replace_scene(*scene, Some(path.to_owned()));
                 self.recent.push(path);
                 self.message = Some(format!("Opened {}", path.display()));
             }

@@ -34,10 +34,11 @@ impl DialogPurpose {
     #[must_use]
     pub fn title(self) -> &'static str {
         match self {
-            DialogPurpose::OpenScene => "Open scene",
-            DialogPurpose::SaveSceneAs => "Save scene as",
+            // The titles of filtered dialogs say what they show.
+            DialogPurpose::OpenScene => "Open scene (.ron, or a course .txt)",
+            DialogPurpose::SaveSceneAs => "Save scene as (.ron)",
             DialogPurpose::ImportLegacy => "Import legacy scene",
-            DialogPurpose::ExportPng => "Export PNG to",
+            DialogPurpose::ExportPng => "Export PNG to (.png)",
             DialogPurpose::CompareImage => "Compare with image",
         }
     }
@@ -48,11 +49,12 @@ impl DialogPurpose {
         matches!(self, DialogPurpose::SaveSceneAs | DialogPurpose::ExportPng)
     }
 
-    /// The filter's name and extension, if the dialog shows one kind of file.
-    fn filter(self) -> Option<(&'static str, &'static str)> {
+    /// The filter's name and extensions, if the dialog shows some kinds of file only.
+    fn filter(self) -> Option<(&'static str, &'static [&'static str])> {
         match self {
-            DialogPurpose::OpenScene | DialogPurpose::SaveSceneAs => Some(("raylab scene", "ron")),
-            DialogPurpose::ExportPng => Some(("PNG image", "png")),
+            DialogPurpose::OpenScene => Some(("raylab or course scene", &["ron", "txt"])),
+            DialogPurpose::SaveSceneAs => Some(("raylab scene", &["ron"])),
+            DialogPurpose::ExportPng => Some(("PNG image", &["png"])),
             DialogPurpose::ImportLegacy | DialogPurpose::CompareImage => None,
         }
     }
@@ -234,10 +236,10 @@ fn in_app_dialog(
         .default_size(size.min(egui::vec2(560.0, 460.0)))
         .anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO)
         .keep_on_top(true);
-    if let Some((_, extension)) = purpose.filter() {
+    if let Some((_, extensions)) = purpose.filter() {
         dialog = dialog.show_files_filter(Box::new(move |path: &Path| {
             path.extension()
-                .is_some_and(|e| e.eq_ignore_ascii_case(extension))
+                .is_some_and(|e| extensions.iter().any(|x| e.eq_ignore_ascii_case(x)))
         }));
     }
     dialog.open();
@@ -251,8 +253,8 @@ pub fn rfd_dialog(request: &DialogRequest) -> PathFuture {
     let mut dialog = rfd::AsyncFileDialog::new()
         .set_title(purpose.title())
         .set_directory(&request.folder);
-    if let Some((name, extension)) = purpose.filter() {
-        dialog = dialog.add_filter(name, &[extension]);
+    if let Some((name, extensions)) = purpose.filter() {
+        dialog = dialog.add_filter(name, extensions);
     }
     let answer: Pin<Box<dyn Future<Output = Option<rfd::FileHandle>> + Send>> = if purpose.is_save()
     {

@@ -35,13 +35,43 @@ pub fn new_scene() -> Scene {
     scene
 }
 
-/// Loads a scene file; the message names the file and, for syntax errors, the line and
-/// column.
+/// What a file opened with File > Open holds.
+#[derive(Debug)]
+pub enum Opened {
+    /// A RON scene.
+    Scene(Box<Scene>),
+    /// A course text scene (told by its content, whatever its name), to import.
+    Legacy,
+}
+
+/// Loads a scene file, or recognises a course text scene to import; the message names
+/// the file and, for syntax errors, the line and column, and says what raylab opens.
 ///
 /// # Errors
 /// The file cannot be read, is not a scene, or describes an impossible scene.
-pub fn open_scene(path: &Path) -> Result<Scene, String> {
-    load_scene(path).map_err(|e| format!("{}: {e}", path.display()))
+pub fn open_scene(path: &Path) -> Result<Opened, String> {
+    let text = crate::scene::read_text_file(path);
+    if let Ok(text) = &text
+        && crate::scene::legacy::looks_like_legacy(text)
+    {
+        return Ok(Opened::Legacy);
+    }
+    load_scene(path)
+        .map(|s| Opened::Scene(Box::new(s)))
+        .map_err(|e| {
+            let looks_like_ron = text.as_ref().is_ok_and(|t| {
+                t.trim_start().starts_with("Scene(") || t.trim_start().starts_with("//")
+            });
+            if looks_like_ron {
+                format!("{}: {e}", path.display())
+            } else {
+                format!(
+                    "{} is not a scene raylab can open: {e}. File > Open takes raylab scenes \
+                 (.ron) and the course's text scenes; File > Import Legacy takes the latter too",
+                    path.display()
+                )
+            }
+        })
 }
 
 /// Saves a scene atomically (a temporary file renamed over the target).
