@@ -246,3 +246,32 @@ fn a_huge_typed_value_shows_in_the_fields_width_and_moves_nothing() {
     harness.run();
     assert_eq!(layout_marks(&harness), before);
 }
+
+#[test]
+fn the_debug_views_carry_a_legend_and_the_lit_picture_none() {
+    let mut harness = harness();
+    harness.run();
+    assert!(harness.query_by_label_contains("depth: near").is_none());
+    let first = harness.state().scene().objects[0].name.clone();
+    let named_before = harness.get_all_by_label(&first).count();
+    for (view, line) in [
+        (View::Depth, "depth: near"),
+        (View::ObjectId, "object id: a flat colour per object"),
+        (View::Normal, "+x red, +y green, +z blue"),
+        (View::ShadowMask, "shadow mask: the share of facing lights"),
+    ] {
+        harness.get_by_label("view").click();
+        harness.run();
+        let label = format!("view {}", raylab::ui::state::view_label(view));
+        harness.get_by_label(&label).click();
+        harness.run();
+        assert_eq!(harness.state().preview_settings().view, view);
+        harness.get_by_label_contains(line);
+    }
+    // The object-id legend names the scene's objects.
+    harness.get_by_label("view").click();
+    harness.run();
+    harness.get_by_label("view object id").click();
+    harness.run();
+    assert_eq!(harness.get_all_by_label(&first).count(), named_before + 1);
+}

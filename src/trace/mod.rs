@@ -44,7 +44,7 @@ pub use render::{
 pub use reshade::{HitCache, MAX_CACHE_BYTES, RetraceReason, Reuse, cache_fits};
 pub use shade::{
     LightOutcome, LightRecord, LightSkip, LocalLight, NoRecorder, Recorder, ShadowRay,
-    SkippedLight, Tracer, phong_power,
+    SkippedLight, Tracer, object_id_colour, phong_power,
 };
 pub use shapes::{MeshStore, TriangleHit, TriangleMesh};
 pub use terms::{Isolation, Term, TermSwitches, View};

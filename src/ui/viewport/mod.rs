@@ -8,6 +8,7 @@ mod clicks;
 pub mod convergence_plot;
 pub mod full_picture_marker;
 pub mod isolation_memory;
+mod legend;
 mod marks;
 pub mod pick_link;
 pub mod picture;

@@ -108,6 +108,8 @@ pub fn viewport_ui(
     }
     selection_marker(&painter, &view, scene, input.selection);
     full_picture_marker_ui(ui, picture, &input.settings.not_full_picture_reasons());
+    let shown_view = input.settings.switches.shown_view(input.settings.view);
+    super::legend::view_legend_ui(ui, picture, shown_view, scene);
     if response.hovered() {
         ui.ctx().set_cursor_icon(egui::CursorIcon::Crosshair);
     }

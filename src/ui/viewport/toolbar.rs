@@ -131,7 +131,7 @@ fn terms_ui(ui: &mut egui::Ui, settings: &mut PreviewSettings) {
         };
         if ui
             .toggle_value(&mut on, text)
-            .on_hover_text(format!("Switch the {term} term on or off"))
+            .on_hover_text(term_tooltip(term))
             .changed()
         {
             settings.switches.set(term, on);
@@ -146,6 +146,7 @@ fn terms_ui(ui: &mut egui::Ui, settings: &mut PreviewSettings) {
                 .accessible_name("solo none");
             for term in Term::ALL {
                 ui.selectable_value(&mut settings.switches.solo, Some(term), term.name())
+                    .on_hover_text(solo_tooltip(term))
                     .accessible_name(format!("solo {term}"));
             }
         })
@@ -162,9 +163,76 @@ fn view_ui(ui: &mut egui::Ui, settings: &mut PreviewSettings) {
         .show_ui(ui, |ui| {
             for view in View::ALL {
                 ui.selectable_value(&mut settings.view, view, view_label(view))
+                    .on_hover_text(view_tooltip(view))
                     .accessible_name(format!("view {}", view_label(view)));
             }
         })
         .response
+        .on_hover_text(view_tooltip(settings.view))
         .accessible_name("view");
+}
+
+/// What the picture shows with `term` switched off, in one line.
+#[must_use]
+pub fn term_tooltip(term: Term) -> &'static str {
+    match term {
+        Term::Ambient => "Off: no ka x ambient light; unlit sides and shadows go black",
+        Term::Diffuse => "Off: no kd L max(0, n.l); only highlights, ambient and mirrors remain",
+        Term::Specular => "Off: no Phong highlights (ks L max(0, r.v)^s); matte surfaces only",
+        Term::Shadows => "Off: no shadow rays; every light reaches every point it faces",
+        Term::Reflection => "Off: no mirror rays; mirrors show only their own colour",
+    }
+}
+
+/// What soloing `term` shows, in one line.
+#[must_use]
+pub fn solo_tooltip(term: Term) -> &'static str {
+    match term {
+        Term::Ambient => "Only ka x ambient light (and the background)",
+        Term::Diffuse => "Only the diffuse term of every light, shadows included",
+        Term::Specular => "Only the highlights of every light, shadows included",
+        Term::Shadows => {
+            "The shadow mask: the share of facing lights that reach each point (white: all); \
+             the same picture as the shadow-mask view, kept here beside the other terms"
+        }
+        Term::Reflection => "Only what mirrors add: km x the reflected colour",
+    }
+}
+
+/// What `view` shows, in one line.
+#[must_use]
+pub fn view_tooltip(view: View) -> &'static str {
+    match view {
+        View::Beauty => "The lit picture, with the term switches above",
+        View::Normal => "The shading normal as colour: (n + 1) / 2, so +x red, +y green, +z blue",
+        View::Depth => {
+            "Distance from the eye: white near, black far; mid-grey at the camera's distance to its target"
+        }
+        View::ObjectId => "A flat colour per object: where one object ends and another begins",
+        View::ShadowMask => {
+            "The share of facing lights that reach each point: white all, black none"
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_control_says_what_the_picture_will_show_and_the_duplicate_is_explained() {
+        let terms: Vec<&str> = Term::ALL.into_iter().map(term_tooltip).collect();
+        let solos: Vec<&str> = Term::ALL.into_iter().map(solo_tooltip).collect();
+        let views: Vec<&str> = View::ALL.into_iter().map(view_tooltip).collect();
+        for lines in [&terms, &solos, &views] {
+            for (i, a) in lines.iter().enumerate() {
+                assert!(
+                    !a.contains("on or off"),
+                    "{a}: says what it shows, not what it is"
+                );
+                assert!(lines[i + 1..].iter().all(|b| a != b));
+            }
+        }
+        assert!(solo_tooltip(Term::Shadows).contains("same picture as the shadow-mask view"));
+    }
 }
