@@ -173,3 +173,34 @@ fn a_field_takes_values_beyond_its_drag_range_and_refuses_what_the_validator_ref
     );
     raylab::scene::validate(harness.state().scene()).unwrap();
 }
+
+/// Types `text` into the number field `label` as a person does: click (the field turns
+/// into a text box), select all, type, Enter.
+fn type_into(harness: &mut Harness<'_, EditorApp>, label: &str, text: &str) {
+    harness.get_by_label(label).click();
+    harness.run();
+    harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    harness.get_by_label(label).type_text(text);
+    harness.run();
+    harness.key_press(egui::Key::Enter);
+    harness.run();
+}
+
+#[test]
+fn a_typed_value_the_field_does_not_take_is_said_in_the_status_line() {
+    let mut harness = editor_harness(EditorOptions::default(), Vec2::new(1280.0, 800.0), 64);
+    harness.get_by_label("red ball").click();
+    harness.run();
+    let before = harness.state().scene().clone();
+    type_into(&mut harness, "scale x", "nan");
+    assert_eq!(harness.state().scene(), &before, "NaN is not taken");
+    // The status line says so.
+    harness.get_by_label_contains("is not a finite number: the field keeps");
+    type_into(&mut harness, "scale x", "0");
+    harness.get_by_label_contains("0 is not taken here (not 0)");
+    assert_eq!(
+        harness.state().scene(),
+        &before,
+        "a zero scale is not taken"
+    );
+}

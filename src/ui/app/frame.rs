@@ -7,7 +7,7 @@ use crate::ui::document::confirm::{DiscardAction, discard_modal};
 use crate::ui::document::export::ViewportLook;
 use crate::ui::document::export_window::export_window;
 use crate::ui::document::files;
-use crate::ui::panels::inspector::inspector_ui;
+use crate::ui::panels::inspector::{inspector_ui, take_field_notice};
 use crate::ui::panels::menu::{MenuState, menu_ui};
 use crate::ui::panels::notices::{Tone, notice_ui};
 use crate::ui::panels::outliner::outliner_ui;
@@ -199,6 +199,10 @@ impl EditorApp {
                 );
                 // A rename asked for an item without a name field: forget it.
                 self.focus_name = false;
+                // A typed value the field did not take as typed is said, not dropped.
+                if let Some(notice) = take_field_notice(ui.ctx()) {
+                    self.message = Some(notice);
+                }
             });
         egui::CentralPanel::no_frame().show(ui, |ui| {
             if self.compare.is_showing() {

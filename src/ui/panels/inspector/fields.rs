@@ -6,6 +6,7 @@
 //! A value outside a field's drag range (a mirror's negative scale, a 720° rotation, an
 //! HDR colour) is shown as it is, never clamped.
 
+use std::cell::Cell;
 use std::ops::RangeInclusive;
 
 use egui::{DragValue, Response, Ui};
@@ -172,10 +173,21 @@ fn number_ui(
     look: impl FnOnce(DragValue<'_>) -> DragValue<'_>,
 ) -> Response {
     let mut shown = *value;
+    // What the user typed, before the field holds it to its range: a value refused or
+    // held is then said, not dropped in silence.
+    let typed: Cell<Option<Result<f64, String>>> = Cell::new(None);
     let drag = DragValue::new(&mut shown)
         .range(limits.range())
         .clamp_existing_to_range(false)
-        .max_decimals(3);
+        .max_decimals(3)
+        .custom_parser(|text| {
+            let parsed = text
+                .trim()
+                .parse::<f64>()
+                .map_err(|_| text.trim().to_owned());
+            typed.set(Some(parsed.clone()));
+            parsed.ok().filter(|v| v.is_finite())
+        });
     // A fixed-width field shows what fits: fewer decimals, then scientific notation, so a
     // huge or tiny value never widens it (the value itself is untouched).
     let drag = match width {
@@ -187,6 +199,9 @@ fn number_ui(
         Some(width) => ui.add_sized([width, ui.spacing().interact_size.y], drag),
         None => ui.add(drag),
     };
+    if let Some(typed) = typed.take() {
+        notice_typed(ui.ctx(), typed, *value, limits);
+    }
     if response.changed()
         && shown != *value
         && let Some(taken) = limits.take(shown)
@@ -194,6 +209,47 @@ fn number_ui(
         *value = taken;
     }
     response
+}
+
+/// Where a field leaves its notice for the status line (see [`take_field_notice`]).
+fn notice_id() -> egui::Id {
+    egui::Id::unique("raylab inspector field notice")
+}
+
+/// Says what became of a typed value the field did not take as typed: not a number,
+/// not finite, held to the field's range, or refused inside it.
+fn notice_typed(ctx: &egui::Context, typed: Result<f64, String>, kept: f64, limits: Limits) {
+    let notice = match typed {
+        Err(text) => Some(format!(
+            "\u{201c}{text}\u{201d} is not a number: the field keeps {kept}"
+        )),
+        Ok(v) if !v.is_finite() => Some(format!(
+            "{v} is not a finite number: the field keeps {kept}"
+        )),
+        Ok(v) => {
+            let held = v.clamp(limits.min, limits.max);
+            match limits.take(v) {
+                None => Some(format!(
+                    "{v} is not taken here ({}): the field keeps {kept}",
+                    limits.describe()
+                )),
+                Some(_) if held != v => Some(format!(
+                    "{v} is outside what this field takes ({}): held to {held}",
+                    limits.describe()
+                )),
+                Some(_) => None,
+            }
+        }
+    };
+    if let Some(notice) = notice {
+        ctx.data_mut(|d| d.insert_temp(notice_id(), notice));
+    }
+}
+
+/// The notice a field left this frame, if any: the app shows it in the status line.
+#[must_use]
+pub fn take_field_notice(ctx: &egui::Context) -> Option<String> {
+    ctx.data_mut(|d| d.remove_temp::<String>(notice_id()))
 }
 
 #[cfg(test)]

@@ -51,6 +51,34 @@ impl Limits {
         self.min..=self.max
     }
 
+    /// The numbers taken, in words: "above 0, at most 1", "any number but 0".
+    #[must_use]
+    pub fn describe(self) -> String {
+        let mut parts = Vec::new();
+        if self.min.is_finite() {
+            parts.push(if self.min_open {
+                format!("above {}", self.min)
+            } else {
+                format!("at least {}", self.min)
+            });
+        }
+        if self.max.is_finite() {
+            parts.push(if self.max_open {
+                format!("below {}", self.max)
+            } else {
+                format!("at most {}", self.max)
+            });
+        }
+        if self.nonzero {
+            parts.push("not 0".to_owned());
+        }
+        if parts.is_empty() {
+            "any finite number".to_owned()
+        } else {
+            parts.join(", ")
+        }
+    }
+
     /// What a user's gesture that produced `value` sets: held to the range, `None` when
     /// the validator would refuse it (the field then keeps its value).
     #[must_use]

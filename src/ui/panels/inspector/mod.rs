@@ -3,6 +3,7 @@
 
 mod camera;
 mod fields;
+pub use fields::take_field_notice;
 mod light;
 mod limits;
 mod material;
