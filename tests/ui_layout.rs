@@ -241,6 +241,7 @@ fn a_huge_typed_value_shows_in_the_fields_width_and_moves_nothing() {
     assert_eq!(layout_marks(&harness), before, "the layout moved");
     let after = harness.get_by_label("translate x").rect();
     assert_eq!(after.width(), field.width(), "the field changed width");
+    // Typed, it is also taken with a warning: see ui_showing.rs.
     // Selecting something else leaves the layout as it was, too.
     harness.state_mut().push(Command::Select(Selection::Render));
     harness.run();

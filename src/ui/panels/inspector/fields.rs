@@ -211,6 +211,10 @@ fn number_ui(
     response
 }
 
+/// Past this a value is taken with a warning: far beyond the scales and offsets the
+/// tracer is tested at (docs/NUMERICS.md).
+const FAR_VALUE: f64 = 1e9;
+
 /// Where a field leaves its notice for the status line (see [`take_field_notice`]).
 fn notice_id() -> egui::Id {
     egui::Id::unique("raylab inspector field notice")
@@ -236,6 +240,12 @@ fn notice_typed(ctx: &egui::Context, typed: Result<f64, String>, kept: f64, limi
                 Some(_) if held != v => Some(format!(
                     "{v} is outside what this field takes ({}): held to {held}",
                     limits.describe()
+                )),
+                // Taken, but far past the scales the tracer is tested at (1e-3 to 1e5,
+                // offsets to 1e6): say so rather than let the picture go blank unexplained.
+                Some(taken) if taken.abs() > FAR_VALUE => Some(format!(
+                    "{taken:e} is taken, but it is far beyond the sizes raylab renders \
+                     reliably (up to about 1e9): the picture may show nothing of it"
                 )),
                 Some(_) => None,
             }
