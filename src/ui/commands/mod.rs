@@ -28,7 +28,7 @@ pub enum Selection {
 }
 
 pub use crate::scene::LightKind;
-pub use scene_edit::{repair_selection, unique_name};
+pub use scene_edit::{material_users, repair_selection, unique_name};
 
 /// A change to the scene (and the selection that follows it).
 #[derive(Clone, Debug, PartialEq)]
@@ -55,6 +55,9 @@ pub enum SceneEdit {
     SetRender(RenderSettings),
     /// Replaces a material's values.
     SetMaterial(String, Material),
+    /// Gives an object its own copy of the material it shares with others, named after
+    /// both ("gold (flat ring)"), so editing it changes only that object.
+    MakeMaterialUnique(usize),
     /// Renames a material and every reference to it.
     RenameMaterial {
         /// The current name.
@@ -68,7 +71,10 @@ impl SceneEdit {
     /// Whether the edit names an object or light by its index.
     #[must_use]
     pub fn is_by_index(&self) -> bool {
-        matches!(self, SceneEdit::SetObject(..) | SceneEdit::SetLight(..))
+        matches!(
+            self,
+            SceneEdit::SetObject(..) | SceneEdit::SetLight(..) | SceneEdit::MakeMaterialUnique(_)
+        )
     }
 }
 

@@ -48,6 +48,18 @@ impl SceneEdit {
             SceneEdit::SetMaterial(name, material) => {
                 *scene.materials.get_mut(&name).ok_or("no such material")? = material;
             }
+            SceneEdit::MakeMaterialUnique(index) => {
+                let object = scene.objects.get(index).ok_or("no such object")?;
+                let material = scene
+                    .materials
+                    .get(&object.material)
+                    .ok_or("the object has no material of its own to copy")?
+                    .clone();
+                let wanted = format!("{} ({})", object.material, object.name);
+                let name = unique_name(&wanted, scene.materials.keys());
+                scene.materials.insert(name.clone(), material);
+                scene.objects[index].material = name;
+            }
             SceneEdit::RenameMaterial { from, to } => {
                 rename_material(scene, &from, &to)?;
                 *selection = Selection::Material(to);
@@ -55,6 +67,18 @@ impl SceneEdit {
         }
         Ok(())
     }
+}
+
+/// How many objects (children and operands included) name `material`.
+#[must_use]
+pub fn material_users(scene: &Scene, material: &str) -> usize {
+    fn count(objects: &[Object], material: &str) -> usize {
+        objects
+            .iter()
+            .map(|o| usize::from(o.material == material) + count(o.shape.children(), material))
+            .sum()
+    }
+    count(&scene.objects, material)
 }
 
 /// Drops a selection that no longer points at anything (after undo, open, delete).

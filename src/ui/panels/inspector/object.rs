@@ -76,6 +76,7 @@ pub(super) fn object_ui(
     // The material's values right here, since that is what one tunes next.
     if let Some(material) = scene.materials.get(&object.material) {
         ui.add_space(6.0);
+        shared_material_ui(ui, scene, index, &object.material, commands);
         egui::CollapsingHeader::new(
             egui::RichText::new(format!("Material \u{201c}{}\u{201d}", object.material)).strong(),
         )
@@ -141,6 +142,36 @@ pub(super) fn transform_ui(ui: &mut Ui, transform: &mut Transform) {
             }
         }
     }
+}
+
+/// Where the material is shared, says so (an edit here changes every object using it)
+/// and offers this object a copy of its own.
+fn shared_material_ui(
+    ui: &mut Ui,
+    scene: &Scene,
+    index: usize,
+    material: &str,
+    commands: &mut Vec<Command>,
+) {
+    let users = crate::ui::commands::material_users(scene, material);
+    if users < 2 {
+        return;
+    }
+    ui.horizontal(|ui| {
+        ui.label(
+            egui::RichText::new(format!(
+                "\u{201c}{material}\u{201d} is shared by {users} objects"
+            ))
+            .color(crate::ui::style::ACCENT),
+        );
+        if ui
+            .button("Make unique")
+            .on_hover_text("Give this object its own copy, so edits below change only it")
+            .clicked()
+        {
+            commands.push(Command::Edit(SceneEdit::MakeMaterialUnique(index)));
+        }
+    });
 }
 
 /// What a tree or mesh object holds, in a few words.
