@@ -185,6 +185,33 @@ fn renaming_an_object_in_the_inspector() {
 }
 
 #[test]
+fn an_object_cannot_be_renamed_to_nothing_and_says_so() {
+    let mut harness = harness();
+    select_red_ball(&mut harness);
+    let name = harness.get_by_label("object name");
+    name.focus();
+    harness.run();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    harness.key_press(Key::Backspace);
+    harness.run();
+    // While typing, the field may be empty; the object keeps its name.
+    assert_eq!(harness.state().scene().objects[1].name, "red ball");
+    harness.get_by_label("object name").type_text("blue ball");
+    harness.run();
+    assert_eq!(harness.state().scene().objects[1].name, "blue ball");
+    // Emptied and left: the name stays, and the status line says why.
+    harness.get_by_label("object name").focus();
+    harness.run();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    harness.key_press(Key::Backspace);
+    harness.run();
+    harness.get_by_label("Camera").click();
+    harness.run();
+    assert_eq!(harness.state().scene().objects[1].name, "blue ball");
+    harness.get_by_label_contains("An object needs a name");
+}
+
+#[test]
 fn f1_lists_the_shortcuts() {
     let mut harness = harness();
     harness.key_press(Key::F1);

@@ -44,3 +44,25 @@ fn a_shared_material_says_so_and_can_be_made_unique_in_one_undo_step() {
     assert!(harness.query_by_label_contains("is shared by").is_none());
     assert!(harness.query_by_label("Make unique").is_none());
 }
+
+#[test]
+fn undo_keeps_the_selection_where_the_item_still_is() {
+    let mut harness = open_more_shapes();
+    harness.get_by_label("pipe").click();
+    harness.run();
+    let selected = harness.state().selection().clone();
+    harness.get_by_label("translate x").set_value_accesskit(1.5);
+    harness.run();
+    harness.state_mut().push(Command::Undo);
+    harness.run();
+    assert_eq!(harness.state().selection(), &selected, "undo of a move");
+    harness.get_by_label("Make unique").click();
+    harness.run();
+    harness.state_mut().push(Command::Undo);
+    harness.run();
+    assert_eq!(
+        harness.state().selection(),
+        &selected,
+        "undo of make unique"
+    );
+}

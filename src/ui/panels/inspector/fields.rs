@@ -252,8 +252,13 @@ fn notice_typed(ctx: &egui::Context, typed: Result<f64, String>, kept: f64, limi
         }
     };
     if let Some(notice) = notice {
-        ctx.data_mut(|d| d.insert_temp(notice_id(), notice));
+        leave_notice(ctx, notice);
     }
+}
+
+/// Leaves a notice for the status line: something the user did was not taken as done.
+pub(super) fn leave_notice(ctx: &egui::Context, notice: String) {
+    ctx.data_mut(|d| d.insert_temp(notice_id(), notice));
 }
 
 /// The notice a field left this frame, if any: the app shows it in the status line.

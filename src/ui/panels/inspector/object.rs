@@ -22,12 +22,7 @@ pub(super) fn object_ui(
     let mut edited = object.clone();
     grid_ui(ui, "object", |ui| {
         ui.label("Name");
-        let response = ui
-            .add(egui::TextEdit::singleline(&mut edited.name).desired_width(f32::INFINITY))
-            .accessible_name("object name");
-        if std::mem::take(focus_name) {
-            response.request_focus();
-        }
+        name_field_ui(ui, index, &mut edited.name, focus_name);
         ui.end_row();
 
         ui.label("Shape");
@@ -94,6 +89,39 @@ pub(super) fn object_ui(
                 )));
             }
         });
+    }
+}
+
+/// The object's name. Every keystroke renames, except to nothing: an object needs a
+/// name (the outliner would show a blank row), so an emptied field keeps its text only
+/// while it is being typed in, and on leaving it the name stays as it was, said in the
+/// status line.
+fn name_field_ui(ui: &mut Ui, index: usize, name: &mut String, focus_name: &mut bool) {
+    let id = ui.make_persistent_id(("object name being typed", index));
+    let mut text = ui
+        .data(|d| d.get_temp::<String>(id))
+        .unwrap_or_else(|| name.clone());
+    let response = ui
+        .add(egui::TextEdit::singleline(&mut text).desired_width(f32::INFINITY))
+        .accessible_name("object name");
+    if std::mem::take(focus_name) {
+        response.request_focus();
+    }
+    if text.trim().is_empty() {
+        if response.lost_focus() || !response.has_focus() {
+            ui.data_mut(|d| d.remove::<String>(id));
+            if response.lost_focus() {
+                super::fields::leave_notice(
+                    ui.ctx(),
+                    format!("An object needs a name: it stays \u{201c}{name}\u{201d}"),
+                );
+            }
+        } else {
+            ui.data_mut(|d| d.insert_temp(id, text));
+        }
+    } else {
+        ui.data_mut(|d| d.remove::<String>(id));
+        *name = text;
     }
 }
 
