@@ -276,3 +276,33 @@ fn the_debug_views_carry_a_legend_and_the_lit_picture_none() {
     harness.run();
     assert_eq!(harness.get_all_by_label(&first).count(), named_before + 1);
 }
+
+#[test]
+fn isolating_a_light_or_switching_a_solo_keeps_the_toolbar_rows_and_the_picture() {
+    use raylab::ui::state::IsolationToggle;
+    for size in [Vec2::new(1280.0, 800.0), Vec2::new(1000.0, 700.0)] {
+        let mut harness = editor_harness(EditorOptions::default(), size, 64);
+        harness.run();
+        let before = layout_marks(&harness);
+        let steps = [
+            Command::Isolate(IsolationToggle::Solo {
+                light: 1,
+                add: false,
+            }),
+            Command::Isolate(IsolationToggle::Mute(2)),
+            Command::Isolate(IsolationToggle::Hide(0)),
+            Command::Isolate(IsolationToggle::ShowAll),
+        ];
+        for step in steps {
+            let what = format!("{step:?}");
+            harness.state_mut().push(step);
+            harness.run();
+            harness.run();
+            assert_eq!(
+                layout_marks(&harness),
+                before,
+                "{size:?}: the picture moved after {what}"
+            );
+        }
+    }
+}

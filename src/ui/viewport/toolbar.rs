@@ -38,28 +38,44 @@ pub fn toolbar_ui(
         egui::vec2(width - 2.0 * margin.x, TOOLBAR_ROW_HEIGHT),
     );
     let mut edited = *settings;
+    // The shading controls, wrapped onto more rows only where the width needs it.
     let builder = UiBuilder::new()
         .max_rect(room)
         .layout(Layout::left_to_right(Align::Center).with_main_wrap(true));
-    let used = ui
+    let first = ui
         .scope_builder(builder, |ui| {
             ui.spacing_mut().item_spacing = egui::vec2(4.0, 4.0);
             terms_ui(ui, &mut edited);
-            if let Some(note) = isolated {
-                ui.separator();
-                isolation_marker_ui(ui, note, commands);
-            }
             ui.separator();
             view_ui(ui, &mut edited);
             ui.separator();
             guard_ui(ui, &mut edited, non_finite);
-            ui.separator();
+        })
+        .response
+        .rect;
+    // The tools, and what is isolated, on a row of their own that is always there and
+    // never wraps (a long note is cut short): muting or soloing never moves the picture.
+    let row = Rect::from_min_size(
+        Pos2::new(room.min.x, first.max.y + 4.0),
+        egui::vec2(room.width(), TOOLBAR_ROW_HEIGHT),
+    );
+    let builder = UiBuilder::new()
+        .max_rect(row)
+        .layout(Layout::left_to_right(Align::Center));
+    let used = ui
+        .scope_builder(builder, |ui| {
+            ui.spacing_mut().item_spacing = egui::vec2(4.0, 4.0);
+            ui.set_min_height(TOOLBAR_ROW_HEIGHT);
             ui.toggle_value(&mut edited.inspect, "Inspect")
                 .on_hover_text(
                     "Click a pixel to see every number behind it (or hold Alt and click)",
                 );
             ui.toggle_value(&mut edited.show_convergence, "Convergence")
                 .on_hover_text("Plot how much each preview pass still changes the picture");
+            if let Some(note) = isolated {
+                ui.separator();
+                isolation_marker_ui(ui, note, commands);
+            }
         })
         .response
         .rect;
@@ -92,8 +108,11 @@ fn isolation_marker_ui(ui: &mut egui::Ui, note: &str, commands: &mut Vec<Command
     {
         commands.push(Command::Isolate(IsolationToggle::ShowAll));
     }
-    ui.label(RichText::new(format!("◐ {note}")).color(crate::ui::style::ACCENT))
-        .on_hover_text("Lights muted or solo and objects hidden: not the full picture");
+    ui.add(
+        egui::Label::new(RichText::new(format!("◐ {note}")).color(crate::ui::style::ACCENT))
+            .truncate(),
+    )
+    .on_hover_text(format!("Not the full picture: {note}"));
 }
 
 /// The NaN guard toggle and, when on, the count of the frame on screen.
