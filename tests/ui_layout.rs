@@ -306,3 +306,33 @@ fn isolating_a_light_or_switching_a_solo_keeps_the_toolbar_rows_and_the_picture(
         }
     }
 }
+
+#[test]
+fn an_error_or_warning_banner_floats_and_moves_nothing() {
+    let mut harness = editor_harness(EditorOptions::default(), Vec2::new(1280.0, 800.0), 64);
+    harness.run();
+    let before = layout_marks(&harness);
+    let outliner_top = harness.get_by_label("Camera").rect();
+    // A failed open: an error banner.
+    harness
+        .state_mut()
+        .push(Command::Open("/no/such/scene.ron".into()));
+    harness.run();
+    harness.run();
+    assert!(harness.state().error().is_some());
+    harness.get_by_label("Dismiss");
+    assert_eq!(
+        layout_marks(&harness),
+        before,
+        "the error banner moved the picture"
+    );
+    assert_eq!(
+        harness.get_by_label("Camera").rect(),
+        outliner_top,
+        "nor the outliner"
+    );
+    harness.get_by_label("Dismiss").click();
+    harness.run();
+    assert!(harness.state().error().is_none());
+    assert_eq!(layout_marks(&harness), before);
+}

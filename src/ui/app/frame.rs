@@ -9,7 +9,7 @@ use crate::ui::document::export_window::export_window;
 use crate::ui::document::files;
 use crate::ui::panels::inspector::{inspector_ui, take_field_notice};
 use crate::ui::panels::menu::{MenuState, menu_ui};
-use crate::ui::panels::notices::{Tone, notice_ui};
+use crate::ui::panels::notices::{Notice, Tone, notices_ui};
 use crate::ui::panels::outliner::outliner_ui;
 use crate::ui::panels::status_bar::{StatusInfo, status_bar_ui};
 use crate::ui::shortcuts::{help_window, shortcut_commands};
@@ -140,18 +140,23 @@ impl EditorApp {
             };
             menu_ui(ui, &state, &mut commands);
         });
+        let mut notices = Vec::new();
         if let Some(error) = &self.error {
-            notice_ui(ui, Tone::Error, error, Command::DismissError, &mut commands);
+            notices.push(Notice {
+                tone: Tone::Error,
+                text: error,
+                dismiss: Command::DismissError,
+            });
         }
         if let Some(warning) = &self.warning {
-            notice_ui(
-                ui,
-                Tone::Warning,
-                warning,
-                Command::DismissWarning,
-                &mut commands,
-            );
+            notices.push(Notice {
+                tone: Tone::Warning,
+                text: warning,
+                dismiss: Command::DismissWarning,
+            });
         }
+        let below_menu = ui.available_rect_before_wrap().min.y;
+        notices_ui(ui.ctx(), below_menu, notices, &mut commands);
         egui::Panel::bottom("status").show(ui, |ui| {
             let file = self.file_label();
             let info = StatusInfo {
