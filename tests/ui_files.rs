@@ -323,6 +323,17 @@ fn open_on_a_course_text_scene_imports_it_and_other_files_get_a_plain_message() 
         .error()
         .expect("an error is shown")
         .to_owned();
-    assert!(error.contains("is not a scene raylab can open"), "{error}");
+    assert!(
+        error.contains("is neither a raylab scene nor a course text scene"),
+        "{error}"
+    );
+    assert!(
+        error.contains("it starts \u{201c}# My tracer\u{201d}"),
+        "{error}"
+    );
+    assert!(
+        !error.contains("enable"),
+        "no RON parser words for a file that is not RON: {error}"
+    );
     assert!(error.contains("File > Import Legacy"), "{error}");
 }

@@ -63,14 +63,23 @@ pub fn open_scene(path: &Path) -> Result<Opened, String> {
                 t.trim_start().starts_with("Scene(") || t.trim_start().starts_with("//")
             });
             if looks_like_ron {
-                format!("{}: {e}", path.display())
-            } else {
-                format!(
-                    "{} is not a scene raylab can open: {e}. File > Open takes raylab scenes \
-                 (.ron) and the course's text scenes; File > Import Legacy takes the latter too",
-                    path.display()
-                )
+                return format!("{}: {e}", path.display());
             }
+            // Not RON at all: the parser's words would only confuse; show what the file
+            // starts with instead, and what raylab opens.
+            let start = text.as_ref().ok().and_then(|t| {
+                t.lines().map(str::trim).find(|l| !l.is_empty()).map(|l| {
+                    let short: String = l.chars().take(40).collect();
+                    format!(" (it starts \u{201c}{short}\u{201d})")
+                })
+            });
+            format!(
+                "{} is neither a raylab scene nor a course text scene{}. File > Open takes \
+             raylab scenes (.ron) and the course's .txt scenes; File > Import Legacy \
+             takes the latter too",
+                path.display(),
+                start.unwrap_or_default()
+            )
         })
 }
 
