@@ -136,3 +136,36 @@ fn every_light_is_listed_with_why_it_adds_nothing() {
         assert!(harness.get_all_by_label(outcome).count() >= 1, "{outcome}");
     }
 }
+
+#[test]
+fn a_window_the_user_moved_stays_put_and_fits_the_screen() {
+    let mut harness = harness("window_moved", false);
+    let ball = object_on_screen(&harness, 2);
+    click(&mut harness, ball, Modifiers::ALT);
+    wait_for_probes(&mut harness);
+    harness.run_ok();
+    // Dragged by its title to the bottom-right corner.
+    view_harness::move_inspector_away(&mut harness);
+    harness.run_ok();
+    let moved = window_rect(&harness);
+    let screen = harness.ctx.content_rect();
+    assert!(
+        screen.contains_rect(moved.shrink(1.0)),
+        "{moved:?} runs off {screen:?}"
+    );
+    // Another pixel: the window stays where the user put it.
+    let other = (1..harness.state().scene().objects.len())
+        .filter(|&i| i != 2)
+        .map(|i| object_on_screen(&harness, i))
+        .find(|p| picture(&harness).contains(*p) && !moved.expand(4.0).contains(*p))
+        .expect("an object the window does not cover");
+    let first = harness.state().inspected_pixel();
+    click(&mut harness, other, Modifiers::ALT);
+    harness.run_ok();
+    assert_ne!(harness.state().inspected_pixel(), first, "another pixel");
+    let after = window_rect(&harness);
+    assert!(
+        (after.min - moved.min).length() < 1.0,
+        "{moved:?} jumped to {after:?}"
+    );
+}

@@ -7,6 +7,7 @@
 
 mod compared;
 pub mod link;
+mod placement;
 mod window;
 
 use crate::scene::{Light, Scene};

@@ -5,6 +5,7 @@
 use egui::{Color32, Id, Pos2, Rect, RichText, Vec2};
 use glam::DVec3;
 
+use super::placement::Placement;
 use super::{InspectedBounce, InspectedLight, InspectedPixel, PixelInspection};
 use crate::trace::BounceReport;
 use crate::ui::commands::Command;
@@ -38,7 +39,7 @@ impl PixelAnchor {
     /// The top-left corner of a window of `size`: right of the pixel when it fits in
     /// the viewport, else left of it when that fits, else on the side with more room,
     /// never over the pixel while the screen has room beside it.
-    fn window_pos(&self, size: Vec2) -> Pos2 {
+    pub(super) fn window_pos(&self, size: Vec2) -> Pos2 {
         let right = self.pos.x + GAP;
         let left = self.pos.x - GAP - size.x;
         let x = if right + size.x <= self.viewport.max.x {
@@ -80,26 +81,25 @@ pub fn inspector_window_id() -> Id {
 /// Shows the inspector window; closing it pushes [`Command::InspectPixel`]`(None)`.
 pub fn pixel_inspector_ui(ctx: &egui::Context, view: &InspectorView, commands: &mut Vec<Command>) {
     let id = inspector_window_id();
-    let placed_for = ctx.data(|d| d.get_temp::<(u32, u32)>(id.with("placed")));
-    let mut window = egui::Window::new("Pixel inspector")
+    let screen = ctx.content_rect();
+    let window = egui::Window::new("Pixel inspector")
         .id(id)
-        .default_size([WIDTH, HEIGHT])
-        // Wide content lines must not widen it over the pixel it sits beside.
+        .default_size([WIDTH, HEIGHT.min(screen.height() - 80.0)])
+        // Wide content lines must not widen it over the pixel it sits beside; it never
+        // runs past the bottom of the window (its content scrolls).
         .max_width(MAX_WIDTH)
+        .max_height(screen.height() - 60.0)
+        .constrain(true)
         .resizable(true);
-    // A new pixel: the window moves beside it (and stays where the user puts it after).
-    if placed_for != Some(view.pixel)
-        && let Some(anchor) = view.anchor
-    {
-        // The size it has now (the user may have resized it), else the one it opens at.
-        let size = ctx
-            .memory(|m| m.area_rect(id))
-            .map_or(Vec2::new(WIDTH, HEIGHT), |r| r.size());
-        let pos = anchor.window_pos(size);
-        window = window.current_pos(pos);
-        move_open_window(ctx, id, pos);
-        ctx.data_mut(|d| d.insert_temp(id.with("placed"), view.pixel));
-    }
+    let placement = Placement::load(ctx, id);
+    let before = ctx.memory(|m| m.area_rect(id));
+    let (window, placed) = placement.place(
+        ctx,
+        window,
+        view.pixel,
+        view.anchor,
+        Vec2::new(WIDTH, HEIGHT),
+    );
     let window_rect = ctx.memory(|m| m.area_rect(id));
     let mut open = true;
     window.open(&mut open).show(ctx, |ui| {
@@ -112,21 +112,17 @@ pub fn pixel_inspector_ui(ctx: &egui::Context, view: &InspectorView, commands: &
                 contents_ui(ui, view, commands);
             });
     });
-    if !open {
-        commands.push(Command::InspectPixel(None));
+    // Moved this frame, and not by us: the user dragged it.
+    let after = ctx.memory(|m| m.area_rect(id));
+    if !placed
+        && let (Some(before), Some(after)) = (before, after)
+        && (after.min - before.min).length() > 0.5
+    {
+        Placement::moved_by_user(ctx, id);
     }
-}
-
-/// Moves an already open window's area to `pos`. `current_pos` alone only places a window
-/// that opens: egui 0.37's title-bar drag mode puts back the position the area had before
-/// the pass, so an open window would stay where it was.
-fn move_open_window(ctx: &egui::Context, id: Id, pos: Pos2) {
-    if let Some(mut state) = egui::AreaState::load(ctx, id) {
-        state.set_left_top_pos(pos);
-        ctx.memory_mut(|m| {
-            m.areas_mut()
-                .set_state(egui::LayerId::new(egui::Order::Middle, id), state);
-        });
+    if !open {
+        Placement::forget(ctx, id);
+        commands.push(Command::InspectPixel(None));
     }
 }
 
