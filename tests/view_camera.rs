@@ -199,3 +199,28 @@ fn the_view_is_remembered_per_file() {
     // Nothing of the view is in the scene file.
     assert_eq!(reopened.state().scene(), other.state().scene());
 }
+
+#[test]
+fn leaving_camera_view_starts_from_where_the_scene_camera_is_now() {
+    let mut harness = harness("leave_camera_view", false);
+    // The scene camera moves (an edit) while camera view is on...
+    let mut camera = harness.state().scene().camera.clone();
+    camera.position += glam::DVec3::new(2.0, 1.0, -1.5);
+    harness
+        .state_mut()
+        .push(raylab::ui::Command::Edit(raylab::ui::SceneEdit::SetCamera(
+            camera.clone(),
+        )));
+    harness.run();
+    // ... then the user leaves camera view: the free view starts there.
+    harness
+        .state_mut()
+        .push(raylab::ui::Command::ToggleCameraView);
+    harness.run();
+    let view = harness.state().view_camera();
+    assert!(!view.through_scene_camera);
+    assert_eq!(
+        (view.position, view.look_at, view.fov_deg),
+        (camera.position, camera.look_at, camera.fov_deg)
+    );
+}

@@ -105,7 +105,13 @@ impl EditorApp {
             Command::SetView(view) => self.looking.view = view,
             Command::ToggleCameraView => {
                 let view = &mut self.looking.view;
-                view.through_scene_camera = !view.through_scene_camera;
+                // Leaving camera view starts from where the scene camera is, not from a
+                // pose left over from earlier (another scene, a moved camera).
+                *view = if view.through_scene_camera {
+                    ViewCamera::free(&self.scene.camera)
+                } else {
+                    ViewCamera::through(&self.scene.camera)
+                };
             }
             Command::SetSceneCameraFromView => {
                 let camera = self.looking.view.as_scene_camera(&self.scene.camera);
