@@ -68,8 +68,12 @@ pub fn new_object_transform(scene: &Scene, shape: &Shape) -> Transform {
     };
     let affine = DAffine3::from_scale_rotation_translation(DVec3::splat(size), rotation, centre);
     let mut trs = crate::gizmo::trs::trs_from_matrix(&affine);
-    // Whole degrees stay whole in the inspector (no 89.99999999999999).
+    // Whole degrees stay whole in the inspector (no 89.99999999999999), and the scale and
+    // position are the ones chosen, not their round trip through a matrix (a scale of 1
+    // saved as 0.9999999999999998).
     trs.rotate_deg = (trs.rotate_deg * 1e9).round() / 1e9;
+    trs.scale = DVec3::splat(size);
+    trs.translate = centre;
     Transform::Trs(trs)
 }
 
@@ -178,6 +182,21 @@ mod tests {
         let transform = new_object_transform(&scene, &Shape::Sphere);
         let centre = transform.world_from_object().translation;
         assert!(centre.abs_diff_eq(scene.camera.look_at, 1e-12), "{centre}");
+    }
+
+    #[test]
+    fn a_new_object_carries_its_chosen_scale_and_place_exactly_not_float_noise() {
+        let scene = crate::scene::examples::default_scene();
+        for shape in Shape::ALL {
+            let Transform::Trs(trs) = new_object_transform(&scene, &shape) else {
+                panic!("a new object has a translate/rotate/scale");
+            };
+            let size = unit_size(&scene.camera);
+            assert_eq!(trs.scale, DVec3::splat(size), "{shape:?}");
+            // Saved, the numbers read as typed: no 0.9999999999999998.
+            let text = ron::to_string(&trs.scale).unwrap();
+            assert!(!text.contains("99999999"), "{shape:?}: {text}");
+        }
     }
 
     #[test]
