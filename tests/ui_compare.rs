@@ -144,6 +144,11 @@ fn a_comparison_from_a_path_shows_every_mode_and_its_explanations_select_and_hig
     harness.get_by_label("Flip to raylab").click();
     harness.run();
 
+    // Under its title, a sentence a person reads: how many pixels, what share, how sure
+    // (not "15143 pixels, factor, sure: high").
+    let detail = format!("It covers {} pixels and", top.pixels.len());
+    harness.get_by_label_contains(&detail);
+    assert!(harness.query_by_label_contains("sure:").is_none());
     // Clicking the top explanation selects the ball and highlights its pixels.
     assert!(harness.state().compare().highlighted_pixels().is_empty());
     let scene = harness.state().scene().clone();

@@ -11,6 +11,19 @@ use crate::ui::state::light_label;
 
 use super::session::CompareSession;
 
+/// The sentence under an explanation's title: what it says, then where and how sure, in
+/// words (the numbers of `raylab diff` are in the hover text).
+fn explanation_detail(e: &crate::compare::Explanation) -> String {
+    let pixels = e.pixels.len();
+    let plural = if pixels == 1 { "" } else { "s" };
+    format!(
+        "{} It covers {pixels} pixel{plural} and {:.0}% of the difference; confidence {}.",
+        e.summary,
+        e.share * 100.0,
+        e.sureness()
+    )
+}
+
 /// The row's text (also its accessible name), with the light named as the outliner
 /// names it: "1. 50.0% diffuse · Point light 2 · 'red ball'".
 #[must_use]
@@ -69,13 +82,10 @@ pub fn explanations_ui(
                 }
                 ui.horizontal_wrapped(|ui| {
                     ui.add_space(14.0);
-                    ui.weak(format!(
-                        "{} Factor {:.2}, {} pixels, {}, sure: {} ({:.2}).",
-                        e.summary,
+                    ui.weak(explanation_detail(e)).on_hover_text(format!(
+                        "raylab diff's numbers: factor {:.2}, cause {}, confidence {:.2}",
                         e.factor,
-                        e.pixels.len(),
                         e.cause.name(),
-                        e.sureness(),
                         e.confidence
                     ));
                 });
