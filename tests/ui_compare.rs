@@ -131,12 +131,19 @@ fn a_comparison_from_a_path_shows_every_mode_and_its_explanations_select_and_hig
     let top = &c.explanations[0];
     assert_eq!((top.term, top.object), (ExplainedTerm::Diffuse, Some(ball)));
 
-    // The view replaces the viewport; each mode button switches to its picture.
+    // The view replaces the viewport; each mode button switches to its picture, and
+    // "Close comparison" stays where it was whatever the mode's controls.
+    let close = harness.get_by_label("Close comparison").rect();
     for mode in CompareMode::ALL {
         harness.get_by_label(mode.label()).click();
         harness.run();
         assert_eq!(harness.state().compare().mode, mode);
         harness.get_by_label(&format!("{COMPARE_PICTURE_LABEL}: {}", mode.label()));
+        assert_eq!(
+            harness.get_by_label("Close comparison").rect(),
+            close,
+            "{mode:?}"
+        );
     }
     // Flip shows the other picture, and back.
     harness.get_by_label("Flip to other image").click();

@@ -27,6 +27,11 @@ pub fn compare_bar_ui(
                 .strong()
                 .color(Color32::from_gray(150)),
         );
+        // First, so it stays in one place whatever the mode's own controls are.
+        if ui.button("Close comparison").clicked() {
+            session.close();
+        }
+        ui.separator();
         for mode in CompareMode::ALL {
             let button = ui
                 .selectable_label(session.mode == mode, mode.label())
@@ -55,9 +60,6 @@ pub fn compare_bar_ui(
             {
                 commands.push(Command::CompareWith(path));
             }
-        }
-        if ui.button("Close comparison").clicked() {
-            session.close();
         }
     });
 }
