@@ -15,6 +15,22 @@ use reshade_harness::{Shot, edit_chain, example};
 /// A mirror square facing the camera, lit by ambient light only: its own colour is
 /// `ka`, and its mirror ray goes straight back into the background.
 fn mirror_facing_camera(ka: f64, km: f64, background: f64, conventions: Conventions) -> DVec3 {
+    let scene = mirror_scene(ka, km, background, conventions);
+    trace(&scene, camera_ray(), TermSwitches::ALL_ON)
+}
+
+/// The camera's ray at the mirror's centre.
+fn camera_ray() -> Ray {
+    Ray::new(DVec3::new(0.0, 0.0, 5.0), -DVec3::Z)
+}
+
+/// The scene of [`mirror_facing_camera`].
+fn mirror_scene(
+    ka: f64,
+    km: f64,
+    background: f64,
+    conventions: Conventions,
+) -> raylab::scene::Scene {
     let mut scene = bare_scene(Material {
         ambient: DVec3::splat(ka),
         mirror: DVec3::splat(km),
@@ -32,8 +48,7 @@ fn mirror_facing_camera(ka: f64, km: f64, background: f64, conventions: Conventi
     }];
     scene.render.background = DVec3::splat(background);
     scene.render.conventions = conventions;
-    let ray = Ray::new(DVec3::new(0.0, 0.0, 5.0), -DVec3::Z);
-    trace(&scene, ray, TermSwitches::ALL_ON)
+    scene
 }
 
 const BLEND: Conventions = Conventions {
@@ -77,24 +92,8 @@ fn without_a_mirror_ray_blend_leaves_the_local_colour_alone() {
     // Reflection switched off: no mirror ray, so nothing to blend with.
     let mut switches = TermSwitches::ALL_ON;
     switches.set(Term::Reflection, false);
-    let mut scene = bare_scene(Material {
-        ambient: DVec3::splat(0.4),
-        mirror: DVec3::splat(0.5),
-        ..Material::default()
-    });
-    scene.objects = vec![object(
-        raylab::scene::Shape::Plane,
-        DVec3::ZERO,
-        DVec3::ZERO,
-        DVec3::splat(3.0),
-    )];
-    scene.lights = vec![Light::Ambient {
-        colour: DVec3::ONE,
-        intensity: 1.0,
-    }];
-    scene.render.conventions = BLEND;
-    let ray = Ray::new(DVec3::new(0.0, 0.0, 5.0), -DVec3::Z);
-    assert_colour(trace(&scene, ray, switches), DVec3::splat(0.4));
+    let scene = mirror_scene(0.4, 0.5, 0.0, BLEND);
+    assert_colour(trace(&scene, camera_ray(), switches), DVec3::splat(0.4));
 }
 
 #[test]

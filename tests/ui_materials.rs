@@ -3,16 +3,11 @@
 
 mod editor_harness;
 
-use editor_harness::harness;
 use egui_kittest::kittest::Queryable;
 use raylab::ui::Command;
 
 fn open_more_shapes() -> egui_kittest::Harness<'static, raylab::ui::EditorApp> {
-    let mut harness = harness();
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/more_shapes.ron");
-    harness.state_mut().push(Command::Open(path));
-    harness.run();
-    harness
+    editor_harness::harness_on_example("more_shapes.ron")
 }
 
 #[test]

@@ -16,11 +16,7 @@ fn shape_of(harness: &egui_kittest::Harness<'_, raylab::ui::EditorApp>, name: &s
 }
 
 fn open_more_shapes() -> egui_kittest::Harness<'static, raylab::ui::EditorApp> {
-    let mut harness = harness();
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/more_shapes.ron");
-    harness.state_mut().push(Command::Open(path));
-    harness.run();
-    harness
+    editor_harness::harness_on_example("more_shapes.ron")
 }
 
 #[test]

@@ -28,6 +28,17 @@ pub fn harness() -> Harness<'static, EditorApp> {
     harness_with(EditorOptions::default())
 }
 
+/// An editor with `scenes/NAME` open.
+pub fn harness_on_example(name: &str) -> Harness<'static, EditorApp> {
+    let mut harness = harness();
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join(name);
+    harness.state_mut().push(raylab::ui::Command::Open(path));
+    harness.run();
+    harness
+}
+
 /// Clicks the default scene's "red ball" in the outliner.
 pub fn select_red_ball(harness: &mut Harness<'_, EditorApp>) {
     harness.get_by_label("red ball").click();

@@ -6,9 +6,8 @@
 
 use std::collections::HashMap;
 
-/// The words that start commented-out code rather than a name: block words, `End` and
-/// the keywords of every block.
-const CODE_WORDS: &[&str] = &[
+/// The block types, as written in files (matched ignoring case).
+pub(crate) const BLOCK_WORDS: [&str; 7] = [
     "Scene",
     "Camera",
     "Light",
@@ -16,6 +15,11 @@ const CODE_WORDS: &[&str] = &[
     "Object",
     "CSG",
     "ObjectGroup",
+];
+
+/// The words besides the block words that start commented-out code rather than a name:
+/// `End` and the keywords of every block.
+const CODE_WORDS: &[&str] = &[
     "End",
     "renderSize",
     "backgroundColour",
@@ -48,7 +52,10 @@ const CODE_WORDS: &[&str] = &[
 /// Whether `word` is a block word, `End` or a keyword of any block (ignoring case).
 #[must_use]
 pub fn is_grammar_word(word: &str) -> bool {
-    CODE_WORDS.iter().any(|w| word.eq_ignore_ascii_case(w))
+    BLOCK_WORDS
+        .iter()
+        .chain(CODE_WORDS)
+        .any(|w| word.eq_ignore_ascii_case(w))
 }
 
 /// The longest name taken from a comment, in characters; a longer comment is prose, not
@@ -159,9 +166,7 @@ impl<'a> Comments<'a> {
             .trim_start_matches('#')
             .trim_matches(|c: char| c.is_ascii_whitespace());
         let first_word = text.split_ascii_whitespace().next()?;
-        let is_code = CODE_WORDS
-            .iter()
-            .any(|w| first_word.eq_ignore_ascii_case(w));
+        let is_code = is_grammar_word(first_word);
         if is_code || text.chars().count() > MAX_COMMENT_NAME_CHARS {
             return None;
         }

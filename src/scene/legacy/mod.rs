@@ -71,15 +71,6 @@ impl LegacyImport {
 /// by a parenthesis as RON's `Scene(` is. Decides by content, whatever the file's name.
 #[must_use]
 pub fn looks_like_legacy(text: &str) -> bool {
-    const BLOCKS: [&str; 7] = [
-        "scene",
-        "camera",
-        "light",
-        "material",
-        "object",
-        "csg",
-        "objectgroup",
-    ];
     let Some(line) = text
         .lines()
         .map(str::trim)
@@ -92,7 +83,9 @@ pub fn looks_like_legacy(text: &str) -> bool {
         .next()
         .unwrap_or("");
     let after = &line[word.len()..];
-    BLOCKS.contains(&word.to_ascii_lowercase().as_str())
+    parser::BLOCK_WORDS
+        .iter()
+        .any(|block| block.eq_ignore_ascii_case(word))
         && (after.is_empty() || after.starts_with(char::is_whitespace))
 }
 

@@ -37,16 +37,7 @@ use entries::decode;
 pub use tree::MAX_NESTING;
 use values::looks_numeric;
 
-/// The block types, as written in files (matched ignoring case).
-const BLOCK_WORDS: [&str; 7] = [
-    "Scene",
-    "Camera",
-    "Light",
-    "Material",
-    "Object",
-    "CSG",
-    "ObjectGroup",
-];
+pub(crate) use super::lexer::BLOCK_WORDS;
 
 fn at(token: &Token<'_>) -> At {
     At {
