@@ -68,9 +68,12 @@ fn curve_ui(ui: &mut egui::Ui, curve: Option<(u64, &ConvergenceCurve)>) {
         }
     }
     let accent = crate::ui::style::ACCENT;
+    // A short axis label: a long one, turned along the axis, ran up over the line above
+    // the plot (the title already says what is plotted).
+    ui.add_space(4.0);
     Plot::new("convergence")
         .x_axis_label("render time since the edit (ms)")
-        .y_axis_label("estimated RMSE (remaining)")
+        .y_axis_label("RMSE")
         .include_y(0.0)
         .include_x(0.0)
         .allow_scroll(false)
