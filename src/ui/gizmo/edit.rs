@@ -192,7 +192,7 @@ fn light_drag(
             },
             HandleId::SpotTip,
         ) => {
-            let aim = aim_from_tip_drag(*position, geometry.cone_length, now, *direction)?;
+            let aim = aim_from_tip_drag(*position, geometry.cone_length, now)?;
             *direction = aim * direction.length().max(f64::MIN_POSITIVE);
             format_direction(aim)
         }
@@ -217,7 +217,7 @@ fn light_drag(
         (Light::Directional { direction, .. }, HandleId::Aim) => {
             let (anchor, length) = geometry.sun;
             // The handle is the arrow's tail: the light comes from there.
-            let tail = aim_from_tip_drag(anchor, length, now, -*direction)?;
+            let tail = aim_from_tip_drag(anchor, length, now)?;
             *direction = -tail * direction.length().max(f64::MIN_POSITIVE);
             format_direction(-tail)
         }
