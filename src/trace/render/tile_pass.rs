@@ -19,7 +19,7 @@ use crate::trace::film::{PinholeCamera, TileRect};
 use crate::trace::ray::Ray;
 use crate::trace::ray_counts::RayCounts;
 use crate::trace::shade::{
-    Bounce, LiveRays, MakeRay, NoRecorder, RaySource, ShadowRequest, Tracer, ray_colour,
+    Bounce, LiveRays, MakeRay, NoRecorder, RaySource, ShadowRequest, Tracer,
 };
 use crate::trace::terms::ActiveTerms;
 use crate::trace::world::{ObjectSet, SurfacePoint, World};
@@ -141,18 +141,14 @@ impl TilePass<'_> {
             (pixels, rays) = (next_pixels, next_rays);
             depth += 1;
         }
-        // Deepest first, through `fold_back`'s own steps (`Bounce::fold`, `ray_colour`).
+        // Deepest first, through `fold_back`'s own step (`Bounce::returns`).
         let conventions = &world.conventions;
         let mut colours = vec![DVec3::ZERO; count];
         let mut folded = vec![false; count];
         for (level_pixels, bounces) in levels.iter().rev() {
             for (&pixel, bounce) in level_pixels.iter().zip(bounces) {
-                let colour = if folded[pixel] {
-                    bounce.fold(colours[pixel], conventions)
-                } else {
-                    bounce.local
-                };
-                colours[pixel] = ray_colour(colour, conventions);
+                let brought_back = folded[pixel].then_some(colours[pixel]);
+                colours[pixel] = bounce.returns(brought_back, conventions);
                 folded[pixel] = true;
             }
         }

@@ -6,7 +6,7 @@
 //!
 //! It takes the shader's steps (`Tracer::shade` for the beauty view, then the fold of
 //! [`crate::trace::shade::fold_back`], deepest entry first, through the same
-//! [`Bounce::fold`] step but with no chain kept) with the shared term functions of
+//! [`Bounce::returns`] step but with no chain kept) with the shared term functions of
 //! [`crate::trace::shade::phong`], so its colour is
 //! the shader's bit for bit (tests/reshade.rs holds every edit kind to that). Where the
 //! cache lacks something the shader would need (a ray never traced, a shadow ray never
@@ -19,7 +19,7 @@ use super::chains::{CLEAR, NOT_CAST};
 use super::dependence::{DependenceRule, EntryTerms, TermDependence};
 use super::light_factors::LightSlot;
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::shade::{Bounce, Tracer, diffuse_term, ray_colour, specular_term};
+use crate::trace::shade::{Bounce, Tracer, diffuse_term, specular_term};
 use crate::trace::terms::ActiveTerms;
 use crate::trace::world::falloff;
 
@@ -128,18 +128,16 @@ impl<'r> QuickShade<'r> {
             let row = &slots[depth * lights..(depth + 1) * lights];
             let (local, entry) = self.entry(depth, object, row, &mut own)?;
             depends.add(depth, entry);
-            let conventions = &self.conventions;
-            colour = ray_colour(
-                if depth < last {
-                    // Every entry before the last casts a mirror ray (found above).
-                    own.reflection += 1;
-                    let km = self.objects[object as usize].mirror;
-                    Bounce { local, km }.fold(colour, conventions)
-                } else {
-                    local
-                },
-                conventions,
-            );
+            // Every entry before the last casts a mirror ray (found above).
+            let casts = depth < last;
+            own.reflection += u64::from(casts);
+            // (The last entry may be a miss, with no object to read km from.)
+            let km = if casts {
+                self.objects[object as usize].mirror
+            } else {
+                DVec3::ZERO
+            };
+            colour = Bounce { local, km }.returns(casts.then_some(colour), &self.conventions);
         }
         counts.add(&own);
         Some((colour, depends))

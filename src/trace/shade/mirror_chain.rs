@@ -20,14 +20,24 @@ pub(crate) struct Bounce {
 }
 
 impl Bounce {
-    /// This ray's colour, given the colour its mirror ray brought back: the one step of
-    /// every fold. `Add`: local + km * reflected; `Blend`: (1 - km) * local + km *
-    /// reflected, per channel. Not yet clamped: see [`ray_colour`].
+    /// The colour this ray returns, given the colour its mirror ray brought back
+    /// (`None`: it cast none): the one step of every fold, the shader's, the tile pass's
+    /// and the quick re-shade's, so their sums agree bit for bit.
     #[inline]
-    pub fn fold(&self, brought_back: DVec3, conventions: &Conventions) -> DVec3 {
+    pub fn returns(&self, brought_back: Option<DVec3>, conventions: &Conventions) -> DVec3 {
+        ray_colour(self.unclamped(brought_back, conventions), conventions)
+    }
+
+    /// This ray's colour before any clamp. `Add`: local + km * reflected; `Blend`:
+    /// (1 - km) * local + km * reflected, per channel (only where a mirror ray was cast).
+    #[inline]
+    fn unclamped(&self, brought_back: Option<DVec3>, conventions: &Conventions) -> DVec3 {
+        let Some(reflected) = brought_back else {
+            return self.local;
+        };
         match conventions.mirror {
-            MirrorConvention::Add => self.local + self.km * brought_back,
-            MirrorConvention::Blend => (DVec3::ONE - self.km) * self.local + self.km * brought_back,
+            MirrorConvention::Add => self.local + self.km * reflected,
+            MirrorConvention::Blend => (DVec3::ONE - self.km) * self.local + self.km * reflected,
         }
     }
 
@@ -44,7 +54,7 @@ impl Bounce {
 /// (the course skeleton's `clip()`), as it is with `Pixel` (only the pixel is clamped,
 /// when it is written).
 #[inline]
-pub(crate) fn ray_colour(colour: DVec3, conventions: &Conventions) -> DVec3 {
+fn ray_colour(colour: DVec3, conventions: &Conventions) -> DVec3 {
     match conventions.clamp {
         ClampConvention::Pixel => colour,
         ClampConvention::EachRay => colour.clamp(DVec3::ZERO, DVec3::ONE),
@@ -67,30 +77,27 @@ pub(crate) fn fold_back(
     recorder: &mut impl Recorder,
 ) -> DVec3 {
     let mut depth = chain.len() - 1;
-    let mut colour = returned(depth as u32, chain[depth].local, conventions, recorder);
+    let mut colour = returned(depth as u32, &chain[depth], None, conventions, recorder);
     while depth > 0 {
         depth -= 1;
         let bounce = &chain[depth];
         recorder.reflection(depth as u32, bounce.km, colour);
-        colour = returned(
-            depth as u32,
-            bounce.fold(colour, conventions),
-            conventions,
-            recorder,
-        );
+        colour = returned(depth as u32, bounce, Some(colour), conventions, recorder);
     }
     colour
 }
 
-/// The colour the ray at `depth` returns, from its colour before any clamp; the recorder
-/// sees both where a clamp changed it.
+/// What the ray at `depth` returns ([`Bounce::returns`]); the recorder sees its colour,
+/// and where the each-ray clamp changed it, the colour before.
 #[inline]
 pub(crate) fn returned<R: Recorder>(
     depth: u32,
-    colour: DVec3,
+    bounce: &Bounce,
+    brought_back: Option<DVec3>,
     conventions: &Conventions,
     recorder: &mut R,
 ) -> DVec3 {
+    let colour = bounce.unclamped(brought_back, conventions);
     let clamped = ray_colour(colour, conventions);
     if R::ACTIVE && clamped != colour {
         recorder.clamped(depth, colour);

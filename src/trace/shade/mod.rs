@@ -14,7 +14,7 @@ mod shadows;
 mod tracer;
 
 pub use lit_factors::LitFactors;
-pub(crate) use mirror_chain::{Bounce, ray_colour};
+pub(crate) use mirror_chain::Bounce;
 pub use object_id::object_id_colour;
 pub use phong::{LocalLight, diffuse_term, phong_power, specular_term};
 pub use ray_source::{LiveRays, MakeRay, RaySource, ShadowRequest};

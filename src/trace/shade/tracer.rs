@@ -107,8 +107,9 @@ impl<'w> Tracer<'w> {
     /// A loop, not a recursion, so any `max_depth` runs in constant stack: the chain is
     /// walked forward, keeping each ray's local colour and mirror weight, then folded back
     /// from the deepest ray as `colour(d) = local(d) + km(d) * colour(d + 1)` (as the
-    /// scene's conventions combine and clamp). That is the same arithmetic, and the same recorder calls in the same order, as the recursive
-    /// form (a ray's `reflection` and `result` after everything deeper).
+    /// scene's conventions combine and clamp). That is the same arithmetic, and the same
+    /// recorder calls in the same order, as the recursive form (a ray's `reflection` and
+    /// `result` after everything deeper).
     fn radiance(
         &self,
         ray: &Ray,
@@ -120,7 +121,7 @@ impl<'w> Tracer<'w> {
         // Most camera rays meet no mirror: no chain to keep.
         let conventions = &self.world.conventions;
         let Some(mut ray) = mirror_ray else {
-            return returned(0, camera_bounce.local, conventions, recorder);
+            return returned(0, &camera_bounce, None, conventions, recorder);
         };
         let mut chain = Chain::new();
         chain.push(camera_bounce);
