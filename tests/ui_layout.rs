@@ -4,7 +4,7 @@
 
 mod editor_harness;
 
-use editor_harness::{editor_harness, harness, press_drag_release};
+use editor_harness::{editor_harness, harness, open_example, press_drag_release};
 use egui::{Modifiers, PointerButton, Pos2, Rect, Vec2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
@@ -162,9 +162,7 @@ fn layout_marks(harness: &Harness<'_, EditorApp>) -> (f32, Rect) {
 fn selecting_anything_keeps_the_inspector_width_and_the_picture_still() {
     for size in [Vec2::new(1280.0, 800.0), Vec2::new(900.0, 600.0)] {
         let mut harness = editor_harness(EditorOptions::default(), size, 64);
-        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/more_shapes.ron");
-        harness.state_mut().push(Command::Open(path));
-        harness.run();
+        open_example(&mut harness, "more_shapes.ron");
         let before = layout_marks(&harness);
         let scene = harness.state().scene().clone();
         let mut selections = vec![Selection::Camera, Selection::Render];
@@ -193,9 +191,7 @@ fn selecting_anything_keeps_the_inspector_width_and_the_picture_still() {
 fn every_inspector_field_fits_inside_the_panel() {
     for size in [Vec2::new(1280.0, 800.0), Vec2::new(1100.0, 700.0)] {
         let mut harness = editor_harness(EditorOptions::default(), size, 64);
-        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/more_shapes.ron");
-        harness.state_mut().push(Command::Open(path));
-        harness.run();
+        open_example(&mut harness, "more_shapes.ron");
         for selection in [Selection::Object(6), Selection::Render, Selection::Light(2)] {
             harness.state_mut().push(Command::Select(selection.clone()));
             harness.run();

@@ -59,10 +59,7 @@ fn the_presets_set_all_three() {
 
 #[test]
 fn a_tree_object_shows_what_it_holds_and_offers_no_shape_to_switch_to() {
-    let mut harness = harness();
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/csg.ron");
-    harness.state_mut().push(Command::Open(path));
-    harness.run();
+    let mut harness = editor_harness::harness_on_example("csg.ron");
     let before = harness.state().scene().clone();
     harness.get_by_label("die").click();
     harness.run();

@@ -31,12 +31,17 @@ pub fn harness() -> Harness<'static, EditorApp> {
 /// An editor with `scenes/NAME` open.
 pub fn harness_on_example(name: &str) -> Harness<'static, EditorApp> {
     let mut harness = harness();
+    open_example(&mut harness, name);
+    harness
+}
+
+/// Opens `scenes/NAME` in the editor.
+pub fn open_example(harness: &mut Harness<'_, EditorApp>, name: &str) {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("scenes")
         .join(name);
     harness.state_mut().push(raylab::ui::Command::Open(path));
     harness.run();
-    harness
 }
 
 /// Clicks the default scene's "red ball" in the outliner.

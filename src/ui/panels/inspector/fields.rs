@@ -40,20 +40,30 @@ pub(super) fn vec3_row_ui(ui: &mut Ui, label: &str, value: &mut DVec3, speed: f6
 /// number (the row's order and the field's accessible name still say which it is), so a
 /// row never grows past the panel.
 fn axis_prefix(axis: &str, width: f32) -> String {
-    if width >= 58.0 {
+    if has_prefix(width) {
         format!("{axis} ")
     } else {
         String::new()
     }
 }
 
+/// Whether a field `width` points wide has room for its "x " prefix.
+fn has_prefix(width: f32) -> bool {
+    width >= 58.0
+}
+
+/// How many characters of number fit in a field `width` points wide, beside its prefix:
+/// about 7 points a character at the body size, the prefix taking two.
+fn number_room(width: f32) -> usize {
+    let prefix = if has_prefix(width) { 2.0 } else { 0.0 };
+    (((width - 10.0) / 7.0).floor() - prefix).max(4.0) as usize
+}
+
 /// `value` in at most the characters a field `width` points wide has room for (beside
 /// its prefix, if it has one): up to three decimals, fewer where they do not fit, and
 /// scientific notation where even the whole number does not.
 fn fitted_number(value: f64, width: f32) -> String {
-    // About 7 points a character at the body size; the prefix ("x ") takes two.
-    let prefix = if width >= 58.0 { 2.0 } else { 0.0 };
-    let room = (((width - 10.0) / 7.0).floor() - prefix).max(4.0) as usize;
+    let room = number_room(width);
     for decimals in (0..=3).rev() {
         let text = format!("{value:.decimals$}");
         if text.len() <= room {
@@ -269,7 +279,7 @@ pub fn take_field_notice(ctx: &egui::Context) -> Option<String> {
 
 #[cfg(test)]
 mod tests {
-    use super::fitted_number;
+    use super::{fitted_number, number_room};
 
     #[test]
     fn numbers_fit_their_field_with_fewer_decimals_then_in_scientific_notation() {
@@ -279,9 +289,7 @@ mod tests {
         assert_eq!(fitted_number(-2.5e-7, 96.0), "0.000", "no negative zero");
         for value in [1e30, -1e300, 123456789.0, 0.1, -0.5] {
             for width in [34.0, 44.0, 60.0, 96.0] {
-                let room = (((width - 10.0) / 7.0_f32).floor()
-                    - if width >= 58.0 { 2.0 } else { 0.0 })
-                .max(4.0) as usize;
+                let room = number_room(width);
                 let text = fitted_number(value, width);
                 assert!(text.len() <= room.max(6), "{value} at {width}: {text}");
             }

@@ -108,7 +108,7 @@ fn name_field_ui(ui: &mut Ui, index: usize, name: &mut String, focus_name: &mut 
         response.request_focus();
     }
     if text.trim().is_empty() {
-        if response.lost_focus() || !response.has_focus() {
+        if !response.has_focus() {
             ui.data_mut(|d| d.remove::<String>(id));
             if response.lost_focus() {
                 super::fields::leave_notice(
