@@ -41,9 +41,9 @@ pub use render::{
     AdaptiveOptions, AdaptiveRender, CachedPass, render, render_adaptive, render_one_sample_cached,
     render_samples, render_samples_into,
 };
-pub use reshade::{HitCache, MAX_CACHE_BYTES, RetraceReason, Reuse, cache_fits};
+pub use reshade::{HitCache, MAX_CACHE_BYTES, RetraceReason, Reuse, cache_fits, rays_form_chains};
 pub use shade::{
-    LightOutcome, LightRecord, LightSkip, LocalLight, NoRecorder, Recorder, ShadowRay,
+    Branch, LightOutcome, LightRecord, LightSkip, LocalLight, NoRecorder, Recorder, ShadowRay,
     SkippedLight, Tracer, object_id_colour, phong_power,
 };
 pub use shapes::{MeshStore, TriangleHit, TriangleMesh};

@@ -50,6 +50,17 @@ pub fn cache_fits(world: &World, width: u32, height: u32) -> bool {
         <= MAX_CACHE_BYTES
 }
 
+/// Whether every pixel's rays form a chain the cache can hold: a transmissive material
+/// makes trees (a mirror and a transmitted ray from one hit), which the preview traces
+/// afresh on every edit instead.
+#[must_use]
+pub fn rays_form_chains(world: &World) -> bool {
+    world
+        .materials
+        .iter()
+        .all(|material| material.transmission == DVec3::ZERO)
+}
+
 /// The cached rays of one tile. The chains and light slots are shared with the cache
 /// before when an edit left them as they were (most edits add no ray), so a re-shade
 /// copies nothing.

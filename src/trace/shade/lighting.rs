@@ -4,63 +4,80 @@
 //! colour = sum over ambient lights of ka * L
 //!        + sum over other lights l of vis_l * L_l(p) * (kd * max(0, n.l) + ks * max(0, r.v)^s)
 //!        + km * colour(reflected ray)          while depth < max_depth
+//!        + kt * colour(transmitted ray)        while depth < max_depth
 //! ```
 //!
-//! The mirror term is added when the chain folds back (`tracer.rs`); here a ray returns
-//! its local colour, its mirror weight and the mirror ray to follow. What the re-shade
+//! The mirror and transmission terms are added when the tree folds back (`tracer.rs`);
+//! here a ray returns its local colour, its weights and the rays to follow. What the re-shade
 //! cache needs it gets through one call, [`RaySource::keep_light_factors`].
 
 use glam::DVec3;
 
+use super::bounce_tree::{Bounce, Branch, Spawned};
 use super::lit_factors::LitFactors;
-use super::mirror_chain::Bounce;
 use super::phong::LocalLight;
 use super::ray_source::RaySource;
 use super::record::{LightRecord, LightSkip, Recorder, ShadowRay, SkippedLight, unsampled_reason};
+use super::refraction::{Transmitted, media, mirror_dir, refract};
 use super::shadows::LightAt;
 use super::tracer::Tracer;
 use crate::scene::Material;
 use crate::trace::ray::Ray;
 use crate::trace::ray_counts::RayCounts;
+use crate::trace::shapes::Primitive;
 use crate::trace::terms::ActiveTerms;
 use crate::trace::world::{LightSample, SurfacePoint, spawn_ray};
 
-/// Where a ray is shaded: its hit, the material there, its depth in the mirror chain and
-/// the direction back along it.
+/// Which ray of a camera ray's tree is shaded: its depth (0 = the camera ray; what the
+/// ray source and `max_depth` go by) and its index in the tree (what recorders go by).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct RayAt {
+    pub depth: u32,
+    pub node: u32,
+}
+
+impl RayAt {
+    /// The camera ray.
+    pub const CAMERA: Self = Self { depth: 0, node: 0 };
+}
+
+/// Where a ray is shaded: its hit, the material there, which ray it is and the direction
+/// back along it.
 struct ShadingPoint<'a> {
     hit: &'a SurfacePoint,
     material: &'a Material,
     depth: u32,
+    node: u32,
     view_dir: DVec3,
 }
 
 impl Tracer<'_> {
-    /// One ray of the mirror chain at `depth`: what it adds itself, and the mirror ray to
-    /// follow, if one is cast. Inlined into both calls in [`Tracer::radiance`], so the pair
-    /// it returns is not passed through memory (callgrind: about 2% more instructions per
-    /// camera ray when it is not).
+    /// One ray of a camera ray's tree: what it adds itself, and the mirror and
+    /// transmitted rays to follow, where they are cast. Inlined into both calls in
+    /// [`Tracer::radiance`], so the pair it returns is not passed through memory
+    /// (callgrind: about 2% more instructions per camera ray when it is not).
     #[inline(always)]
     pub(crate) fn shade<R: Recorder>(
         &self,
         ray: &Ray,
-        depth: u32,
+        RayAt { depth, node }: RayAt,
         terms: &ActiveTerms,
         rays: &mut impl RaySource,
         counts: &mut RayCounts,
         recorder: &mut R,
-    ) -> (Bounce, Option<Ray>) {
+    ) -> (Bounce, Spawned) {
         let Some(hit) = rays.closest_hit(self.world, depth, ray) else {
             let background = if terms.background {
                 self.world.background
             } else {
                 DVec3::ZERO
             };
-            recorder.miss(depth, ray, background);
-            return (Bounce::local(background), None);
+            recorder.miss(node, ray, background);
+            return (Bounce::local(background), Spawned::NONE);
         };
         // Recorders see the scene's object index, whatever the world left out.
         recorder.hit(
-            depth,
+            node,
             ray,
             &SurfacePoint {
                 object: self.world.scene_object(hit.object),
@@ -73,6 +90,7 @@ impl Tracer<'_> {
             hit: &hit,
             material,
             depth,
+            node,
             // Camera rays are unit length and mirror reflection keeps the length.
             view_dir: -ray.dir,
         };
@@ -81,7 +99,7 @@ impl Tracer<'_> {
         // ambient: ka * (sum of ambient lights)
         if terms.ambient {
             let ambient = material.ambient * world.ambient;
-            recorder.ambient(depth, ambient);
+            recorder.ambient(node, ambient);
             colour += ambient;
         }
 
@@ -100,22 +118,47 @@ impl Tracer<'_> {
                 LightSkip::NoDiffuseOrSpecular
             };
             for &scene_index in &world.light_scene_index {
-                recorder.skipped_light(depth, &SkippedLight { scene_index, why });
+                recorder.skipped_light(node, &SkippedLight { scene_index, why });
             }
         }
 
-        // mirror: km * colour(reflected ray), added when the chain folds back
-        if terms.reflection && depth < world.max_depth && material.mirror != DVec3::ZERO {
-            let d = ray.dir;
-            let reflected_dir = d - 2.0 * d.dot(hit.n) * hit.n;
+        // mirror and transmission: km * colour(reflected ray) + kt * colour(transmitted
+        // ray), added when the tree folds back
+        let deeper = depth < world.max_depth;
+        let mut spawned = Spawned::NONE;
+        if terms.reflection && deeper && material.mirror != DVec3::ZERO {
             counts.reflection += 1;
-            let bounce = Bounce {
-                local: colour,
-                km: material.mirror,
-            };
-            return (bounce, Some(spawn_ray(&hit, reflected_dir)));
+            spawned.mirror = Some(spawn_ray(&hit, mirror_dir(ray.dir, hit.n)));
         }
-        (Bounce::local(colour), None)
+        if terms.transmission && deeper && material.transmission != DVec3::ZERO {
+            counts.transmission += 1;
+            spawned.transmitted = Some(self.transmitted_ray(ray, &hit, material));
+        }
+        let bounce = Bounce {
+            local: colour,
+            km: material.mirror,
+            kt: material.transmission,
+        };
+        (bounce, spawned)
+    }
+
+    /// The transmitted ray from `hit`: bent by Snell's law between air and the
+    /// material's `ior` (the ratio flipped for a ray leaving the object), along the mirror
+    /// direction where Snell has no solution. A plane has no inside: its transmitted ray
+    /// goes straight on. The origin is offset to the side the ray leaves on.
+    #[inline]
+    fn transmitted_ray(&self, ray: &Ray, hit: &SurfacePoint, material: &Material) -> (Ray, Branch) {
+        let transmitted = if self.world.objects[hit.object].shape == Primitive::Plane {
+            Transmitted::Refracted(ray.dir)
+        } else {
+            let (from, to) = media(ray.dir, hit.n_outward, material.ior);
+            refract(ray.dir, hit.n, from, to)
+        };
+        let branch = match transmitted {
+            Transmitted::Refracted(_) => Branch::Refracted,
+            Transmitted::InternallyReflected(_) => Branch::InternallyReflected,
+        };
+        (spawn_ray(hit, transmitted.dir()), branch)
     }
 
     /// What light `index` adds at `at`: `vis * L * (kd max(0, n.l) + ks max(0, r.v)^s)`,
@@ -132,7 +175,7 @@ impl Tracer<'_> {
         recorder: &mut R,
     ) -> Option<DVec3> {
         let world = self.world;
-        let (hit, material, depth) = (at.hit, at.material, at.depth);
+        let (hit, material, depth, node) = (at.hit, at.material, at.depth, at.node);
         let light = &world.lights[index];
         let Some(sample) = light.sample(hit.p) else {
             // A light of zero strength stays unknown: the factors of a light turned up
@@ -145,7 +188,7 @@ impl Tracer<'_> {
                     scene_index: world.light_scene_index[index],
                     why: unsampled_reason(light, hit.p),
                 };
-                recorder.skipped_light(depth, &skipped);
+                recorder.skipped_light(node, &skipped);
             }
             return None;
         };
@@ -201,7 +244,7 @@ impl Tracer<'_> {
                 diffuse,
                 specular,
             };
-            recorder.light(depth, &record);
+            recorder.light(node, &record);
         }
         lit
     }

@@ -200,6 +200,7 @@ pub fn term_tooltip(term: Term) -> &'static str {
         Term::Specular => "Off: no Phong highlights (ks L max(0, r.v)^s); matte surfaces only",
         Term::Shadows => "Off: no shadow rays; every light reaches every point it faces",
         Term::Reflection => "Off: no mirror rays; mirrors show only their own colour",
+        Term::Transmission => "Off: no refracted rays; glass shows only its own colour",
     }
 }
 
@@ -215,6 +216,7 @@ pub fn solo_tooltip(term: Term) -> &'static str {
              the same picture as the shadow-mask view, kept here beside the other terms"
         }
         Term::Reflection => "Only what mirrors add: km x the reflected colour",
+        Term::Transmission => "Only what glass lets through: kt x the refracted colour",
     }
 }
 

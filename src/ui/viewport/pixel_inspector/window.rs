@@ -7,7 +7,7 @@ use glam::DVec3;
 
 use super::placement::Placement;
 use super::{InspectedBounce, InspectedLight, InspectedPixel, PixelInspection};
-use crate::trace::BounceReport;
+use crate::trace::{BounceReport, Branch};
 use crate::ui::commands::Command;
 use crate::ui::state::RayPathSettings;
 
@@ -196,21 +196,37 @@ fn pixel_ui(ui: &mut egui::Ui, pixel: &InspectedPixel) {
             ui.monospace(colour_text(report.unclamped));
             ui.end_row();
         });
-    for (bounce, names) in report.bounces.iter().zip(&pixel.bounces) {
-        let title = match bounce.depth {
-            0 => "Camera ray".to_owned(),
-            d => format!("Reflection, depth {d}"),
-        };
-        egui::CollapsingHeader::new(RichText::new(title).strong())
-            .id_salt(("bounce", bounce.depth))
+    for (index, (bounce, names)) in report.bounces.iter().zip(&pixel.bounces).enumerate() {
+        egui::CollapsingHeader::new(RichText::new(bounce_title(bounce)).strong())
+            .id_salt(("bounce", index))
             .default_open(true)
-            .show(ui, |ui| bounce_ui(ui, bounce, names));
+            .show(ui, |ui| bounce_ui(ui, index, bounce, names));
     }
 }
 
-fn bounce_ui(ui: &mut egui::Ui, bounce: &BounceReport, names: &InspectedBounce) {
+/// "Camera ray", "Reflection, depth 2", "Refraction, depth 1 (from ray 1)", or
+/// "Total internal reflection, depth 3 (from ray 2)": rays number from 1 in the order the
+/// window lists them, named where a tree makes the parent ambiguous.
+fn bounce_title(bounce: &BounceReport) -> String {
+    let Some((parent, branch)) = bounce.from else {
+        return "Camera ray".to_owned();
+    };
+    let what = match branch {
+        Branch::Mirror => "Reflection",
+        Branch::Refracted => "Refraction",
+        Branch::InternallyReflected => "Total internal reflection",
+    };
+    let depth = bounce.depth;
+    if parent + 1 == depth as usize {
+        format!("{what}, depth {depth}")
+    } else {
+        format!("{what}, depth {depth} (from ray {})", parent + 1)
+    }
+}
+
+fn bounce_ui(ui: &mut egui::Ui, index: usize, bounce: &BounceReport, names: &InspectedBounce) {
     let (Some(hit), Some(hit_names)) = (&bounce.hit, &names.hit) else {
-        egui::Grid::new(("miss", bounce.depth))
+        egui::Grid::new(("miss", index))
             .num_columns(2)
             .show(ui, |ui| {
                 ui.label("hit");
@@ -220,7 +236,7 @@ fn bounce_ui(ui: &mut egui::Ui, bounce: &BounceReport, names: &InspectedBounce) 
             });
         return;
     };
-    egui::Grid::new(("hit", bounce.depth))
+    egui::Grid::new(("hit", index))
         .num_columns(2)
         .show(ui, |ui| {
             ui.label("hit");
@@ -235,12 +251,12 @@ fn bounce_ui(ui: &mut egui::Ui, bounce: &BounceReport, names: &InspectedBounce) 
             number_row_ui(ui, "ambient", colour_text(bounce.ambient));
         });
     for light in &names.lights {
-        light_ui(ui, light, bounce.depth);
+        light_ui(ui, light, index);
     }
     if names.lights.is_empty() {
         ui.weak("the scene has no lights");
     }
-    egui::Grid::new(("result", bounce.depth))
+    egui::Grid::new(("result", index))
         .num_columns(2)
         .show(ui, |ui| {
             // One colour per row: all three on one line would widen the window over
@@ -257,6 +273,11 @@ fn bounce_ui(ui: &mut egui::Ui, bounce: &BounceReport, names: &InspectedBounce) 
                     ui.end_row();
                 }
             }
+            if let Some((kt, transmitted)) = bounce.transmission {
+                number_row_ui(ui, "transmission kt", colour_text(kt));
+                number_row_ui(ui, "transmitted", colour_text(transmitted));
+                number_row_ui(ui, "kt × transmitted", colour_text(kt * transmitted));
+            }
             if let Some(unclamped) = bounce.unclamped {
                 number_row_ui(ui, "before each-ray clamp", colour_text(unclamped));
             }
@@ -265,7 +286,7 @@ fn bounce_ui(ui: &mut egui::Ui, bounce: &BounceReport, names: &InspectedBounce) 
 }
 
 /// One light: its name, what it did (green when it added light), and the numbers.
-fn light_ui(ui: &mut egui::Ui, light: &InspectedLight, depth: u32) {
+fn light_ui(ui: &mut egui::Ui, light: &InspectedLight, bounce: usize) {
     ui.horizontal(|ui| {
         ui.label(RichText::new(&light.label).underline());
         let colour = if light.adds_light {
@@ -278,7 +299,7 @@ fn light_ui(ui: &mut egui::Ui, light: &InspectedLight, depth: u32) {
     let Some(record) = &light.record else {
         return;
     };
-    egui::Grid::new(("light", depth, light.scene_index))
+    egui::Grid::new(("light", bounce, light.scene_index))
         .num_columns(2)
         .show(ui, |ui| {
             number_row_ui(ui, "strength", colour_text(record.strength));
