@@ -10,8 +10,8 @@ use std::process::Command;
 use glam::{DVec3, Vec3};
 use raylab::scene::{Scene, parse_scene};
 use raylab::trace::{
-    Image, Isolation, RayKind, RenderOptions, RenderProgress, Term, TermSwitches, TracedRay,
-    View, World, inspect_pixel, render, traced_rays,
+    Image, Isolation, RayKind, RenderOptions, RenderProgress, Term, TermSwitches, TracedRay, View,
+    World, inspect_pixel, render, traced_rays,
 };
 
 const GLASS: &str = r#""glass": (diffuse: (0.0, 0.0, 0.0), specular: (0.0, 0.0, 0.0), shininess: 1.0,
@@ -55,7 +55,9 @@ fn rays_of_centre_pixel(scene: &Scene) -> Vec<TracedRay> {
 fn render_with(scene: &Scene, switches: TermSwitches) -> Image {
     let world = World::new(scene).unwrap();
     let progress = RenderProgress::default();
-    render(&world, &options(scene, switches), &progress).unwrap().0
+    render(&world, &options(scene, switches), &progress)
+        .unwrap()
+        .0
 }
 
 /// A slab of glass 2h thick, turned `degrees` about y, in front of the camera on the z
@@ -112,7 +114,8 @@ fn a_glass_slab_shifts_a_ray_by_the_textbook_amount_and_leaves_it_parallel() {
 #[test]
 fn a_sphere_of_index_one_is_invisible_but_for_its_highlight() {
     let wall = r#"(name: "wall", shape: Plane, transform: (translate: (0.0, 0.0, -3.0), scale: (10.0, 10.0, 1.0)), material: "wall")"#;
-    let ball = r#"(name: "ball", shape: Sphere, transform: (scale: (1.5, 1.5, 1.5)), material: "glass")"#;
+    let ball =
+        r#"(name: "ball", shape: Sphere, transform: (scale: (1.5, 1.5, 1.5)), material: "glass")"#;
     let camera = "position: (0.0, 0.5, 8.0), look_at: (0.0, 0.0, 0.0)";
     let with_ball = scene(camera, 1.0, &format!("{wall}, {ball}"));
     let without = scene(camera, 1.0, wall);
@@ -163,17 +166,19 @@ fn total_internal_reflection_starts_at_the_critical_angle() {
         if expected == RayKind::InternalReflection {
             // Along the mirror direction: down again, at the same angle.
             let d = rays[1].direction;
-            assert!((d - DVec3::new(look.x, -look.y, 0.0)).length() < 1e-12, "{d}");
+            assert!(
+                (d - DVec3::new(look.x, -look.y, 0.0)).length() < 1e-12,
+                "{d}"
+            );
         }
     }
 }
 
 #[test]
 fn the_transmission_solo_adds_up_with_the_other_terms_and_off_removes_it() {
-    let text = std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/glass.ron"),
-    )
-    .unwrap();
+    let text =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/glass.ron"))
+            .unwrap();
     let mut scene = parse_scene(&text).unwrap();
     scene.camera.width = 80;
     scene.camera.height = 60;
@@ -198,7 +203,10 @@ fn the_transmission_solo_adds_up_with_the_other_terms_and_off_removes_it() {
         );
         glass_pixels += usize::from(solos[4].pixels[i] != Vec3::ZERO);
     }
-    assert!(glass_pixels > 200, "the glass shows in {glass_pixels} pixels");
+    assert!(
+        glass_pixels > 200,
+        "the glass shows in {glass_pixels} pixels"
+    );
     // Off: the glass shows only its own colour, and the picture loses what it let through.
     let mut off = TermSwitches::ALL_ON;
     off.set(Term::Transmission, false);
@@ -235,7 +243,12 @@ fn raylab_render_off_transmission_writes_the_librarys_pixels() {
         ),
     ] {
         let out = dir.join("glass.png");
-        let mut args = vec!["render", path.to_str().unwrap(), "-o", out.to_str().unwrap()];
+        let mut args = vec![
+            "render",
+            path.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+        ];
         args.extend(["--width", "64", "--height", "48", "--spp", "1"]);
         args.extend(&flags);
         let result = Command::new(env!("CARGO_BIN_EXE_raylab"))

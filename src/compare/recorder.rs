@@ -339,7 +339,11 @@ impl Recorder for SampleRecorder<'_, '_> {
         let Some(sample) = self.ctx.world.lights[index].sample(hit.p) else {
             return;
         };
-        if record.blocked_by.is_some()
+        // What the shadow rays took away: all of the light where a point light is
+        // blocked, the hidden share of a sphere light.
+        let hidden = 1.0 - record.visibility.0;
+        if record.shadow_ray_cast
+            && hidden > 0.0
             && let Some(world_object) = bounce.world_object
         {
             let light = LocalLight {
@@ -351,7 +355,7 @@ impl Recorder for SampleRecorder<'_, '_> {
             let (diffuse, specular) = local_terms(self.ctx.material(world_object), &light);
             self.tally.add(
                 self.channel(Kind::Shadow(index), object),
-                t * (diffuse + specular),
+                t * hidden * (diffuse + specular),
             );
         }
         self.bugs(&bounce, &hit, record, &sample);

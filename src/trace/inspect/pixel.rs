@@ -6,7 +6,9 @@ use glam::{DVec2, DVec3};
 use crate::trace::film::{PinholeCamera, RenderOptions};
 use crate::trace::ray::Ray;
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::shade::{Branch, LightOutcome, LightRecord, Recorder, SkippedLight, Tracer};
+use crate::trace::shade::{
+    Branch, LightOutcome, LightRecord, Recorder, ShadowRay, SkippedLight, Tracer,
+};
 use crate::trace::shapes::TriangleHit;
 use crate::trace::terms::{Term, TermSwitches};
 use crate::trace::world::{SurfacePoint, World};
@@ -40,6 +42,8 @@ pub struct BounceReport {
     /// Where each blocked shadow ray met its blocker: `(scene index of the light, the
     /// blocker's surface)`.
     pub blocker_hits: Vec<(usize, SurfacePoint)>,
+    /// The shadow rays of sphere lights, as cast: `(scene index of the light, the ray)`.
+    pub sphere_shadow_rays: Vec<(usize, ShadowRay)>,
     /// `(km, colour of the reflected ray)` when a mirror ray was cast.
     pub reflection: Option<(DVec3, DVec3)>,
     /// `(kt, colour of the transmitted ray)` when a transmitted ray was cast.
@@ -64,6 +68,7 @@ impl BounceReport {
             lights: Vec::new(),
             skipped: Vec::new(),
             blocker_hits: Vec::new(),
+            sphere_shadow_rays: Vec::new(),
             reflection: None,
             transmission: None,
             colour: DVec3::ZERO,
@@ -103,8 +108,9 @@ impl BounceReport {
     pub fn sum_of_terms(&self) -> DVec3 {
         let local: DVec3 = self.lights.iter().map(|l| l.diffuse + l.specular).sum();
         let mirror = self.reflection.map_or(DVec3::ZERO, |(km, c)| km * c);
+        let transmitted = self.transmission.map_or(DVec3::ZERO, |(kt, c)| kt * c);
         if self.hit.is_some() {
-            self.ambient + local + mirror
+            self.ambient + local + mirror + transmitted
         } else {
             self.background
         }
@@ -214,6 +220,11 @@ impl Recorder for ReportRecorder<'_> {
             };
             bounce.blocker_hits.push((record.scene_index, hit));
         }
+    }
+    fn sphere_shadow_ray(&mut self, node: u32, light: usize, ray: &ShadowRay) {
+        self.bounces[node as usize]
+            .sphere_shadow_rays
+            .push((light, *ray));
     }
     fn skipped_light(&mut self, node: u32, skipped: &SkippedLight) {
         self.bounces[node as usize].skipped.push(*skipped);

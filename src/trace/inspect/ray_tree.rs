@@ -117,6 +117,22 @@ pub fn traced_rays(report: &PixelReport) -> Vec<TracedRay> {
             light: None,
             blocked_by: None,
         });
+        // A sphere light's rays, each with its own end (the blocker is found again
+        // where the overlay needs its point: not here).
+        for (light, shadow) in &bounce.sphere_shadow_rays {
+            let length = shadow.ray.dir.length();
+            rays.push(TracedRay {
+                kind: RayKind::Shadow,
+                depth: bounce.depth,
+                origin: shadow.ray.origin,
+                direction: shadow.ray.dir / length,
+                t: None,
+                t_max: shadow.t_max.is_finite().then_some(shadow.t_max * length),
+                hit: None,
+                light: Some(*light),
+                blocked_by: shadow.blocked_by,
+            });
+        }
         for light in &bounce.lights {
             let Some(shadow) = light.shadow_ray else {
                 continue;

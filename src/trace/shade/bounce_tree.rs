@@ -9,29 +9,10 @@
 use glam::DVec3;
 use smallvec::SmallVec;
 
+use super::branch::Branch;
 use super::record::Recorder;
 use crate::scene::{ClampConvention, Conventions, MirrorConvention};
 use crate::trace::ray::Ray;
-
-/// Which of its parent's rays a secondary ray is.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Branch {
-    /// The mirror ray (weight km).
-    Mirror,
-    /// The transmitted ray, bent by Snell's law (weight kt).
-    Refracted,
-    /// The transmitted share where Snell's law has no solution: along the mirror
-    /// direction (weight kt).
-    InternallyReflected,
-}
-
-impl Branch {
-    /// Whether the ray carries the transmitted share (refracted or internally reflected).
-    #[must_use]
-    pub fn is_transmitted(self) -> bool {
-        self != Branch::Mirror
-    }
-}
 
 /// What one ray contributes: its own colour (ambient, diffuse and specular at a hit, the
 /// background at a miss) and the weights of the colours its mirror and transmitted rays
@@ -109,6 +90,19 @@ fn ray_colour(colour: DVec3, conventions: &Conventions) -> DVec3 {
         ClampConvention::Pixel => colour,
         ClampConvention::EachRay => colour.clamp(DVec3::ZERO, DVec3::ONE),
     }
+}
+
+/// Which ray of a camera ray's tree is shaded: its depth (0 = the camera ray; what the
+/// ray source and `max_depth` go by) and its index in the tree (what recorders go by).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct RayAt {
+    pub depth: u32,
+    pub node: u32,
+}
+
+impl RayAt {
+    /// The camera ray.
+    pub const CAMERA: Self = Self { depth: 0, node: 0 };
 }
 
 /// The rays a shaded ray starts: a mirror ray and a transmitted one, each if cast.

@@ -13,13 +13,14 @@
 
 use glam::DVec3;
 
-use super::bounce_tree::{Bounce, Branch, Spawned};
+use super::bounce_tree::{Bounce, RayAt, Spawned};
+use super::branch::Branch;
 use super::lit_factors::LitFactors;
 use super::phong::LocalLight;
 use super::ray_source::RaySource;
 use super::record::{LightRecord, LightSkip, Recorder, ShadowRay, SkippedLight, unsampled_reason};
 use super::refraction::{Transmitted, media, mirror_dir, refract};
-use super::shadows::LightAt;
+use super::shadows::{LightAt, Visibility};
 use super::tracer::Tracer;
 use crate::scene::Material;
 use crate::trace::ray::Ray;
@@ -27,19 +28,6 @@ use crate::trace::ray_counts::RayCounts;
 use crate::trace::shapes::Primitive;
 use crate::trace::terms::ActiveTerms;
 use crate::trace::world::{LightSample, SurfacePoint, spawn_ray};
-
-/// Which ray of a camera ray's tree is shaded: its depth (0 = the camera ray; what the
-/// ray source and `max_depth` go by) and its index in the tree (what recorders go by).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) struct RayAt {
-    pub depth: u32,
-    pub node: u32,
-}
-
-impl RayAt {
-    /// The camera ray.
-    pub const CAMERA: Self = Self { depth: 0, node: 0 };
-}
 
 /// Where a ray is shaded: its hit, the material there, which ray it is and the direction
 /// back along it.
@@ -197,16 +185,21 @@ impl Tracer<'_> {
             self.light_factors(hit, &sample, at.view_dir, material, n_dot_l)
         });
         // Plain locals on the hot path; the record is built only for a recorder.
-        let (mut cast, mut blocker) = (false, None);
+        let mut cast = false;
+        let mut seen = Visibility {
+            fraction: 1.0,
+            blocker: None,
+            rays: 0,
+        };
         let (mut diffuse, mut specular) = (DVec3::ZERO, DVec3::ZERO);
         let mut lit = None;
         if n_dot_l > 0.0 {
             if terms.shadows {
-                let to = LightAt { depth, index };
-                blocker = self.shadow_blocker(hit, &sample, to, rays, counts);
+                let to = LightAt { depth, node, index };
+                seen = self.visibility(hit, &sample, to, rays, counts, recorder);
                 cast = true;
             }
-            if blocker.is_none() {
+            if seen.fraction > 0.0 {
                 let local = LocalLight {
                     n: hit.n,
                     to_light: sample.to_light,
@@ -219,14 +212,20 @@ impl Tracer<'_> {
                 if terms.specular {
                     specular = local.specular(material.specular, material.shininess, n_dot_l);
                 }
+                // vis_l: a sphere light partly hidden (a point light is all or nothing).
+                if seen.fraction < 1.0 {
+                    diffuse *= seen.fraction;
+                    specular *= seen.fraction;
+                }
                 lit = Some(diffuse + specular);
             }
         }
         if R::ACTIVE {
             // The recorders see the scene's index of the blocker, and the shadow ray
             // made again (spawning is deterministic).
-            let blocked_by = blocker.map(|i| world.scene_object(i));
-            let shadow_ray = cast.then(|| {
+            let blocked_by = seen.blocker.map(|i| world.scene_object(i));
+            let point_light = world.light_spheres[index].is_none();
+            let shadow_ray = (cast && point_light).then(|| {
                 let query = self.shadow_query(hit, &sample);
                 ShadowRay {
                     ray: query.ray,
@@ -241,6 +240,7 @@ impl Tracer<'_> {
                 blocked_by,
                 shadow_ray_cast: cast,
                 shadow_ray,
+                visibility: (seen.fraction, seen.rays),
                 diffuse,
                 specular,
             };

@@ -4,6 +4,7 @@
 //! recorder sees every number.
 
 mod bounce_tree;
+mod branch;
 mod depth_view;
 mod lighting;
 mod lit_factors;
@@ -15,9 +16,8 @@ mod refraction;
 mod shadows;
 mod tracer;
 
-pub use bounce_tree::Branch;
-pub(crate) use bounce_tree::{Bounce, BroughtBack};
-pub(crate) use lighting::RayAt;
+pub(crate) use bounce_tree::{Bounce, BroughtBack, RayAt};
+pub use branch::Branch;
 pub use lit_factors::LitFactors;
 pub use object_id::object_id_colour;
 pub use phong::{LocalLight, diffuse_term, phong_power, specular_term};

@@ -5,7 +5,7 @@
 
 use glam::DVec3;
 
-use super::bounce_tree::Branch;
+use super::branch::Branch;
 use crate::trace::ray::Ray;
 use crate::trace::world::{SurfacePoint, WorldLight};
 
@@ -18,12 +18,17 @@ pub struct LightRecord {
     pub strength: DVec3,
     /// n.l (may be negative: the light is behind the surface).
     pub n_dot_l: f64,
-    /// The scene index of the object that blocked the shadow ray, if one did.
+    /// The scene index of the object that blocked the shadow ray, if one did (for a
+    /// sphere light: the first ray's blocker, where none of its rays reached it).
     pub blocked_by: Option<usize>,
     /// Whether a shadow ray was cast at all.
     pub shadow_ray_cast: bool,
-    /// The shadow ray, when one was cast.
+    /// The shadow ray, when one was cast to a point light (a sphere light's rays go to
+    /// [`Recorder::sphere_shadow_ray`]).
     pub shadow_ray: Option<ShadowRay>,
+    /// The fraction of the shadow rays that reached the light (1 where none was cast),
+    /// and how many were cast: vis_l of the lighting model.
+    pub visibility: (f64, u32),
     /// The diffuse contribution added.
     pub diffuse: DVec3,
     /// The specular contribution added.
@@ -51,6 +56,9 @@ pub trait Recorder {
     fn ambient(&mut self, _node: u32, _colour: DVec3) {}
     /// A light at the hit of ray `node` that can reach it (in front of the surface or not).
     fn light(&mut self, _node: u32, _record: &LightRecord) {}
+    /// One of a sphere light's shadow rays from the hit of ray `node`, as cast, to the
+    /// light with scene index `light`.
+    fn sphere_shadow_ray(&mut self, _node: u32, _light: usize, _ray: &ShadowRay) {}
     /// A light passed over at the hit of ray `node`, and why.
     fn skipped_light(&mut self, _node: u32, _skipped: &SkippedLight) {}
     /// The mirror term of ray `node`: `km * reflected` was added.

@@ -19,9 +19,9 @@
 
 use glam::DVec3;
 
-use super::bounce_tree::{Branch, BroughtBack, Node, Spawned, Tree, fold_back, returned};
+use super::bounce_tree::{BroughtBack, Node, RayAt, Spawned, Tree, fold_back, returned};
+use super::branch::Branch;
 use super::depth_view::DepthRange;
-use super::lighting::RayAt;
 use super::object_id::object_id_colour;
 use super::ray_source::{LiveRays, RaySource};
 use super::record::Recorder;

@@ -7,7 +7,7 @@ use glam::DVec3;
 
 use super::placement::Placement;
 use super::{InspectedBounce, InspectedLight, InspectedPixel, PixelInspection};
-use crate::trace::{BounceReport, Branch};
+use crate::trace::{BounceReport, Branch, LightRecord};
 use crate::ui::commands::Command;
 use crate::ui::state::RayPathSettings;
 
@@ -305,16 +305,33 @@ fn light_ui(ui: &mut egui::Ui, light: &InspectedLight, bounce: usize) {
             number_row_ui(ui, "strength", colour_text(record.strength));
             number_row_ui(ui, "n·l", format!("{:.4}", record.n_dot_l));
             ui.label("shadow ray");
-            ui.label(match (record.shadow_ray, record.blocked_by) {
-                (Some(_), Some(_)) => "blocked",
-                (Some(_), None) => "cast, reaches the light",
-                (None, _) if record.n_dot_l <= 0.0 => "not cast (light behind the surface)",
-                (None, _) => "not cast (shadows off)",
-            });
+            ui.label(shadow_text(record));
             ui.end_row();
             number_row_ui(ui, "diffuse", colour_text(record.diffuse));
             number_row_ui(ui, "specular", colour_text(record.specular));
         });
+}
+
+/// What a light's shadow rays found: "blocked", "12 of 16 reach the light (vis 0.75)".
+fn shadow_text(record: &LightRecord) -> String {
+    let (fraction, rays) = record.visibility;
+    if !record.shadow_ray_cast {
+        return if record.n_dot_l <= 0.0 {
+            "not cast (light behind the surface)"
+        } else {
+            "not cast (shadows off)"
+        }
+        .to_owned();
+    }
+    if rays > 1 {
+        let reach = (fraction * f64::from(rays)).round();
+        return format!("{reach} of {rays} reach the light (vis {fraction:.3})");
+    }
+    if record.blocked_by.is_some() {
+        "blocked".to_owned()
+    } else {
+        "cast, reaches the light".to_owned()
+    }
 }
 
 /// What the isolation switches leave out of every bounce, one line each:
