@@ -138,7 +138,7 @@ pub fn non_finite_text(count: u64) -> String {
     format!("{count} non-finite sample{s}")
 }
 
-/// The five switches and the solo choice.
+/// The six switches and the solo choice.
 fn terms_ui(ui: &mut egui::Ui, settings: &mut PreviewSettings) {
     for term in Term::ALL {
         let mut on = settings.switches.is_on(term);
