@@ -21,6 +21,8 @@ pub enum ExplainedTerm {
     Shadows,
     /// The mirror term.
     Reflection,
+    /// The transmission (refraction) term.
+    Transmission,
     /// Which surface a pixel sees.
     Geometry,
     /// The colour of rays that hit nothing.
@@ -39,6 +41,7 @@ impl ExplainedTerm {
             ExplainedTerm::Specular => "specular",
             ExplainedTerm::Shadows => "shadows",
             ExplainedTerm::Reflection => "reflection",
+            ExplainedTerm::Transmission => "transmission",
             ExplainedTerm::Geometry => "geometry",
             ExplainedTerm::Background => "background",
             ExplainedTerm::Encoding => "encoding",

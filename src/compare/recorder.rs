@@ -92,6 +92,9 @@ impl<'w> Context<'w> {
 struct Bounce {
     /// This ray's mirror ray, once started.
     mirror_child: Option<usize>,
+    /// Whether a transmitted ray is on the path from the camera to this ray: its own
+    /// transmission is then part of that ray's, already counted.
+    through_glass: bool,
     /// The scene object hit (what the channels are per).
     object: Option<usize>,
     /// The world object hit (a group's member, a CSG node): what its material and shape
@@ -151,6 +154,9 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
         let node = node as usize;
         self.chain.truncate(node);
         let from = from.map(|(parent, branch)| (parent as usize, branch));
+        let through_glass = from.is_some_and(|(parent, branch)| {
+            branch.is_transmitted() || self.chain[parent].through_glass
+        });
         let throughput = match from {
             None => DVec3::ONE,
             Some((parent, branch)) => {
@@ -171,6 +177,7 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
         };
         self.chain.push(Bounce {
             mirror_child: None,
+            through_glass,
             object: None,
             world_object: None,
             hit: None,
@@ -368,6 +375,21 @@ impl Recorder for SampleRecorder<'_, '_> {
         if let Some(object) = object {
             self.tally
                 .add(self.channel(Kind::Reflection, object), t * km * reflected);
+        }
+    }
+
+    fn transmission(&mut self, node: u32, kt: DVec3, transmitted: DVec3, _: Branch) {
+        let bounce = &self.chain[node as usize];
+        let (t, object) = (bounce.throughput, bounce.object);
+        // The first transmission on each path holds all that glass adds below it: the
+        // channel is then what a picture without transmission lacks, no part twice.
+        if let Some(object) = object
+            && !bounce.through_glass
+        {
+            self.tally.add(
+                self.channel(Kind::Transmission, object),
+                t * kt * transmitted,
+            );
         }
     }
 
