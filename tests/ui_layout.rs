@@ -16,12 +16,13 @@ use raylab::ui::{
 };
 
 /// Every control of the term toolbar and of the gizmo mode buttons.
-const TOOLBAR_CONTROLS: [&str; 14] = [
+const TOOLBAR_CONTROLS: [&str; 15] = [
     "ambient",
     "diffuse",
     "specular",
     "shadows",
     "reflection",
+    "transmission",
     "solo",
     "view",
     "NaN guard",
@@ -58,6 +59,21 @@ fn at_800_by_500_every_toolbar_control_is_on_screen_between_the_panels() {
             assert!(!ra.intersects(*rb), "{a} {ra:?} overlaps {b} {rb:?}");
         }
     }
+}
+
+#[test]
+fn at_the_default_window_size_the_toolbar_has_its_two_rows() {
+    // 1280 x 800, the window `cargo run` opens: the six switches, solo and view on the
+    // first row, the tools (the NaN guard among them) on the second.
+    let harness = editor_harness(EditorOptions::default(), Vec2::new(1280.0, 800.0), 64);
+    let row = |label: &str| harness.get_by_label(label).rect().center().y;
+    for label in ["transmission", "solo", "view"] {
+        assert_eq!(row(label), row("ambient"), "{label} on the first row");
+    }
+    for label in ["Convergence", "NaN guard"] {
+        assert_eq!(row(label), row("Inspect"), "{label} on the second row");
+    }
+    assert!(row("Inspect") > row("ambient"));
 }
 
 #[test]

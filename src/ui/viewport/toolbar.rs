@@ -1,7 +1,8 @@
-//! The toolbar over the viewport: the five term switches, a solo choice, the view picker,
-//! the NaN guard, the pixel inspector's mode and the convergence plot, wrapped onto as
-//! many rows as the viewport's width needs. It edits editor
-//! state ([`PreviewSettings`]), not the scene: nothing here is an undo step.
+//! The toolbar over the viewport: the six term switches, a solo choice and the view
+//! picker (wrapped onto more rows only where the viewport's width needs it), then a row
+//! that is always there: the pixel inspector's mode, the convergence plot, the NaN guard
+//! and what is isolated. It edits editor state ([`PreviewSettings`]), not the scene:
+//! nothing here is an undo step.
 
 use egui::{Align, Color32, CornerRadius, Layout, Pos2, Rect, RichText, Shape, Stroke, UiBuilder};
 
@@ -48,8 +49,6 @@ pub fn toolbar_ui(
             terms_ui(ui, &mut edited);
             ui.separator();
             view_ui(ui, &mut edited);
-            ui.separator();
-            guard_ui(ui, &mut edited, non_finite);
         })
         .response
         .rect;
@@ -72,6 +71,8 @@ pub fn toolbar_ui(
                 );
             ui.toggle_value(&mut edited.show_convergence, "Convergence")
                 .on_hover_text("Plot how much each preview pass still changes the picture");
+            ui.separator();
+            guard_ui(ui, &mut edited, non_finite);
             if let Some(note) = isolated {
                 ui.separator();
                 isolation_marker_ui(ui, note, commands);
