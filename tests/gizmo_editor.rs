@@ -167,3 +167,42 @@ fn clicking_a_light_marker_selects_the_light() {
     click_at(&mut harness, pos);
     assert_eq!(harness.state().selection(), &Selection::Light(1));
 }
+
+#[test]
+fn an_arrow_that_runs_past_the_pictures_top_edge_is_drawn_and_grabbed_in_the_margin() {
+    let mut harness = harness();
+    select(&mut harness, "red ball");
+    // Put the ball 6 pixels below the picture's top edge, at the camera's own distance:
+    // its y arrow (84 points long) runs up into the margin above the picture.
+    let shown = harness.state().shown_camera();
+    let camera = raylab::trace::PinholeCamera::new(&shown, shown.width, shown.height);
+    let ray = camera.ray(glam::DVec2::new(f64::from(shown.width) * 0.5, 6.0));
+    let distance = (shown.look_at - shown.position).length();
+    let place = ray.origin + ray.dir.normalize() * distance;
+    for (axis, value) in ["x", "y", "z"].iter().zip(place.to_array()) {
+        harness
+            .get_by_label(&format!("translate {axis}"))
+            .set_value_accesskit(value);
+        harness.run();
+    }
+    let origin = trs(harness.state().scene(), 1).translate;
+    let length = ARROW_POINTS * world_per_point(&harness, origin);
+    let grab = screen(&harness, origin + DVec3::Y * length * 0.8);
+    let top = picture(&harness).min.y;
+    assert!(
+        grab.y < top - 20.0,
+        "the grab point {grab:?} is above the picture ({top})"
+    );
+    drag(
+        &mut harness,
+        grab,
+        grab + egui::vec2(0.0, 30.0),
+        Modifiers::NONE,
+    );
+    let moved = trs(harness.state().scene(), 1).translate;
+    assert!(
+        moved.y < origin.y - 1e-3,
+        "dragged down from the margin: {moved} from {origin}"
+    );
+    assert_eq!((moved.x, moved.z), (origin.x, origin.z), "only y changes");
+}

@@ -167,6 +167,62 @@ fn a_light_marker_under_the_gizmo_buttons_does_not_take_their_presses() {
     );
 }
 
+#[test]
+fn a_lights_mute_and_solo_buttons_stay_on_top_of_the_not_the_full_picture_marker() {
+    let mut harness = harness();
+    let mut settings = *harness.state().preview_settings();
+    settings.switches.set(Term::Diffuse, false);
+    harness
+        .state_mut()
+        .push(Command::SetPreviewSettings(settings));
+    harness.run();
+    let marker = harness.get_by_label_contains(NOT_FULL_PICTURE).rect();
+    let picture = harness.get_by_label(VIEWPORT_LABEL).rect();
+    // Put the point light so that its M button (drawn 9 points right of and 22 points
+    // above the marker dot) lands in the middle of the amber marker.
+    let dot = marker.center() + Vec2::new(-19.0, 13.0);
+    let scene = harness.state().scene().clone();
+    let (w, h) = (scene.camera.width, scene.camera.height);
+    let image_point = DVec2::new(
+        f64::from((dot.x - picture.min.x) / picture.width()) * f64::from(w),
+        f64::from((dot.y - picture.min.y) / picture.height()) * f64::from(h),
+    );
+    let ray = PinholeCamera::new(&scene.camera, w, h).ray(image_point);
+    let index = scene
+        .lights
+        .iter()
+        .position(|l| matches!(l, Light::Point { .. }))
+        .expect("the default scene has a point light");
+    let mut light = scene.lights[index].clone();
+    if let Light::Point { position, .. } = &mut light {
+        *position = ray.at(6.0);
+    }
+    harness
+        .state_mut()
+        .push(Command::Edit(SceneEdit::SetLight(index, light)));
+    harness
+        .state_mut()
+        .push(Command::Select(Selection::Light(index)));
+    harness.run();
+    let mute = harness
+        .get_all_by_label_contains("(marker)")
+        .find(|node| {
+            node.accesskit_node()
+                .label()
+                .is_some_and(|l| l.starts_with("mute "))
+        })
+        .expect("the selected light's M button");
+    assert!(
+        marker.contains(mute.rect().center()),
+        "the M button {:?} lies under the marker {marker:?}",
+        mute.rect()
+    );
+    mute.click();
+    harness.run();
+    let muted = &harness.state().isolation().muted_lights;
+    assert!(muted.contains(&index), "the click reached the M button");
+}
+
 /// The inspector's left edge and the viewport's picture, where a person sees them.
 fn layout_marks(harness: &Harness<'_, EditorApp>) -> (f32, Rect) {
     let inspector = harness.get_by_label("INSPECTOR").rect().min.x;

@@ -77,6 +77,9 @@ pub struct GizmoInput<'a> {
     pub isolation: &'a Isolation,
     /// Inspect mode: only navigation, no handle.
     pub navigate_only: bool,
+    /// Where the gizmo is drawn and grabbed: the viewport around the picture, so a
+    /// light's arrows near an edge of the picture run on into the margin, whole.
+    pub canvas: Rect,
 }
 
 /// The target a handle drag started now would have.
@@ -105,6 +108,7 @@ pub fn gizmo_ui(
         selection,
         isolation,
         navigate_only,
+        canvas,
     } = input;
     let picture = *view.screen_from_image.to();
     let ctx = ui.ctx().clone();
@@ -159,11 +163,10 @@ pub fn gizmo_ui(
         _ => None,
     };
     let hot = dragged_handle.or_else(|| response.hover_pos().and_then(pick));
-    let painter = ui.painter_at(picture);
+    let canvas = canvas.union(picture);
+    let painter = ui.painter_at(canvas);
     paint_elements(&painter, &elements, hot);
-    marker_toggles_ui(
-        ui, picture, &elements, scene, selection, isolation, commands,
-    );
+    marker_toggles_ui(ui, canvas, &elements, scene, selection, isolation, commands);
     paint_hints(&painter, &state, now, scene, selection, &elements, view);
     set_cursor(&ctx, cursor(state.drag.as_ref().map(Drag::dragging), hot));
 
