@@ -137,9 +137,16 @@ fn dragging_the_tip_handle_re_aims_the_spotlight() {
         panic!("light 4 is the spotlight");
     };
     let length = (scene.camera.position - scene.camera.look_at).length() * 0.3;
-    let wanted = DVec3::new(-0.2, -1.0, 0.3).normalize();
-    let from = screen(&harness, position + direction.normalize() * length);
-    let to = screen(&harness, position + wanted * length);
+    // Grab the tip and let go over a point of the plane through it that faces the eye,
+    // well off the sphere the tip sits on between drags: the light aims through it.
+    let start_tip = position + direction.normalize() * length;
+    let (u, v) = (scene.camera.position - start_tip)
+        .normalize()
+        .any_orthonormal_pair();
+    let target = start_tip + length * (1.5 * u - 0.8 * v);
+    let wanted = (target - position).normalize();
+    let from = screen(&harness, start_tip);
+    let to = screen(&harness, target);
     drag(&mut harness, from, to, Modifiers::NONE);
     let Light::Spot { direction: now, .. } = harness.state().scene().lights[3] else {
         panic!("still a spotlight");

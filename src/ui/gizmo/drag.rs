@@ -18,7 +18,7 @@ use crate::ui::commands::{Command, Selection};
 use crate::ui::gizmo::edit::{DragGeometry, Grabbed, drag_edit, grab};
 use crate::ui::gizmo::hit::handle_shapes;
 use crate::ui::gizmo::lights::{dim_unlit_markers, marker_toggles_ui};
-use crate::ui::gizmo::overlay::{Part, gizmo_elements};
+use crate::ui::gizmo::overlay::{Element, Part, gizmo_elements};
 use crate::ui::gizmo::paint::{paint_elements, paint_matrix_hint, paint_readout};
 use crate::ui::gizmo::projection::ViewMapping;
 use crate::ui::gizmo::toolbar::{ToolbarAction, gizmo_modes_ui};
@@ -82,6 +82,24 @@ pub struct GizmoInput<'a> {
     pub canvas: Rect,
 }
 
+/// A spot light's tip or a directional light's tail being dragged is drawn under the
+/// cursor: the light aims through the point there (see
+/// [`crate::gizmo::spot::aim_from_tip_drag`]), which may lie off the sphere the handle
+/// sits on between drags.
+fn follow_the_cursor(elements: &mut [Element], drag: Option<&Drag>, cursor: Option<Pos2>) {
+    let (Some(Drag::Handle { handle, .. }), Some(cursor)) = (drag, cursor) else {
+        return;
+    };
+    if !matches!(handle, HandleId::SpotTip | HandleId::Aim) {
+        return;
+    }
+    for element in elements.iter_mut().filter(|e| e.handle == Some(*handle)) {
+        if let Part::Dot(at, _) = &mut element.part {
+            *at = cursor;
+        }
+    }
+}
+
 /// The target a handle drag started now would have.
 fn target_now(scene: &Scene, selection: &Selection) -> DragTarget<Selection> {
     DragTarget {
@@ -118,6 +136,11 @@ pub fn gizmo_ui(
 
     let mut elements = gizmo_elements(scene, selection, state.mode, view);
     dim_unlit_markers(&mut elements, isolation);
+    follow_the_cursor(
+        &mut elements,
+        state.drag.as_ref(),
+        ctx.input(|i| i.pointer.latest_pos()),
+    );
     let shapes = handle_shapes(&elements);
     let hit_shapes: Vec<HandleShape> = shapes.iter().map(|(s, _)| *s).collect();
     // A marker or handle under the mode buttons must not take their presses.
