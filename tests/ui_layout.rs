@@ -77,6 +77,25 @@ fn at_the_default_window_size_the_toolbar_has_its_two_rows() {
 }
 
 #[test]
+fn a_long_status_message_is_cut_short_and_never_runs_over_the_counts() {
+    // An import's summary is long; in a 1000-point window it would cover the counts.
+    let mut harness = editor_harness(EditorOptions::default(), Vec2::new(1000.0, 700.0), 64);
+    let course = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/legacy/full.txt");
+    harness.state_mut().push(Command::Open(course.into()));
+    harness.run();
+    harness.run();
+    let message = harness
+        .get_by_label_contains("read as the 2020 framework")
+        .rect();
+    let counts = harness.get_by_label("6 objects, 4 lights").rect();
+    assert!(
+        message.min.x > counts.max.x,
+        "the message {message:?} runs over the counts {counts:?}"
+    );
+    assert!(message.max.x <= 1000.0, "{message:?} stays in the window");
+}
+
+#[test]
 fn a_preview_that_is_not_the_full_picture_says_so_and_why() {
     let mut harness = harness();
     assert!(harness.query_by_label_contains(NOT_FULL_PICTURE).is_none());

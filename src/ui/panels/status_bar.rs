@@ -61,16 +61,22 @@ pub fn status_bar_ui(ui: &mut Ui, info: &StatusInfo<'_>) {
                     .desired_height(10.0),
             );
         }
+        // The message takes what room is left, cut short with its whole text on hover:
+        // a long one (an import's summary) never runs over the counts.
         ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
             let red = Color32::from_rgb(255, 120, 110);
+            let shown = |ui: &mut Ui, text: &str, colour: Color32| {
+                ui.add(egui::Label::new(RichText::new(text).color(colour)).truncate())
+                    .on_hover_text(text)
+            };
             if let Some(error) = info.autosave_error {
-                ui.label(RichText::new(error).color(red)).on_hover_text(
+                shown(ui, error, red).on_hover_text(
                     "Unsaved changes are not protected against a crash until autosave works",
                 );
             } else if let Some(error) = info.error {
-                ui.label(RichText::new(error).color(red));
+                shown(ui, error, red);
             } else if let Some(message) = info.message {
-                ui.label(RichText::new(message).color(Color32::from_rgb(140, 200, 140)));
+                shown(ui, message, Color32::from_rgb(140, 200, 140));
             }
         });
     });
