@@ -13,6 +13,7 @@ use crate::ui::document::autosave::RestoreAnswer;
 use crate::ui::document::confirm::{DiscardAction, DiscardAnswer};
 use crate::ui::document::file_dialog::{DialogOutcome, DialogPurpose};
 use crate::ui::document::files;
+use crate::ui::panels::status_bar::StatusMessage;
 use crate::ui::state::keep_in_range;
 
 impl EditorApp {
@@ -149,7 +150,7 @@ impl EditorApp {
             Ok(files::Opened::Scene(scene)) => {
                 self.replace_scene(*scene, Some(path.to_owned()));
                 self.recent.push(path);
-                self.message = Some(format!("Opened {}", path.display()));
+                self.message = Some(StatusMessage::done(format!("Opened {}", path.display())));
             }
             Err(error) => {
                 // A recent file that does not open now (an unplugged drive, a share
@@ -168,10 +169,10 @@ impl EditorApp {
                 // An imported scene has no file yet: everything is unsaved.
                 self.saved = files::new_scene();
                 // Not the last file saved or opened: this one, which has no file yet.
-                self.message = Some(format!(
+                self.message = Some(StatusMessage::done(format!(
                     "Imported {} (not saved yet), {summary}",
                     path.display()
-                ));
+                )));
                 if !warnings.is_empty() {
                     self.warning = Some(format!("Imported with warnings: {}", warnings.join("; ")));
                 }
@@ -190,7 +191,7 @@ impl EditorApp {
                 self.isolation_memory = self.isolation_memory();
                 self.path = Some(path.to_owned());
                 self.recent.push(path);
-                self.message = Some(format!("Saved {}", path.display()));
+                self.message = Some(StatusMessage::done(format!("Saved {}", path.display())));
                 true
             }
             Err(error) => {
@@ -252,6 +253,8 @@ impl EditorApp {
             .unwrap_or_else(files::new_scene);
         self.replace_scene(*scene, source);
         self.saved = saved;
-        self.message = Some("Restored unsaved work from the last session".to_owned());
+        self.message = Some(StatusMessage::done(
+            "Restored unsaved work from the last session".to_owned(),
+        ));
     }
 }

@@ -25,7 +25,37 @@ pub struct StatusInfo<'a> {
     /// Why the last autosave failed, while it keeps failing (unsaved work is at risk).
     pub autosave_error: Option<&'a str>,
     /// The latest message (e.g. "Saved"), if any.
-    pub message: Option<&'a str>,
+    pub message: Option<&'a StatusMessage>,
+}
+
+/// A message for the status bar: something done ("Saved …"), or a notice about a value
+/// the user gave that was not taken as given (held to a range, refused, out of reach).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct StatusMessage {
+    /// The words.
+    pub text: String,
+    /// Whether it is a notice (amber) rather than news of something done (green).
+    pub notice: bool,
+}
+
+impl StatusMessage {
+    /// News of something done.
+    #[must_use]
+    pub fn done(text: impl Into<String>) -> Self {
+        Self {
+            text: text.into(),
+            notice: false,
+        }
+    }
+
+    /// A notice about a value not taken as given.
+    #[must_use]
+    pub fn notice(text: impl Into<String>) -> Self {
+        Self {
+            text: text.into(),
+            notice: true,
+        }
+    }
 }
 
 /// Shows the status bar.
@@ -76,7 +106,12 @@ pub fn status_bar_ui(ui: &mut Ui, info: &StatusInfo<'_>) {
             } else if let Some(error) = info.error {
                 shown(ui, error, red);
             } else if let Some(message) = info.message {
-                shown(ui, message, Color32::from_rgb(140, 200, 140));
+                let colour = if message.notice {
+                    crate::ui::style::ACCENT
+                } else {
+                    Color32::from_rgb(140, 200, 140)
+                };
+                shown(ui, &message.text, colour);
             }
         });
     });
