@@ -94,6 +94,8 @@ impl EditorApp {
             }
             Command::ShowHelp => self.show_help = !self.show_help,
             Command::BrowseExportPath => self.request_dialog(DialogPurpose::ExportPng, ctx),
+            Command::ImportObjDialog => self.request_dialog(DialogPurpose::ImportObj, ctx),
+            Command::ImportObj(path) => self.import_obj(&path),
             Command::BrowseCompareImage => self.request_dialog(DialogPurpose::CompareImage, ctx),
             Command::SetPreferInAppFileDialog(prefer) => self.file_dialogs.prefer_in_app = prefer,
             Command::DismissError => self.error = None,

@@ -8,7 +8,7 @@ use egui::ViewportCommand;
 
 use super::{EditorApp, undoer};
 use crate::scene::Scene;
-use crate::ui::commands::Selection;
+use crate::ui::commands::{SceneEdit, Selection};
 use crate::ui::document::autosave::RestoreAnswer;
 use crate::ui::document::confirm::{DiscardAction, DiscardAnswer};
 use crate::ui::document::file_dialog::{DialogOutcome, DialogPurpose};
@@ -124,6 +124,7 @@ impl EditorApp {
         match purpose {
             DialogPurpose::OpenScene => self.open(&path),
             DialogPurpose::ImportLegacy => self.import(&path),
+            DialogPurpose::ImportObj => self.import_obj(&path),
             DialogPurpose::SaveSceneAs => {
                 let path = if files::is_scene_file(&path) {
                     path
@@ -179,6 +180,29 @@ impl EditorApp {
             }
             Err(error) => self.error = Some(format!("{}: {error}", path.display())),
         }
+    }
+
+    /// Adds a Mesh object for the OBJ file at `path`, named after the file, in one undo
+    /// step. The scene refers to the file (relative to the scene's folder where it lies
+    /// under it, else in full) and never rewrites it; the preview reads it off this
+    /// thread and names any problem with it.
+    pub(super) fn import_obj(&mut self, path: &Path) {
+        let folder = self.path.as_deref().and_then(Path::parent);
+        let written = folder
+            .and_then(|folder| path.strip_prefix(folder).ok())
+            .unwrap_or(path);
+        let Some(text) = written.to_str() else {
+            self.error = Some(format!(
+                "{}: a scene file cannot hold this path (it is not UTF-8)",
+                path.display()
+            ));
+            return;
+        };
+        self.edit(SceneEdit::AddMesh(text.replace('\\', "/")));
+        self.message = Some(StatusMessage::done(format!(
+            "Added the mesh {}",
+            path.display()
+        )));
     }
 
     /// Saves to `path`, which becomes the scene's file; errors are shown. Returns

@@ -27,6 +27,8 @@ pub enum DialogPurpose {
     ExportPng,
     /// Compare with Image > Browse… (a PNG or PPM).
     CompareImage,
+    /// File > Import OBJ Mesh…
+    ImportObj,
 }
 
 impl DialogPurpose {
@@ -40,6 +42,7 @@ impl DialogPurpose {
             DialogPurpose::ImportLegacy => "Import legacy scene",
             DialogPurpose::ExportPng => "Export PNG to (.png)",
             DialogPurpose::CompareImage => "Compare with image",
+            DialogPurpose::ImportObj => "Import OBJ mesh (.obj)",
         }
     }
 
@@ -55,6 +58,7 @@ impl DialogPurpose {
             DialogPurpose::OpenScene => Some(("raylab or course scene", &["ron", "txt"])),
             DialogPurpose::SaveSceneAs => Some(("raylab scene", &["ron"])),
             DialogPurpose::ExportPng => Some(("PNG image", &["png"])),
+            DialogPurpose::ImportObj => Some(("Wavefront OBJ mesh", &["obj"])),
             DialogPurpose::ImportLegacy | DialogPurpose::CompareImage => None,
         }
     }
