@@ -43,7 +43,8 @@ pub struct InspectArgs {
 /// The term switches, as `raylab render` takes them.
 #[derive(Debug, Default, Args)]
 pub struct TermArgs {
-    /// Terms to switch off, comma-separated: ambient,diffuse,specular,shadows,reflection.
+    /// Terms to switch off, comma-separated: ambient,diffuse,specular,shadows,reflection,
+    /// transmission.
     #[arg(long, value_delimiter = ',')]
     pub off: Vec<Term>,
     /// Show one term alone.
@@ -281,12 +282,23 @@ fn tree_text(scene: &Scene, options: &RenderOptions, report: &PixelReport) -> St
             .collect();
         let _ = writeln!(out, "hidden (rays pass through): {}", names.join(", "));
     }
+    // The list holds each ray of the tree then its shadow rays, in the bounces' order:
+    // split at each ray that is not a shadow ray, so rays of one depth stay apart.
     let rays = traced_rays(report);
-    for bounce in &report.bounces {
+    let mut groups: Vec<&[TracedRay]> = Vec::new();
+    let mut start = 0;
+    for end in 1..=rays.len() {
+        if end == rays.len() || rays[end].kind != RayKind::Shadow {
+            groups.push(&rays[start..end]);
+            start = end;
+        }
+    }
+    // Depth first, each ray's mirror ray then its transmitted ray under it, so the text
+    // reads as the tree it is (the report keeps them breadth first).
+    for index in depth_first(report) {
+        let (bounce, group) = (&report.bounces[index], groups[index]);
         let pad = "  ".repeat(bounce.depth as usize);
-        let own = rays
-            .iter()
-            .find(|r| r.depth == bounce.depth && r.kind != RayKind::Shadow);
+        let own = group.first().filter(|r| r.kind != RayKind::Shadow);
         if let Some(ray) = own {
             let _ = writeln!(out, "{pad}{} ray {}", ray.kind.name(), ray_text(ray));
         }
@@ -323,10 +335,10 @@ fn tree_text(scene: &Scene, options: &RenderOptions, report: &PixelReport) -> St
                 );
             }
             let _ = writeln!(out, "{line}");
-            let shadow = rays.iter().find(|r| {
-                r.kind == RayKind::Shadow && r.depth == bounce.depth && r.light == Some(light)
-            });
-            if let Some(ray) = shadow {
+            for ray in group
+                .iter()
+                .filter(|r| r.kind == RayKind::Shadow && r.light == Some(light))
+            {
                 let _ = writeln!(out, "{pad}    shadow ray {}", shadow_end(ray, &name));
             }
         }
@@ -342,6 +354,15 @@ fn tree_text(scene: &Scene, options: &RenderOptions, report: &PixelReport) -> St
                 v(km * reflected)
             );
         }
+        if let Some((kt, transmitted)) = bounce.transmission {
+            let _ = writeln!(
+                out,
+                "{pad}  transmission: kt {} × transmitted {} = {}",
+                v(kt),
+                v(transmitted),
+                v(kt * transmitted)
+            );
+        }
         if let Some(unclamped) = bounce.unclamped {
             let _ = writeln!(
                 out,
@@ -352,6 +373,27 @@ fn tree_text(scene: &Scene, options: &RenderOptions, report: &PixelReport) -> St
         let _ = writeln!(out, "{pad}  colour {}", v(bounce.colour));
     }
     out
+}
+
+/// The report's rays in depth-first order: each ray, then its rays in the order they
+/// were cast (the mirror ray before the transmitted one).
+fn depth_first(report: &PixelReport) -> Vec<usize> {
+    let mut children: Vec<Vec<usize>> = vec![Vec::new(); report.bounces.len()];
+    for (index, bounce) in report.bounces.iter().enumerate() {
+        if let Some((parent, _)) = bounce.from {
+            children[parent].push(index);
+        }
+    }
+    let mut order = Vec::with_capacity(report.bounces.len());
+    let mut stack: Vec<usize> = (!report.bounces.is_empty())
+        .then_some(0)
+        .into_iter()
+        .collect();
+    while let Some(index) = stack.pop() {
+        order.push(index);
+        stack.extend(children[index].iter().rev());
+    }
+    order
 }
 
 fn ray_text(ray: &TracedRay) -> String {
