@@ -123,4 +123,53 @@ mod tests {
         assert_eq!(media(-DVec3::Z, DVec3::Z, 1.5), (1.0, 1.5));
         assert_eq!(media(DVec3::Z, DVec3::Z, 1.5), (1.5, 1.0));
     }
+
+    use proptest::prelude::*;
+
+    /// A unit vector from two angles.
+    fn unit(theta: f64, phi: f64) -> DVec3 {
+        let (st, ct) = theta.sin_cos();
+        let (sp, cp) = phi.sin_cos();
+        DVec3::new(st * cp, st * sp, ct)
+    }
+
+    proptest! {
+        /// Any unit direction against any normal and any pair of indices in (0, 10]:
+        /// a finite unit direction; a refracted one on the far side of the surface,
+        /// keeping Snell's sines; internal reflection only where the sine would pass 1;
+        /// and the refracted ray refracted back leaves along the reverse of the first.
+        #[test]
+        fn snell_holds_and_reverses_for_any_ray_and_indices(
+            theta in 0.0..std::f64::consts::FRAC_PI_2,
+            phi in 0.0..std::f64::consts::TAU,
+            normal in (0.0..std::f64::consts::PI, 0.0..std::f64::consts::TAU),
+            from in 0.05f64..10.0,
+            to in 0.05f64..10.0,
+        ) {
+            let n = unit(normal.0, normal.1);
+            let (u, v) = n.any_orthonormal_pair();
+            // theta from the normal, heading into the surface.
+            let (st, ct) = theta.sin_cos();
+            let d = -(ct * n) + st * (phi.cos() * u + phi.sin() * v);
+            let out = refract(d, n, from, to);
+            let t = out.dir();
+            prop_assert!(t.is_finite());
+            prop_assert!((t.length() - 1.0).abs() < 1e-12, "{}", t.length());
+            let sin_i = d.cross(n).length();
+            match out {
+                Transmitted::Refracted(t) => {
+                    prop_assert!(t.dot(n) <= 1e-12, "on the far side");
+                    prop_assert!((from * sin_i - to * t.cross(n).length()).abs() < 1e-9);
+                    // Back through the surface from the other side.
+                    if let Transmitted::Refracted(back) = refract(-t, -n, to, from) {
+                        prop_assert!((back + d).length() < 1e-6, "{back} vs {d}");
+                    }
+                }
+                Transmitted::InternallyReflected(r) => {
+                    prop_assert!(from * sin_i > to * (1.0 - 1e-12));
+                    prop_assert!((r.dot(n) + d.dot(n)).abs() < 1e-12, "mirrored");
+                }
+            }
+        }
+    }
 }
