@@ -59,8 +59,18 @@ pub fn better_conventions(
     if baseline.total < MIN_ERROR {
         return None;
     }
+    // Without mirrors the mirror convention changes nothing: no render for it.
+    let mirrors = scene
+        .materials
+        .values()
+        .any(|m| m.mirror != glam::DVec3::ZERO);
+    let mirror_choices: &[MirrorConvention] = if mirrors {
+        &[MirrorConvention::Add, MirrorConvention::Blend]
+    } else {
+        std::slice::from_ref(&own.mirror)
+    };
     let mut best: Option<(Conventions, FitState)> = None;
-    for mirror in [MirrorConvention::Add, MirrorConvention::Blend] {
+    for &mirror in mirror_choices {
         for clamp in [ClampConvention::Pixel, ClampConvention::EachRay] {
             let candidate = Conventions {
                 mirror,
