@@ -155,9 +155,18 @@ fn colour_clamped_before_the_reflection_is_named_as_the_course_clamp_where_they_
     // every ray give the same picture (the rays the mirror sees stay below 1): the
     // course's convention, the likelier habit, is named, and it explains it all.
     let first = &c.explanations[0];
-    assert_eq!(first.term, ExplainedTerm::Conventions, "{:#?}", c.text_lines());
+    assert_eq!(
+        first.term,
+        ExplainedTerm::Conventions,
+        "{:#?}",
+        c.text_lines()
+    );
     assert_eq!(first.cause.name(), "clamp-each-ray");
-    assert!(first.share > 0.95 && first.pixels.len() > 50, "{:#?}", c.text_lines());
+    assert!(
+        first.share > 0.95 && first.pixels.len() > 50,
+        "{:#?}",
+        c.text_lines()
+    );
 }
 
 #[test]

@@ -134,17 +134,15 @@ fn drag(harness: &mut Harness<'_, EditorApp>, from: Pos2, to: Pos2) {
     harness.run();
 }
 
-#[test]
-fn a_light_marker_under_the_gizmo_buttons_does_not_take_their_presses() {
-    let mut harness = harness();
+/// Moves the default scene's point light to where the picture shows it at `screen`
+/// (6 units along the camera ray there); returns its index and the light placed.
+fn put_point_light_at(harness: &mut Harness<'_, EditorApp>, screen: Pos2) -> (usize, Light) {
     let picture = harness.get_by_label(VIEWPORT_LABEL).rect();
-    let rotate = harness.get_by_label("Rotate").rect().center();
-    // Put the point light where it is drawn right under the Rotate button.
     let scene = harness.state().scene().clone();
     let (w, h) = (scene.camera.width, scene.camera.height);
     let image_point = DVec2::new(
-        f64::from((rotate.x - picture.min.x) / picture.width()) * f64::from(w),
-        f64::from((rotate.y - picture.min.y) / picture.height()) * f64::from(h),
+        f64::from((screen.x - picture.min.x) / picture.width()) * f64::from(w),
+        f64::from((screen.y - picture.min.y) / picture.height()) * f64::from(h),
     );
     let ray = PinholeCamera::new(&scene.camera, w, h).ray(image_point);
     let index = scene
@@ -152,23 +150,23 @@ fn a_light_marker_under_the_gizmo_buttons_does_not_take_their_presses() {
         .iter()
         .position(|l| matches!(l, Light::Point { .. }))
         .expect("the default scene has a point light");
-    let Light::Point {
-        colour, intensity, ..
-    } = scene.lights[index]
-    else {
-        unreachable!()
-    };
-    let light = Light::Point {
-        position: ray.at(6.0),
-        colour,
-        intensity,
-        radius: 0.0,
-        samples: 1,
-    };
+    let mut light = scene.lights[index].clone();
+    if let Light::Point { position, .. } = &mut light {
+        *position = ray.at(6.0);
+    }
     harness
         .state_mut()
-        .push(Command::Edit(SceneEdit::SetLight(index, light)));
+        .push(Command::Edit(SceneEdit::SetLight(index, light.clone())));
     harness.run();
+    (index, light)
+}
+
+#[test]
+fn a_light_marker_under_the_gizmo_buttons_does_not_take_their_presses() {
+    let mut harness = harness();
+    let rotate = harness.get_by_label("Rotate").rect().center();
+    // Put the point light where it is drawn right under the Rotate button.
+    put_point_light_at(&mut harness, rotate);
     let placed = harness.state().scene().clone();
 
     harness.get_by_label("Rotate").click();
@@ -196,29 +194,9 @@ fn a_lights_mute_and_solo_buttons_stay_on_top_of_the_not_the_full_picture_marker
         .push(Command::SetPreviewSettings(settings));
     harness.run();
     let marker = harness.get_by_label_contains(NOT_FULL_PICTURE).rect();
-    let picture = harness.get_by_label(VIEWPORT_LABEL).rect();
     // Put the point light so that its M button (drawn 9 points right of and 22 points
     // above the marker dot) lands in the middle of the amber marker.
-    let dot = marker.center() + Vec2::new(-19.0, 13.0);
-    let scene = harness.state().scene().clone();
-    let (w, h) = (scene.camera.width, scene.camera.height);
-    let image_point = DVec2::new(
-        f64::from((dot.x - picture.min.x) / picture.width()) * f64::from(w),
-        f64::from((dot.y - picture.min.y) / picture.height()) * f64::from(h),
-    );
-    let ray = PinholeCamera::new(&scene.camera, w, h).ray(image_point);
-    let index = scene
-        .lights
-        .iter()
-        .position(|l| matches!(l, Light::Point { .. }))
-        .expect("the default scene has a point light");
-    let mut light = scene.lights[index].clone();
-    if let Light::Point { position, .. } = &mut light {
-        *position = ray.at(6.0);
-    }
-    harness
-        .state_mut()
-        .push(Command::Edit(SceneEdit::SetLight(index, light)));
+    let (index, _) = put_point_light_at(&mut harness, marker.center() + Vec2::new(-19.0, 13.0));
     harness
         .state_mut()
         .push(Command::Select(Selection::Light(index)));
