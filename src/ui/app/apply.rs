@@ -65,11 +65,13 @@ impl EditorApp {
             Command::Undo => {
                 if let Some(scene) = self.undoer.undo(&self.scene) {
                     self.scene = scene.clone();
+                    self.forget_notice();
                 }
             }
             Command::Redo => {
                 if let Some(scene) = self.undoer.redo(&self.scene) {
                     self.scene = scene.clone();
+                    self.forget_notice();
                 }
             }
             Command::New => self.guard(DiscardAction::New, ctx),
@@ -124,6 +126,14 @@ impl EditorApp {
             Command::ShowCompare => self.compare.show_window(),
             Command::CompareWith(path) => self.compare.start(&self.scene, &path, ctx),
             Command::Isolate(toggle) => toggle.apply(&mut self.isolation),
+        }
+    }
+
+    /// A notice about a typed value speaks of a value an undo or redo has just replaced:
+    /// it goes.
+    fn forget_notice(&mut self) {
+        if self.message.as_ref().is_some_and(|m| m.notice) {
+            self.message = None;
         }
     }
 
