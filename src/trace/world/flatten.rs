@@ -73,8 +73,14 @@ pub(crate) fn flatten(
                 continue;
             }
             Shape::Csg { op, operands } => {
-                let tree =
-                    CsgTree::build(*op, operands, node.material, &node.path, &material_index)?;
+                let tree = CsgTree::build(
+                    *op,
+                    operands,
+                    node.material,
+                    &node.path,
+                    &material_index,
+                    meshes,
+                )?;
                 (Primitive::Cube, Body::Csg(std::sync::Arc::new(tree)))
             }
             Shape::Mesh { path } => {

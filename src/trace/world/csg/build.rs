@@ -1,11 +1,13 @@
 //! Compiling a scene's CSG node into a [`CsgTree`], with a work list instead of
 //! recursion so the depth of the tree never reaches the call stack.
 
+use std::sync::Arc;
+
 use glam::{DAffine3, DVec3};
 
 use super::tree::{CsgLeaf, CsgTree, Extent, Step, combine_extents};
 use crate::scene::{CsgOp, Object, SceneError, Shape};
-use crate::trace::shapes::{self, Aabb, Primitive};
+use crate::trace::shapes::{self, Aabb, MeshStore, Primitive, TriangleMesh};
 
 /// What is left to do for the node being compiled.
 enum Work<'a> {
@@ -30,17 +32,19 @@ enum Work<'a> {
 impl CsgTree {
     /// Compiles a CSG node's operands, `material` being the node's own (inherited by
     /// operands that name none) and `path` its tree path. A Group among the operands
-    /// stands for the union of its children.
+    /// stands for the union of its children; a Mesh operand takes its triangles from
+    /// `meshes`.
     ///
     /// # Errors
-    /// An operand the tracer cannot draw, or a leaf left without a material, named by
-    /// its tree path.
+    /// An operand the tracer cannot draw, a mesh that is not loaded or not closed, or a
+    /// leaf left without a material, named by its tree path.
     pub fn build(
         op: CsgOp,
         operands: &[Object],
         material: &str,
         path: &str,
         material_index: &dyn Fn(&str) -> Option<usize>,
+        meshes: &MeshStore,
     ) -> Result<Self, SceneError> {
         let mut tree = CsgTree {
             leaves: Vec::new(),
@@ -121,19 +125,21 @@ impl CsgTree {
                             &path,
                         );
                     }
-                    Shape::Mesh { .. } => {
-                        return Err(SceneError::Invalid(format!(
-                            "object \"{path}\": a Mesh cannot be a CSG operand yet (meshes \
-                             render on their own and in groups)"
-                        )));
-                    }
                     shape => {
-                        let primitive = Primitive::of(shape).ok_or_else(|| {
-                            SceneError::Invalid(format!(
-                                "object \"{path}\": the tracer cannot draw a {} yet",
-                                shape.name()
-                            ))
-                        })?;
+                        let (primitive, mesh) = match shape {
+                            Shape::Mesh { path: file } => {
+                                (Primitive::Mesh, Some(solid_mesh(meshes, file, &path)?))
+                            }
+                            _ => (
+                                Primitive::of(shape).ok_or_else(|| {
+                                    SceneError::Invalid(format!(
+                                        "object \"{path}\": the tracer cannot draw a {} yet",
+                                        shape.name()
+                                    ))
+                                })?,
+                                None,
+                            ),
+                        };
                         let material = material_index(material).ok_or_else(|| {
                             SceneError::Invalid(format!(
                                 "object \"{path}\": no material (neither its own nor a parent's)"
@@ -141,10 +147,11 @@ impl CsgTree {
                         })?;
                         let index = u32::try_from(tree.leaves.len()).expect("under 2^32 leaves");
                         tree.steps.push(Step::Leaf(index));
-                        let leaf = CsgLeaf::new(primitive, path, material, node_from_object);
+                        // Unit shapes are convex; a mesh may not be.
+                        convex.push(mesh.is_none());
+                        let leaf = CsgLeaf::new(primitive, mesh, path, material, node_from_object);
                         extents.push(leaf.bounds.map_or(Extent::Unbounded, Extent::Box));
                         spheres.push((primitive == Primitive::Sphere).then_some(node_from_object));
-                        convex.push(true);
                         tree.leaves.push(leaf);
                     }
                 },
@@ -225,7 +232,7 @@ fn chunks(operands: &[Object], node_from_parent: &DAffine3) -> Vec<Chunk> {
     let mut members_area = 0.0;
     for (k, operand) in operands.iter().enumerate() {
         let bounds = Primitive::of(&operand.shape)
-            .filter(|&p| p != Primitive::Plane)
+            .filter(|&p| p != Primitive::Plane && p != Primitive::Mesh)
             .map(|p| {
                 let placed = *node_from_parent * operand.transform.world_from_object();
                 shapes::object_bounds(p).transformed(&placed)
@@ -256,6 +263,24 @@ fn chunks(operands: &[Object], node_from_parent: &DAffine3) -> Vec<Chunk> {
         members_area = area(&bounds);
     }
     out
+}
+
+/// A Mesh operand's triangles, if they are loaded and bound a solid (a CSG operand
+/// needs an inside).
+fn solid_mesh(meshes: &MeshStore, file: &str, path: &str) -> Result<Arc<TriangleMesh>, SceneError> {
+    let mesh = meshes.get(file).ok_or_else(|| {
+        SceneError::Invalid(format!(
+            "object \"{path}\": the mesh file \"{file}\" is not loaded"
+        ))
+    })?;
+    if !mesh.is_closed() {
+        return Err(SceneError::Invalid(format!(
+            "object \"{path}\": the mesh \"{file}\" is not closed (some edge is not shared \
+             by exactly two triangles facing the same way), so it has no inside and cannot \
+             be a CSG operand; use it outside the CSG node, or close the surface"
+        )));
+    }
+    Ok(Arc::clone(mesh))
 }
 
 /// Whether a node gets a SkipIfEmpty after its first operand: an Intersection or a

@@ -4,19 +4,22 @@
 //! 1,000 levels deep needs no deeper call stack than a flat one.
 
 use std::cell::RefCell;
+use std::sync::Arc;
 
 use glam::{DAffine3, DMat3, DVec3};
 
 use super::spans::{self, Crossing, Span};
 use crate::scene::CsgOp;
 use crate::trace::ray::Ray;
-use crate::trace::shapes::{self, Aabb, Primitive, ShapeHit, gamma};
+use crate::trace::shapes::{self, Aabb, Primitive, ShapeHit, TriangleMesh, gamma};
 
 /// One operand leaf of a CSG node.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CsgLeaf {
-    /// Which unit shape.
+    /// Which unit shape ([`Primitive::Mesh`] for a closed mesh).
     pub shape: Primitive,
+    /// A mesh leaf's triangles (a closed surface), shared with the mesh store.
+    pub mesh: Option<Arc<TriangleMesh>>,
     /// Its tree path below the scene's top level, `"die/pip 3"`.
     pub path: String,
     /// Index into [`crate::trace::World::materials`] (inherited where it names none).
@@ -151,8 +154,17 @@ impl CsgTree {
                         let leaf_ray = ray.transformed(&leaf.leaf_from_node);
                         s.leaf_rays[index as usize] = leaf_ray;
                         let first = s.crossings.len();
-                        shapes::crossings(leaf.shape, &leaf_ray, &mut s.crossings);
-                        let inside = shapes::starts_inside(leaf.shape, &leaf_ray);
+                        let inside = if let Some(mesh) = &leaf.mesh {
+                            mesh.crossings(&leaf_ray, &mut s.crossings);
+                            // A closed surface's crossings alternate: the ray starts
+                            // inside where the first one leaves.
+                            s.crossings[first..]
+                                .first()
+                                .is_some_and(|c| c.n.dot(leaf_ray.dir) > 0.0)
+                        } else {
+                            shapes::crossings(leaf.shape, &leaf_ray, &mut s.crossings);
+                            shapes::starts_inside(leaf.shape, &leaf_ray)
+                        };
                         let own = &s.crossings[first..];
                         spans::leaf_spans(own, first, index, inside, &mut s.arena);
                     }
@@ -302,16 +314,25 @@ impl CsgTree {
 }
 
 impl CsgLeaf {
+    /// A leaf of a unit shape, or of a closed mesh (`mesh`, with `shape` then
+    /// [`Primitive::Mesh`]), placed in the node's space.
     pub(super) fn new(
         shape: Primitive,
+        mesh: Option<Arc<TriangleMesh>>,
         path: String,
         material: usize,
         node_from_leaf: DAffine3,
     ) -> Self {
         let leaf_from_node = node_from_leaf.inverse();
         let abs = |m: &DMat3| DMat3::from_cols(m.x_axis.abs(), m.y_axis.abs(), m.z_axis.abs());
+        let bounds = match &mesh {
+            Some(mesh) => Some(mesh.bounds().transformed(&node_from_leaf)),
+            None => (shape != Primitive::Plane)
+                .then(|| shapes::object_bounds(shape).transformed(&node_from_leaf)),
+        };
         Self {
             shape,
+            mesh,
             path,
             material,
             node_from_leaf,
@@ -319,8 +340,7 @@ impl CsgLeaf {
             normal_from_leaf: node_from_leaf.matrix3.inverse().transpose(),
             abs_node_from_leaf: abs(&node_from_leaf.matrix3),
             abs_leaf_from_node: abs(&leaf_from_node.matrix3),
-            bounds: (shape != Primitive::Plane)
-                .then(|| shapes::object_bounds(shape).transformed(&node_from_leaf)),
+            bounds,
         }
     }
 }
