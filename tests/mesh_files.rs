@@ -186,3 +186,76 @@ fn normals_indexed_apart_from_positions_get_a_vertex_per_pair() {
         }
     }
 }
+
+/// A large grid of quads as OBJ text (about `n * n * 2` triangles).
+fn big_grid(n: usize) -> String {
+    use std::fmt::Write;
+    let mut text = String::with_capacity(n * n * 60);
+    for j in 0..=n {
+        for i in 0..=n {
+            writeln!(text, "v {i} {j} 0").unwrap();
+        }
+    }
+    for j in 0..n {
+        for i in 0..n {
+            let v = |i: usize, j: usize| j * (n + 1) + i + 1;
+            writeln!(
+                text,
+                "f {} {} {} {}",
+                v(i, j),
+                v(i + 1, j),
+                v(i + 1, j + 1),
+                v(i, j + 1)
+            )
+            .unwrap();
+        }
+    }
+    text
+}
+
+#[test]
+fn a_watched_read_reports_the_whole_file_and_a_cancelled_one_stops_clearly() {
+    use raylab::scene::{LoadWatch, load_obj_watched};
+    let path = write("watched", "grid.obj", &big_grid(40));
+    let watch = LoadWatch::default();
+    assert_eq!(watch.fraction(), 0.0);
+    load_obj_watched(&path, &watch).expect("reads");
+    assert!(
+        (watch.fraction() - 1.0).abs() < 1e-12,
+        "{}",
+        watch.fraction()
+    );
+
+    let cancelled = LoadWatch::default();
+    cancelled.cancel();
+    let message = load_obj_watched(&path, &cancelled)
+        .expect_err("cancelled")
+        .to_string();
+    assert!(
+        message.contains("grid.obj") && message.contains("cancelled"),
+        "{message}"
+    );
+}
+
+#[test]
+fn a_read_cancelled_half_way_stops_before_the_end() {
+    use raylab::scene::{LoadWatch, load_obj_watched};
+    use std::sync::Arc;
+    // About 12 MB: reading it takes far longer than the watcher's first look.
+    let path = write("half-way", "grid.obj", &big_grid(600));
+    let watch = Arc::new(LoadWatch::default());
+    let watcher = {
+        let watch = Arc::clone(&watch);
+        std::thread::spawn(move || {
+            while watch.fraction() == 0.0 {
+                std::thread::yield_now();
+            }
+            watch.cancel();
+        })
+    };
+    let result = load_obj_watched(&path, &watch);
+    watcher.join().expect("watcher");
+    let message = result.expect_err("cancelled while reading").to_string();
+    assert!(message.contains("cancelled"), "{message}");
+    assert!(watch.fraction() < 1.0, "stopped before the end");
+}

@@ -63,3 +63,52 @@ fn a_scene_without_a_folder_is_refused_naming_the_mesh() {
         "{error}"
     );
 }
+
+#[test]
+fn the_worker_shows_the_file_it_reads_and_a_cancel_stops_it_with_a_clear_error() {
+    use std::fmt::Write;
+    // A mesh file large enough (about 20 MB) that its reading can be seen and stopped.
+    let dir = std::env::temp_dir().join(format!("raylab-mesh-cancel-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("folder");
+    let n = 800;
+    let mut text = String::with_capacity(n * n * 60);
+    for j in 0..=n {
+        for i in 0..=n {
+            writeln!(text, "v {i} {j} 0").unwrap();
+        }
+    }
+    for j in 0..n {
+        for i in 0..n {
+            let v = |i: usize, j: usize| j * (n + 1) + i + 1;
+            writeln!(text, "f {} {} {}", v(i, j), v(i + 1, j), v(i + 1, j + 1)).unwrap();
+        }
+    }
+    std::fs::write(dir.join("sheet.obj"), text).expect("write");
+    let mut request = mesh_request(1, Some(&dir));
+    let mut scene = (*request.scene).clone();
+    for object in &mut scene.objects {
+        if let raylab::scene::Shape::Mesh { path } = &mut object.shape {
+            "sheet.obj".clone_into(path);
+        }
+    }
+    request.scene = std::sync::Arc::new(scene);
+    let (mut worker, _) = worker_with_counter();
+    worker.submit(request);
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(30);
+    let (file, _) = loop {
+        if let Some(loading) = worker.loading() {
+            break loading;
+        }
+        assert!(std::time::Instant::now() < deadline, "never seen reading");
+        std::thread::yield_now();
+    };
+    assert_eq!(file, "sheet.obj");
+    worker.cancel_loading();
+    let error = next(&mut worker).result.expect_err("cancelled");
+    assert!(
+        error.contains("\"knot\"") && error.contains("sheet.obj") && error.contains("cancelled"),
+        "{error}"
+    );
+    assert!(worker.loading().is_none(), "reading is over");
+    let _ = std::fs::remove_dir_all(&dir);
+}

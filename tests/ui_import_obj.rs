@@ -85,3 +85,78 @@ fn a_mesh_beside_the_scene_is_written_relative_to_the_scenes_folder() {
         }
     );
 }
+
+#[test]
+fn a_large_mesh_shows_its_reading_in_the_status_bar_and_cancel_stops_it_with_a_message() {
+    use egui_kittest::kittest::Queryable;
+    use std::fmt::Write;
+    // About 50 MB of quads: reading it takes long enough to be seen and stopped.
+    let dir = std::env::temp_dir().join(format!("raylab-ui-obj-cancel-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let n = 1000;
+    let mut text = String::with_capacity(n * n * 50);
+    for j in 0..=n {
+        for i in 0..=n {
+            writeln!(text, "v {i} {j} 0").unwrap();
+        }
+    }
+    for j in 0..n {
+        for i in 0..n {
+            let v = |i: usize, j: usize| j * (n + 1) + i + 1;
+            writeln!(
+                text,
+                "f {} {} {} {}",
+                v(i, j),
+                v(i + 1, j),
+                v(i + 1, j + 1),
+                v(i, j + 1)
+            )
+            .unwrap();
+        }
+    }
+    let obj = dir.join("sheet.obj");
+    std::fs::write(&obj, text).unwrap();
+    let mut harness = editor_harness::editor_harness(
+        EditorOptions {
+            preview: true,
+            ..EditorOptions::default()
+        },
+        egui::Vec2::new(1280.0, 800.0),
+        64,
+    );
+    harness.run_ok();
+    harness.state_mut().push(Command::ImportObj(obj));
+    harness.run_ok();
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(60);
+    while harness.query_by_label("reading sheet.obj").is_none() {
+        assert!(
+            std::time::Instant::now() < deadline,
+            "the reading never showed"
+        );
+        harness.step();
+    }
+    harness.get_by_label("Cancel").click();
+    step_until(&mut harness, "the cancel", |_| true);
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(60);
+    while harness
+        .query_by_label_contains("loading was cancelled")
+        .is_none()
+    {
+        assert!(
+            std::time::Instant::now() < deadline,
+            "no message after the cancel"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        harness.step();
+    }
+    let message = format!(
+        "{:?}",
+        harness.get_by_label_contains("loading was cancelled")
+    );
+    assert!(
+        message.contains("object \\\"sheet\\\"") && message.contains("undo"),
+        "{message}"
+    );
+    assert!(harness.query_by_label("reading sheet.obj").is_none());
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -1,13 +1,14 @@
 //! The preview worker's meshes: files read and built on the worker (off the UI thread),
 //! once each, and kept, so that an edit that touches no mesh compiles with the same
-//! meshes and the hit cache re-shades instead of re-tracing.
+//! meshes and the hit cache re-shades instead of re-tracing. Each read reports its
+//! progress through a [`LoadWatch`] that the editor shows, with a cancel button.
 
 use std::collections::HashMap;
 use std::path::PathBuf;
 use std::sync::Arc;
 
 use super::PreviewRequest;
-use crate::scene::{load_obj, mesh_file::mesh_path, mesh_objects};
+use crate::scene::{LoadWatch, load_obj_watched, mesh_file::mesh_path, mesh_objects};
 use crate::trace::{MeshStore, TriangleMesh};
 
 /// Built meshes by file, kept across requests.
@@ -18,12 +19,18 @@ pub(super) struct MeshCache {
 
 impl MeshCache {
     /// The meshes for `request`: those it carries, else read from its scene's folder
-    /// (or from the cache).
+    /// (or from the cache). Each file read is announced to `watch_read` (with the path
+    /// as the scene writes it), which hands back the watch to report to.
     ///
     /// # Errors
-    /// A file that cannot be read, named with its object; or a mesh object whose path
-    /// is relative in a scene that has no folder yet (never saved).
-    pub(super) fn for_request(&mut self, request: &PreviewRequest) -> Result<MeshStore, String> {
+    /// A file that cannot be read (or whose reading was cancelled), named with its
+    /// object; or a mesh object whose path is relative in a scene that has no folder
+    /// yet (never saved).
+    pub(super) fn for_request(
+        &mut self,
+        request: &PreviewRequest,
+        watch_read: &mut dyn FnMut(&str) -> Arc<LoadWatch>,
+    ) -> Result<MeshStore, String> {
         let mut store = (*request.meshes).clone();
         for (object, path) in mesh_objects(&request.scene) {
             if store.get(path).is_some() {
@@ -43,8 +50,16 @@ impl MeshCache {
             let mesh = match self.by_file.get(&file) {
                 Some(mesh) => Arc::clone(mesh),
                 None => {
-                    let data =
-                        load_obj(&file).map_err(|e| format!("object \"{}\": {e}", object.name))?;
+                    let watch = watch_read(path);
+                    let data = load_obj_watched(&file, &watch).map_err(|e| {
+                        let mut message = format!("object \"{}\": {e}", object.name);
+                        if watch.is_cancelled() {
+                            message.push_str(
+                                " (undo removes the object; any other edit reads the file again)",
+                            );
+                        }
+                        message
+                    })?;
                     let mesh = Arc::new(TriangleMesh::new(&data));
                     self.by_file.insert(file, Arc::clone(&mesh));
                     mesh

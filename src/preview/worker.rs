@@ -18,6 +18,7 @@ use super::frame::{Frame, Published};
 use super::job::run_caught;
 use super::progressive::render_plan_cached;
 use super::request::PreviewRequest;
+use crate::scene::{LoadWatch, mesh_objects};
 use crate::trace::{HitCache, RenderProgress, World};
 
 /// Called after every publish, from the worker thread (the editor asks for a repaint).
@@ -49,6 +50,8 @@ struct Mailbox {
     newest: Option<u64>,
     /// Progress of the pass being rendered, to cancel it; `None` between passes.
     running: Option<Arc<RenderProgress>>,
+    /// The mesh file being read before the next pass, as the scene writes its path.
+    loading: Option<(String, Arc<LoadWatch>)>,
     /// Published messages not yet taken, oldest first, all of the newest generation.
     outbox: VecDeque<Published>,
     shutdown: bool,
@@ -92,6 +95,13 @@ impl PreviewWorker {
         if mailbox.newest.is_some_and(|g| request.generation < g) {
             return;
         }
+        // A file the new scene no longer refers to (the import was undone) is not worth
+        // finishing.
+        if let Some((path, watch)) = &mailbox.loading
+            && !mesh_objects(&request.scene).iter().any(|(_, p)| p == path)
+        {
+            watch.cancel();
+        }
         let generation = request.generation;
         mailbox.newest = Some(generation);
         mailbox.next = Some(request);
@@ -100,6 +110,24 @@ impl PreviewWorker {
             running.cancel();
         }
         self.shared.wake.notify_all();
+    }
+
+    /// The mesh file being read for the preview (its path as the scene writes it) and
+    /// the fraction read; `None` when no file is being read.
+    #[must_use]
+    pub fn loading(&self) -> Option<(String, f64)> {
+        lock(&self.shared.mailbox)
+            .loading
+            .as_ref()
+            .map(|(path, watch)| (path.clone(), watch.fraction()))
+    }
+
+    /// Stops reading the mesh file being read; the preview then reports the object
+    /// whose file it was as not loaded.
+    pub fn cancel_loading(&self) {
+        if let Some((_, watch)) = &lock(&self.shared.mailbox).loading {
+            watch.cancel();
+        }
     }
 
     /// The newest message published since the last call, if any; older ones are dropped.
@@ -179,7 +207,14 @@ fn run(shared: &Shared, waker: &Waker) {
         // A panic in the tracer must not end the worker: report it and wait for the next
         // request (an edit may well avoid whatever caused it).
         let outcome = run_caught("the renderer", || {
-            let world = meshes.for_request(&request).and_then(|store| {
+            let mut watch_read = |path: &str| {
+                let watch = Arc::new(LoadWatch::default());
+                lock(&shared.mailbox).loading = Some((path.to_owned(), Arc::clone(&watch)));
+                watch
+            };
+            let store = meshes.for_request(&request, &mut watch_read);
+            lock(&shared.mailbox).loading = None;
+            let world = store.and_then(|store| {
                 World::isolated_with_meshes(&request.scene, &request.options.isolation, &store)
                     .map_err(|e| e.to_string())
             });

@@ -5,9 +5,10 @@
 
 use std::borrow::Cow;
 use std::collections::{BTreeMap, HashMap};
-use std::io::{BufRead, BufReader, Read};
+use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
 
+use super::obj_reader::{LoadWatch, WatchedReader};
 use super::{Object, Scene, SceneError, Shape};
 
 /// The largest OBJ file read: about 20 million triangles. Larger files are refused before
@@ -40,6 +41,14 @@ pub struct MeshData {
 /// index out of range (with the line), a coordinate that is not finite or is larger than
 /// [`MAX_OBJ_COORDINATE`] (with the line), or a file without a single usable triangle.
 pub fn load_obj(path: &Path) -> Result<MeshData, SceneError> {
+    load_obj_watched(path, &LoadWatch::default())
+}
+
+/// As [`load_obj`], reporting progress to `watch` and stopping when it is cancelled.
+///
+/// # Errors
+/// As [`load_obj`]; and "loading was cancelled" once `watch` is cancelled.
+pub fn load_obj_watched(path: &Path, watch: &LoadWatch) -> Result<MeshData, SceneError> {
     let file = std::fs::File::open(path).map_err(|source| read_error(path, source))?;
     let size = file
         .metadata()
@@ -56,9 +65,11 @@ pub fn load_obj(path: &Path) -> Result<MeshData, SceneError> {
             ),
         ));
     }
-    let mut reader = LineCounter {
+    watch.start(size);
+    let mut reader = WatchedReader {
         inner: BufReader::new(file),
         newlines: 0,
+        watch,
     };
     let options = tobj::LoadOptions {
         triangulate: true,
@@ -72,7 +83,13 @@ pub fn load_obj(path: &Path) -> Result<MeshData, SceneError> {
         asked_for_materials.set(true);
         Ok((Vec::new(), Default::default()))
     })
-    .map_err(|error| invalid(path, Some(reader.newlines.max(1)), &error.to_string()))?;
+    .map_err(|error| {
+        if watch.is_cancelled() {
+            invalid(path, None, "loading was cancelled")
+        } else {
+            invalid(path, Some(reader.newlines.max(1)), &error.to_string())
+        }
+    })?;
     let mut mesh = MeshData::default();
     let has_materials =
         asked_for_materials.get() || models.iter().any(|m| m.mesh.material_id.is_some());
@@ -275,34 +292,6 @@ pub fn read_scene_meshes(
 #[must_use]
 pub fn mesh_path(folder: &Path, path: &str) -> PathBuf {
     folder.join(path)
-}
-
-/// Counts the newlines a reader hands out, so a parse error can name its line.
-struct LineCounter<R> {
-    inner: R,
-    newlines: usize,
-}
-
-impl<R: BufRead> Read for LineCounter<R> {
-    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
-        let read = self.inner.read(buf)?;
-        self.newlines += buf[..read].iter().filter(|b| **b == b'\n').count();
-        Ok(read)
-    }
-}
-
-impl<R: BufRead> BufRead for LineCounter<R> {
-    fn fill_buf(&mut self) -> std::io::Result<&[u8]> {
-        self.inner.fill_buf()
-    }
-
-    fn consume(&mut self, amount: usize) {
-        if let Ok(buffer) = self.inner.fill_buf() {
-            let taken = amount.min(buffer.len());
-            self.newlines += buffer[..taken].iter().filter(|b| **b == b'\n').count();
-        }
-        self.inner.consume(amount);
-    }
 }
 
 fn read_error(path: &Path, source: std::io::Error) -> SceneError {

@@ -11,6 +11,7 @@ pub mod legacy;
 mod light;
 pub mod mesh_file;
 mod model;
+mod obj_reader;
 mod shape;
 mod text_file;
 pub mod transform;
@@ -22,8 +23,9 @@ pub use file::{
     load_scene, parse_scene, save_scene, scene_to_ron, write_atomically, write_atomically_with,
 };
 pub use light::{Light, LightKind};
-pub use mesh_file::{MeshData, load_obj, mesh_objects, read_scene_meshes};
+pub use mesh_file::{MeshData, load_obj, load_obj_watched, mesh_objects, read_scene_meshes};
 pub use model::{Camera, FORMAT_VERSION, Material, Object, RenderSettings, Scene};
+pub use obj_reader::LoadWatch;
 pub use shape::{CsgOp, Shape};
 pub use text_file::{MAX_SCENE_FILE_BYTES, TextFileError, read_text_file};
 pub use transform::{MatrixRows, Transform, Trs, affine_from_rows, rows_from_affine};

@@ -98,6 +98,11 @@ impl EditorApp {
             Command::BrowseExportPath => self.request_dialog(DialogPurpose::ExportPng, ctx),
             Command::ImportObjDialog => self.request_dialog(DialogPurpose::ImportObj, ctx),
             Command::ImportObj(path) => self.import_obj(&path),
+            Command::CancelMeshLoading => {
+                if let Some(preview) = &self.preview {
+                    preview.cancel_loading();
+                }
+            }
             Command::BrowseCompareImage => self.request_dialog(DialogPurpose::CompareImage, ctx),
             Command::SetPreferInAppFileDialog(prefer) => self.file_dialogs.prefer_in_app = prefer,
             Command::DismissError => self.error = None,

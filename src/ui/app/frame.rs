@@ -68,6 +68,10 @@ impl EditorApp {
         }
         self.looking
             .sync_inspections(&self.scene, self.preview_settings.switches, &self.isolation);
+        if self.preview.as_ref().is_some_and(|p| p.loading().is_some()) {
+            // The reading's progress bar moves without a frame being published.
+            ctx.request_repaint_after(std::time::Duration::from_millis(100));
+        }
         if self.looking.is_busy() {
             // Frames keep coming until the probe answers (it also wakes the window).
             ctx.request_repaint();
@@ -166,11 +170,12 @@ impl EditorApp {
                 lights: self.scene.lights.len(),
                 frame: self.preview.as_ref().and_then(PreviewLink::shown),
                 progress: self.preview.as_ref().and_then(PreviewLink::pass_progress),
+                loading: self.preview.as_ref().and_then(PreviewLink::loading),
                 error: self.preview.as_ref().and_then(PreviewLink::error),
                 autosave_error: self.autosave.error.as_deref(),
                 message: self.message.as_ref(),
             };
-            status_bar_ui(ui, &info);
+            status_bar_ui(ui, &info, &mut commands);
         });
         // A small window starts with narrower side panels, and either can be narrowed
         // further, so the viewport keeps room.

@@ -112,6 +112,8 @@ pub enum Command {
     ImportObjDialog,
     /// Add a Mesh object for the OBJ file at this path (named after the file).
     ImportObj(PathBuf),
+    /// Stop reading the mesh file the preview is reading.
+    CancelMeshLoading,
     /// Show the Export PNG window.
     ShowExport,
     /// Show the keyboard shortcuts.

@@ -1,9 +1,11 @@
-//! The status bar: scene file, counts, the preview's pass and render time, errors
-//! (autosave's first: while it fails, unsaved work is not protected).
+//! The status bar: scene file, counts, the preview's pass and render time (or the mesh
+//! file it is reading, with a cancel button), errors (autosave's first: while it fails,
+//! unsaved work is not protected).
 
 use egui::{Color32, RichText, Ui};
 
 use crate::preview::Pass;
+use crate::ui::commands::Command;
 use crate::ui::viewport::preview_link::ShownFrame;
 
 /// What the status bar shows.
@@ -20,6 +22,9 @@ pub struct StatusInfo<'a> {
     pub frame: Option<ShownFrame>,
     /// Fraction of the pass being rendered.
     pub progress: Option<f64>,
+    /// The mesh file the preview is reading (as the scene writes it) and the fraction
+    /// read.
+    pub loading: Option<(String, f64)>,
     /// The preview's error, if any.
     pub error: Option<&'a str>,
     /// Why the last autosave failed, while it keeps failing (unsaved work is at risk).
@@ -59,7 +64,7 @@ impl StatusMessage {
 }
 
 /// Shows the status bar.
-pub fn status_bar_ui(ui: &mut Ui, info: &StatusInfo<'_>) {
+pub fn status_bar_ui(ui: &mut Ui, info: &StatusInfo<'_>, commands: &mut Vec<Command>) {
     ui.horizontal(|ui| {
         let marker = if info.dirty { " •" } else { "" };
         ui.label(RichText::new(format!("{}{marker}", info.file)).strong());
@@ -84,7 +89,26 @@ pub fn status_bar_ui(ui: &mut Ui, info: &StatusInfo<'_>) {
                 ui.weak("no preview");
             }
         }
-        if let Some(progress) = info.progress {
+        if let Some((file, fraction)) = &info.loading {
+            let name = std::path::Path::new(file)
+                .file_name()
+                .map_or(file.clone(), |n| n.to_string_lossy().into_owned());
+            ui.label(format!("reading {name}"))
+                .on_hover_text(format!("The preview is reading the mesh file {file}"));
+            ui.add(
+                egui::ProgressBar::new(*fraction as f32)
+                    .desired_width(80.0)
+                    .desired_height(10.0)
+                    .show_percentage(),
+            );
+            if ui
+                .small_button("Cancel")
+                .on_hover_text("Stop reading the file; the object stays in the scene, undrawn")
+                .clicked()
+            {
+                commands.push(Command::CancelMeshLoading);
+            }
+        } else if let Some(progress) = info.progress {
             ui.add(
                 egui::ProgressBar::new(progress as f32)
                     .desired_width(80.0)

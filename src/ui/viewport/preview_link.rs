@@ -212,6 +212,17 @@ impl PreviewLink {
     pub fn pass_progress(&self) -> Option<f64> {
         self.worker.pass_progress()
     }
+
+    /// The mesh file being read before the next pass, and the fraction read.
+    #[must_use]
+    pub fn loading(&self) -> Option<(String, f64)> {
+        self.worker.loading()
+    }
+
+    /// Stops reading the mesh file being read.
+    pub fn cancel_loading(&self) {
+        self.worker.cancel_loading();
+    }
 }
 
 /// The frame as 8-bit RGBA; with `nan_guard`, the pixels with a non-finite sample are
