@@ -160,3 +160,42 @@ fn a_large_mesh_shows_its_reading_in_the_status_bar_and_cancel_stops_it_with_a_m
     assert!(harness.query_by_label("reading sheet.obj").is_none());
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn the_inspector_shows_a_read_mesh_s_file_triangles_and_bounds() {
+    use egui_kittest::kittest::Queryable;
+    let mut harness = editor_harness::editor_harness(
+        EditorOptions {
+            preview: true,
+            ..EditorOptions::default()
+        },
+        egui::Vec2::new(1280.0, 800.0),
+        64,
+    );
+    harness.run_ok();
+    harness
+        .state_mut()
+        .push(Command::ImportObj(scenes().join("pyramid.obj")));
+    harness.run_ok();
+    // Selected on import; the file's facts come once the preview has read it.
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(60);
+    while harness
+        .query_by_label_contains("closed (a solid)")
+        .is_none()
+    {
+        assert!(
+            std::time::Instant::now() < deadline,
+            "the facts never showed"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        harness.step();
+    }
+    // Four sides and a quad base fanned into two.
+    harness.get_by_label("6 · closed (a solid)");
+    harness.get_by_label("pyramid.obj");
+    let bounds = format!("{:?}", harness.get_by_label_contains("x -1.000…1.000"));
+    assert!(
+        bounds.contains("y 0.000…1.400") && bounds.contains("z -1.000…1.000"),
+        "{bounds}"
+    );
+}

@@ -9,7 +9,31 @@ use std::sync::Arc;
 
 use super::PreviewRequest;
 use crate::scene::{LoadWatch, load_obj_watched, mesh_file::mesh_path, mesh_objects};
+use crate::trace::shapes::Aabb;
 use crate::trace::{MeshStore, TriangleMesh};
+
+/// What the editor shows of a mesh the preview has read.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MeshFacts {
+    /// Its triangles.
+    pub triangles: usize,
+    /// Its box in object space.
+    pub bounds: Aabb,
+    /// Whether it bounds a solid (so it may be a CSG operand).
+    pub closed: bool,
+}
+
+impl MeshFacts {
+    /// The facts of a built mesh.
+    #[must_use]
+    pub fn of(mesh: &TriangleMesh) -> Self {
+        Self {
+            triangles: mesh.triangle_count(),
+            bounds: mesh.bounds(),
+            closed: mesh.is_closed(),
+        }
+    }
+}
 
 /// Built meshes by file, kept across requests.
 #[derive(Default)]

@@ -9,13 +9,14 @@
 //! Between requests the thread keeps the hit cache of the last one-sample pass, so an
 //! edit that moves nothing re-shades instead of re-tracing ([`super::render_plan_cached`]).
 
-use std::collections::VecDeque;
+use std::collections::{BTreeMap, VecDeque};
 use std::sync::{Arc, Condvar, Mutex, MutexGuard};
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
 use super::frame::{Frame, Published};
 use super::job::run_caught;
+use super::meshes::MeshFacts;
 use super::progressive::render_plan_cached;
 use super::request::PreviewRequest;
 use crate::scene::{LoadWatch, mesh_objects};
@@ -52,6 +53,8 @@ struct Mailbox {
     running: Option<Arc<RenderProgress>>,
     /// The mesh file being read before the next pass, as the scene writes its path.
     loading: Option<(String, Arc<LoadWatch>)>,
+    /// What is known of each mesh read so far, by path as the scene writes it.
+    mesh_facts: BTreeMap<String, MeshFacts>,
     /// Published messages not yet taken, oldest first, all of the newest generation.
     outbox: VecDeque<Published>,
     shutdown: bool,
@@ -120,6 +123,13 @@ impl PreviewWorker {
             .loading
             .as_ref()
             .map(|(path, watch)| (path.clone(), watch.fraction()))
+    }
+
+    /// What is known of each mesh file the preview has read, by path as the scene
+    /// writes it.
+    #[must_use]
+    pub fn mesh_facts(&self) -> BTreeMap<String, MeshFacts> {
+        lock(&self.shared.mailbox).mesh_facts.clone()
     }
 
     /// Stops reading the mesh file being read; the preview then reports the object
@@ -213,7 +223,18 @@ fn run(shared: &Shared, waker: &Waker) {
                 watch
             };
             let store = meshes.for_request(&request, &mut watch_read);
-            lock(&shared.mailbox).loading = None;
+            let mut mailbox = lock(&shared.mailbox);
+            mailbox.loading = None;
+            if let Ok(store) = &store {
+                for (_, path) in mesh_objects(&request.scene) {
+                    if let Some(mesh) = store.get(path) {
+                        mailbox
+                            .mesh_facts
+                            .insert(path.to_owned(), MeshFacts::of(mesh));
+                    }
+                }
+            }
+            drop(mailbox);
             let world = store.and_then(|store| {
                 World::isolated_with_meshes(&request.scene, &request.options.isolation, &store)
                     .map_err(|e| e.to_string())

@@ -200,9 +200,15 @@ impl EditorApp {
             .size_range(220.0..=560.0)
             .show(ui, |ui| {
                 panel_title_ui(ui, "Inspector");
+                let meshes = self
+                    .preview
+                    .as_ref()
+                    .map(PreviewLink::mesh_facts)
+                    .unwrap_or_default();
                 inspector_ui(
                     ui,
                     &self.scene,
+                    &meshes,
                     &self.selection,
                     &mut self.focus_name,
                     &mut commands,

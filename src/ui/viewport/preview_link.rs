@@ -219,6 +219,12 @@ impl PreviewLink {
         self.worker.loading()
     }
 
+    /// What is known of each mesh file the preview has read.
+    #[must_use]
+    pub fn mesh_facts(&self) -> std::collections::BTreeMap<String, crate::preview::MeshFacts> {
+        self.worker.mesh_facts()
+    }
+
     /// Stops reading the mesh file being read.
     pub fn cancel_loading(&self) {
         self.worker.cancel_loading();

@@ -7,19 +7,25 @@ pub use fields::take_field_notice;
 mod light;
 mod limits;
 mod material;
+mod mesh;
 mod object;
 mod render_settings;
 
+use std::collections::BTreeMap;
+
 use egui::Ui;
 
+use crate::preview::MeshFacts;
 use crate::scene::Scene;
 use crate::ui::commands::{Command, Selection};
 
-/// Shows the inspector for `selection`.
-/// `focus_name` asks to put the keyboard in the name field (it is reset once done).
+/// Shows the inspector for `selection`; `meshes` holds what the preview found in the
+/// mesh files it has read. `focus_name` asks to put the keyboard in the name field (it
+/// is reset once done).
 pub fn inspector_ui(
     ui: &mut Ui,
     scene: &Scene,
+    meshes: &BTreeMap<String, MeshFacts>,
     selection: &Selection,
     focus_name: &mut bool,
     commands: &mut Vec<Command>,
@@ -37,7 +43,7 @@ pub fn inspector_ui(
             Selection::Render => render_settings::render_ui(ui, &scene.render, commands),
             Selection::Object(index) => {
                 if let Some(object) = scene.objects.get(*index) {
-                    object::object_ui(ui, scene, *index, object, focus_name, commands);
+                    object::object_ui(ui, scene, *index, object, meshes, focus_name, commands);
                 }
             }
             Selection::Light(index) => {

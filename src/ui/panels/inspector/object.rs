@@ -1,12 +1,16 @@
 //! The object inspector: name, shape, material, transform, and the material's values
 //! right below (what one tunes next).
 
+use std::collections::BTreeMap;
+
 use egui::Ui;
 
 use super::fields::{number_row_ui, vec3_row_ui};
 use super::limits::{self, Limits};
 use super::material::material_rows_ui;
+use super::mesh::mesh_rows_ui;
 use super::{grid_ui, heading_ui};
+use crate::preview::MeshFacts;
 use crate::scene::*;
 use crate::ui::commands::{Command, SceneEdit};
 
@@ -15,6 +19,7 @@ pub(super) fn object_ui(
     scene: &Scene,
     index: usize,
     object: &Object,
+    meshes: &BTreeMap<String, MeshFacts>,
     focus_name: &mut bool,
     commands: &mut Vec<Command>,
 ) {
@@ -42,6 +47,10 @@ pub(super) fn object_ui(
                 .accessible_name("shape");
             ui.end_row();
             shape_parameter_ui(ui, &mut edited.shape);
+        } else if let Shape::Mesh { path } = &edited.shape {
+            ui.label("Mesh from a file");
+            ui.end_row();
+            mesh_rows_ui(ui, path, meshes.get(path));
         } else {
             // A tree or a mesh is more than a shape: switching it to a unit shape would
             // drop its operands, children or file in one click.
