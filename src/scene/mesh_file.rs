@@ -8,7 +8,7 @@ use std::collections::{BTreeMap, HashMap};
 use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
 
-use super::obj_reader::{LoadWatch, WatchedReader};
+use super::obj_reader::{LoadWatch, WatchedReader, line_of_byte};
 use super::{Object, Scene, SceneError, Shape};
 
 /// The largest OBJ file read: about 20 million triangles. Larger files are refused before
@@ -68,7 +68,6 @@ pub fn load_obj_watched(path: &Path, watch: &LoadWatch) -> Result<MeshData, Scen
     watch.start(size);
     let mut reader = WatchedReader {
         inner: BufReader::new(file),
-        newlines: 0,
         watch,
     };
     let options = tobj::LoadOptions {
@@ -87,7 +86,10 @@ pub fn load_obj_watched(path: &Path, watch: &LoadWatch) -> Result<MeshData, Scen
         if watch.is_cancelled() {
             invalid(path, None, "loading was cancelled")
         } else {
-            invalid(path, Some(reader.newlines.max(1)), &error.to_string())
+            // The line the parser stopped in: the file's newlines up to where it was.
+            let line =
+                std::fs::File::open(path).map_or(1, |file| line_of_byte(file, watch.bytes_read()));
+            invalid(path, Some(line), &error.to_string())
         }
     })?;
     let mut mesh = MeshData::default();
