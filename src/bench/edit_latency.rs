@@ -100,10 +100,12 @@ fn apply(kind: EditKind, request: &mut PreviewRequest, flip: bool) -> Result<(),
     Ok(())
 }
 
-/// Waits for the first full-resolution frame of `generation` and returns when it came.
-fn first_full_frame(
+/// Waits for the first frame of `generation` (the first full-resolution one, with
+/// `full`) and returns when it came.
+fn first_frame(
     worker: &mut PreviewWorker,
     generation: u64,
+    full: bool,
     timeout: Duration,
 ) -> Result<Instant, String> {
     loop {
@@ -114,10 +116,75 @@ fn first_full_frame(
             continue;
         }
         let frame = message.result?;
-        if matches!(frame.pass, Pass::Full { .. }) {
+        if !full || matches!(frame.pass, Pass::Full { .. }) {
             return Ok(Instant::now());
         }
     }
+}
+
+/// A preview worker that has shown `request` and is refining it (as after a user's
+/// pause), for edits to be timed against.
+fn settled_worker(request: &PreviewRequest, timeout: Duration) -> Result<PreviewWorker, String> {
+    let mut worker = PreviewWorker::spawn(Box::new(|| {}));
+    worker.submit(request.clone());
+    first_frame(&mut worker, request.generation, true, timeout)?;
+    if request.scene.render.samples_per_pixel > 1 {
+        // The worker keeps the rays of the one-sample pass once that pass is shown,
+        // before the first anti-aliasing pass: the edits start when the picture is
+        // refining, as after a user's pause.
+        first_frame(&mut worker, request.generation, true, timeout)?;
+    }
+    Ok(worker)
+}
+
+/// The median over `runs` edits of `kind` of the time from the submit to the first
+/// frame (the first full-resolution one, with `full`).
+fn time_edits(
+    worker: &mut PreviewWorker,
+    request: &mut PreviewRequest,
+    kind: EditKind,
+    runs: u32,
+    full: bool,
+    timeout: Duration,
+) -> Result<f64, String> {
+    let mut times = Vec::new();
+    for run in 0..runs.max(1) {
+        apply(kind, request, run % 2 == 0)?;
+        request.generation += 1;
+        let submitted = Instant::now();
+        worker.submit(request.clone());
+        let at = first_frame(worker, request.generation, full, timeout)?;
+        times.push(at - submitted);
+    }
+    Ok(median(times).as_secs_f64() * 1e3)
+}
+
+/// Median milliseconds from an edit's submit to its first frame of any pass, for the
+/// edits that re-shade (a material's colour, a light's colour).
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct FirstFrameLatency {
+    /// The diffuse colour of the first object's material changed.
+    pub material: f64,
+    /// A light's colour changed.
+    pub light_colour: f64,
+}
+
+/// For `request` (its scene, options and meshes): per re-shading edit, the median over
+/// `runs` edits of the time from the submit to the first frame shown.
+///
+/// # Errors
+/// When the scene cannot be rendered or has no light to edit.
+pub fn first_frame_latency(
+    mut request: PreviewRequest,
+    runs: u32,
+) -> Result<FirstFrameLatency, String> {
+    let timeout = Duration::from_secs(120);
+    let mut worker = settled_worker(&request, timeout)?;
+    let mut measure = |kind| time_edits(&mut worker, &mut request, kind, runs, false, timeout);
+    Ok(FirstFrameLatency {
+        material: measure(EditKind::Material)?,
+        light_colour: measure(EditKind::LightColour)?,
+    })
 }
 
 /// For `scene` at its own size and samples: per kind of edit, the median over `runs`
@@ -129,28 +196,9 @@ fn first_full_frame(
 /// When the scene cannot be rendered or has nothing to edit of some kind.
 pub fn edit_latency(scene: &Scene, runs: u32) -> Result<EditLatency, String> {
     let timeout = Duration::from_secs(120);
-    let mut worker = PreviewWorker::spawn(Box::new(|| {}));
     let mut request = PreviewRequest::for_scene(1, scene.clone());
-    worker.submit(request.clone());
-    first_full_frame(&mut worker, 1, timeout)?;
-    if scene.render.samples_per_pixel > 1 {
-        // The worker keeps the rays of the one-sample pass once that pass is shown,
-        // before the first anti-aliasing pass: the edits start when the picture is
-        // refining, as after a user's pause.
-        first_full_frame(&mut worker, 1, timeout)?;
-    }
-    let mut measure = |kind: EditKind| -> Result<f64, String> {
-        let mut times = Vec::new();
-        for run in 0..runs.max(1) {
-            apply(kind, &mut request, run % 2 == 0)?;
-            request.generation += 1;
-            let submitted = Instant::now();
-            worker.submit(request.clone());
-            let at = first_full_frame(&mut worker, request.generation, timeout)?;
-            times.push(at - submitted);
-        }
-        Ok(median(times).as_secs_f64() * 1e3)
-    };
+    let mut worker = settled_worker(&request, timeout)?;
+    let mut measure = |kind| time_edits(&mut worker, &mut request, kind, runs, true, timeout);
     Ok(EditLatency {
         material: measure(EditKind::Material)?,
         switch: measure(EditKind::Switch)?,

@@ -16,7 +16,7 @@ use serde::Serialize;
 
 pub use convergence::{CurveChecks, CurvePoint, convergence_curves, curve_checks};
 pub use crossover::{CrossoverPoint, bvh_crossover};
-pub use edit_latency::{EditLatency, edit_latency};
+pub use edit_latency::{EditLatency, FirstFrameLatency, edit_latency};
 pub use precision::{PrecisionCost, precision_cost};
 pub use throughput::{SceneThroughput, scene_throughput};
 
@@ -63,4 +63,8 @@ pub struct BenchReport {
     pub mesh_mrays_per_s: f64,
     /// Memory of the built knot per triangle.
     pub mesh_bytes_per_triangle: f64,
+    /// Median ms from a material or light-colour edit of the knot on a floor to the
+    /// preview's first frame. Printed, not in `--json` (no issue has named a key).
+    #[serde(skip)]
+    pub mesh_edit_first_frame_ms: Option<FirstFrameLatency>,
 }

@@ -61,11 +61,9 @@ impl LoadWatch {
 pub(super) fn line_of_byte(text: impl Read, offset: u64) -> usize {
     let mut newlines = 0;
     let mut reader = std::io::BufReader::new(text.take(offset));
-    loop {
-        let Ok(buffer) = reader.fill_buf() else { break };
-        if buffer.is_empty() {
-            break;
-        }
+    while let Ok(buffer) = reader.fill_buf()
+        && !buffer.is_empty()
+    {
         newlines += buffer.iter().filter(|b| **b == b'\n').count();
         let taken = buffer.len();
         reader.consume(taken);
