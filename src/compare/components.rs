@@ -119,7 +119,8 @@ pub fn render_components(
                 .flatten()
         })
         .collect();
-    let ctx = Context::new(world, scene.lights.len(), without);
+    let spot = super::spot_bugs::spot_worlds(scene, world);
+    let ctx = Context::new(world, scene.lights.len(), without, spot);
     let space = ctx.space;
     let camera = PinholeCamera::new(&world.camera, width, height);
     let spp = spp.max(1);

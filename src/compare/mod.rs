@@ -26,6 +26,7 @@ pub mod recorder;
 pub mod report;
 pub mod report_image;
 pub mod search;
+pub mod spot_bugs;
 pub mod target;
 pub mod verdicts;
 

@@ -1,7 +1,8 @@
 //! The recorder that splits one camera sample into channels. It listens to the tracer's
 //! own shading code (through [`Recorder`]), so every number is the one the picture
 //! used; what the tracer does not report (the light a shadow took away, the terms under
-//! each known bug) is computed here from the same inputs.
+//! each known bug) is computed here from the same inputs, and what a changed spot light
+//! would show is traced again ([`super::spot_bugs`]).
 //!
 //! A mirror bounce at depth d is weighted by the product of the mirror colours before it
 //! (`throughput`), so a term seen in a mirror lands in the channel of the object it lies
@@ -11,8 +12,10 @@ use glam::DVec3;
 
 use super::bugs::{ClampBug, LocalLight, NormalBug, Part, SpecularBug, local_terms};
 use super::channels::{ChannelSpace, Kind};
+use super::spot_bugs::{SpotBug, SpotWorld, cone_changes, no_falloff_change};
 use crate::scene::Material;
 use crate::trace::LightSample;
+use crate::trace::world::WorldLight;
 use crate::trace::shapes::Primitive;
 use crate::trace::{
     LightRecord, NoRecorder, Ray, RayCounts, Recorder, SurfacePoint, TermSwitches, Tracer, View,
@@ -58,13 +61,21 @@ pub struct Context<'w> {
     /// For each object, the world without it (for the first few objects), to see what
     /// a ray would meet if the object were missing.
     pub without: Vec<Option<World>>,
+    /// The worlds of the spot lights' cone bugs.
+    pub spot: Vec<SpotWorld>,
 }
 
 impl<'w> Context<'w> {
     /// The context of `world` with `scene_lights` lights in the scene's list, and
-    /// `without[o]` the world without object `o` (or `None` not to try it missing).
+    /// `without[o]` the world without object `o` (or `None` not to try it missing), and
+    /// `spot` the worlds of the spot lights' cone bugs.
     #[must_use]
-    pub fn new(world: &'w World, scene_lights: usize, without: Vec<Option<World>>) -> Self {
+    pub fn new(
+        world: &'w World,
+        scene_lights: usize,
+        without: Vec<Option<World>>,
+        spot: Vec<SpotWorld>,
+    ) -> Self {
         let mut world_light = vec![None; scene_lights];
         for (index, &scene_index) in world.light_scene_index.iter().enumerate() {
             world_light[scene_index] = Some(index);
@@ -77,6 +88,7 @@ impl<'w> Context<'w> {
             },
             world_light,
             without,
+            spot,
         }
     }
 
@@ -305,9 +317,15 @@ impl Recorder for SampleRecorder<'_, '_> {
             self.channel(Kind::Specular(index), object),
             t * record.specular,
         );
-        let Some(sample) = self.ctx.world.lights[index].sample(hit.p) else {
+        let world_light = &self.ctx.world.lights[index];
+        let Some(sample) = world_light.sample(hit.p) else {
             return;
         };
+        if matches!(world_light, WorldLight::Spot { .. }) {
+            let change = no_falloff_change(record.diffuse + record.specular, sample.distance_squared);
+            let channel = self.channel(Kind::Spot(SpotBug::NoFalloff, index), object);
+            self.tally.add(channel, t * change);
+        }
         if record.blocked_by.is_some()
             && let Some(world_object) = bounce.world_object
         {
@@ -358,6 +376,11 @@ impl Recorder for SampleRecorder<'_, '_> {
                     self.tally
                         .add(self.channel(Kind::Clamp(bug), object), bugged - colour);
                 }
+            }
+            // A cone bug changes the whole picture the camera ray brings back.
+            for (bug, light, change) in cone_changes(&self.ctx.spot, &bounce.ray, colour) {
+                let channel = self.channel(Kind::Spot(bug, light), object);
+                self.tally.add(channel, change);
             }
         }
         self.missing(&bounce, colour);

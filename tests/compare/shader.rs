@@ -34,6 +34,8 @@ pub struct Bugs {
     pub directional_never_lights: bool,
     /// Write floor(255 c) instead of round(255 c).
     pub truncate: bool,
+    /// Scene index of a spot light whose strength does not fall off as 1/d^2.
+    pub spot_no_falloff: Option<usize>,
 }
 
 struct Shader<'a> {
@@ -109,9 +111,12 @@ impl Shader<'_> {
             {
                 continue;
             }
-            let Some(sample) = light.sample(hit.p) else {
+            let Some(mut sample) = light.sample(hit.p) else {
                 continue;
             };
+            if self.bugs.spot_no_falloff == Some(scene_index) {
+                sample.radiance = light.strength();
+            }
             let n_dot_l = n.dot(sample.to_light);
             if n_dot_l <= 0.0 || !self.visible(&hit, sample.to_light, sample.light_position) {
                 continue;
