@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # CPU time of raylab against POV-Ray 3.7 on one example scene, scenes/NAME.ron, and its
-# twin scripts/bench/NAME.pov (csg, more_shapes): the median user+sys seconds of RUNS
+# twin scripts/bench/NAME.pov (csg, more_shapes, glass): the median user+sys seconds of RUNS
 # runs of each at 800x600 and one sample, the ratio, and both pictures side by side.
 # Installs povray with apt-get only when it is missing (never run by the tests or CI).
 #

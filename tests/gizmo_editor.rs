@@ -137,9 +137,16 @@ fn dragging_the_tip_handle_re_aims_the_spotlight() {
         panic!("light 4 is the spotlight");
     };
     let length = (scene.camera.position - scene.camera.look_at).length() * 0.3;
-    let wanted = DVec3::new(-0.2, -1.0, 0.3).normalize();
-    let from = screen(&harness, position + direction.normalize() * length);
-    let to = screen(&harness, position + wanted * length);
+    // Grab the tip and let go over a point of the plane through it that faces the eye,
+    // well off the sphere the tip sits on between drags: the light aims through it.
+    let start_tip = position + direction.normalize() * length;
+    let (u, v) = (scene.camera.position - start_tip)
+        .normalize()
+        .any_orthonormal_pair();
+    let target = start_tip + length * (1.5 * u - 0.8 * v);
+    let wanted = (target - position).normalize();
+    let from = screen(&harness, start_tip);
+    let to = screen(&harness, target);
     drag(&mut harness, from, to, Modifiers::NONE);
     let Light::Spot { direction: now, .. } = harness.state().scene().lights[3] else {
         panic!("still a spotlight");
@@ -166,4 +173,43 @@ fn clicking_a_light_marker_selects_the_light() {
     let pos = screen(&harness, position);
     click_at(&mut harness, pos);
     assert_eq!(harness.state().selection(), &Selection::Light(1));
+}
+
+#[test]
+fn an_arrow_that_runs_past_the_pictures_top_edge_is_drawn_and_grabbed_in_the_margin() {
+    let mut harness = harness();
+    select(&mut harness, "red ball");
+    // Put the ball 6 pixels below the picture's top edge, at the camera's own distance:
+    // its y arrow (84 points long) runs up into the margin above the picture.
+    let shown = harness.state().shown_camera();
+    let camera = raylab::trace::PinholeCamera::new(&shown, shown.width, shown.height);
+    let ray = camera.ray(glam::DVec2::new(f64::from(shown.width) * 0.5, 6.0));
+    let distance = (shown.look_at - shown.position).length();
+    let place = ray.origin + ray.dir.normalize() * distance;
+    for (axis, value) in ["x", "y", "z"].iter().zip(place.to_array()) {
+        harness
+            .get_by_label(&format!("translate {axis}"))
+            .set_value_accesskit(value);
+        harness.run();
+    }
+    let origin = trs(harness.state().scene(), 1).translate;
+    let length = ARROW_POINTS * world_per_point(&harness, origin);
+    let grab = screen(&harness, origin + DVec3::Y * length * 0.8);
+    let top = picture(&harness).min.y;
+    assert!(
+        grab.y < top - 20.0,
+        "the grab point {grab:?} is above the picture ({top})"
+    );
+    drag(
+        &mut harness,
+        grab,
+        grab + egui::vec2(0.0, 30.0),
+        Modifiers::NONE,
+    );
+    let moved = trs(harness.state().scene(), 1).translate;
+    assert!(
+        moved.y < origin.y - 1e-3,
+        "dragged down from the margin: {moved} from {origin}"
+    );
+    assert_eq!((moved.x, moved.z), (origin.x, origin.z), "only y changes");
 }

@@ -117,6 +117,16 @@ fn more_shapes() {
 }
 
 #[test]
+fn glass() {
+    check("glass");
+}
+
+#[test]
+fn soft_spot() {
+    check("soft_spot");
+}
+
+#[test]
 fn mesh() {
     check("mesh");
 }

@@ -258,3 +258,37 @@ fn the_isolation_flags_leave_out_what_they_name_and_say_so() {
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("there is no light 9"));
 }
+
+#[test]
+fn a_pixel_through_glass_shows_its_refracted_rays_as_a_tree() {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenes/glass.ron");
+    // A pixel on the glass ball.
+    let json = inspect_json(&path, "270,260");
+    let kinds: Vec<&str> = json["rays"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| r["kind"].as_str().unwrap())
+        .collect();
+    assert!(
+        kinds.iter().filter(|k| **k == "refraction").count() >= 2,
+        "in and out of the ball: {kinds:?}"
+    );
+    let out = raylab(&["inspect", path.to_str().unwrap(), "--pixel", "270,260"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("transmission: kt (0.9200, 0.9500, 0.9400)"),
+        "{text}"
+    );
+    // Depth first: the camera ray's reflection ray comes first, its refraction ray after
+    // the reflection ray's own lines, both two spaces in.
+    let lines: Vec<&str> = text.lines().collect();
+    let at = |prefix: &str| lines.iter().position(|l| l.starts_with(prefix));
+    let reflection = at("  reflection ray").expect("the camera ray's mirror ray");
+    let refraction = at("  refraction ray").expect("the camera ray's refracted ray");
+    assert!(reflection < refraction, "{text}");
+    assert!(
+        lines[refraction + 1].starts_with("    hits glass ball"),
+        "the refracted ray meets the ball's inside next: {text}"
+    );
+}

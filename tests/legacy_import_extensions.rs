@@ -121,12 +121,6 @@ fn the_2020_dialect_with_every_students_extension() {
             ("line 6: ", "`renderNormals` is a debug view"),
             ("line 39: ", "`DisableBoundingBox` is a debug switch"),
             ("line 46: ", "`Object Parabaloid` is a stub"),
-            // Until the tracer draws them (issue 37), the user hears what is not shown.
-            ("materials that let light through", "(`Opacity`: glass)"),
-            (
-                "1 light(s) with a `Radius`",
-                "does not draw soft shadows yet",
-            ),
         ],
     );
     let scene = &import.scene;

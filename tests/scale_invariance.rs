@@ -65,7 +65,7 @@ fn render_rgb(scene: &Scene) -> Vec<u8> {
 }
 
 fn assert_same_picture(label: &str, scale: f64, offset: DVec3) {
-    for scene in ["default.ron", "more_shapes.ron"] {
+    for scene in ["default.ron", "more_shapes.ron", "glass.ron"] {
         assert_same_picture_of(scene, label, scale, offset);
     }
 }

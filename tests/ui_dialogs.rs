@@ -191,3 +191,55 @@ fn compare_with_images_browse_uses_the_in_app_dialog_and_fills_the_path() {
         dir.join("theirs.png").display().to_string()
     );
 }
+
+/// The in-app dialog's file name field (the other text field holds a folder path).
+fn name_field<'h>(harness: &'h Harness<'_, EditorApp>) -> egui_kittest::Node<'h> {
+    harness.get_by(|node| {
+        node.role() == egui::accesskit::Role::TextInput
+            && !node.value().unwrap_or_default().contains('/')
+    })
+}
+
+/// Replaces the file name field's text with `name`, as a person selecting it all and
+/// typing would.
+fn type_name(harness: &mut Harness<'_, EditorApp>, name: &str) {
+    name_field(harness).focus();
+    harness.run();
+    harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    harness.run();
+    name_field(harness).type_text(name);
+    harness.run();
+}
+
+#[test]
+fn a_file_name_typed_into_the_open_dialog_is_the_file_opened() {
+    let dir = temp_dir("dialog-typed");
+    let mut scene = new_scene();
+    scene.camera.fov_deg = 47.0;
+    save_scene_to(&scene, &dir.join("typed.ron")).unwrap();
+    save_scene_to(&new_scene(), &dir.join("clicked.ron")).unwrap();
+    let mut harness = harness_in(&dir);
+    menu(&mut harness, "Open…");
+    // A file clicked in the list, then another name typed: the typed one opens.
+    harness.get_by_label_contains("clicked.ron").click();
+    harness.run();
+    type_name(&mut harness, "typed.ron");
+    harness.get_by_label("Open").click();
+    harness.run();
+    assert_eq!(
+        harness.state().path(),
+        Some(dir.join("typed.ron").as_path())
+    );
+    assert_eq!(harness.state().scene(), &scene);
+    // A typed name that is not there: a message, and the open scene stays.
+    menu(&mut harness, "Open…");
+    type_name(&mut harness, "nothing.ron");
+    harness.get_by_label("Open").click();
+    harness.run();
+    assert_eq!(
+        harness.state().path(),
+        Some(dir.join("typed.ron").as_path())
+    );
+    let error = harness.state().error().unwrap_or_default().to_owned();
+    assert!(error.contains("nothing.ron"), "{error}");
+}

@@ -16,12 +16,13 @@ use raylab::ui::{
 };
 
 /// Every control of the term toolbar and of the gizmo mode buttons.
-const TOOLBAR_CONTROLS: [&str; 14] = [
+const TOOLBAR_CONTROLS: [&str; 15] = [
     "ambient",
     "diffuse",
     "specular",
     "shadows",
     "reflection",
+    "transmission",
     "solo",
     "view",
     "NaN guard",
@@ -58,6 +59,40 @@ fn at_800_by_500_every_toolbar_control_is_on_screen_between_the_panels() {
             assert!(!ra.intersects(*rb), "{a} {ra:?} overlaps {b} {rb:?}");
         }
     }
+}
+
+#[test]
+fn at_the_default_window_size_the_toolbar_has_its_two_rows() {
+    // 1280 x 800, the window `cargo run` opens: the six switches, solo and view on the
+    // first row, the tools (the NaN guard among them) on the second.
+    let harness = editor_harness(EditorOptions::default(), Vec2::new(1280.0, 800.0), 64);
+    let row = |label: &str| harness.get_by_label(label).rect().center().y;
+    for label in ["transmission", "solo", "view"] {
+        assert_eq!(row(label), row("ambient"), "{label} on the first row");
+    }
+    for label in ["Convergence", "NaN guard"] {
+        assert_eq!(row(label), row("Inspect"), "{label} on the second row");
+    }
+    assert!(row("Inspect") > row("ambient"));
+}
+
+#[test]
+fn a_long_status_message_is_cut_short_and_never_runs_over_the_counts() {
+    // An import's summary is long; in a 1000-point window it would cover the counts.
+    let mut harness = editor_harness(EditorOptions::default(), Vec2::new(1000.0, 700.0), 64);
+    let course = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/legacy/full.txt");
+    harness.state_mut().push(Command::Open(course.into()));
+    harness.run();
+    harness.run();
+    let message = harness
+        .get_by_label_contains("read as the 2020 framework")
+        .rect();
+    let counts = harness.get_by_label("6 objects, 4 lights").rect();
+    assert!(
+        message.min.x > counts.max.x,
+        "the message {message:?} runs over the counts {counts:?}"
+    );
+    assert!(message.max.x <= 1000.0, "{message:?} stays in the window");
 }
 
 #[test]
@@ -99,17 +134,15 @@ fn drag(harness: &mut Harness<'_, EditorApp>, from: Pos2, to: Pos2) {
     harness.run();
 }
 
-#[test]
-fn a_light_marker_under_the_gizmo_buttons_does_not_take_their_presses() {
-    let mut harness = harness();
+/// Moves the default scene's point light to where the picture shows it at `screen`
+/// (6 units along the camera ray there); returns its index and the light placed.
+fn put_point_light_at(harness: &mut Harness<'_, EditorApp>, screen: Pos2) -> (usize, Light) {
     let picture = harness.get_by_label(VIEWPORT_LABEL).rect();
-    let rotate = harness.get_by_label("Rotate").rect().center();
-    // Put the point light where it is drawn right under the Rotate button.
     let scene = harness.state().scene().clone();
     let (w, h) = (scene.camera.width, scene.camera.height);
     let image_point = DVec2::new(
-        f64::from((rotate.x - picture.min.x) / picture.width()) * f64::from(w),
-        f64::from((rotate.y - picture.min.y) / picture.height()) * f64::from(h),
+        f64::from((screen.x - picture.min.x) / picture.width()) * f64::from(w),
+        f64::from((screen.y - picture.min.y) / picture.height()) * f64::from(h),
     );
     let ray = PinholeCamera::new(&scene.camera, w, h).ray(image_point);
     let index = scene
@@ -117,23 +150,23 @@ fn a_light_marker_under_the_gizmo_buttons_does_not_take_their_presses() {
         .iter()
         .position(|l| matches!(l, Light::Point { .. }))
         .expect("the default scene has a point light");
-    let Light::Point {
-        colour, intensity, ..
-    } = scene.lights[index]
-    else {
-        unreachable!()
-    };
-    let light = Light::Point {
-        position: ray.at(6.0),
-        colour,
-        intensity,
-        radius: 0.0,
-        samples: 1,
-    };
+    let mut light = scene.lights[index].clone();
+    if let Light::Point { position, .. } = &mut light {
+        *position = ray.at(6.0);
+    }
     harness
         .state_mut()
-        .push(Command::Edit(SceneEdit::SetLight(index, light)));
+        .push(Command::Edit(SceneEdit::SetLight(index, light.clone())));
     harness.run();
+    (index, light)
+}
+
+#[test]
+fn a_light_marker_under_the_gizmo_buttons_does_not_take_their_presses() {
+    let mut harness = harness();
+    let rotate = harness.get_by_label("Rotate").rect().center();
+    // Put the point light where it is drawn right under the Rotate button.
+    put_point_light_at(&mut harness, rotate);
     let placed = harness.state().scene().clone();
 
     harness.get_by_label("Rotate").click();
@@ -149,6 +182,42 @@ fn a_light_marker_under_the_gizmo_buttons_does_not_take_their_presses() {
         &placed,
         "a press on the button neither drags the light nor orbits the camera"
     );
+}
+
+#[test]
+fn a_lights_mute_and_solo_buttons_stay_on_top_of_the_not_the_full_picture_marker() {
+    let mut harness = harness();
+    let mut settings = *harness.state().preview_settings();
+    settings.switches.set(Term::Diffuse, false);
+    harness
+        .state_mut()
+        .push(Command::SetPreviewSettings(settings));
+    harness.run();
+    let marker = harness.get_by_label_contains(NOT_FULL_PICTURE).rect();
+    // Put the point light so that its M button (drawn 9 points right of and 22 points
+    // above the marker dot) lands in the middle of the amber marker.
+    let (index, _) = put_point_light_at(&mut harness, marker.center() + Vec2::new(-19.0, 13.0));
+    harness
+        .state_mut()
+        .push(Command::Select(Selection::Light(index)));
+    harness.run();
+    let mute = harness
+        .get_all_by_label_contains("(marker)")
+        .find(|node| {
+            node.accesskit_node()
+                .label()
+                .is_some_and(|l| l.starts_with("mute "))
+        })
+        .expect("the selected light's M button");
+    assert!(
+        marker.contains(mute.rect().center()),
+        "the M button {:?} lies under the marker {marker:?}",
+        mute.rect()
+    );
+    mute.click();
+    harness.run();
+    let muted = &harness.state().isolation().muted_lights;
+    assert!(muted.contains(&index), "the click reached the M button");
 }
 
 /// The inspector's left edge and the viewport's picture, where a person sees them.

@@ -100,3 +100,52 @@ fn the_window_keeps_working_while_a_native_save_dialog_is_open() {
     assert_eq!(saved.objects[0].shape, Shape::Cube);
     assert_eq!(harness.state().file_dialogs().open_purpose(), None);
 }
+
+#[test]
+fn a_dialog_opens_in_the_folder_a_file_was_last_picked_from() {
+    let start = temp_dir("dialog-start");
+    let course = temp_dir("dialog-course");
+    std::fs::copy(
+        concat!(env!("CARGO_MANIFEST_DIR"), "/tests/legacy/full.txt"),
+        course.join("full.txt"),
+    )
+    .unwrap();
+    let picks = Arc::new(Mutex::new(vec![course.join("full.txt")]));
+    let asked: Arc<Mutex<Vec<DialogRequest>>> = Arc::default();
+    let dialog: NativeDialog = {
+        let asked = asked.clone();
+        let picks = picks.clone();
+        Arc::new(move |request: &DialogRequest| {
+            asked.lock().unwrap().push(request.clone());
+            let pick = picks.lock().unwrap().pop();
+            Box::pin(async move { pick })
+        })
+    };
+    let mut harness = harness_with_file_dialog(EditorOptions {
+        native_dialogs: NativeDialogs::Given(dialog),
+        dialog_folder: Some(start.clone()),
+        ..EditorOptions::default()
+    });
+    // An imported course scene has no file of its own: the next dialog opens where it
+    // was picked, not in the start folder.
+    harness.state_mut().push(Command::ImportLegacyDialog);
+    harness.run();
+    step_until(&mut harness, "the import", |app| {
+        app.scene().objects.len() > 1 && app.file_dialogs().open_purpose().is_none()
+    });
+    assert_eq!(harness.state().path(), None, "an import is untitled");
+    harness.state_mut().push(Command::OpenDialog);
+    harness.run();
+    // The import is unsaved: the editor first asks what to do with it.
+    if let Some(discard) = harness.query_by_label("Discard") {
+        discard.click();
+        harness.run();
+    }
+    let folders: Vec<PathBuf> = asked
+        .lock()
+        .unwrap()
+        .iter()
+        .map(|r| r.folder.clone())
+        .collect();
+    assert_eq!(folders, vec![start, course]);
+}

@@ -204,3 +204,20 @@ fn a_typed_value_the_field_does_not_take_is_said_in_the_status_line() {
         "a zero scale is not taken"
     );
 }
+
+#[test]
+fn a_notice_about_a_typed_value_goes_with_the_undo_of_that_value() {
+    let mut harness = editor_harness(EditorOptions::default(), Vec2::new(1280.0, 800.0), 64);
+    harness.get_by_label("red ball").click();
+    harness.run();
+    type_into(&mut harness, "translate x", "1e30");
+    harness.get_by_label_contains("is taken, but it is far beyond");
+    harness.state_mut().push(raylab::ui::Command::Undo);
+    harness.run();
+    assert!(
+        harness
+            .query_by_label_contains("is taken, but it is far beyond")
+            .is_none(),
+        "the notice spoke of the value the undo took away"
+    );
+}

@@ -24,6 +24,8 @@ pub struct SceneThroughput {
     pub shadow_rays: u64,
     /// Mirror rays per frame.
     pub reflection_rays: u64,
+    /// Transmitted rays per frame (refracted or internally reflected).
+    pub transmission_rays: u64,
     /// All rays per second, millions.
     pub mrays_per_s: f64,
 }
@@ -64,6 +66,7 @@ pub fn scene_throughput(
         primary_rays: rays.primary,
         shadow_rays: rays.shadow,
         reflection_rays: rays.reflection,
+        transmission_rays: rays.transmission,
         mrays_per_s: rays.total() as f64 / best / 1e6,
     })
 }

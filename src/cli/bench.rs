@@ -205,11 +205,13 @@ fn print_tables(report: &BenchReport) {
         if report.quick { " (quick run)" } else { "" }
     );
     println!();
-    println!("| scene | size | frame (ms) | primary | shadow | reflection | Mrays/s |");
-    println!("|---|---|---|---|---|---|---|");
+    println!(
+        "| scene | size | frame (ms) | primary | shadow | reflection | transmission | Mrays/s |"
+    );
+    println!("|---|---|---|---|---|---|---|---|");
     for s in &report.scenes {
         println!(
-            "| {} | {}x{} | {:.1} | {} | {} | {} | {:.2} |",
+            "| {} | {}x{} | {:.1} | {} | {} | {} | {} | {:.2} |",
             s.scene,
             s.width,
             s.height,
@@ -217,6 +219,7 @@ fn print_tables(report: &BenchReport) {
             s.primary_rays,
             s.shadow_rays,
             s.reflection_rays,
+            s.transmission_rays,
             s.mrays_per_s
         );
     }

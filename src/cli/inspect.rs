@@ -4,18 +4,17 @@
 //! `raylab render`'s isolation flags: muted lights and hidden objects are left out of the
 //! trace and named as such in the output.
 
-use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use clap::Args;
-use glam::DVec3;
 use serde::Serialize;
 
+use super::inspect_tree::{lights_off, object_name, tree_text};
 use super::isolation::IsolationArgs;
 use crate::scene::{Scene, load_scene};
 use crate::trace::{
-    HitSurface, Isolation, PixelReport, RayKind, RenderOptions, Term, TermSwitches, TracedRay,
-    View, World, switches_text, traced_rays, try_inspect_pixel,
+    Isolation, PixelReport, RayKind, RenderOptions, Term, TermSwitches, View, World, traced_rays,
+    try_inspect_pixel,
 };
 
 /// Arguments of `raylab inspect`.
@@ -43,7 +42,8 @@ pub struct InspectArgs {
 /// The term switches, as `raylab render` takes them.
 #[derive(Debug, Default, Args)]
 pub struct TermArgs {
-    /// Terms to switch off, comma-separated: ambient,diffuse,specular,shadows,reflection.
+    /// Terms to switch off, comma-separated: ambient,diffuse,specular,shadows,reflection,
+    /// transmission.
     #[arg(long, value_delimiter = ',')]
     pub off: Vec<Term>,
     /// Show one term alone.
@@ -213,163 +213,6 @@ impl JsonReport {
                 .collect(),
         }
     }
-}
-
-/// The scene's indices of the lights `isolation` switches off.
-fn lights_off(scene: &Scene, isolation: &Isolation) -> Vec<usize> {
-    (0..scene.lights.len())
-        .filter(|&i| !isolation.is_light_lit(i))
-        .collect()
-}
-
-/// A tree leaf as the report names it: `"die/pip 3.1" (cut, surface 2 of 4 along the
-/// line)`.
-fn surface_text(surface: Option<&HitSurface>) -> Option<String> {
-    let surface = surface?;
-    let mut text = surface.path.clone();
-    if let Some((k, n)) = surface.crossing {
-        let cut = if surface.cut { "cut, " } else { "" };
-        let _ = write!(text, " ({cut}surface {} of {n} along the line)", k + 1);
-    }
-    Some(text)
-}
-
-/// The name of the scene's object `index` (the record's indices are the scene's).
-fn object_name(scene: &Scene, index: usize) -> String {
-    scene
-        .objects
-        .get(index)
-        .map_or_else(|| format!("object {index}"), |o| o.name.clone())
-}
-
-/// The readable tree: the camera ray, then for each hit its terms, its lights with their
-/// shadow rays, and its mirror bounce, indented by depth.
-fn tree_text(scene: &Scene, options: &RenderOptions, report: &PixelReport) -> String {
-    let name = |i: usize| object_name(scene, i);
-    let off = lights_off(scene, &options.isolation);
-    let light_name = |i: usize| {
-        scene.lights.get(i).map_or_else(
-            || format!("light {}", i + 1),
-            |l| format!("{} light {}", l.kind_name(), i + 1),
-        )
-    };
-    let (x, y) = report.pixel;
-    let mut out = String::new();
-    let _ = writeln!(
-        out,
-        "pixel ({x}, {y}) of {} x {}, centre ray, {}",
-        options.width,
-        options.height,
-        switches_text(options.switches)
-    );
-    let _ = writeln!(
-        out,
-        "colour {}   before clamping {}",
-        v(report.clamped),
-        v(report.unclamped)
-    );
-    if !off.is_empty() {
-        let names: Vec<String> = off.iter().map(|&i| light_name(i)).collect();
-        let _ = writeln!(out, "off (muted or not solo): {}", names.join(", "));
-    }
-    if !options.isolation.hidden_objects.is_empty() {
-        let names: Vec<String> = options
-            .isolation
-            .hidden_objects
-            .iter()
-            .map(|&i| name(i))
-            .collect();
-        let _ = writeln!(out, "hidden (rays pass through): {}", names.join(", "));
-    }
-    let rays = traced_rays(report);
-    for bounce in &report.bounces {
-        let pad = "  ".repeat(bounce.depth as usize);
-        let own = rays
-            .iter()
-            .find(|r| r.depth == bounce.depth && r.kind != RayKind::Shadow);
-        if let Some(ray) = own {
-            let _ = writeln!(out, "{pad}{} ray {}", ray.kind.name(), ray_text(ray));
-        }
-        let Some(hit) = &bounce.hit else {
-            let _ = writeln!(out, "{pad}  misses: background {}", v(bounce.background));
-            continue;
-        };
-        let _ = writeln!(
-            out,
-            "{pad}  hits {} at t {:.6}: point {}, normal {}",
-            surface_text(bounce.surface.as_ref()).unwrap_or_else(|| name(hit.object)),
-            own.and_then(|r| r.t).unwrap_or(hit.t),
-            v(hit.p),
-            v(hit.n)
-        );
-        if let Some(triangle) = &bounce.triangle {
-            let [a, b, c] = triangle.weights;
-            let _ = writeln!(
-                out,
-                "{pad}  triangle {} of the file, barycentric ({a:.4}, {b:.4}, {c:.4})",
-                triangle.triangle
-            );
-        }
-        let _ = writeln!(out, "{pad}  ambient {}", v(bounce.ambient));
-        for (light, outcome, record) in bounce.light_outcomes() {
-            let mut line = format!("{pad}  {}: {}", light_name(light), outcome.text(&name));
-            if let Some(record) = record {
-                let _ = write!(
-                    line,
-                    ", n·l {:.4}, diffuse {}, specular {}",
-                    record.n_dot_l,
-                    v(record.diffuse),
-                    v(record.specular)
-                );
-            }
-            let _ = writeln!(out, "{line}");
-            let shadow = rays.iter().find(|r| {
-                r.kind == RayKind::Shadow && r.depth == bounce.depth && r.light == Some(light)
-            });
-            if let Some(ray) = shadow {
-                let _ = writeln!(out, "{pad}    shadow ray {}", shadow_end(ray, &name));
-            }
-        }
-        for &light in &off {
-            let _ = writeln!(out, "{pad}  {}: off (muted or not solo)", light_name(light));
-        }
-        if let Some((km, reflected)) = bounce.reflection {
-            let _ = writeln!(
-                out,
-                "{pad}  mirror: km {} × reflected {} = {}",
-                v(km),
-                v(reflected),
-                v(km * reflected)
-            );
-        }
-        if let Some(unclamped) = bounce.unclamped {
-            let _ = writeln!(
-                out,
-                "{pad}  clamped to [0, 1] (each ray) from {}",
-                v(unclamped)
-            );
-        }
-        let _ = writeln!(out, "{pad}  colour {}", v(bounce.colour));
-    }
-    out
-}
-
-fn ray_text(ray: &TracedRay) -> String {
-    format!("from {} along {}", v(ray.origin), v(ray.direction))
-}
-
-fn shadow_end(ray: &TracedRay, name: &dyn Fn(usize) -> String) -> String {
-    let start = ray_text(ray);
-    match (ray.blocked_by, ray.t, ray.t_max) {
-        (Some(blocker), Some(t), _) => format!("{start}: blocked by {} at t {t:.6}", name(blocker)),
-        (Some(blocker), None, _) => format!("{start}: blocked by {}", name(blocker)),
-        (None, _, Some(t_max)) => format!("{start}: reaches the light at t {t_max:.6}"),
-        (None, _, None) => format!("{start}: nothing in the way"),
-    }
-}
-
-fn v(c: DVec3) -> String {
-    format!("({:.4}, {:.4}, {:.4})", c.x, c.y, c.z)
 }
 
 #[cfg(test)]

@@ -7,6 +7,7 @@ mod conventions;
 mod diff;
 mod import;
 mod inspect;
+mod inspect_tree;
 mod isolation;
 mod render;
 

@@ -30,7 +30,8 @@ pub struct RenderArgs {
     /// Samples per pixel (default: the scene's).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=65536))]
     pub spp: Option<u32>,
-    /// Terms to switch off, comma-separated: ambient,diffuse,specular,shadows,reflection.
+    /// Terms to switch off, comma-separated: ambient,diffuse,specular,shadows,reflection,
+    /// transmission.
     #[arg(long, value_delimiter = ',')]
     pub off: Vec<Term>,
     /// Show one term alone.

@@ -14,6 +14,8 @@ pub enum Kind {
     Ambient,
     /// `km * colour(reflected ray)` at the object's hits: the whole mirror image in it.
     Reflection,
+    /// `kt * colour(transmitted ray)` at the object's hits: all that is seen through it.
+    Transmission,
     /// Light `l`'s diffuse term, as shadowed, at the object's hits.
     Diffuse(usize),
     /// Light `l`'s specular term, as shadowed, at the object's hits.
@@ -41,6 +43,8 @@ pub enum Family {
     Ambient,
     /// [`Kind::Reflection`].
     Reflection,
+    /// [`Kind::Transmission`].
+    Transmission,
     /// [`Kind::Diffuse`].
     Diffuse,
     /// [`Kind::Specular`].
@@ -68,6 +72,7 @@ impl Kind {
         match self {
             Kind::Ambient => Family::Ambient,
             Kind::Reflection => Family::Reflection,
+            Kind::Transmission => Family::Transmission,
             Kind::Diffuse(_) => Family::Diffuse,
             Kind::Specular(_) => Family::Specular,
             Kind::Shadow(_) => Family::Shadow,
@@ -110,7 +115,7 @@ pub struct ChannelSpace {
 }
 
 /// Kinds per object that do not depend on a light.
-const FIXED: usize = 2;
+const FIXED: usize = 3;
 
 impl ChannelSpace {
     fn per_object(&self) -> usize {
@@ -148,6 +153,7 @@ impl ChannelSpace {
             }
             Kind::Ambient => 0,
             Kind::Reflection => 1,
+            Kind::Transmission => 2,
             Kind::Diffuse(i) => FIXED + i,
             Kind::Specular(i) => FIXED + l + i,
             Kind::Shadow(i) => FIXED + 2 * l + i,
@@ -183,6 +189,7 @@ impl ChannelSpace {
         let kind = match slot {
             0 => Kind::Ambient,
             1 => Kind::Reflection,
+            2 => Kind::Transmission,
             s if s < FIXED + l => Kind::Diffuse(s - FIXED),
             s if s < FIXED + 2 * l => Kind::Specular(s - FIXED - l),
             s if s < FIXED + 3 * l => Kind::Shadow(s - FIXED - 2 * l),

@@ -6,7 +6,7 @@ use serde::Serialize;
 use super::bugs::{ClampBug, NormalBug, Part, SpecularBug};
 use super::encoding::Encoding;
 use super::spot_bugs::SpotBug;
-use crate::scene::{Light, Scene};
+use crate::scene::{ClampConvention, Conventions, Light, MirrorConvention, Quantise, Scene};
 
 /// The term an explanation names.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
@@ -22,12 +22,16 @@ pub enum ExplainedTerm {
     Shadows,
     /// The mirror term.
     Reflection,
+    /// The transmission (refraction) term.
+    Transmission,
     /// Which surface a pixel sees.
     Geometry,
     /// The colour of rays that hit nothing.
     Background,
     /// How linear colour became 8 bits.
     Encoding,
+    /// How the whole picture combines and clamps colour (render.conventions).
+    Conventions,
 }
 
 impl ExplainedTerm {
@@ -40,9 +44,11 @@ impl ExplainedTerm {
             ExplainedTerm::Specular => "specular",
             ExplainedTerm::Shadows => "shadows",
             ExplainedTerm::Reflection => "reflection",
+            ExplainedTerm::Transmission => "transmission",
             ExplainedTerm::Geometry => "geometry",
             ExplainedTerm::Background => "background",
             ExplainedTerm::Encoding => "encoding",
+            ExplainedTerm::Conventions => "conventions",
         }
     }
 }
@@ -64,6 +70,14 @@ pub enum Cause {
     Missing(Option<Part>),
     /// The 8-bit encoding differs.
     Encoding(Encoding),
+    /// The other picture follows other course conventions (mirror blend, clamp of each
+    /// ray) than the scene says.
+    Conventions {
+        /// The scene's.
+        scene: Conventions,
+        /// The other picture's.
+        other: Conventions,
+    },
     /// Pixels at an object's outline differ, no factor explains them.
     Silhouette,
     /// Shading varies across an object in a way no factor or known bug explains.
@@ -82,7 +96,19 @@ impl Cause {
             Cause::Spot(b) => b.name(),
             Cause::Missing(Some(Part::Back)) => "one-sided",
             Cause::Missing(_) => "missing",
+            Cause::Encoding(Encoding::LinearTruncate) => "truncate",
             Cause::Encoding(e) => e.name(),
+            Cause::Conventions { scene, other } => {
+                let names = super::conventions_fit::convention_names(scene, other);
+                match names.as_slice() {
+                    [one] => one,
+                    ["mirror-blend", "clamp-each-ray"] => "mirror-blend-clamp-each-ray",
+                    ["mirror-blend", "clamp-pixel"] => "mirror-blend-clamp-pixel",
+                    ["mirror-add", "clamp-each-ray"] => "mirror-add-clamp-each-ray",
+                    ["mirror-add", "clamp-pixel"] => "mirror-add-clamp-pixel",
+                    _ => "conventions",
+                }
+            }
             Cause::Silhouette => "silhouette",
             Cause::Shading => "shading",
         }
@@ -220,13 +246,38 @@ pub fn summary(e: &Explanation, scene: &Scene) -> String {
                 ),
             }
         }
-        Cause::Encoding(Encoding::LinearTruncate) => {
-            "The other image truncates to 8 bits, floor(255 c), where raylab rounds.".to_owned()
+        Cause::Conventions { other, .. } => {
+            let mirror = match other.mirror {
+                MirrorConvention::Blend => "blends mirrors as (1 - km) local + km reflected",
+                MirrorConvention::Add => "adds mirrors as local + km reflected",
+            };
+            let clamp = match other.clamp {
+                ClampConvention::EachRay => "clamps each ray's colour to [0, 1]",
+                ClampConvention::Pixel => "clamps only the pixel",
+            };
+            format!(
+                "The other image follows other conventions than the scene: it {mirror} and {clamp} (render.conventions: (mirror: {:?}, clamp: {:?})).",
+                other.mirror, other.clamp
+            )
         }
-        Cause::Encoding(encoding) => format!(
-            "The other image is written as {}, raylab's as linear round(255 c).",
-            encoding.name()
-        ),
+        Cause::Encoding(encoding) => {
+            let scene_writes = match scene.render.conventions.quantise {
+                Quantise::Round => "round(255 c)",
+                Quantise::Truncate => "floor(255 c), as the scene's conventions say",
+            };
+            match encoding {
+                Encoding::LinearTruncate => format!(
+                    "The other image truncates to 8 bits, floor(255 c), where raylab writes {scene_writes}."
+                ),
+                Encoding::LinearRound => format!(
+                    "The other image rounds to 8 bits, round(255 c), where raylab writes {scene_writes}."
+                ),
+                other => format!(
+                    "The other image is written as {}, raylab's as linear {scene_writes}.",
+                    other.name()
+                ),
+            }
+        }
         Cause::Silhouette => format!(
             "The outline of {} differs over {} pixels: the shape is elsewhere, another size, or hit where it should not be.",
             object.map_or("the objects".to_owned(), |o| format!("'{o}'")),

@@ -71,6 +71,13 @@ impl Groups {
                 None,
                 vec![Kind::Reflection],
             );
+            add(
+                Family::Transmission,
+                None,
+                object,
+                None,
+                vec![Kind::Transmission],
+            );
             for light in choices(space.lights) {
                 let chosen: Vec<usize> = light.map_or(lights.clone(), |l| vec![l]);
                 for (family, kind) in [

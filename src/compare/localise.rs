@@ -82,13 +82,14 @@ fn outline_object(components: &Components, p: usize) -> Option<usize> {
 }
 
 /// The term whose picture a pixel's left-over difference overlaps, weighted.
-fn term_weights(components: &Components, p: usize, size: f64, weights: &mut [f64; 4]) {
+fn term_weights(components: &Components, p: usize, size: f64, weights: &mut [f64; 5]) {
     for entry in components.pixel(p) {
         let slot = match components.space.decode(entry.channel).0 {
             Kind::Ambient => 0,
             Kind::Diffuse(_) => 1,
             Kind::Specular(_) => 2,
             Kind::Reflection => 3,
+            Kind::Transmission => 4,
             _ => continue,
         };
         let v = entry.value.map(f64::from);
@@ -101,7 +102,7 @@ fn term_weights(components: &Components, p: usize, size: f64, weights: &mut [f64
 struct Pile {
     error: f64,
     pixels: Vec<u32>,
-    terms: [f64; 4],
+    terms: [f64; 5],
 }
 
 /// The localised verdicts for what `state` leaves unexplained, as shares of `total`.
@@ -166,7 +167,7 @@ pub fn localise(
     }
     for (index, pile) in inside.into_iter().enumerate() {
         let terms = pile.terms;
-        let best = (0..4)
+        let best = (0..5)
             .max_by(|&a, &b| terms[a].total_cmp(&terms[b]))
             .unwrap_or(1);
         let term = [
@@ -174,6 +175,7 @@ pub fn localise(
             ExplainedTerm::Diffuse,
             ExplainedTerm::Specular,
             ExplainedTerm::Reflection,
+            ExplainedTerm::Transmission,
         ][best];
         emit(pile, Some(index), term, Cause::Shading, SHADING_CONFIDENCE);
     }

@@ -16,6 +16,7 @@
 pub mod bugs;
 pub mod channels;
 pub mod components;
+pub mod conventions_fit;
 pub mod encoding;
 pub mod error;
 pub mod explanation;
@@ -37,7 +38,7 @@ pub use other_image::OtherImage;
 pub use report::{Comparison, PSNR_IDENTICAL_DB, PixelValues};
 pub use report_image::{difference_heatmap, report_png, write_report_png};
 
-use crate::scene::Scene;
+use crate::scene::{Quantise, Scene};
 use crate::trace::{MeshStore, RenderProgress, World};
 
 use components::{MISS, render_components};
@@ -95,23 +96,41 @@ pub fn compare_with_meshes(
             scene_height: height,
         });
     }
-    let world =
-        World::with_meshes(scene, meshes).map_err(|e| CompareError::Scene(e.to_string()))?;
     let spp = options
         .samples_per_pixel
         .unwrap_or(scene.render.samples_per_pixel)
         .max(1);
+    compare_scene(scene, meshes, other, spp, progress, true)
+}
+
+/// [`compare_with_meshes`] at `spp` samples; first trying the course's other
+/// conventions where `try_conventions` says so.
+fn compare_scene(
+    scene: &Scene,
+    meshes: &MeshStore,
+    other: &OtherImage,
+    spp: u32,
+    progress: &RenderProgress,
+    try_conventions: bool,
+) -> Result<Comparison, CompareError> {
+    let (width, height) = (scene.camera.width, scene.camera.height);
+    let world =
+        World::with_meshes(scene, meshes).map_err(|e| CompareError::Scene(e.to_string()))?;
     let components = render_components(scene, &world, (width, height), spp, progress)
         .ok_or(CompareError::Cancelled)?;
 
-    // raylab's own encoding first: its error is the whole difference.
-    let rounded = Target::new(other, Encoding::LinearRound);
+    // The scene's own encoding first: its error is the whole difference.
+    let expected = match scene.render.conventions.quantise {
+        Quantise::Round => Encoding::LinearRound,
+        Quantise::Truncate => Encoding::LinearTruncate,
+    };
+    let rounded = Target::new(other, expected);
     let mut state = FitState::new(components.beauty.clone(), &rounded);
     let total = state.total;
     let floor = (MIN_STEP_SHARE * total).max(MIN_ERROR);
     let mut explanations = Vec::new();
     let encoding = encoding::detect(&components.beauty, &other.rgb);
-    let target = if encoding == Encoding::LinearRound {
+    let target = if encoding == expected {
         rounded
     } else {
         let target = Target::new(other, encoding);
@@ -124,6 +143,17 @@ pub fn compare_with_meshes(
         state = decoded;
         target
     };
+    if try_conventions
+        && total >= MIN_ERROR
+        && let Some(better) =
+            conventions_fit::better_conventions(scene, meshes, &target, spp, progress)
+    {
+        let found = Found {
+            total,
+            explanations,
+        };
+        return with_conventions(scene, meshes, other, spp, progress, &better, found);
+    }
     if total >= MIN_ERROR {
         let shapes: Vec<_> = world.objects.iter().map(|o| o.shape).collect();
         let groups = groups::Groups::new(components.space, &shapes);
@@ -172,6 +202,66 @@ pub fn compare_with_meshes(
         explanations,
         unexplained_share,
     })
+}
+
+/// What the comparison under the scene's conventions found before trying others: the
+/// whole difference, and the encoding's verdict (if any, as a share of it).
+struct Found {
+    total: f64,
+    explanations: Vec<Explanation>,
+}
+
+/// The comparison made under the conventions the other picture follows, with the
+/// convention as its first explanation. Shares stay parts of the whole difference: the
+/// encoding's as found, the convention's what it took away, and the rest (found again
+/// under the convention, its own encoding verdict dropped) scaled to what remained.
+fn with_conventions(
+    scene: &Scene,
+    meshes: &MeshStore,
+    other: &OtherImage,
+    spp: u32,
+    progress: &RenderProgress,
+    better: &conventions_fit::BetterConventions,
+    found: Found,
+) -> Result<Comparison, CompareError> {
+    let mut adopted = scene.clone();
+    adopted.render.conventions = better.conventions;
+    let mut comparison = compare_scene(&adopted, meshes, other, spp, progress, false)?;
+    let (before, after) = better.errors;
+    let is_encoding = |e: &Explanation| e.term == ExplainedTerm::Encoding;
+    let inner_encoding: f64 = comparison
+        .explanations
+        .iter()
+        .filter(|e| is_encoding(e))
+        .map(|e| e.share)
+        .sum();
+    comparison.explanations.retain(|e| !is_encoding(e));
+    let scale = (after / found.total) / (1.0 - inner_encoding).max(f64::MIN_POSITIVE);
+    for e in &mut comparison.explanations {
+        e.share *= scale;
+    }
+    comparison.unexplained_share *= scale;
+    let mut convention = Explanation {
+        term: ExplainedTerm::Conventions,
+        light: None,
+        object: None,
+        object_name: None,
+        factor: 1.0,
+        share: (before - after) / found.total,
+        pixels: better.pixels.clone(),
+        cause: Cause::Conventions {
+            scene: scene.render.conventions,
+            other: better.conventions,
+        },
+        confidence: 1.0 - after / before,
+        summary: String::new(),
+    };
+    convention.summary = summary(&convention, scene);
+    let mut explanations = vec![convention];
+    explanations.extend(found.explanations);
+    explanations.append(&mut comparison.explanations);
+    comparison.explanations = explanations;
+    Ok(comparison)
 }
 
 /// The explanation of reading the other picture with another encoding.

@@ -14,13 +14,12 @@ use super::bugs::{ClampBug, LocalLight, NormalBug, Part, SpecularBug, local_term
 use super::channels::{ChannelSpace, Kind};
 use super::spot_bugs::{SpotBug, SpotWorld, cone_changes, no_falloff_change};
 use crate::scene::Material;
-use crate::trace::LightSample;
-use crate::trace::world::WorldLight;
 use crate::trace::shapes::Primitive;
 use crate::trace::{
-    LightRecord, NoRecorder, Ray, RayCounts, Recorder, SurfacePoint, TermSwitches, Tracer, View,
-    World,
+    Branch, LightRecord, NoRecorder, Ray, RayCounts, Recorder, SurfacePoint, TermSwitches, Tracer,
+    View, World,
 };
+use crate::trace::{LightSample, WorldLight};
 use crate::trace::{spawn_ray, spawn_ray_to};
 
 /// Per-channel colour sums of one sample or one pixel: a short list, channels unique.
@@ -98,9 +97,15 @@ impl<'w> Context<'w> {
     }
 }
 
-/// One ray of the mirror chain.
+/// One ray of a camera ray's tree (its index in [`SampleRecorder::chain`] is the
+/// recorder's `node`).
 #[derive(Clone, Copy, Debug)]
 struct Bounce {
+    /// This ray's mirror ray, once started.
+    mirror_child: Option<usize>,
+    /// Whether a transmitted ray is on the path from the camera to this ray: its own
+    /// transmission is then part of that ray's, already counted.
+    through_glass: bool,
     /// The scene object hit (what the channels are per).
     object: Option<usize>,
     /// The world object hit (a group's member, a CSG node): what its material and shape
@@ -109,7 +114,8 @@ struct Bounce {
     hit: Option<SurfacePoint>,
     ray: Ray,
     ray_dir: DVec3,
-    /// Product of the mirror colours of the bounces before this one.
+    /// Product of the mirror and transmission colours (km, kt) of the rays before this
+    /// one on its path.
     throughput: DVec3,
     /// `(km, colour of the reflected ray)` once the mirror term is known.
     mirror: Option<(DVec3, DVec3)>,
@@ -153,28 +159,55 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
         self.chain.first().and_then(|b| b.hit)
     }
 
-    fn push(&mut self, depth: u32, ray: &Ray, hit: Option<SurfacePoint>) {
-        let depth = depth as usize;
-        self.chain.truncate(depth);
-        let throughput = match self.chain.last() {
+    /// Ray `node` starts, from the ray `from` names: its throughput is its parent's times
+    /// the parent's km or kt.
+    fn begin(&mut self, node: u32, from: Option<(u32, Branch)>) {
+        let node = node as usize;
+        self.chain.truncate(node);
+        let from = from.map(|(parent, branch)| (parent as usize, branch));
+        let through_glass = from.is_some_and(|(parent, branch)| {
+            branch.is_transmitted() || self.chain[parent].through_glass
+        });
+        let throughput = match from {
             None => DVec3::ONE,
-            Some(before) => {
-                before.throughput
-                    * before
-                        .world_object
-                        .map_or(DVec3::ZERO, |o| self.ctx.material(o).mirror)
+            Some((parent, branch)) => {
+                let before = &mut self.chain[parent];
+                if branch == Branch::Mirror {
+                    before.mirror_child = Some(node);
+                }
+                let weight = before.world_object.map_or(DVec3::ZERO, |o| {
+                    let material = self.ctx.material(o);
+                    if branch.is_transmitted() {
+                        material.transmission
+                    } else {
+                        material.mirror
+                    }
+                });
+                before.throughput * weight
             }
         };
         self.chain.push(Bounce {
-            object: hit.map(|h| h.object),
-            world_object: hit.and_then(|h| self.ctx.world.world_object_of_hit(ray, &h)),
-            hit,
-            ray: *ray,
-            ray_dir: ray.dir,
+            mirror_child: None,
+            through_glass,
+            object: None,
+            world_object: None,
+            hit: None,
+            ray: Ray::new(DVec3::ZERO, DVec3::ZERO),
+            ray_dir: DVec3::ZERO,
             throughput,
             mirror: None,
             clamped: [DVec3::ZERO; ClampBug::ALL.len()],
         });
+    }
+
+    /// What ray `node` met.
+    fn push(&mut self, node: u32, ray: &Ray, hit: Option<SurfacePoint>) {
+        let bounce = &mut self.chain[node as usize];
+        bounce.object = hit.map(|h| h.object);
+        bounce.world_object = hit.and_then(|h| self.ctx.world.world_object_of_hit(ray, &h));
+        bounce.hit = hit;
+        bounce.ray = *ray;
+        bounce.ray_dir = ray.dir;
     }
 
     fn channel(&self, kind: Kind, object: usize) -> u32 {
@@ -282,27 +315,31 @@ impl SampleRecorder<'_, '_> {
 }
 
 impl Recorder for SampleRecorder<'_, '_> {
-    fn hit(&mut self, depth: u32, ray: &Ray, hit: &SurfacePoint) {
-        self.push(depth, ray, Some(*hit));
+    fn started(&mut self, node: u32, _depth: u32, from: Option<(u32, Branch)>) {
+        self.begin(node, from);
     }
 
-    fn miss(&mut self, depth: u32, ray: &Ray, background: DVec3) {
-        self.push(depth, ray, None);
-        let t = self.chain[depth as usize].throughput;
+    fn hit(&mut self, node: u32, ray: &Ray, hit: &SurfacePoint) {
+        self.push(node, ray, Some(*hit));
+    }
+
+    fn miss(&mut self, node: u32, ray: &Ray, background: DVec3) {
+        self.push(node, ray, None);
+        let t = self.chain[node as usize].throughput;
         let channel = self.ctx.space.id(Kind::Background, None);
         self.tally.add(channel, t * background);
     }
 
-    fn ambient(&mut self, depth: u32, colour: DVec3) {
-        let bounce = self.chain[depth as usize];
+    fn ambient(&mut self, node: u32, colour: DVec3) {
+        let bounce = self.chain[node as usize];
         if let Some(object) = bounce.object {
             let channel = self.channel(Kind::Ambient, object);
             self.tally.add(channel, bounce.throughput * colour);
         }
     }
 
-    fn light(&mut self, depth: u32, record: &LightRecord) {
-        let bounce = self.chain[depth as usize];
+    fn light(&mut self, node: u32, record: &LightRecord) {
+        let bounce = self.chain[node as usize];
         let (Some(hit), Some(index)) = (bounce.hit, self.ctx.world_light[record.scene_index])
         else {
             return;
@@ -322,11 +359,16 @@ impl Recorder for SampleRecorder<'_, '_> {
             return;
         };
         if matches!(world_light, WorldLight::Spot { .. }) {
-            let change = no_falloff_change(record.diffuse + record.specular, sample.distance_squared);
+            let change =
+                no_falloff_change(record.diffuse + record.specular, sample.distance_squared);
             let channel = self.channel(Kind::Spot(SpotBug::NoFalloff, index), object);
             self.tally.add(channel, t * change);
         }
-        if record.blocked_by.is_some()
+        // What the shadow rays took away: all of the light where a point light is
+        // blocked, the hidden share of a sphere light.
+        let hidden = 1.0 - record.visibility.0;
+        if record.shadow_ray_cast
+            && hidden > 0.0
             && let Some(world_object) = bounce.world_object
         {
             let light = LocalLight {
@@ -338,14 +380,14 @@ impl Recorder for SampleRecorder<'_, '_> {
             let (diffuse, specular) = local_terms(self.ctx.material(world_object), &light);
             self.tally.add(
                 self.channel(Kind::Shadow(index), object),
-                t * (diffuse + specular),
+                t * hidden * (diffuse + specular),
             );
         }
         self.bugs(&bounce, &hit, record, &sample);
     }
 
-    fn reflection(&mut self, depth: u32, km: DVec3, reflected: DVec3) {
-        let bounce = &mut self.chain[depth as usize];
+    fn reflection(&mut self, node: u32, km: DVec3, reflected: DVec3) {
+        let bounce = &mut self.chain[node as usize];
         bounce.mirror = Some((km, reflected));
         let (t, object) = (bounce.throughput, bounce.object);
         if let Some(object) = object {
@@ -354,14 +396,32 @@ impl Recorder for SampleRecorder<'_, '_> {
         }
     }
 
-    fn result(&mut self, depth: u32, colour: DVec3) {
-        let d = depth as usize;
+    fn transmission(&mut self, node: u32, kt: DVec3, transmitted: DVec3, _: Branch) {
+        let bounce = &self.chain[node as usize];
+        let (t, object) = (bounce.throughput, bounce.object);
+        // The first transmission on each path holds all that glass adds below it: the
+        // channel is then what a picture without transmission lacks, no part twice.
+        if let Some(object) = object
+            && !bounce.through_glass
+        {
+            self.tally.add(
+                self.channel(Kind::Transmission, object),
+                t * kt * transmitted,
+            );
+        }
+    }
+
+    fn result(&mut self, node: u32, colour: DVec3) {
+        let d = node as usize;
         let bounce = self.chain[d];
+        // The clamp bugs take what the ray adds itself and through glass as its local
+        // part: they differ in where the mirror term is clamped.
         let local = colour - bounce.mirror.map_or(DVec3::ZERO, |(km, c)| km * c);
         for (i, bug) in ClampBug::ALL.into_iter().enumerate() {
             let mirror = bounce
                 .mirror
-                .map(|(km, _)| (km, self.chain[d + 1].clamped[i]));
+                .zip(bounce.mirror_child)
+                .map(|((km, _), child)| (km, self.chain[child].clamped[i]));
             self.chain[d].clamped[i] = bug.combine(local, mirror);
         }
         if d == 0

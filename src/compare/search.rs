@@ -51,6 +51,7 @@ fn is_term(family: Family) -> bool {
         family,
         Family::Ambient
             | Family::Reflection
+            | Family::Transmission
             | Family::Diffuse
             | Family::Specular
             | Family::Background
@@ -105,7 +106,7 @@ fn fit(group: &Group, correlation: f64, norm: f64, scale: &[f64]) -> Option<(f64
 
 /// A channel's scale in raylab's own picture: 1 for its terms, 0 for the changes.
 fn initial_scale(kind: Kind) -> f64 {
-    if kind.is_partition() || kind == Kind::Reflection {
+    if kind.is_partition() || kind == Kind::Reflection || kind == Kind::Transmission {
         1.0
     } else {
         0.0

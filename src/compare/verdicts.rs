@@ -43,6 +43,7 @@ fn term_and_cause(
     match family {
         Family::Ambient => (ExplainedTerm::Ambient, Cause::Factor),
         Family::Reflection => (ExplainedTerm::Reflection, Cause::Factor),
+        Family::Transmission => (ExplainedTerm::Transmission, Cause::Factor),
         Family::Diffuse => (ExplainedTerm::Diffuse, Cause::Factor),
         Family::Specular => (ExplainedTerm::Specular, Cause::Factor),
         Family::Shadow => (ExplainedTerm::Shadows, Cause::Factor),

@@ -80,11 +80,36 @@ pub fn rim_points(
         .collect()
 }
 
-/// The direction a tip drag aims at: the tip follows the cursor on the sphere of radius
-/// `length` around the light (the nearer crossing; where the ray misses the sphere, the
-/// point of the sphere nearest the ray).
+/// The direction a tip drag aims at, from `position`: towards the point under the
+/// cursor on the plane through `start_tip` (the tip where the drag started) that faces
+/// `eye`. That point is under the cursor at any distance, so the tip (drawn there while
+/// the drag lasts) follows the cursor everywhere, also off the sphere it is drawn on
+/// between drags. Where that plane is edge-on or behind the eye, the tip stays on the
+/// sphere of radius `|start_tip - position|` around the light: the nearer crossing, or
+/// where the ray misses it, the sphere's point nearest the ray.
 #[must_use]
-pub fn aim_from_tip_drag(position: DVec3, length: f64, ray: &Ray) -> Option<DVec3> {
+pub fn aim_from_tip_drag(
+    position: DVec3,
+    start_tip: DVec3,
+    eye: DVec3,
+    ray: &Ray,
+) -> Option<DVec3> {
+    let dir = ray.dir.normalize();
+    let facing = (eye - start_tip).normalize_or_zero();
+    let across = dir.dot(facing);
+    if across < -1e-6 {
+        let t = (start_tip - ray.origin).dot(facing) / across;
+        if t > 0.0 {
+            let aim = ray.origin + dir * t - position;
+            return (aim.length_squared() > 0.0).then(|| aim.normalize());
+        }
+    }
+    aim_on_sphere(position, (start_tip - position).length(), ray)
+}
+
+/// The tip on the sphere of radius `length` around `position` under the cursor ray (the
+/// nearer crossing; where the ray misses the sphere, the point nearest the ray).
+fn aim_on_sphere(position: DVec3, length: f64, ray: &Ray) -> Option<DVec3> {
     let dir = ray.dir.normalize();
     let to_centre = position - ray.origin;
     let along = to_centre.dot(dir);
@@ -151,21 +176,33 @@ mod tests {
     }
 
     #[test]
-    fn tip_drag_aims_the_light_at_the_point_under_the_cursor() {
+    fn tip_drag_aims_the_light_through_the_point_under_the_cursor_near_and_far() {
         let cam = camera();
+        let eye = DVec3::new(0.0, 3.0, 10.0);
         let light = DVec3::new(0.0, 4.0, 0.0);
-        let length = 1.5;
-        let wanted = DVec3::new(1.0, -1.0, 0.5).normalize();
-        let cursor = cam.project(light + wanted * length).unwrap();
-        let aim = aim_from_tip_drag(light, length, &cam.ray(cursor)).unwrap();
-        assert!((aim - wanted).length() < 1e-9, "{aim}");
+        let start_tip = light + DVec3::new(0.0, -1.5, 0.0);
+        // The point under the cursor on the plane through the start tip facing the eye
+        // lies on the new axis: near the start tip and far from it (off the sphere of
+        // radius 1.5, where the old drag stopped following the cursor).
+        let facing = (eye - start_tip).normalize();
+        let (u, v) = facing.any_orthonormal_pair();
+        for offset in [0.3 * u, 2.0 * u - 1.5 * v, 4.0 * v] {
+            let under = start_tip + offset;
+            let cursor = cam.project(under).unwrap();
+            let aim = aim_from_tip_drag(light, start_tip, eye, &cam.ray(cursor)).unwrap();
+            let wanted = (under - light).normalize();
+            assert!((aim - wanted).length() < 1e-9, "{aim} vs {wanted}");
+        }
     }
 
     #[test]
-    fn tip_drag_off_the_sphere_aims_at_the_nearest_point() {
+    fn an_edge_on_plane_falls_back_to_the_sphere_and_its_nearest_point() {
         let light = DVec3::ZERO;
+        let start_tip = DVec3::Y;
+        // The eye looks along the plane (the ray runs parallel to it).
+        let eye = DVec3::new(5.0, 1.0, 0.0);
         let ray = Ray::new(DVec3::new(5.0, 3.0, 0.0), DVec3::new(-1.0, 0.0, 0.0));
-        let aim = aim_from_tip_drag(light, 1.0, &ray).unwrap();
+        let aim = aim_from_tip_drag(light, start_tip, eye, &ray).unwrap();
         assert!((aim - DVec3::Y).length() < 1e-12);
     }
 

@@ -21,21 +21,25 @@ impl MeshCache {
     /// (or from the cache).
     ///
     /// # Errors
-    /// A file that cannot be read, named with its object; or a mesh object in a scene
-    /// that has no folder yet (never saved).
+    /// A file that cannot be read, named with its object; or a mesh object whose path
+    /// is relative in a scene that has no folder yet (never saved).
     pub(super) fn for_request(&mut self, request: &PreviewRequest) -> Result<MeshStore, String> {
         let mut store = (*request.meshes).clone();
         for (object, path) in mesh_objects(&request.scene) {
             if store.get(path).is_some() {
                 continue;
             }
-            let Some(folder) = &request.scene_folder else {
-                return Err(format!(
-                    "object \"{}\": save the scene first, so that \"{path}\" can be found beside it",
-                    object.name
-                ));
+            // A path in full (a mesh imported into a scene never saved) needs no folder.
+            let file = match &request.scene_folder {
+                _ if std::path::Path::new(path).is_absolute() => PathBuf::from(path),
+                Some(folder) => mesh_path(folder, path),
+                None => {
+                    return Err(format!(
+                        "object \"{}\": save the scene first, so that \"{path}\" can be found beside it",
+                        object.name
+                    ));
+                }
             };
-            let file = mesh_path(folder, path);
             let mesh = match self.by_file.get(&file) {
                 Some(mesh) => Arc::clone(mesh),
                 None => {

@@ -18,7 +18,7 @@ use std::time::Instant;
 use super::convergence::{ConvergenceCurve, estimated_rmse};
 use super::frame::Frame;
 use super::plan::{Pass, plan_passes};
-use crate::trace::{HitCache, Reuse, cache_fits, render_one_sample_cached};
+use crate::trace::{HitCache, Reuse, cache_fits, cache_serves, render_one_sample_cached};
 use crate::trace::{Image, RayCounts, RenderOptions, RenderProgress, SampleSums, World};
 use crate::trace::{render_samples, render_samples_into};
 
@@ -39,8 +39,9 @@ pub fn render_plan(
 /// the next plan. Any other plan publishes its one-sample pass traced as usual and then
 /// traces it again keeping the rays, before the anti-aliasing passes: keeping them makes
 /// a pass slower (memory for every hit), and an edit that re-traces must not show its
-/// first full frame later for it. `None` where it would not fit ([`cache_fits`]). A cancelled pass
-/// leaves `cache` as it was.
+/// first full frame later for it. `None` where it would not fit ([`cache_fits`]) or
+/// could not hold the world's rays ([`cache_serves`]). A cancelled pass leaves `cache` as
+/// it was.
 pub fn render_plan_cached(
     world: &World,
     target: &RenderOptions,
@@ -58,7 +59,7 @@ fn run_plan(
     start_pass: &mut dyn FnMut() -> Option<Arc<RenderProgress>>,
     publish: &mut dyn FnMut(Frame),
 ) {
-    let cacheable = cache_fits(world, target.width, target.height);
+    let cacheable = cache_fits(world, target.width, target.height) && cache_serves(world);
     let reuse = cache
         .as_deref()
         .and_then(Option::as_ref)

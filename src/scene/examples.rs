@@ -5,13 +5,14 @@
 pub const DEFAULT_SCENE_RON: &str = include_str!("../../scenes/default.ron");
 
 /// Every example scene as `(file name, RON text)`, sorted by file name.
-pub const EXAMPLE_SCENES: [(&str, &str); 8] = [
+pub const EXAMPLE_SCENES: [(&str, &str); 10] = [
     (
         "coloured_shadows.ron",
         include_str!("../../scenes/coloured_shadows.ron"),
     ),
     ("csg.ron", include_str!("../../scenes/csg.ron")),
     ("default.ron", DEFAULT_SCENE_RON),
+    ("glass.ron", include_str!("../../scenes/glass.ron")),
     (
         "mirror_cap.ron",
         include_str!("../../scenes/mirror_cap.ron"),
@@ -21,6 +22,7 @@ pub const EXAMPLE_SCENES: [(&str, &str); 8] = [
         include_str!("../../scenes/more_shapes.ron"),
     ),
     ("shapes.ron", include_str!("../../scenes/shapes.ron")),
+    ("soft_spot.ron", include_str!("../../scenes/soft_spot.ron")),
     (
         "specular_exponents.ron",
         include_str!("../../scenes/specular_exponents.ron"),

@@ -41,15 +41,15 @@ pub use render::{
     AdaptiveOptions, AdaptiveRender, CachedPass, render, render_adaptive, render_one_sample_cached,
     render_samples, render_samples_into,
 };
-pub use reshade::{HitCache, MAX_CACHE_BYTES, RetraceReason, Reuse, cache_fits};
+pub use reshade::{HitCache, MAX_CACHE_BYTES, RetraceReason, Reuse, cache_fits, cache_serves};
 pub use shade::{
-    LightOutcome, LightRecord, LightSkip, LocalLight, NoRecorder, Recorder, ShadowRay,
+    Branch, LightOutcome, LightRecord, LightSkip, LocalLight, NoRecorder, Recorder, ShadowRay,
     SkippedLight, Tracer, object_id_colour, phong_power,
 };
 pub use shapes::{MeshStore, TriangleHit, TriangleMesh};
 pub use terms::{Isolation, Term, TermSwitches, View};
 pub use world::{
     Acceleration, BVH_MIN_OBJECTS, CsgHit, CsgLeaf, CsgTree, Extent, IsolationError, LightSample,
-    SurfacePoint, World, WorldObject, check_indices, scene_without_world_object, spawn_ray,
-    spawn_ray_to,
+    SurfacePoint, World, WorldLight, WorldObject, check_indices, scene_without_world_object,
+    spawn_ray, spawn_ray_to,
 };

@@ -9,13 +9,15 @@ pub struct RayCounts {
     pub shadow: u64,
     /// Mirror rays.
     pub reflection: u64,
+    /// Transmitted rays (refracted, or internally reflected).
+    pub transmission: u64,
 }
 
 impl RayCounts {
     /// All rays.
     #[must_use]
     pub fn total(&self) -> u64 {
-        self.primary + self.shadow + self.reflection
+        self.primary + self.shadow + self.reflection + self.transmission
     }
 
     /// Adds another tally to this one.
@@ -23,5 +25,6 @@ impl RayCounts {
         self.primary += other.primary;
         self.shadow += other.shadow;
         self.reflection += other.reflection;
+        self.transmission += other.transmission;
     }
 }

@@ -19,16 +19,20 @@ pub enum Term {
     Shadows,
     /// km * colour(reflected ray).
     Reflection,
+    /// kt * colour(refracted ray) (along the mirror direction where Snell's law has no
+    /// solution: total internal reflection).
+    Transmission,
 }
 
 impl Term {
     /// All terms, in the order of the contract.
-    pub const ALL: [Term; 5] = [
+    pub const ALL: [Term; 6] = [
         Term::Ambient,
         Term::Diffuse,
         Term::Specular,
         Term::Shadows,
         Term::Reflection,
+        Term::Transmission,
     ];
 
     /// The lower-case name used on the command line and in the editor.
@@ -40,6 +44,7 @@ impl Term {
             Term::Specular => "specular",
             Term::Shadows => "shadows",
             Term::Reflection => "reflection",
+            Term::Transmission => "transmission",
         }
     }
 }
@@ -57,7 +62,7 @@ impl FromStr for Term {
             .into_iter()
             .find(|t| t.name().eq_ignore_ascii_case(s.trim()))
             .ok_or_else(|| {
-                format!("unknown term \"{s}\" (expected ambient, diffuse, specular, shadows or reflection)")
+                format!("unknown term \"{s}\" (expected ambient, diffuse, specular, shadows, reflection or transmission)")
             })
     }
 }
@@ -66,9 +71,10 @@ impl FromStr for Term {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct TermSwitches {
     /// Whether each term of [`Term::ALL`] is on.
-    pub on: [bool; 5],
-    /// A term shown alone at the primary hit; the reflected colour it shows (for
-    /// `reflection`) is still the full picture as the `on` switches have it.
+    pub on: [bool; Term::ALL.len()],
+    /// A term shown alone at the primary hit; the reflected or transmitted colour it
+    /// shows (for `reflection`, `transmission`) is still the full picture as the `on`
+    /// switches have it.
     pub solo: Option<Term>,
 }
 
@@ -81,7 +87,7 @@ impl Default for TermSwitches {
 impl TermSwitches {
     /// Everything on, nothing solo: the full picture.
     pub const ALL_ON: Self = Self {
-        on: [true; 5],
+        on: [true; Term::ALL.len()],
         solo: None,
     };
 
@@ -115,6 +121,7 @@ impl TermSwitches {
                 specular: solo == Term::Specular,
                 shadows,
                 reflection: solo == Term::Reflection,
+                transmission: solo == Term::Transmission,
                 background: solo == Term::Ambient,
             };
         }
@@ -146,6 +153,7 @@ impl TermSwitches {
             specular: self.is_on(Term::Specular),
             shadows: self.is_on(Term::Shadows),
             reflection: self.is_on(Term::Reflection),
+            transmission: self.is_on(Term::Transmission),
             background: true,
         }
     }
@@ -164,6 +172,8 @@ pub struct ActiveTerms {
     pub shadows: bool,
     /// Add km * colour(reflected ray).
     pub reflection: bool,
+    /// Add kt * colour(transmitted ray).
+    pub transmission: bool,
     /// Rays that miss show the background.
     pub background: bool,
 }

@@ -16,6 +16,7 @@ use crate::ui::document::file_dialog::FileDialogs;
 use crate::ui::document::files;
 use crate::ui::document::native_dialogs::NativeDialogs;
 use crate::ui::document::recent::RecentFiles;
+use crate::ui::panels::status_bar::StatusMessage;
 use crate::ui::screenshot::ScreenshotHook;
 use crate::ui::state::PreviewSettings;
 use crate::ui::state::keep_in_range;
@@ -84,7 +85,7 @@ pub struct EditorApp {
     error: Option<String>,
     /// Something the user should know that is not a failure (an import's warnings).
     warning: Option<String>,
-    message: Option<String>,
+    message: Option<StatusMessage>,
     show_help: bool,
     focus_name: bool,
     allow_close: bool,

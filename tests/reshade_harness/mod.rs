@@ -110,6 +110,7 @@ pub const NOTHING: RayCounts = RayCounts {
     primary: 0,
     shadow: 0,
     reflection: 0,
+    transmission: 0,
 };
 
 /// Sets any light's colour.

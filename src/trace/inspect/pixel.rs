@@ -6,16 +6,22 @@ use glam::{DVec2, DVec3};
 use crate::trace::film::{PinholeCamera, RenderOptions};
 use crate::trace::ray::Ray;
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::shade::{LightOutcome, LightRecord, Recorder, SkippedLight, Tracer};
+use crate::trace::shade::{
+    Branch, LightOutcome, LightRecord, Recorder, ShadowRay, SkippedLight, Tracer,
+};
 use crate::trace::shapes::TriangleHit;
 use crate::trace::terms::{Term, TermSwitches};
 use crate::trace::world::{SurfacePoint, World};
 
-/// What one ray of the chain (the camera ray, then each mirror bounce) met.
+/// What one ray of the pixel's tree (the camera ray, then each mirror and transmitted
+/// ray) met.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BounceReport {
-    /// 0 for the camera ray, then 1, 2, ... for mirror bounces.
+    /// 0 for the camera ray, then 1, 2, ... for each ray after it.
     pub depth: u32,
+    /// The index in [`PixelReport::bounces`] of the ray that started this one, and which
+    /// of its rays this is; `None` for the camera ray.
+    pub from: Option<(usize, Branch)>,
     /// The ray.
     pub ray: Ray,
     /// The surface hit, or `None` for a miss.
@@ -36,8 +42,12 @@ pub struct BounceReport {
     /// Where each blocked shadow ray met its blocker: `(scene index of the light, the
     /// blocker's surface)`.
     pub blocker_hits: Vec<(usize, SurfacePoint)>,
+    /// The shadow rays of sphere lights, as cast: `(scene index of the light, the ray)`.
+    pub sphere_shadow_rays: Vec<(usize, ShadowRay)>,
     /// `(km, colour of the reflected ray)` when a mirror ray was cast.
     pub reflection: Option<(DVec3, DVec3)>,
+    /// `(kt, colour of the transmitted ray)` when a transmitted ray was cast.
+    pub transmission: Option<(DVec3, DVec3)>,
     /// The colour this ray returned.
     pub colour: DVec3,
     /// Its colour before the `EachRay` convention clamped it, where the clamp changed it.
@@ -45,10 +55,11 @@ pub struct BounceReport {
 }
 
 impl BounceReport {
-    fn new(depth: u32, ray: Ray) -> Self {
+    fn new(depth: u32, from: Option<(usize, Branch)>) -> Self {
         Self {
             depth,
-            ray,
+            from,
+            ray: Ray::new(DVec3::ZERO, DVec3::ZERO),
             hit: None,
             surface: None,
             triangle: None,
@@ -57,7 +68,9 @@ impl BounceReport {
             lights: Vec::new(),
             skipped: Vec::new(),
             blocker_hits: Vec::new(),
+            sphere_shadow_rays: Vec::new(),
             reflection: None,
+            transmission: None,
             colour: DVec3::ZERO,
             unclamped: None,
         }
@@ -95,8 +108,9 @@ impl BounceReport {
     pub fn sum_of_terms(&self) -> DVec3 {
         let local: DVec3 = self.lights.iter().map(|l| l.diffuse + l.specular).sum();
         let mirror = self.reflection.map_or(DVec3::ZERO, |(km, c)| km * c);
+        let transmitted = self.transmission.map_or(DVec3::ZERO, |(kt, c)| kt * c);
         if self.hit.is_some() {
-            self.ambient + local + mirror
+            self.ambient + local + mirror + transmitted
         } else {
             self.background
         }
@@ -142,7 +156,8 @@ impl HitSurface {
 pub struct PixelReport {
     /// The pixel.
     pub pixel: (u32, u32),
-    /// The camera ray and each mirror bounce, in order.
+    /// The camera ray, then each mirror and transmitted ray in the order they were
+    /// shaded (breadth first: a ray's parent comes before it).
     pub bounces: Vec<BounceReport>,
     /// The pixel's colour before clamping.
     pub unclamped: DVec3,
@@ -150,42 +165,45 @@ pub struct PixelReport {
     pub clamped: DVec3,
 }
 
-/// Collects a [`PixelReport`] as the shader runs. The mirror chain is a single path, so
-/// each depth has exactly one ray.
+/// Collects a [`PixelReport`] as the shader runs: the recorder's ray `node` is the index
+/// into `bounces`.
 struct ReportRecorder<'w> {
     world: &'w World,
     bounces: Vec<BounceReport>,
 }
 
 impl ReportRecorder<'_> {
-    fn at(&mut self, depth: u32, ray: &Ray) -> &mut BounceReport {
-        let index = depth as usize;
-        if self.bounces.len() <= index {
-            self.bounces.push(BounceReport::new(depth, *ray));
-        }
-        &mut self.bounces[index]
+    fn at(&mut self, node: u32, ray: &Ray) -> &mut BounceReport {
+        let bounce = &mut self.bounces[node as usize];
+        bounce.ray = *ray;
+        bounce
     }
 }
 
 impl Recorder for ReportRecorder<'_> {
-    fn hit(&mut self, depth: u32, ray: &Ray, hit: &SurfacePoint) {
+    fn started(&mut self, node: u32, depth: u32, from: Option<(u32, Branch)>) {
+        debug_assert_eq!(node as usize, self.bounces.len(), "rays start in order");
+        let from = from.map(|(parent, branch)| (parent as usize, branch));
+        self.bounces.push(BounceReport::new(depth, from));
+    }
+    fn hit(&mut self, node: u32, ray: &Ray, hit: &SurfacePoint) {
         // One search serves both: a group's members share the hit's scene index.
         let index = self.world.world_object_of_hit(ray, hit);
         let surface = index.map(|i| HitSurface::find(self.world, i, ray, hit));
         let triangle = index.and_then(|i| self.world.triangle_hit(i, ray, f64::INFINITY));
-        let bounce = self.at(depth, ray);
+        let bounce = self.at(node, ray);
         bounce.hit = Some(*hit);
         bounce.surface = surface;
         bounce.triangle = triangle;
     }
-    fn miss(&mut self, depth: u32, ray: &Ray, background: DVec3) {
-        self.at(depth, ray).background = background;
+    fn miss(&mut self, node: u32, ray: &Ray, background: DVec3) {
+        self.at(node, ray).background = background;
     }
-    fn ambient(&mut self, depth: u32, colour: DVec3) {
-        self.bounces[depth as usize].ambient = colour;
+    fn ambient(&mut self, node: u32, colour: DVec3) {
+        self.bounces[node as usize].ambient = colour;
     }
-    fn light(&mut self, depth: u32, record: &LightRecord) {
-        let bounce = &mut self.bounces[depth as usize];
+    fn light(&mut self, node: u32, record: &LightRecord) {
+        let bounce = &mut self.bounces[node as usize];
         bounce.lights.push(*record);
         // The renderer only asks whether something is in the way; the record also shows
         // where the ray meets the blocker (the record names it by its scene index).
@@ -203,17 +221,25 @@ impl Recorder for ReportRecorder<'_> {
             bounce.blocker_hits.push((record.scene_index, hit));
         }
     }
-    fn skipped_light(&mut self, depth: u32, skipped: &SkippedLight) {
-        self.bounces[depth as usize].skipped.push(*skipped);
+    fn sphere_shadow_ray(&mut self, node: u32, light: usize, ray: &ShadowRay) {
+        self.bounces[node as usize]
+            .sphere_shadow_rays
+            .push((light, *ray));
     }
-    fn reflection(&mut self, depth: u32, km: DVec3, reflected: DVec3) {
-        self.bounces[depth as usize].reflection = Some((km, reflected));
+    fn skipped_light(&mut self, node: u32, skipped: &SkippedLight) {
+        self.bounces[node as usize].skipped.push(*skipped);
     }
-    fn result(&mut self, depth: u32, colour: DVec3) {
-        self.bounces[depth as usize].colour = colour;
+    fn reflection(&mut self, node: u32, km: DVec3, reflected: DVec3) {
+        self.bounces[node as usize].reflection = Some((km, reflected));
     }
-    fn clamped(&mut self, depth: u32, unclamped: DVec3) {
-        self.bounces[depth as usize].unclamped = Some(unclamped);
+    fn transmission(&mut self, node: u32, kt: DVec3, transmitted: DVec3, _: Branch) {
+        self.bounces[node as usize].transmission = Some((kt, transmitted));
+    }
+    fn result(&mut self, node: u32, colour: DVec3) {
+        self.bounces[node as usize].colour = colour;
+    }
+    fn clamped(&mut self, node: u32, unclamped: DVec3) {
+        self.bounces[node as usize].unclamped = Some(unclamped);
     }
 }
 

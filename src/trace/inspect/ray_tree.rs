@@ -1,11 +1,12 @@
 //! A pixel's rays as one flat list, read off its [`PixelReport`]: the camera ray, each
-//! mirror bounce and every shadow ray, each with where it started, which way it went,
+//! mirror and transmitted ray and every shadow ray, each with where it started, which way it went,
 //! how far it got and what it met. `raylab inspect --json` prints this list and the
 //! editor's ray-path overlay draws it, so both show exactly what the shader computed.
 
 use glam::DVec3;
 
 use super::pixel::PixelReport;
+use crate::trace::shade::Branch;
 use crate::trace::world::SurfacePoint;
 
 /// Which kind of ray.
@@ -17,16 +18,23 @@ pub enum RayKind {
     Shadow,
     /// A mirror bounce.
     Reflection,
+    /// A transmitted ray bent by Snell's law.
+    Refraction,
+    /// A transmitted share sent along the mirror direction: total internal reflection.
+    InternalReflection,
 }
 
 impl RayKind {
-    /// "primary", "shadow" or "reflection", as in `raylab inspect --json`.
+    /// "primary", "shadow", "reflection", "refraction" or "internal-reflection", as in
+    /// `raylab inspect --json`.
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {
             RayKind::Primary => "primary",
             RayKind::Shadow => "shadow",
             RayKind::Reflection => "reflection",
+            RayKind::Refraction => "refraction",
+            RayKind::InternalReflection => "internal-reflection",
         }
     }
 }
@@ -57,8 +65,8 @@ impl RayHit {
 pub struct TracedRay {
     /// Which kind.
     pub kind: RayKind,
-    /// 0 for the camera ray and its shadow rays, 1 for the first bounce and its shadow
-    /// rays, and so on.
+    /// 0 for the camera ray and its shadow rays, 1 for the rays it started and their
+    /// shadow rays, and so on.
     pub depth: u32,
     /// Where it starts (a secondary ray's origin is offset off the surface).
     pub origin: DVec3,
@@ -94,10 +102,11 @@ pub fn traced_rays(report: &PixelReport) -> Vec<TracedRay> {
     for bounce in &report.bounces {
         let length = bounce.ray.dir.length();
         rays.push(TracedRay {
-            kind: if bounce.depth == 0 {
-                RayKind::Primary
-            } else {
-                RayKind::Reflection
+            kind: match bounce.from {
+                None => RayKind::Primary,
+                Some((_, Branch::Mirror)) => RayKind::Reflection,
+                Some((_, Branch::Refracted)) => RayKind::Refraction,
+                Some((_, Branch::InternallyReflected)) => RayKind::InternalReflection,
             },
             depth: bounce.depth,
             origin: bounce.ray.origin,
@@ -108,6 +117,22 @@ pub fn traced_rays(report: &PixelReport) -> Vec<TracedRay> {
             light: None,
             blocked_by: None,
         });
+        // A sphere light's rays, each with its own end (the blocker is found again
+        // where the overlay needs its point: not here).
+        for (light, shadow) in &bounce.sphere_shadow_rays {
+            let length = shadow.ray.dir.length();
+            rays.push(TracedRay {
+                kind: RayKind::Shadow,
+                depth: bounce.depth,
+                origin: shadow.ray.origin,
+                direction: shadow.ray.dir / length,
+                t: None,
+                t_max: shadow.t_max.is_finite().then_some(shadow.t_max * length),
+                hit: None,
+                light: Some(*light),
+                blocked_by: shadow.blocked_by,
+            });
+        }
         for light in &bounce.lights {
             let Some(shadow) = light.shadow_ray else {
                 continue;

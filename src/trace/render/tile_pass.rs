@@ -2,8 +2,8 @@
 //! instead of one pixel's whole path at a time: the closest hits of all the tile's
 //! camera rays at once ([`World::intersect_batch`]: the tile's objects outer, its rays
 //! inner), then each pixel shaded from its hit by the shader's own code (lights and
-//! shadow rays as before); then the mirror rays that shading cast, the same way, and so
-//! on down the chains, which are folded back at the end. Each batch answer is the single
+//! shadow rays as before); then the mirror and transmitted rays that shading cast, the
+//! same way, and so on down the trees, which are folded back at the end. Each batch answer is the single
 //! query's bit for bit, so the colours are the pixel-by-pixel path's (tested below).
 //!
 //! The batches run more instructions (their bookkeeping), yet the frame is faster: an
@@ -19,10 +19,20 @@ use crate::trace::film::{PinholeCamera, TileRect};
 use crate::trace::ray::Ray;
 use crate::trace::ray_counts::RayCounts;
 use crate::trace::shade::{
-    Bounce, LiveRays, MakeRay, NoRecorder, RaySource, ShadowRequest, Tracer,
+    Bounce, Branch, BroughtBack, LiveRays, MakeRay, NoRecorder, RayAt, RaySource, ShadowRequest,
+    Tracer,
 };
 use crate::trace::terms::ActiveTerms;
 use crate::trace::world::{ObjectSet, SurfacePoint, World};
+
+/// One depth of a tile's ray trees.
+struct Level {
+    /// Per ray below the camera rays: its parent's slot in the level before, and which of
+    /// the parent's rays it is (empty for the camera rays).
+    parents: Vec<(usize, Branch)>,
+    /// What each ray adds.
+    bounces: Vec<Bounce>,
+}
 
 /// Answers the closest hit of the ray at `depth` from the batch that found it, every
 /// other ray live.
@@ -100,8 +110,8 @@ impl TilePass<'_> {
         Some((colours, counts))
     }
 
-    /// The lit picture: each depth of the tile's mirror chains found and shaded, the
-    /// chains folded back as [`Tracer::trace_primary_from`] folds one.
+    /// The lit picture: each depth of the tile's ray trees found and shaded, the trees
+    /// folded back as [`Tracer::trace_primary_from`] folds one.
     fn lit(
         &self,
         rays: Vec<Ray>,
@@ -112,12 +122,14 @@ impl TilePass<'_> {
         let world = self.tracer.world();
         let count = rays.len();
         counts.primary += count as u64;
-        // Per depth, the pixels whose chain reaches it and what their rays there add.
-        let mut levels: Vec<(Vec<usize>, Vec<Bounce>)> = Vec::new();
-        let (mut pixels, mut rays): (Vec<usize>, Vec<Ray>) = ((0..count).collect(), rays);
+        // Per depth, what each ray adds and (below the camera rays, which are the pixels
+        // in order) its parent's slot in the level before and which of its rays it is.
+        let mut levels: Vec<Level> = Vec::new();
+        let mut parents: Vec<(usize, Branch)> = Vec::new();
+        let mut rays = rays;
         let mut depth = 0;
         while !rays.is_empty() {
-            // As `LiveRays`: camera rays test the tile's culled set, mirror rays all.
+            // As `LiveRays`: camera rays test the tile's culled set, the others all.
             let (terms, objects) = if depth == 0 {
                 (&primary, among.camera)
             } else {
@@ -125,34 +137,54 @@ impl TilePass<'_> {
             };
             let hits = world.intersect_batch(&rays, objects);
             let mut bounces = Vec::with_capacity(rays.len());
-            let (mut next_pixels, mut next_rays) = (Vec::new(), Vec::new());
-            for ((&pixel, ray), hit) in pixels.iter().zip(&rays).zip(hits) {
+            let (mut next_parents, mut next_rays) = (Vec::new(), Vec::new());
+            for (slot, (ray, hit)) in rays.iter().zip(hits).enumerate() {
                 let mut source = KnownHit::new(depth, *ray, hit, among);
-                let (bounce, mirror_ray) =
+                // No recorder here: the ray's index in its tree is not needed.
+                let at = RayAt { depth, node: 0 };
+                let (bounce, spawned) =
                     self.tracer
-                        .shade(ray, depth, terms, &mut source, counts, &mut NoRecorder);
+                        .shade(ray, at, terms, &mut source, counts, &mut NoRecorder);
                 bounces.push(bounce);
-                if let Some(mirror_ray) = mirror_ray {
-                    next_pixels.push(pixel);
-                    next_rays.push(mirror_ray);
+                if let Some(mirror) = spawned.mirror {
+                    next_parents.push((slot, Branch::Mirror));
+                    next_rays.push(mirror);
+                }
+                if let Some((transmitted, branch)) = spawned.transmitted {
+                    next_parents.push((slot, branch));
+                    next_rays.push(transmitted);
                 }
             }
-            levels.push((pixels, bounces));
-            (pixels, rays) = (next_pixels, next_rays);
+            levels.push(Level { parents, bounces });
+            (parents, rays) = (next_parents, next_rays);
             depth += 1;
         }
-        // Deepest first, through `fold_back`'s own step (`Bounce::returns`).
+        // Deepest first, through the shader's own step (`Bounce::returns`): each ray's
+        // colour goes to its parent's slot; the camera rays' colours are the pixels'.
         let conventions = &world.conventions;
-        let mut colours = vec![DVec3::ZERO; count];
-        let mut folded = vec![false; count];
-        for (level_pixels, bounces) in levels.iter().rev() {
-            for (&pixel, bounce) in level_pixels.iter().zip(bounces) {
-                let brought_back = folded[pixel].then_some(colours[pixel]);
-                colours[pixel] = bounce.returns(brought_back, conventions);
-                folded[pixel] = true;
+        let mut brought_back: Vec<BroughtBack> = Vec::new();
+        let returns = |brought_back: &[BroughtBack], slot: usize, bounce: &Bounce| {
+            let own = brought_back.get(slot).copied().unwrap_or_default();
+            bounce.returns(own, conventions)
+        };
+        for (index, level) in levels.iter().enumerate().skip(1).rev() {
+            let mut up = vec![BroughtBack::default(); levels[index - 1].bounces.len()];
+            for (slot, (bounce, &(parent, branch))) in
+                level.bounces.iter().zip(&level.parents).enumerate()
+            {
+                let colour = Some(returns(&brought_back, slot, bounce));
+                if branch.is_transmitted() {
+                    up[parent].transmitted = colour;
+                } else {
+                    up[parent].reflected = colour;
+                }
             }
+            brought_back = up;
         }
-        colours
+        let camera_rays = levels.first().map_or(&[][..], |level| &level.bounces[..]);
+        (0..count)
+            .map(|pixel| returns(&brought_back, pixel, &camera_rays[pixel]))
+            .collect()
     }
 
     /// A debug view: the camera rays' hits found at once, each pixel's view from its hit.

@@ -50,6 +50,19 @@ pub fn cache_fits(world: &World, width: u32, height: u32) -> bool {
         <= MAX_CACHE_BYTES
 }
 
+/// Whether the cache can hold the rays of `world`: a chain of rays per pixel, one shadow
+/// ray per light at each. A transmissive material makes trees (a mirror and a
+/// transmitted ray from one hit) and a sphere light many shadow rays per point; the
+/// preview traces such worlds afresh on every edit instead.
+#[must_use]
+pub fn cache_serves(world: &World) -> bool {
+    let no_glass = world
+        .materials
+        .iter()
+        .all(|material| material.transmission == DVec3::ZERO);
+    no_glass && world.light_spheres.iter().all(Option::is_none)
+}
+
 /// The cached rays of one tile. The chains and light slots are shared with the cache
 /// before when an edit left them as they were (most edits add no ray), so a re-shade
 /// copies nothing.

@@ -12,7 +12,7 @@ mod quick_shade;
 mod tile_rays;
 
 pub(crate) use dependence::{DependenceRule, TermDependence};
-pub use hit_cache::{HitCache, MAX_CACHE_BYTES, RetraceReason, Reuse, cache_fits};
+pub use hit_cache::{HitCache, MAX_CACHE_BYTES, RetraceReason, Reuse, cache_fits, cache_serves};
 pub(crate) use light_factors::LightSlot;
 pub(crate) use pixel_colour::PixelColour;
 pub(crate) use quick_shade::QuickShade;

@@ -36,6 +36,8 @@ impl PixelColour {
             primary: u64::from(self.rays[0]),
             shadow: u64::from(self.rays[1]),
             reflection: u64::from(self.rays[2]),
+            // The cache holds only worlds without transmission (`cache_serves`).
+            transmission: 0,
         }
     }
 }

@@ -19,7 +19,7 @@ use super::chains::{CLEAR, NOT_CAST};
 use super::dependence::{DependenceRule, EntryTerms, TermDependence};
 use super::light_factors::LightSlot;
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::shade::{Bounce, Tracer, diffuse_term, specular_term};
+use crate::trace::shade::{Bounce, BroughtBack, Tracer, diffuse_term, specular_term};
 use crate::trace::terms::ActiveTerms;
 use crate::trace::world::falloff;
 
@@ -137,7 +137,13 @@ impl<'r> QuickShade<'r> {
             } else {
                 DVec3::ZERO
             };
-            colour = Bounce { local, km }.returns(casts.then_some(colour), &self.conventions);
+            let bounce = Bounce {
+                local,
+                km,
+                kt: DVec3::ZERO,
+            };
+            let brought_back = BroughtBack::reflected(casts.then_some(colour));
+            colour = bounce.returns(brought_back, &self.conventions);
         }
         counts.add(&own);
         Some((colour, depends))

@@ -4,63 +4,68 @@
 //! colour = sum over ambient lights of ka * L
 //!        + sum over other lights l of vis_l * L_l(p) * (kd * max(0, n.l) + ks * max(0, r.v)^s)
 //!        + km * colour(reflected ray)          while depth < max_depth
+//!        + kt * colour(transmitted ray)        while depth < max_depth
 //! ```
 //!
-//! The mirror term is added when the chain folds back (`tracer.rs`); here a ray returns
-//! its local colour, its mirror weight and the mirror ray to follow. What the re-shade
+//! The mirror and transmission terms are added when the tree folds back (`tracer.rs`);
+//! here a ray returns its local colour, its weights and the rays to follow. What the re-shade
 //! cache needs it gets through one call, [`RaySource::keep_light_factors`].
 
 use glam::DVec3;
 
+use super::bounce_tree::{Bounce, RayAt, Spawned};
+use super::branch::Branch;
 use super::lit_factors::LitFactors;
-use super::mirror_chain::Bounce;
 use super::phong::LocalLight;
 use super::ray_source::RaySource;
 use super::record::{LightRecord, LightSkip, Recorder, ShadowRay, SkippedLight, unsampled_reason};
-use super::shadows::LightAt;
+use super::refraction::{Transmitted, media, mirror_dir, refract};
+use super::shadows::{LightAt, Visibility};
 use super::tracer::Tracer;
 use crate::scene::Material;
 use crate::trace::ray::Ray;
 use crate::trace::ray_counts::RayCounts;
+use crate::trace::shapes::Primitive;
 use crate::trace::terms::ActiveTerms;
 use crate::trace::world::{LightSample, SurfacePoint, spawn_ray};
 
-/// Where a ray is shaded: its hit, the material there, its depth in the mirror chain and
-/// the direction back along it.
+/// Where a ray is shaded: its hit, the material there, which ray it is and the direction
+/// back along it.
 struct ShadingPoint<'a> {
     hit: &'a SurfacePoint,
     material: &'a Material,
     depth: u32,
+    node: u32,
     view_dir: DVec3,
 }
 
 impl Tracer<'_> {
-    /// One ray of the mirror chain at `depth`: what it adds itself, and the mirror ray to
-    /// follow, if one is cast. Inlined into both calls in [`Tracer::radiance`], so the pair
-    /// it returns is not passed through memory (callgrind: about 2% more instructions per
-    /// camera ray when it is not).
+    /// One ray of a camera ray's tree: what it adds itself, and the mirror and
+    /// transmitted rays to follow, where they are cast. Inlined into both calls in
+    /// [`Tracer::radiance`], so the pair it returns is not passed through memory
+    /// (callgrind: about 2% more instructions per camera ray when it is not).
     #[inline(always)]
     pub(crate) fn shade<R: Recorder>(
         &self,
         ray: &Ray,
-        depth: u32,
+        RayAt { depth, node }: RayAt,
         terms: &ActiveTerms,
         rays: &mut impl RaySource,
         counts: &mut RayCounts,
         recorder: &mut R,
-    ) -> (Bounce, Option<Ray>) {
+    ) -> (Bounce, Spawned) {
         let Some(hit) = rays.closest_hit(self.world, depth, ray) else {
             let background = if terms.background {
                 self.world.background
             } else {
                 DVec3::ZERO
             };
-            recorder.miss(depth, ray, background);
-            return (Bounce::local(background), None);
+            recorder.miss(node, ray, background);
+            return (Bounce::local(background), Spawned::NONE);
         };
         // Recorders see the scene's object index, whatever the world left out.
         recorder.hit(
-            depth,
+            node,
             ray,
             &SurfacePoint {
                 object: self.world.scene_object(hit.object),
@@ -73,6 +78,7 @@ impl Tracer<'_> {
             hit: &hit,
             material,
             depth,
+            node,
             // Camera rays are unit length and mirror reflection keeps the length.
             view_dir: -ray.dir,
         };
@@ -81,7 +87,7 @@ impl Tracer<'_> {
         // ambient: ka * (sum of ambient lights)
         if terms.ambient {
             let ambient = material.ambient * world.ambient;
-            recorder.ambient(depth, ambient);
+            recorder.ambient(node, ambient);
             colour += ambient;
         }
 
@@ -100,22 +106,47 @@ impl Tracer<'_> {
                 LightSkip::NoDiffuseOrSpecular
             };
             for &scene_index in &world.light_scene_index {
-                recorder.skipped_light(depth, &SkippedLight { scene_index, why });
+                recorder.skipped_light(node, &SkippedLight { scene_index, why });
             }
         }
 
-        // mirror: km * colour(reflected ray), added when the chain folds back
-        if terms.reflection && depth < world.max_depth && material.mirror != DVec3::ZERO {
-            let d = ray.dir;
-            let reflected_dir = d - 2.0 * d.dot(hit.n) * hit.n;
+        // mirror and transmission: km * colour(reflected ray) + kt * colour(transmitted
+        // ray), added when the tree folds back
+        let deeper = depth < world.max_depth;
+        let mut spawned = Spawned::NONE;
+        if terms.reflection && deeper && material.mirror != DVec3::ZERO {
             counts.reflection += 1;
-            let bounce = Bounce {
-                local: colour,
-                km: material.mirror,
-            };
-            return (bounce, Some(spawn_ray(&hit, reflected_dir)));
+            spawned.mirror = Some(spawn_ray(&hit, mirror_dir(ray.dir, hit.n)));
         }
-        (Bounce::local(colour), None)
+        if terms.transmission && deeper && material.transmission != DVec3::ZERO {
+            counts.transmission += 1;
+            spawned.transmitted = Some(self.transmitted_ray(ray, &hit, material));
+        }
+        let bounce = Bounce {
+            local: colour,
+            km: material.mirror,
+            kt: material.transmission,
+        };
+        (bounce, spawned)
+    }
+
+    /// The transmitted ray from `hit`: bent by Snell's law between air and the
+    /// material's `ior` (the ratio flipped for a ray leaving the object), along the mirror
+    /// direction where Snell has no solution. A plane has no inside: its transmitted ray
+    /// goes straight on. The origin is offset to the side the ray leaves on.
+    #[inline]
+    fn transmitted_ray(&self, ray: &Ray, hit: &SurfacePoint, material: &Material) -> (Ray, Branch) {
+        let transmitted = if self.world.objects[hit.object].shape == Primitive::Plane {
+            Transmitted::Refracted(ray.dir)
+        } else {
+            let (from, to) = media(ray.dir, hit.n_outward, material.ior);
+            refract(ray.dir, hit.n, from, to)
+        };
+        let branch = match transmitted {
+            Transmitted::Refracted(_) => Branch::Refracted,
+            Transmitted::InternallyReflected(_) => Branch::InternallyReflected,
+        };
+        (spawn_ray(hit, transmitted.dir()), branch)
     }
 
     /// What light `index` adds at `at`: `vis * L * (kd max(0, n.l) + ks max(0, r.v)^s)`,
@@ -132,7 +163,7 @@ impl Tracer<'_> {
         recorder: &mut R,
     ) -> Option<DVec3> {
         let world = self.world;
-        let (hit, material, depth) = (at.hit, at.material, at.depth);
+        let (hit, material, depth, node) = (at.hit, at.material, at.depth, at.node);
         let light = &world.lights[index];
         let Some(sample) = light.sample(hit.p) else {
             // A light of zero strength stays unknown: the factors of a light turned up
@@ -145,7 +176,7 @@ impl Tracer<'_> {
                     scene_index: world.light_scene_index[index],
                     why: unsampled_reason(light, hit.p),
                 };
-                recorder.skipped_light(depth, &skipped);
+                recorder.skipped_light(node, &skipped);
             }
             return None;
         };
@@ -154,16 +185,21 @@ impl Tracer<'_> {
             self.light_factors(hit, &sample, at.view_dir, material, n_dot_l)
         });
         // Plain locals on the hot path; the record is built only for a recorder.
-        let (mut cast, mut blocker) = (false, None);
+        let mut cast = false;
+        let mut seen = Visibility {
+            fraction: 1.0,
+            blocker: None,
+            rays: 0,
+        };
         let (mut diffuse, mut specular) = (DVec3::ZERO, DVec3::ZERO);
         let mut lit = None;
         if n_dot_l > 0.0 {
             if terms.shadows {
-                let to = LightAt { depth, index };
-                blocker = self.shadow_blocker(hit, &sample, to, rays, counts);
+                let to = LightAt { depth, node, index };
+                seen = self.visibility(hit, &sample, to, rays, counts, recorder);
                 cast = true;
             }
-            if blocker.is_none() {
+            if seen.fraction > 0.0 {
                 let local = LocalLight {
                     n: hit.n,
                     to_light: sample.to_light,
@@ -176,14 +212,20 @@ impl Tracer<'_> {
                 if terms.specular {
                     specular = local.specular(material.specular, material.shininess, n_dot_l);
                 }
+                // vis_l: a sphere light partly hidden (a point light is all or nothing).
+                if seen.fraction < 1.0 {
+                    diffuse *= seen.fraction;
+                    specular *= seen.fraction;
+                }
                 lit = Some(diffuse + specular);
             }
         }
         if R::ACTIVE {
             // The recorders see the scene's index of the blocker, and the shadow ray
             // made again (spawning is deterministic).
-            let blocked_by = blocker.map(|i| world.scene_object(i));
-            let shadow_ray = cast.then(|| {
+            let blocked_by = seen.blocker.map(|i| world.scene_object(i));
+            let point_light = world.light_spheres[index].is_none();
+            let shadow_ray = (cast && point_light).then(|| {
                 let query = self.shadow_query(hit, &sample);
                 ShadowRay {
                     ray: query.ray,
@@ -198,10 +240,11 @@ impl Tracer<'_> {
                 blocked_by,
                 shadow_ray_cast: cast,
                 shadow_ray,
+                visibility: (seen.fraction, seen.rays),
                 diffuse,
                 specular,
             };
-            recorder.light(depth, &record);
+            recorder.light(node, &record);
         }
         lit
     }

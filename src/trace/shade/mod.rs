@@ -1,20 +1,24 @@
 //! The lighting model of the contract, one ray at a time, in its order: ambient, each
-//! light (with its shadow ray), the mirror term. The shader asks a [`RaySource`] for the
-//! rays it needs and tells it what each light gave each hit; the recorder sees every number.
+//! light (with its shadow ray), the mirror and transmission terms. The shader asks a
+//! [`RaySource`] for the rays it needs and tells it what each light gave each hit; the
+//! recorder sees every number.
 
+mod bounce_tree;
+mod branch;
 mod depth_view;
 mod lighting;
 mod lit_factors;
-mod mirror_chain;
 mod object_id;
 mod phong;
 mod ray_source;
 mod record;
+mod refraction;
 mod shadows;
 mod tracer;
 
+pub(crate) use bounce_tree::{Bounce, BroughtBack, RayAt};
+pub use branch::Branch;
 pub use lit_factors::LitFactors;
-pub(crate) use mirror_chain::Bounce;
 pub use object_id::object_id_colour;
 pub use phong::{LocalLight, diffuse_term, phong_power, specular_term};
 pub use ray_source::{LiveRays, MakeRay, RaySource, ShadowRequest};

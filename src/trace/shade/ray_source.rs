@@ -30,6 +30,9 @@ pub struct ShadowRequest {
     pub light: usize,
     /// The object it cannot meet.
     pub except: Option<usize>,
+    /// It aims at a point of a sphere light other than the light's position (the tile's
+    /// shadow culling, made for the position, does not hold for it).
+    pub off_centre: bool,
 }
 
 /// Makes the shadow ray, for a source that has to cast it (a cache that knows the answer
@@ -101,7 +104,7 @@ impl RaySource for LiveRays<'_> {
     #[inline]
     fn occluder(&mut self, world: &World, to: ShadowRequest, ray: impl MakeRay) -> Option<usize> {
         let except = to.except;
-        if to.depth == 0 {
+        if to.depth == 0 && !to.off_centre {
             let among = self.among.shadow(to.light);
             // Culling left nothing that could block: no ray to spawn (about a quarter
             // of the default scene's camera hits' shadow rays).

@@ -5,6 +5,7 @@
 
 use glam::DVec3;
 
+use super::branch::Branch;
 use crate::trace::ray::Ray;
 use crate::trace::world::{SurfacePoint, WorldLight};
 
@@ -17,12 +18,17 @@ pub struct LightRecord {
     pub strength: DVec3,
     /// n.l (may be negative: the light is behind the surface).
     pub n_dot_l: f64,
-    /// The scene index of the object that blocked the shadow ray, if one did.
+    /// The scene index of the object that blocked the shadow ray, if one did (for a
+    /// sphere light: the first ray's blocker, where none of its rays reached it).
     pub blocked_by: Option<usize>,
     /// Whether a shadow ray was cast at all.
     pub shadow_ray_cast: bool,
-    /// The shadow ray, when one was cast.
+    /// The shadow ray, when one was cast to a point light (a sphere light's rays go to
+    /// [`Recorder::sphere_shadow_ray`]).
     pub shadow_ray: Option<ShadowRay>,
+    /// The fraction of the shadow rays that reached the light (1 where none was cast),
+    /// and how many were cast: vis_l of the lighting model.
+    pub visibility: (f64, u32),
     /// The diffuse contribution added.
     pub diffuse: DVec3,
     /// The specular contribution added.
@@ -31,27 +37,40 @@ pub struct LightRecord {
 
 /// Receives the numbers behind one traced ray. Every method has an empty default, so the
 /// renderer's [`NoRecorder`] costs nothing.
+///
+/// A camera ray starts a tree of rays (mirror and transmitted); `node` names a ray of it
+/// by the order it was shaded: 0 for the camera ray, and on a plain mirror chain the
+/// depth. [`Recorder::started`] says where each ray sits before anything else about it.
 pub trait Recorder {
     /// Whether the recorder wants the calls at all: the shader does the extra work of
     /// accounting for skipped lights only when it does.
     const ACTIVE: bool = true;
-    /// A ray at `depth` (0 = primary) hit `hit`.
-    fn hit(&mut self, _depth: u32, _ray: &Ray, _hit: &SurfacePoint) {}
-    /// A ray at `depth` hit nothing and returns `background`.
-    fn miss(&mut self, _depth: u32, _ray: &Ray, _background: DVec3) {}
-    /// The ambient term at `depth`.
-    fn ambient(&mut self, _depth: u32, _colour: DVec3) {}
-    /// A light at a point at `depth` that can reach it (in front of the surface or not).
-    fn light(&mut self, _depth: u32, _record: &LightRecord) {}
-    /// A light passed over at a point at `depth`, and why.
-    fn skipped_light(&mut self, _depth: u32, _skipped: &SkippedLight) {}
-    /// The mirror term at `depth`: `km * reflected` was added.
-    fn reflection(&mut self, _depth: u32, _km: DVec3, _reflected: DVec3) {}
-    /// The colour returned for the ray at `depth`.
-    fn result(&mut self, _depth: u32, _colour: DVec3) {}
+    /// Ray `node`, at `depth` (0 = primary), starts: from ray `from.0` as its
+    /// `from.1`, or from the camera (`None`).
+    fn started(&mut self, _node: u32, _depth: u32, _from: Option<(u32, Branch)>) {}
+    /// Ray `node` hit `hit`.
+    fn hit(&mut self, _node: u32, _ray: &Ray, _hit: &SurfacePoint) {}
+    /// Ray `node` hit nothing and returns `background`.
+    fn miss(&mut self, _node: u32, _ray: &Ray, _background: DVec3) {}
+    /// The ambient term of ray `node`.
+    fn ambient(&mut self, _node: u32, _colour: DVec3) {}
+    /// A light at the hit of ray `node` that can reach it (in front of the surface or not).
+    fn light(&mut self, _node: u32, _record: &LightRecord) {}
+    /// One of a sphere light's shadow rays from the hit of ray `node`, as cast, to the
+    /// light with scene index `light`.
+    fn sphere_shadow_ray(&mut self, _node: u32, _light: usize, _ray: &ShadowRay) {}
+    /// A light passed over at the hit of ray `node`, and why.
+    fn skipped_light(&mut self, _node: u32, _skipped: &SkippedLight) {}
+    /// The mirror term of ray `node`: `km * reflected` was added.
+    fn reflection(&mut self, _node: u32, _km: DVec3, _reflected: DVec3) {}
+    /// The transmission term of ray `node`: `kt * transmitted` was added, brought by a
+    /// ray that was refracted or internally reflected (`branch`).
+    fn transmission(&mut self, _node: u32, _kt: DVec3, _transmitted: DVec3, _branch: Branch) {}
+    /// The colour returned for ray `node`.
+    fn result(&mut self, _node: u32, _colour: DVec3) {}
     /// The ray's colour before the `EachRay` convention clamped it (only where the clamp
     /// changed it), before its `result`.
-    fn clamped(&mut self, _depth: u32, _unclamped: DVec3) {}
+    fn clamped(&mut self, _node: u32, _unclamped: DVec3) {}
 }
 
 /// A recorder that records nothing.

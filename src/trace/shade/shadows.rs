@@ -1,18 +1,34 @@
 //! Shadow rays: which object a shadow ray cannot meet, the ray itself (spawned once, in
-//! `world::spawn`), the object blocking it as the ray source answers, and the shadow-mask
-//! view (the fraction of reaching lights whose shadow ray is clear).
+//! `world::spawn`), the object blocking it as the ray source answers, a light's
+//! visibility (one ray to a point light; for a sphere light the fraction of its
+//! stratified rays that reach it) and the shadow-mask view (the mean visibility of the
+//! lights that reach a point).
 
 use super::ray_source::{RaySource, ShadowQuery, ShadowRequest};
+use super::record::{NoRecorder, Recorder, ShadowRay};
 use super::tracer::Tracer;
 use crate::trace::ray_counts::RayCounts;
 use crate::trace::shapes::Primitive;
-use crate::trace::world::{LightSample, SurfacePoint, spawn_ray, spawn_ray_to};
+use crate::trace::world::{LightSample, SurfacePoint, shading_seed, spawn_ray, spawn_ray_to};
 
-/// Which light a shadow ray goes to, from the hit at which depth of the mirror chain.
+/// Which light a shadow ray goes to, from the hit of which ray of the tree (its depth,
+/// and its index for recorders).
 #[derive(Clone, Copy, Debug)]
 pub(super) struct LightAt {
     pub depth: u32,
+    pub node: u32,
     pub index: usize,
+}
+
+/// What a light's shadow rays from a point found.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Visibility {
+    /// The fraction of the rays that reach the light.
+    pub fraction: f64,
+    /// The object met, where no ray reaches the light (the first ray's blocker).
+    pub blocker: Option<usize>,
+    /// How many rays were cast.
+    pub rays: u32,
 }
 
 impl Tracer<'_> {
@@ -27,14 +43,87 @@ impl Tracer<'_> {
         rays: &mut impl RaySource,
         counts: &mut RayCounts,
     ) -> Option<usize> {
+        self.shadow_ray_blocker(hit, sample, to, false, rays, counts)
+    }
+
+    /// As [`Self::shadow_blocker`]; `off_centre`: the ray aims at a point of a sphere
+    /// light other than the light's position.
+    #[inline]
+    fn shadow_ray_blocker(
+        &self,
+        hit: &SurfacePoint,
+        sample: &LightSample,
+        to: LightAt,
+        off_centre: bool,
+        rays: &mut impl RaySource,
+        counts: &mut RayCounts,
+    ) -> Option<usize> {
         counts.shadow += 1;
         let except = self.shadow_except(hit, sample);
         let target = ShadowRequest {
             depth: to.depth,
             light: to.index,
             except,
+            off_centre,
         };
         rays.occluder(self.world, target, || self.shadow_query(hit, sample))
+    }
+
+    /// How much of light `to.index` (whose centre `sample` describes) `hit` sees: one
+    /// shadow ray to a point light, `samples` stratified ones to a sphere light, each
+    /// shown to `recorder` as it is cast (with the scene's index of the light).
+    #[inline]
+    pub(super) fn visibility<R: Recorder>(
+        &self,
+        hit: &SurfacePoint,
+        sample: &LightSample,
+        to: LightAt,
+        rays: &mut impl RaySource,
+        counts: &mut RayCounts,
+        recorder: &mut R,
+    ) -> Visibility {
+        let (Some(sphere), Some(centre)) =
+            (self.world.light_spheres[to.index], sample.light_position)
+        else {
+            let blocker = self.shadow_blocker(hit, sample, to, rays, counts);
+            let fraction = if blocker.is_some() { 0.0 } else { 1.0 };
+            return Visibility {
+                fraction,
+                blocker,
+                rays: 1,
+            };
+        };
+        let seed = shading_seed(hit.p, to.index);
+        let mut clear = 0u32;
+        let mut first_blocker = None;
+        for i in 0..sphere.samples {
+            let target = sphere.disc_point(centre, hit.p, i, seed);
+            let toward = LightSample {
+                light_position: Some(target),
+                to_light: (target - hit.p).normalize_or_zero(),
+                ..*sample
+            };
+            let blocker = self.shadow_ray_blocker(hit, &toward, to, true, rays, counts);
+            match blocker {
+                None => clear += 1,
+                Some(_) => first_blocker = first_blocker.or(blocker),
+            }
+            if R::ACTIVE {
+                let query = self.shadow_query(hit, &toward);
+                let light = self.world.light_scene_index[to.index];
+                let shadow = ShadowRay {
+                    ray: query.ray,
+                    t_max: query.t_max,
+                    blocked_by: blocker.map(|b| self.world.scene_object(b)),
+                };
+                recorder.sphere_shadow_ray(to.node, light, &shadow);
+            }
+        }
+        Visibility {
+            fraction: f64::from(clear) / f64::from(sphere.samples),
+            blocker: first_blocker.filter(|_| clear == 0),
+            rays: sphere.samples,
+        }
     }
 
     /// The object a shadow ray from `hit` to the light of `sample` cannot meet: every
@@ -58,8 +147,9 @@ impl Tracer<'_> {
         ShadowQuery { ray, t_max }
     }
 
-    /// Fraction of the lights that reach `hit` (in front, inside any spot cone) whose
-    /// shadow ray is clear; 0 where no light reaches.
+    /// Mean visibility of the lights that reach `hit` (in front, inside any spot cone):
+    /// the fraction whose shadow ray is clear, sphere lights counting in part; 0 where no
+    /// light reaches.
     pub(super) fn shadow_mask(
         &self,
         hit: &SurfacePoint,
@@ -67,7 +157,7 @@ impl Tracer<'_> {
         counts: &mut RayCounts,
     ) -> f64 {
         let mut reaching = 0u32;
-        let mut visible = 0u32;
+        let mut visible = 0.0;
         for (index, light) in self.world.lights.iter().enumerate() {
             let Some(sample) = light.sample(hit.p) else {
                 continue;
@@ -76,19 +166,22 @@ impl Tracer<'_> {
                 continue;
             }
             reaching += 1;
-            let to = LightAt { depth: 0, index };
-            if !self.primary.shadows
-                || self
-                    .shadow_blocker(hit, &sample, to, rays, counts)
-                    .is_none()
-            {
-                visible += 1;
-            }
+            let to = LightAt {
+                depth: 0,
+                node: 0,
+                index,
+            };
+            visible += if self.primary.shadows {
+                let seen = self.visibility(hit, &sample, to, rays, counts, &mut NoRecorder);
+                seen.fraction
+            } else {
+                1.0
+            };
         }
         if reaching == 0 {
             0.0
         } else {
-            f64::from(visible) / f64::from(reaching)
+            visible / f64::from(reaching)
         }
     }
 }

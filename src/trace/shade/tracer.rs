@@ -4,21 +4,24 @@
 //! colour = sum over ambient lights of ka * L
 //!        + sum over other lights l of vis_l * L_l(p) * (kd * max(0, n.l) + ks * max(0, r.v)^s)
 //!        + km * colour(reflected ray)          while depth < max_depth
+//!        + kt * colour(transmitted ray)        while depth < max_depth
 //! ```
 //!
-//! This file holds the tracer and the mirror chain: a camera ray, then each mirror
-//! bounce, followed in a loop so the stack stays the same size at any depth. One ray's
-//! terms are in `lighting.rs`, its shadow rays in `shadows.rs`.
+//! This file holds the tracer and the walk of a camera ray's tree: the camera ray, then
+//! each mirror and transmitted ray, followed in a loop over a list (not a recursion) so
+//! the stack stays the same size at any depth. One ray's terms are in `lighting.rs`, its
+//! shadow rays in `shadows.rs`, the fold in `bounce_tree.rs`.
 //!
 //! Work is only done where a term can contribute: no shadow ray for a light behind the
 //! surface, outside its spot cone, or for a material with no diffuse and no specular; no
-//! mirror ray where km is zero. An optional [`Recorder`] sees every number the shader
+//! mirror ray where km is zero, no transmitted ray where kt is. An optional [`Recorder`] sees every number the shader
 //! uses, so the pixel inspector reports this very code path.
 
 use glam::DVec3;
 
+use super::bounce_tree::{BroughtBack, Node, RayAt, Spawned, Tree, fold_back, returned};
+use super::branch::Branch;
 use super::depth_view::DepthRange;
-use super::mirror_chain::{Chain, fold_back, returned};
 use super::object_id::object_id_colour;
 use super::ray_source::{LiveRays, RaySource};
 use super::record::Recorder;
@@ -102,14 +105,14 @@ impl<'w> Tracer<'w> {
         }
     }
 
-    /// The lit colour of a camera ray and its chain of mirror bounces.
+    /// The lit colour of a camera ray and its tree of mirror and transmitted rays.
     ///
-    /// A loop, not a recursion, so any `max_depth` runs in constant stack: the chain is
-    /// walked forward, keeping each ray's local colour and mirror weight, then folded back
-    /// from the deepest ray as `colour(d) = local(d) + km(d) * colour(d + 1)` (as the
-    /// scene's conventions combine and clamp). That is the same arithmetic, and the same
-    /// recorder calls in the same order, as the recursive form (a ray's `reflection` and
-    /// `result` after everything deeper).
+    /// A loop, not a recursion, so any `max_depth` runs in constant stack: the tree is
+    /// walked breadth first, keeping each ray's local colour and weights, then folded back
+    /// from the last ray shaded as `colour = local + km * reflected + kt * transmitted`
+    /// (as the scene's conventions combine and clamp). That is the same arithmetic, and
+    /// on a mirror chain the same recorder calls in the same order, as the recursive form
+    /// (a ray's `reflection` and `result` after everything deeper).
     fn radiance(
         &self,
         ray: &Ray,
@@ -117,24 +120,48 @@ impl<'w> Tracer<'w> {
         counts: &mut RayCounts,
         recorder: &mut impl Recorder,
     ) -> DVec3 {
-        let (camera_bounce, mirror_ray) = self.shade(ray, 0, &self.primary, rays, counts, recorder);
-        // Most camera rays meet no mirror: no chain to keep.
+        recorder.started(0, 0, None);
+        let (camera_bounce, spawned) =
+            self.shade(ray, RayAt::CAMERA, &self.primary, rays, counts, recorder);
+        // Most camera rays meet no mirror and no glass: no tree to keep.
         let conventions = &self.world.conventions;
-        let Some(mut ray) = mirror_ray else {
-            return returned(0, &camera_bounce, None, conventions, recorder);
-        };
-        let mut chain = Chain::new();
-        chain.push(camera_bounce);
-        loop {
-            let depth = chain.len() as u32;
-            let (bounce, mirror_ray) =
-                self.shade(&ray, depth, &self.secondary, rays, counts, recorder);
-            chain.push(bounce);
-            match mirror_ray {
-                Some(next) => ray = next,
-                None => break,
-            }
+        if spawned.mirror.is_none() && spawned.transmitted.is_none() {
+            let nothing = BroughtBack::default();
+            return returned(0, &camera_bounce, nothing, conventions, recorder);
         }
-        fold_back(&chain, conventions, recorder)
+        let mut tree = Tree::new();
+        tree.push(Node {
+            bounce: camera_bounce,
+            ..Node::new(*ray, 0, None)
+        });
+        push_children(&mut tree, 0, spawned);
+        let mut index = 1;
+        while index < tree.len() {
+            let node = tree[index];
+            let at = RayAt {
+                depth: node.depth,
+                node: index as u32,
+            };
+            recorder.started(at.node, at.depth, node.from);
+            let (bounce, spawned) =
+                self.shade(&node.ray, at, &self.secondary, rays, counts, recorder);
+            tree[index].bounce = bounce;
+            push_children(&mut tree, index, spawned);
+            index += 1;
+        }
+        fold_back(&mut tree, conventions, recorder)
+    }
+}
+
+/// Queues the rays that ray `parent` of `tree` started, one level deeper.
+#[inline]
+fn push_children(tree: &mut Tree, parent: usize, spawned: Spawned) {
+    let depth = tree[parent].depth + 1;
+    let parent = parent as u32;
+    if let Some(mirror) = spawned.mirror {
+        tree.push(Node::new(mirror, depth, Some((parent, Branch::Mirror))));
+    }
+    if let Some((transmitted, branch)) = spawned.transmitted {
+        tree.push(Node::new(transmitted, depth, Some((parent, branch))));
     }
 }

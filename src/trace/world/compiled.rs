@@ -9,6 +9,7 @@ use super::lights::WorldLight;
 use super::object::ObjectHit;
 pub use super::object::WorldObject;
 use super::object_set::ObjectSet;
+use super::sphere_light::SphereLight;
 use crate::scene::{Light, Material, Scene, SceneError, validate};
 use crate::trace::ray::Ray;
 use crate::trace::shapes::{Aabb, MeshStore, TriangleHit};
@@ -52,6 +53,8 @@ pub struct World {
     pub lights: Vec<WorldLight>,
     /// Index in the scene's light list of each entry of `lights`.
     pub light_scene_index: Vec<usize>,
+    /// Per entry of `lights`, its sphere where it has a radius (soft shadows).
+    pub light_spheres: Vec<Option<SphereLight>>,
     /// Sum of the ambient lights' strengths (those that shine).
     pub ambient: DVec3,
     /// Colour of rays that hit nothing.
@@ -115,6 +118,7 @@ impl World {
         let (objects, object_scene_index) = flatten(scene, &material_names, meshes)?;
         let mut lights = Vec::new();
         let mut light_scene_index = Vec::new();
+        let mut light_spheres = Vec::new();
         let mut ambient = DVec3::ZERO;
         for (index, light) in scene.lights.iter().enumerate() {
             match light {
@@ -122,6 +126,11 @@ impl World {
                 other => {
                     lights.push(WorldLight::new(other));
                     light_scene_index.push(index);
+                    light_spheres.push(
+                        other
+                            .sphere()
+                            .map(|(radius, samples)| SphereLight { radius, samples }),
+                    );
                 }
             }
         }
@@ -132,6 +141,7 @@ impl World {
             material_names,
             lights,
             light_scene_index,
+            light_spheres,
             ambient,
             background: scene.render.background,
             max_depth: scene.render.max_depth,

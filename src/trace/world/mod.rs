@@ -11,6 +11,7 @@ mod lights;
 mod object;
 mod object_set;
 mod spawn;
+mod sphere_light;
 mod trees;
 
 pub use compiled::{Acceleration, BVH_MIN_OBJECTS, SurfacePoint, World, WorldObject};
@@ -21,3 +22,4 @@ pub use isolation::{IsolationError, check_indices};
 pub use lights::{LightSample, WorldLight, falloff};
 pub use object_set::ObjectSet;
 pub use spawn::{spawn_ray, spawn_ray_to};
+pub use sphere_light::shading_seed;

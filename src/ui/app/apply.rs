@@ -65,11 +65,13 @@ impl EditorApp {
             Command::Undo => {
                 if let Some(scene) = self.undoer.undo(&self.scene) {
                     self.scene = scene.clone();
+                    self.forget_notice();
                 }
             }
             Command::Redo => {
                 if let Some(scene) = self.undoer.redo(&self.scene) {
                     self.scene = scene.clone();
+                    self.forget_notice();
                 }
             }
             Command::New => self.guard(DiscardAction::New, ctx),
@@ -94,6 +96,8 @@ impl EditorApp {
             }
             Command::ShowHelp => self.show_help = !self.show_help,
             Command::BrowseExportPath => self.request_dialog(DialogPurpose::ExportPng, ctx),
+            Command::ImportObjDialog => self.request_dialog(DialogPurpose::ImportObj, ctx),
+            Command::ImportObj(path) => self.import_obj(&path),
             Command::BrowseCompareImage => self.request_dialog(DialogPurpose::CompareImage, ctx),
             Command::SetPreferInAppFileDialog(prefer) => self.file_dialogs.prefer_in_app = prefer,
             Command::DismissError => self.error = None,
@@ -122,6 +126,14 @@ impl EditorApp {
             Command::ShowCompare => self.compare.show_window(),
             Command::CompareWith(path) => self.compare.start(&self.scene, &path, ctx),
             Command::Isolate(toggle) => toggle.apply(&mut self.isolation),
+        }
+    }
+
+    /// A notice about a typed value speaks of a value an undo or redo has just replaced:
+    /// it goes.
+    fn forget_notice(&mut self) {
+        if self.message.as_ref().is_some_and(|m| m.notice) {
+            self.message = None;
         }
     }
 

@@ -8,11 +8,12 @@ use egui::ViewportCommand;
 
 use super::{EditorApp, undoer};
 use crate::scene::Scene;
-use crate::ui::commands::Selection;
+use crate::ui::commands::{SceneEdit, Selection};
 use crate::ui::document::autosave::RestoreAnswer;
 use crate::ui::document::confirm::{DiscardAction, DiscardAnswer};
 use crate::ui::document::file_dialog::{DialogOutcome, DialogPurpose};
 use crate::ui::document::files;
+use crate::ui::panels::status_bar::StatusMessage;
 use crate::ui::state::keep_in_range;
 
 impl EditorApp {
@@ -123,6 +124,7 @@ impl EditorApp {
         match purpose {
             DialogPurpose::OpenScene => self.open(&path),
             DialogPurpose::ImportLegacy => self.import(&path),
+            DialogPurpose::ImportObj => self.import_obj(&path),
             DialogPurpose::SaveSceneAs => {
                 let path = if files::is_scene_file(&path) {
                     path
@@ -149,7 +151,7 @@ impl EditorApp {
             Ok(files::Opened::Scene(scene)) => {
                 self.replace_scene(*scene, Some(path.to_owned()));
                 self.recent.push(path);
-                self.message = Some(format!("Opened {}", path.display()));
+                self.message = Some(StatusMessage::done(format!("Opened {}", path.display())));
             }
             Err(error) => {
                 // A recent file that does not open now (an unplugged drive, a share
@@ -168,16 +170,39 @@ impl EditorApp {
                 // An imported scene has no file yet: everything is unsaved.
                 self.saved = files::new_scene();
                 // Not the last file saved or opened: this one, which has no file yet.
-                self.message = Some(format!(
+                self.message = Some(StatusMessage::done(format!(
                     "Imported {} (not saved yet), {summary}",
                     path.display()
-                ));
+                )));
                 if !warnings.is_empty() {
                     self.warning = Some(format!("Imported with warnings: {}", warnings.join("; ")));
                 }
             }
             Err(error) => self.error = Some(format!("{}: {error}", path.display())),
         }
+    }
+
+    /// Adds a Mesh object for the OBJ file at `path`, named after the file, in one undo
+    /// step. The scene refers to the file (relative to the scene's folder where it lies
+    /// under it, else in full) and never rewrites it; the preview reads it off this
+    /// thread and names any problem with it.
+    pub(super) fn import_obj(&mut self, path: &Path) {
+        let folder = self.path.as_deref().and_then(Path::parent);
+        let written = folder
+            .and_then(|folder| path.strip_prefix(folder).ok())
+            .unwrap_or(path);
+        let Some(text) = written.to_str() else {
+            self.error = Some(format!(
+                "{}: a scene file cannot hold this path (it is not UTF-8)",
+                path.display()
+            ));
+            return;
+        };
+        self.edit(SceneEdit::AddMesh(text.replace('\\', "/")));
+        self.message = Some(StatusMessage::done(format!(
+            "Added the mesh {}",
+            path.display()
+        )));
     }
 
     /// Saves to `path`, which becomes the scene's file; errors are shown. Returns
@@ -190,7 +215,7 @@ impl EditorApp {
                 self.isolation_memory = self.isolation_memory();
                 self.path = Some(path.to_owned());
                 self.recent.push(path);
-                self.message = Some(format!("Saved {}", path.display()));
+                self.message = Some(StatusMessage::done(format!("Saved {}", path.display())));
                 true
             }
             Err(error) => {
@@ -252,6 +277,8 @@ impl EditorApp {
             .unwrap_or_else(files::new_scene);
         self.replace_scene(*scene, source);
         self.saved = saved;
-        self.message = Some("Restored unsaved work from the last session".to_owned());
+        self.message = Some(StatusMessage::done(
+            "Restored unsaved work from the last session".to_owned(),
+        ));
     }
 }

@@ -11,7 +11,7 @@ use crate::ui::panels::inspector::{inspector_ui, take_field_notice};
 use crate::ui::panels::menu::{MenuState, menu_ui};
 use crate::ui::panels::notices::{Notice, Tone, notices_ui};
 use crate::ui::panels::outliner::outliner_ui;
-use crate::ui::panels::status_bar::{StatusInfo, status_bar_ui};
+use crate::ui::panels::status_bar::{StatusInfo, StatusMessage, status_bar_ui};
 use crate::ui::shortcuts::{help_window, shortcut_commands};
 use crate::ui::style::apply_style;
 use crate::ui::viewport::convergence_plot::convergence_plot_ui;
@@ -43,7 +43,7 @@ impl EditorApp {
         self.looking.start(&ctx);
         match self.looking.poll(&self.scene) {
             Some(Ok(command)) => self.commands.push(command),
-            Some(Err(message)) => self.message = Some(message),
+            Some(Err(message)) => self.message = Some(StatusMessage::done(message)),
             None => {}
         }
         self.input(&ctx);
@@ -168,7 +168,7 @@ impl EditorApp {
                 progress: self.preview.as_ref().and_then(PreviewLink::pass_progress),
                 error: self.preview.as_ref().and_then(PreviewLink::error),
                 autosave_error: self.autosave.error.as_deref(),
-                message: self.message.as_deref(),
+                message: self.message.as_ref(),
             };
             status_bar_ui(ui, &info);
         });
@@ -206,7 +206,7 @@ impl EditorApp {
                 self.focus_name = false;
                 // A typed value the field did not take as typed is said, not dropped.
                 if let Some(notice) = take_field_notice(ui.ctx()) {
-                    self.message = Some(notice);
+                    self.message = Some(StatusMessage::notice(notice));
                 }
             });
         egui::CentralPanel::no_frame().show(ui, |ui| {

@@ -36,6 +36,9 @@ pub enum SceneEdit {
     /// Adds a unit shape where the camera looks, upright and standing on the floor if
     /// there is one, with the first material (creating one if there is none).
     AddObject(Shape),
+    /// Adds a Mesh object for the OBJ file at this path (as the scene writes it), named
+    /// after the file.
+    AddMesh(String),
     /// Adds a light of a kind.
     AddLight(LightKind),
     /// Adds a grey material with a fresh name.
@@ -105,6 +108,10 @@ pub enum Command {
     ImportLegacyDialog,
     /// Import a legacy text scene (asks first if there are unsaved changes).
     ImportLegacy(PathBuf),
+    /// Show the Import OBJ dialog: the mesh picked joins the scene as a Mesh object.
+    ImportObjDialog,
+    /// Add a Mesh object for the OBJ file at this path (named after the file).
+    ImportObj(PathBuf),
     /// Show the Export PNG window.
     ShowExport,
     /// Show the keyboard shortcuts.

@@ -4,7 +4,7 @@
 use glam::DVec3;
 
 use super::{SceneEdit, Selection, placement};
-use crate::scene::{Light, LightKind, Material, Object, Scene};
+use crate::scene::{Light, LightKind, Material, Object, Scene, Shape};
 
 impl SceneEdit {
     /// Applies the edit; the selection follows added, duplicated and deleted items.
@@ -15,16 +15,17 @@ impl SceneEdit {
     pub fn apply(self, scene: &mut Scene, selection: &mut Selection) -> Result<(), String> {
         match self {
             SceneEdit::AddObject(shape) => {
-                let material = first_material(scene);
-                let name = unique_name(shape.name(), scene.objects.iter().map(|o| &o.name));
-                let transform = placement::new_object_transform(scene, &shape);
-                scene.objects.push(Object {
-                    name,
-                    shape,
-                    transform,
-                    material,
-                });
-                *selection = Selection::Object(scene.objects.len() - 1);
+                let base = shape.name().to_owned();
+                add_object(scene, selection, shape, &base);
+            }
+            SceneEdit::AddMesh(path) => {
+                let stem = std::path::Path::new(&path)
+                    .file_stem()
+                    .and_then(|s| s.to_str())
+                    .filter(|s| !s.trim().is_empty())
+                    .unwrap_or("mesh")
+                    .to_owned();
+                add_object(scene, selection, Shape::Mesh { path }, &stem);
             }
             SceneEdit::AddLight(kind) => {
                 scene.lights.push(new_light(kind));
@@ -92,6 +93,21 @@ pub fn repair_selection(scene: &Scene, selection: &mut Selection) {
     if !valid {
         *selection = Selection::None;
     }
+}
+
+/// Adds an object of `shape` named `base` (or `base 2`, ... where taken), with the first
+/// material and the placement of a new object, and selects it.
+fn add_object(scene: &mut Scene, selection: &mut Selection, shape: Shape, base: &str) {
+    let material = first_material(scene);
+    let name = unique_name(base, scene.objects.iter().map(|o| &o.name));
+    let transform = placement::new_object_transform(scene, &shape);
+    scene.objects.push(Object {
+        name,
+        shape,
+        transform,
+        material,
+    });
+    *selection = Selection::Object(scene.objects.len() - 1);
 }
 
 /// `base` if unused, else `base 2`, `base 3`...

@@ -27,6 +27,8 @@ pub enum DialogPurpose {
     ExportPng,
     /// Compare with Image > Browse… (a PNG or PPM).
     CompareImage,
+    /// File > Import OBJ Mesh…
+    ImportObj,
 }
 
 impl DialogPurpose {
@@ -40,6 +42,7 @@ impl DialogPurpose {
             DialogPurpose::ImportLegacy => "Import legacy scene",
             DialogPurpose::ExportPng => "Export PNG to (.png)",
             DialogPurpose::CompareImage => "Compare with image",
+            DialogPurpose::ImportObj => "Import OBJ mesh (.obj)",
         }
     }
 
@@ -55,6 +58,7 @@ impl DialogPurpose {
             DialogPurpose::OpenScene => Some(("raylab or course scene", &["ron", "txt"])),
             DialogPurpose::SaveSceneAs => Some(("raylab scene", &["ron"])),
             DialogPurpose::ExportPng => Some(("PNG image", &["png"])),
+            DialogPurpose::ImportObj => Some(("Wavefront OBJ mesh", &["obj"])),
             DialogPurpose::ImportLegacy | DialogPurpose::CompareImage => None,
         }
     }
@@ -223,10 +227,15 @@ fn in_app_dialog(
     file_name: &str,
     ctx: &egui::Context,
 ) -> egui_file::FileDialog {
+    // egui_file's open mode takes the file selected in the list and ignores a name typed
+    // in its field (Open then does nothing, or opens the other file); its save mode takes
+    // the typed name, and a click in the list fills the field. So every in-app dialog is
+    // a save-mode one, its button named for what it does; a typed name that does not
+    // exist is then refused by the open itself, with a message.
     let mut dialog = if purpose.is_save() {
         egui_file::FileDialog::save_file().default_filename(file_name)
     } else {
-        egui_file::FileDialog::open_file()
+        egui_file::FileDialog::save_file().save_button_text("Open".into())
     };
     let size = ctx.content_rect().size() * 0.85;
     dialog = dialog

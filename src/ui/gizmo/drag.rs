@@ -18,7 +18,7 @@ use crate::ui::commands::{Command, Selection};
 use crate::ui::gizmo::edit::{DragGeometry, Grabbed, drag_edit, grab};
 use crate::ui::gizmo::hit::handle_shapes;
 use crate::ui::gizmo::lights::{dim_unlit_markers, marker_toggles_ui};
-use crate::ui::gizmo::overlay::{Part, gizmo_elements};
+use crate::ui::gizmo::overlay::{Element, Part, gizmo_elements};
 use crate::ui::gizmo::paint::{paint_elements, paint_matrix_hint, paint_readout};
 use crate::ui::gizmo::projection::ViewMapping;
 use crate::ui::gizmo::toolbar::{ToolbarAction, gizmo_modes_ui};
@@ -77,6 +77,27 @@ pub struct GizmoInput<'a> {
     pub isolation: &'a Isolation,
     /// Inspect mode: only navigation, no handle.
     pub navigate_only: bool,
+    /// Where the gizmo is drawn and grabbed: the viewport around the picture, so a
+    /// light's arrows near an edge of the picture run on into the margin, whole.
+    pub canvas: Rect,
+}
+
+/// A spot light's tip or a directional light's tail being dragged is drawn under the
+/// cursor: the light aims through the point there (see
+/// [`crate::gizmo::spot::aim_from_tip_drag`]), which may lie off the sphere the handle
+/// sits on between drags.
+fn follow_the_cursor(elements: &mut [Element], drag: Option<&Drag>, cursor: Option<Pos2>) {
+    let (Some(Drag::Handle { handle, .. }), Some(cursor)) = (drag, cursor) else {
+        return;
+    };
+    if !matches!(handle, HandleId::SpotTip | HandleId::Aim) {
+        return;
+    }
+    for element in elements.iter_mut().filter(|e| e.handle == Some(*handle)) {
+        if let Part::Dot(at, _) = &mut element.part {
+            *at = cursor;
+        }
+    }
 }
 
 /// The target a handle drag started now would have.
@@ -105,6 +126,7 @@ pub fn gizmo_ui(
         selection,
         isolation,
         navigate_only,
+        canvas,
     } = input;
     let picture = *view.screen_from_image.to();
     let ctx = ui.ctx().clone();
@@ -114,6 +136,11 @@ pub fn gizmo_ui(
 
     let mut elements = gizmo_elements(scene, selection, state.mode, view);
     dim_unlit_markers(&mut elements, isolation);
+    follow_the_cursor(
+        &mut elements,
+        state.drag.as_ref(),
+        ctx.input(|i| i.pointer.latest_pos()),
+    );
     let shapes = handle_shapes(&elements);
     let hit_shapes: Vec<HandleShape> = shapes.iter().map(|(s, _)| *s).collect();
     // A marker or handle under the mode buttons must not take their presses.
@@ -159,11 +186,10 @@ pub fn gizmo_ui(
         _ => None,
     };
     let hot = dragged_handle.or_else(|| response.hover_pos().and_then(pick));
-    let painter = ui.painter_at(picture);
+    let canvas = canvas.union(picture);
+    let painter = ui.painter_at(canvas);
     paint_elements(&painter, &elements, hot);
-    marker_toggles_ui(
-        ui, picture, &elements, scene, selection, isolation, commands,
-    );
+    marker_toggles_ui(ui, canvas, &elements, scene, selection, isolation, commands);
     paint_hints(&painter, &state, now, scene, selection, &elements, view);
     set_cursor(&ctx, cursor(state.drag.as_ref().map(Drag::dragging), hot));
 

@@ -7,7 +7,7 @@ use glam::DVec3;
 use crate::gizmo::HandleId;
 use crate::gizmo::snap::{ROTATE_STEP_DEG, SCALE_STEP, TRANSLATE_STEP, snap};
 use crate::gizmo::spot::{
-    MAX_ANGLE_DEG, MIN_ANGLE_DEG, aim_from_tip_drag, angle_from_rim_drag, rim_radial,
+    MAX_ANGLE_DEG, MIN_ANGLE_DEG, aim_from_tip_drag, angle_from_rim_drag, rim_radial, tip_point,
 };
 use crate::gizmo::transform_drag::{
     TranslateHandle, euler_ring_axes, rotate_drag, scale_drag, translate_drag,
@@ -192,7 +192,8 @@ fn light_drag(
             },
             HandleId::SpotTip,
         ) => {
-            let aim = aim_from_tip_drag(*position, geometry.cone_length, now)?;
+            let start_tip = tip_point(*position, *direction, geometry.cone_length);
+            let aim = aim_from_tip_drag(*position, start_tip, geometry.eye, now)?;
             *direction = aim * direction.length().max(f64::MIN_POSITIVE);
             format_direction(aim)
         }
@@ -217,7 +218,8 @@ fn light_drag(
         (Light::Directional { direction, .. }, HandleId::Aim) => {
             let (anchor, length) = geometry.sun;
             // The handle is the arrow's tail: the light comes from there.
-            let tail = aim_from_tip_drag(anchor, length, now)?;
+            let start_tail = anchor - direction.normalize() * length;
+            let tail = aim_from_tip_drag(anchor, start_tail, geometry.eye, now)?;
             *direction = -tail * direction.length().max(f64::MIN_POSITIVE);
             format_direction(-tail)
         }
@@ -318,19 +320,22 @@ mod tests {
         let scene = scene();
         let camera = PinholeCamera::new(&scene.camera, 800, 600);
         let light = scene.lights[2].clone();
+        let Light::Directional { direction: d0, .. } = light else {
+            panic!("light 3 is directional");
+        };
         let grabbed = Grabbed::Light(2, light);
-        let wanted = DVec3::new(-1.0, -1.0, -0.5).normalize();
-        // The tail on the side of the sphere facing the camera (the one a drag reaches).
-        let tail = scene.camera.look_at - wanted;
+        let geometry = geometry(&scene);
+        let (anchor, length) = geometry.sun;
+        // The cursor over a point of the plane through the tail where the drag started,
+        // facing the eye, off the sphere the tail sits on between drags.
+        let start_tail = anchor - d0.normalize() * length;
+        let (u, v) = (geometry.eye - start_tail)
+            .normalize()
+            .any_orthonormal_pair();
+        let tail = start_tail + 0.4 * length * u - 0.7 * length * v;
+        let wanted = -(tail - anchor).normalize();
         let ray = camera.ray(camera.project(tail).unwrap());
-        let edit = drag_edit(
-            HandleId::Aim,
-            &grabbed,
-            &geometry(&scene),
-            &ray,
-            &ray,
-            false,
-        );
+        let edit = drag_edit(HandleId::Aim, &grabbed, &geometry, &ray, &ray, false);
         let Some(DragEdit {
             edit: SceneEdit::SetLight(2, Light::Directional { direction, .. }),
             ..

@@ -3,7 +3,7 @@
 //! ones), a selected spotlight's cone with its tip and rim handles, and a directional
 //! light's arrow with its aim handle.
 
-use egui::{Color32, Pos2, Rect, UiBuilder, Vec2};
+use egui::{Color32, CornerRadius, Pos2, Rect, UiBuilder, Vec2};
 use glam::DVec3;
 
 use super::overlay::{CONE_COLOUR, Element, Part, dot, line};
@@ -100,18 +100,19 @@ fn marker_positions(elements: &[Element]) -> Vec<(usize, Pos2)> {
 
 /// Mute and solo buttons beside the marker of the selected light and of every muted or
 /// solo one (so the state shows in the picture); Ctrl- or Shift-click on solo adds.
+/// `canvas` is where the gizmo is drawn (the picture and the margin around it).
 pub(super) fn marker_toggles_ui(
     ui: &mut egui::Ui,
-    picture: Rect,
+    canvas: Rect,
     elements: &[Element],
     scene: &Scene,
     selection: &Selection,
     isolation: &Isolation,
     commands: &mut Vec<Command>,
 ) {
-    let builder = UiBuilder::new().max_rect(picture);
+    let builder = UiBuilder::new().max_rect(canvas);
     ui.scope_builder(builder, |ui| {
-        ui.set_clip_rect(picture);
+        ui.set_clip_rect(canvas);
         for (index, at) in marker_positions(elements) {
             let muted = isolation.muted_lights.contains(&index);
             let solo = isolation.solo_lights.contains(&index);
@@ -125,6 +126,12 @@ pub(super) fn marker_toggles_ui(
             let size = Vec2::new(20.0, 18.0);
             let mute_rect = Rect::from_min_size(at + Vec2::new(9.0, -size.y - 4.0), size);
             let solo_rect = mute_rect.translate(Vec2::new(size.x + 2.0, 0.0));
+            // On a backing of their own: over a bright picture, or over the "not the full
+            // picture" marker, the letters stay readable and nothing shows through.
+            for rect in [mute_rect, solo_rect] {
+                ui.painter()
+                    .rect_filled(rect, CornerRadius::same(3), Color32::from_gray(28));
+            }
             let mute = egui::Button::selectable(muted, "M").small();
             if ui
                 .put(mute_rect, mute)

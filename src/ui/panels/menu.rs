@@ -89,6 +89,14 @@ fn file_menu_ui(ui: &mut Ui, state: &MenuState<'_>, commands: &mut Vec<Command>)
     );
     entry_ui(
         ui,
+        "Import OBJ Mesh…",
+        "",
+        true,
+        Command::ImportObjDialog,
+        commands,
+    );
+    entry_ui(
+        ui,
         "Export PNG…",
         "Export PNG…",
         true,

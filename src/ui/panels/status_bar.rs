@@ -25,7 +25,37 @@ pub struct StatusInfo<'a> {
     /// Why the last autosave failed, while it keeps failing (unsaved work is at risk).
     pub autosave_error: Option<&'a str>,
     /// The latest message (e.g. "Saved"), if any.
-    pub message: Option<&'a str>,
+    pub message: Option<&'a StatusMessage>,
+}
+
+/// A message for the status bar: something done ("Saved …"), or a notice about a value
+/// the user gave that was not taken as given (held to a range, refused, out of reach).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct StatusMessage {
+    /// The words.
+    pub text: String,
+    /// Whether it is a notice (amber) rather than news of something done (green).
+    pub notice: bool,
+}
+
+impl StatusMessage {
+    /// News of something done.
+    #[must_use]
+    pub fn done(text: impl Into<String>) -> Self {
+        Self {
+            text: text.into(),
+            notice: false,
+        }
+    }
+
+    /// A notice about a value not taken as given.
+    #[must_use]
+    pub fn notice(text: impl Into<String>) -> Self {
+        Self {
+            text: text.into(),
+            notice: true,
+        }
+    }
 }
 
 /// Shows the status bar.
@@ -61,16 +91,27 @@ pub fn status_bar_ui(ui: &mut Ui, info: &StatusInfo<'_>) {
                     .desired_height(10.0),
             );
         }
+        // The message takes what room is left, cut short with its whole text on hover:
+        // a long one (an import's summary) never runs over the counts.
         ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
             let red = Color32::from_rgb(255, 120, 110);
+            let shown = |ui: &mut Ui, text: &str, colour: Color32| {
+                ui.add(egui::Label::new(RichText::new(text).color(colour)).truncate())
+                    .on_hover_text(text)
+            };
             if let Some(error) = info.autosave_error {
-                ui.label(RichText::new(error).color(red)).on_hover_text(
+                shown(ui, error, red).on_hover_text(
                     "Unsaved changes are not protected against a crash until autosave works",
                 );
             } else if let Some(error) = info.error {
-                ui.label(RichText::new(error).color(red));
+                shown(ui, error, red);
             } else if let Some(message) = info.message {
-                ui.label(RichText::new(message).color(Color32::from_rgb(140, 200, 140)));
+                let colour = if message.notice {
+                    crate::ui::style::ACCENT
+                } else {
+                    Color32::from_rgb(140, 200, 140)
+                };
+                shown(ui, &message.text, colour);
             }
         });
     });

@@ -25,6 +25,8 @@ pub struct RayPathSettings {
     pub shadow: bool,
     /// Draw the mirror bounces.
     pub reflection: bool,
+    /// Draw the transmitted rays (refracted and internally reflected).
+    pub transmission: bool,
     /// Draw the normals at the hits.
     pub normals: bool,
     /// The inspected pixel, or its row or column.
@@ -39,6 +41,7 @@ impl Default for RayPathSettings {
             primary: true,
             shadow: true,
             reflection: true,
+            transmission: true,
             normals: true,
             span: RaySpan::Pixel,
             pinned: Vec::new(),

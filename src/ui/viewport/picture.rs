@@ -99,6 +99,13 @@ pub fn viewport_ui(
     let aspect = shown.width as f32 / shown.height.max(1) as f32;
     let picture = letterbox(region, aspect);
     let view = ViewMapping::new(&shown, picture);
+    // The margin around the picture takes gizmo and camera drags (a handle drawn past the
+    // picture's edge is grabbed there); the picture, added after, takes its own area.
+    let margin = ui.interact(
+        outer,
+        egui::Id::unique("raylab viewport margin"),
+        Sense::click_and_drag(),
+    );
     let response = ui.allocate_rect(picture, Sense::click_and_drag());
     response.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Image, true, VIEWPORT_LABEL));
     let painter = ui.painter_at(outer);
@@ -115,13 +122,14 @@ pub fn viewport_ui(
     }
     let gizmo_took_click = crate::ui::gizmo::drag::gizmo_ui(
         ui,
-        &response,
+        &response.union(margin),
         &view,
         GizmoInput {
             scene,
             selection: input.selection,
             isolation: input.isolation,
             navigate_only: input.settings.inspect,
+            canvas: outer,
         },
         commands,
     );

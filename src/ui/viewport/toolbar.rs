@@ -1,7 +1,8 @@
-//! The toolbar over the viewport: the five term switches, a solo choice, the view picker,
-//! the NaN guard, the pixel inspector's mode and the convergence plot, wrapped onto as
-//! many rows as the viewport's width needs. It edits editor
-//! state ([`PreviewSettings`]), not the scene: nothing here is an undo step.
+//! The toolbar over the viewport: the six term switches, a solo choice and the view
+//! picker (wrapped onto more rows only where the viewport's width needs it), then a row
+//! that is always there: the pixel inspector's mode, the convergence plot, the NaN guard
+//! and what is isolated. It edits editor state ([`PreviewSettings`]), not the scene:
+//! nothing here is an undo step.
 
 use egui::{Align, Color32, CornerRadius, Layout, Pos2, Rect, RichText, Shape, Stroke, UiBuilder};
 
@@ -48,8 +49,6 @@ pub fn toolbar_ui(
             terms_ui(ui, &mut edited);
             ui.separator();
             view_ui(ui, &mut edited);
-            ui.separator();
-            guard_ui(ui, &mut edited, non_finite);
         })
         .response
         .rect;
@@ -72,6 +71,8 @@ pub fn toolbar_ui(
                 );
             ui.toggle_value(&mut edited.show_convergence, "Convergence")
                 .on_hover_text("Plot how much each preview pass still changes the picture");
+            ui.separator();
+            guard_ui(ui, &mut edited, non_finite);
             if let Some(note) = isolated {
                 ui.separator();
                 isolation_marker_ui(ui, note, commands);
@@ -138,7 +139,7 @@ pub fn non_finite_text(count: u64) -> String {
     format!("{count} non-finite sample{s}")
 }
 
-/// The five switches and the solo choice.
+/// The six switches and the solo choice.
 fn terms_ui(ui: &mut egui::Ui, settings: &mut PreviewSettings) {
     for term in Term::ALL {
         let mut on = settings.switches.is_on(term);
@@ -200,6 +201,7 @@ pub fn term_tooltip(term: Term) -> &'static str {
         Term::Specular => "Off: no Phong highlights (ks L max(0, r.v)^s); matte surfaces only",
         Term::Shadows => "Off: no shadow rays; every light reaches every point it faces",
         Term::Reflection => "Off: no mirror rays; mirrors show only their own colour",
+        Term::Transmission => "Off: no refracted rays; glass shows only its own colour",
     }
 }
 
@@ -215,6 +217,7 @@ pub fn solo_tooltip(term: Term) -> &'static str {
              the same picture as the shadow-mask view, kept here beside the other terms"
         }
         Term::Reflection => "Only what mirrors add: km x the reflected colour",
+        Term::Transmission => "Only what glass lets through: kt x the refracted colour",
     }
 }
 

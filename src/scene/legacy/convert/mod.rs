@@ -214,7 +214,6 @@ impl<'e> Converter<'e> {
         let camera = self.camera();
         let (materials, objects) = self.materials_and_objects();
         let lights = self.scene_lights();
-        self.warn_not_drawn_yet(&materials, &lights);
         let scene = Scene {
             format: FORMAT_VERSION,
             camera,
@@ -231,42 +230,6 @@ impl<'e> Converter<'e> {
         Converted {
             scene,
             dialect: self.dialect,
-        }
-    }
-
-    /// Says which imported features the tracer does not draw yet, so a picture without
-    /// them is not a surprise: transmission (`Opacity`) and sphere lights (`Radius`).
-    fn warn_not_drawn_yet(
-        &mut self,
-        materials: &std::collections::BTreeMap<String, crate::scene::Material>,
-        lights: &[crate::scene::Light],
-    ) {
-        let glass: Vec<&str> = materials
-            .iter()
-            .filter(|(_, m)| m.transmission != glam::DVec3::ZERO)
-            .map(|(name, _)| name.as_str())
-            .collect();
-        if !glass.is_empty() {
-            self.errors.warn_file(format!(
-                "materials that let light through (`Opacity`: {}) are imported with their \
-                 `transmission` and `ior`, but raylab does not draw transmission yet: they \
-                 render opaque",
-                glass.join(", ")
-            ));
-        }
-        let soft = lights
-            .iter()
-            .filter(|l| match l {
-                crate::scene::Light::Point { radius, .. }
-                | crate::scene::Light::Spot { radius, .. } => *radius > 0.0,
-                _ => false,
-            })
-            .count();
-        if soft > 0 {
-            self.errors.warn_file(format!(
-                "{soft} light(s) with a `Radius` are imported as sphere lights, but raylab \
-                 does not draw soft shadows yet: their shadows are hard, cast from the centre"
-            ));
         }
     }
 

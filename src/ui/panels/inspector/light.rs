@@ -3,8 +3,8 @@
 use egui::Ui;
 use glam::DVec3;
 
-use super::fields::{colour_row_ui, number_row_ui, vec3_row_ui};
-use super::limits::{Limits, SPOT_ANGLE_DEG};
+use super::fields::{colour_row_ui, number_row_ui, vec3_row_ui, whole_number_row_ui};
+use super::limits::{LIGHT_RADIUS, LIGHT_SAMPLES, Limits, SPOT_ANGLE_DEG};
 use super::{grid_ui, heading_ui};
 use crate::scene::Light;
 use crate::ui::commands::{Command, SceneEdit};
@@ -25,9 +25,11 @@ pub(super) fn light_ui(ui: &mut Ui, index: usize, light: &Light, commands: &mut 
                 position,
                 colour,
                 intensity,
-                ..
+                radius,
+                samples,
             } => {
                 vec3_row_ui(ui, "position", position, placement_speed, any);
+                sphere_rows_ui(ui, radius, samples);
                 (colour, intensity)
             }
             Light::Directional {
@@ -44,11 +46,13 @@ pub(super) fn light_ui(ui: &mut Ui, index: usize, light: &Light, commands: &mut 
                 angle_deg,
                 colour,
                 intensity,
-                ..
+                radius,
+                samples,
             } => {
                 vec3_row_ui(ui, "position", position, placement_speed, any);
                 vec3_row_ui(ui, "direction", direction, 0.01, any);
                 number_row_ui(ui, "angle", angle_deg, 0.2, SPOT_ANGLE_DEG);
+                sphere_rows_ui(ui, radius, samples);
                 (colour, intensity)
             }
         };
@@ -57,6 +61,13 @@ pub(super) fn light_ui(ui: &mut Ui, index: usize, light: &Light, commands: &mut 
     if edited != *light {
         commands.push(Command::Edit(SceneEdit::SetLight(index, edited)));
     }
+}
+
+/// A Point or Spot light's sphere: its radius (0: a point, hard shadows) and the shadow
+/// rays each shading point casts at it.
+fn sphere_rows_ui(ui: &mut Ui, radius: &mut f64, samples: &mut u32) {
+    number_row_ui(ui, "radius", radius, 0.01, LIGHT_RADIUS);
+    whole_number_row_ui(ui, "shadow rays", samples, 0.2, LIGHT_SAMPLES);
 }
 
 /// Colour and intensity, which every light kind has.

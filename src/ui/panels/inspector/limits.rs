@@ -5,7 +5,9 @@
 
 use std::ops::RangeInclusive;
 
-pub(super) use crate::scene::{MAX_DEPTH, MAX_SAMPLES_PER_PIXEL, MAX_SPOT_ANGLE_DEG};
+pub(super) use crate::scene::{
+    MAX_DEPTH, MAX_IOR, MAX_LIGHT_SAMPLES, MAX_SAMPLES_PER_PIXEL, MAX_SPOT_ANGLE_DEG,
+};
 
 /// The numbers a field takes: `min..=max`, minus the open ends and (for scales) zero.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -123,6 +125,19 @@ pub(super) const TUBE_INNER: Limits = Limits {
     ..Limits::closed(0.0, 1.0)
 };
 
+/// An index of refraction: (0, [`MAX_IOR`]], as the validator takes it (1: air, no
+/// bending; below 1 is allowed, as for a bubble of air in glass).
+pub(super) const IOR: Limits = Limits {
+    min_open: true,
+    ..Limits::closed(0.0, MAX_IOR)
+};
+
+/// A sphere light's radius: 0 (a point) or more.
+pub(super) const LIGHT_RADIUS: Limits = Limits::NON_NEGATIVE;
+
+/// A sphere light's shadow rays per shading point.
+pub(super) const LIGHT_SAMPLES: RangeInclusive<u32> = 1..=MAX_LIGHT_SAMPLES;
+
 /// Output width and height in pixels.
 pub(super) const IMAGE_SIDE: RangeInclusive<u32> = 1..=crate::scene::MAX_IMAGE_SIDE;
 
@@ -152,5 +167,8 @@ mod tests {
         );
         assert_eq!(SPOT_ANGLE_DEG.take(180.0), Some(180.0));
         assert_eq!(SPOT_ANGLE_DEG.take(0.0), None);
+        assert_eq!(IOR.take(0.0), None, "an index of 0 is refused");
+        assert_eq!(IOR.take(1e9), Some(MAX_IOR));
+        assert_eq!(LIGHT_RADIUS.take(-0.5), Some(0.0));
     }
 }

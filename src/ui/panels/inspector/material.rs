@@ -3,7 +3,7 @@
 use egui::Ui;
 
 use super::fields::{colour_row_ui, number_row_ui};
-use super::limits::SHININESS;
+use super::limits::{IOR, SHININESS};
 use super::{grid_ui, heading_ui};
 use crate::scene::*;
 use crate::ui::commands::{Command, SceneEdit};
@@ -59,4 +59,6 @@ pub(super) fn material_rows_ui(ui: &mut Ui, material: &mut Material) {
     colour_row_ui(ui, "specular", &mut material.specular);
     number_row_ui(ui, "shininess", &mut material.shininess, 0.5, SHININESS);
     colour_row_ui(ui, "mirror", &mut material.mirror);
+    colour_row_ui(ui, "transmission", &mut material.transmission);
+    number_row_ui(ui, "ior", &mut material.ior, 0.01, IOR);
 }

@@ -8,6 +8,7 @@
 mod compared;
 pub mod link;
 mod placement;
+mod report_view;
 mod window;
 
 use crate::scene::{Light, Scene};
@@ -18,9 +19,9 @@ use crate::trace::{
 use crate::ui::state::light_label;
 
 pub use compared::{OTHER_VALUE_LABEL, RAYLAB_VALUE_LABEL, compared_rows};
+pub use report_view::{FINAL_COLOUR_LABEL, isolation_lines};
 pub use window::{
-    FINAL_COLOUR_LABEL, InspectorView, MAX_WIDTH, PixelAnchor, inspector_window_id,
-    isolation_lines, pixel_inspector_ui, switches_text,
+    InspectorView, MAX_WIDTH, PixelAnchor, inspector_window_id, pixel_inspector_ui, switches_text,
 };
 
 /// One pixel inspected in one scene with one set of switches.

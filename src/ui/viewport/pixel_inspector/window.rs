@@ -1,20 +1,17 @@
-//! The pixel inspector's window: the report laid out as text, bounce by bounce, with
-//! every light of the scene and what it did. It opens beside the inspected pixel (not
-//! over it), at its top for each new pixel, and the wheel scrolls it anywhere over it.
+//! The pixel inspector's window (its contents are laid out in `report_view.rs`). It
+//! opens beside the inspected pixel (not over it), at its top for each new pixel, and the
+//! wheel scrolls it anywhere over it.
 
 use egui::{Color32, Id, Pos2, Rect, RichText, Vec2};
-use glam::DVec3;
 
+use super::PixelInspection;
 use super::placement::Placement;
-use super::{InspectedBounce, InspectedLight, InspectedPixel, PixelInspection};
-use crate::trace::BounceReport;
+use super::report_view::pixel_ui;
 use crate::ui::commands::Command;
 use crate::ui::state::RayPathSettings;
 
 pub use crate::trace::switches_text;
 
-/// Accessible name of the inspector window's final colour line.
-pub const FINAL_COLOUR_LABEL: &str = "final colour";
 /// The window's width and height, in points.
 const WIDTH: f32 = 400.0;
 const HEIGHT: f32 = 460.0;
@@ -176,166 +173,6 @@ fn contents_ui(ui: &mut egui::Ui, view: &InspectorView, commands: &mut Vec<Comma
             ui.colored_label(Color32::from_rgb(255, 120, 110), error);
         }
     }
-}
-
-fn pixel_ui(ui: &mut egui::Ui, pixel: &InspectedPixel) {
-    for line in isolation_lines(pixel) {
-        ui.label(RichText::new(line).color(crate::ui::style::ACCENT));
-    }
-    let report = &pixel.report;
-    egui::Grid::new("final colour")
-        .num_columns(2)
-        .show(ui, |ui| {
-            ui.label(FINAL_COLOUR_LABEL);
-            ui.horizontal(|ui| {
-                swatch_ui(ui, report.clamped);
-                ui.monospace(colour_text(report.clamped));
-            });
-            ui.end_row();
-            ui.label("before clamping");
-            ui.monospace(colour_text(report.unclamped));
-            ui.end_row();
-        });
-    for (bounce, names) in report.bounces.iter().zip(&pixel.bounces) {
-        let title = match bounce.depth {
-            0 => "Camera ray".to_owned(),
-            d => format!("Reflection, depth {d}"),
-        };
-        egui::CollapsingHeader::new(RichText::new(title).strong())
-            .id_salt(("bounce", bounce.depth))
-            .default_open(true)
-            .show(ui, |ui| bounce_ui(ui, bounce, names));
-    }
-}
-
-fn bounce_ui(ui: &mut egui::Ui, bounce: &BounceReport, names: &InspectedBounce) {
-    let (Some(hit), Some(hit_names)) = (&bounce.hit, &names.hit) else {
-        egui::Grid::new(("miss", bounce.depth))
-            .num_columns(2)
-            .show(ui, |ui| {
-                ui.label("hit");
-                ui.label("nothing (background)");
-                ui.end_row();
-                number_row_ui(ui, "colour", colour_text(bounce.colour));
-            });
-        return;
-    };
-    egui::Grid::new(("hit", bounce.depth))
-        .num_columns(2)
-        .show(ui, |ui| {
-            ui.label("hit");
-            ui.label(RichText::new(&hit_names.object).strong());
-            ui.end_row();
-            ui.label("material");
-            ui.label(&hit_names.material);
-            ui.end_row();
-            number_row_ui(ui, "t", format!("{:.6}", hit.t));
-            number_row_ui(ui, "point", vector_text(hit.p));
-            number_row_ui(ui, "normal", vector_text(hit.n));
-            number_row_ui(ui, "ambient", colour_text(bounce.ambient));
-        });
-    for light in &names.lights {
-        light_ui(ui, light, bounce.depth);
-    }
-    if names.lights.is_empty() {
-        ui.weak("the scene has no lights");
-    }
-    egui::Grid::new(("result", bounce.depth))
-        .num_columns(2)
-        .show(ui, |ui| {
-            // One colour per row: all three on one line would widen the window over
-            // the pixel it sits beside.
-            match bounce.reflection {
-                Some((km, reflected)) => {
-                    number_row_ui(ui, "mirror km", colour_text(km));
-                    number_row_ui(ui, "reflected", colour_text(reflected));
-                    number_row_ui(ui, "km × reflected", colour_text(km * reflected));
-                }
-                None => {
-                    ui.label("reflection");
-                    ui.weak("no mirror ray");
-                    ui.end_row();
-                }
-            }
-            if let Some(unclamped) = bounce.unclamped {
-                number_row_ui(ui, "before each-ray clamp", colour_text(unclamped));
-            }
-            number_row_ui(ui, "colour", colour_text(bounce.colour));
-        });
-}
-
-/// One light: its name, what it did (green when it added light), and the numbers.
-fn light_ui(ui: &mut egui::Ui, light: &InspectedLight, depth: u32) {
-    ui.horizontal(|ui| {
-        ui.label(RichText::new(&light.label).underline());
-        let colour = if light.adds_light {
-            Color32::from_rgb(140, 220, 140)
-        } else {
-            Color32::from_gray(160)
-        };
-        ui.label(RichText::new(&light.outcome).color(colour));
-    });
-    let Some(record) = &light.record else {
-        return;
-    };
-    egui::Grid::new(("light", depth, light.scene_index))
-        .num_columns(2)
-        .show(ui, |ui| {
-            number_row_ui(ui, "strength", colour_text(record.strength));
-            number_row_ui(ui, "n·l", format!("{:.4}", record.n_dot_l));
-            ui.label("shadow ray");
-            ui.label(match (record.shadow_ray, record.blocked_by) {
-                (Some(_), Some(_)) => "blocked",
-                (Some(_), None) => "cast, reaches the light",
-                (None, _) if record.n_dot_l <= 0.0 => "not cast (light behind the surface)",
-                (None, _) => "not cast (shadows off)",
-            });
-            ui.end_row();
-            number_row_ui(ui, "diffuse", colour_text(record.diffuse));
-            number_row_ui(ui, "specular", colour_text(record.specular));
-        });
-}
-
-/// What the isolation switches leave out of every bounce, one line each:
-/// "off (muted or not solo): Point light 2" and "hidden (rays pass through): red ball".
-#[must_use]
-pub fn isolation_lines(pixel: &InspectedPixel) -> Vec<String> {
-    let mut lines = Vec::new();
-    if !pixel.lights_off.is_empty() {
-        lines.push(format!(
-            "off (muted or not solo): {}",
-            pixel.lights_off.join(", ")
-        ));
-    }
-    if !pixel.hidden_objects.is_empty() {
-        lines.push(format!(
-            "hidden (rays pass through): {}",
-            pixel.hidden_objects.join(", ")
-        ));
-    }
-    lines
-}
-
-/// One grid row: a label and a number in monospace.
-fn number_row_ui(ui: &mut egui::Ui, label: &str, value: String) {
-    ui.label(label);
-    ui.monospace(value);
-    ui.end_row();
-}
-
-fn swatch_ui(ui: &mut egui::Ui, colour: DVec3) {
-    let (rect, _) = ui.allocate_exact_size(egui::vec2(14.0, 14.0), egui::Sense::hover());
-    let [r, g, b] = colour.as_vec3().to_array().map(crate::trace::encode_linear);
-    ui.painter()
-        .rect_filled(rect, 2.0, Color32::from_rgb(r, g, b));
-}
-
-fn colour_text(c: DVec3) -> String {
-    format!("({:.4}, {:.4}, {:.4})", c.x, c.y, c.z)
-}
-
-fn vector_text(v: DVec3) -> String {
-    format!("({:.4}, {:.4}, {:.4})", v.x, v.y, v.z)
 }
 
 #[cfg(test)]

@@ -41,6 +41,7 @@ pub fn ray_path_controls_ui(
                 (&mut edited.primary, "camera", "primary rays"),
                 (&mut edited.shadow, "shadow", "shadow rays"),
                 (&mut edited.reflection, "mirror", "reflection rays"),
+                (&mut edited.transmission, "glass", "transmitted rays"),
                 (&mut edited.normals, "normals", "normals"),
             ];
             for (on, text, name) in toggles {

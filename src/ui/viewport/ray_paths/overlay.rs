@@ -97,6 +97,9 @@ fn shown(settings: &RayPathSettings, kind: SegmentKind) -> bool {
         SegmentKind::Ray(RayKind::Primary) => settings.primary,
         SegmentKind::Ray(RayKind::Shadow) | SegmentKind::Unreached(_) => settings.shadow,
         SegmentKind::Ray(RayKind::Reflection) => settings.reflection,
+        SegmentKind::Ray(RayKind::Refraction | RayKind::InternalReflection) => {
+            settings.transmission
+        }
         SegmentKind::Normal => settings.normals,
     }
 }
@@ -136,6 +139,8 @@ fn colour(segment: &ScreenSegment) -> Color32 {
     let c = match (segment.segment.kind, segment.segment.end) {
         (SegmentKind::Ray(RayKind::Primary), _) => Color32::from_rgb(245, 245, 245),
         (SegmentKind::Ray(RayKind::Reflection), _) => Color32::from_rgb(80, 220, 255),
+        (SegmentKind::Ray(RayKind::Refraction), _) => Color32::from_rgb(200, 130, 255),
+        (SegmentKind::Ray(RayKind::InternalReflection), _) => Color32::from_rgb(255, 120, 220),
         (SegmentKind::Ray(RayKind::Shadow), SegmentEnd::Blocked) => Color32::from_rgb(255, 85, 75),
         (SegmentKind::Ray(RayKind::Shadow), _) => Color32::from_rgb(255, 214, 80),
         (SegmentKind::Unreached(_), _) => Color32::from_gray(165),

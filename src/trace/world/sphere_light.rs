@@ -1,0 +1,138 @@
+//! Sphere lights (SCENE_FORMAT.md, "Sphere lights"): a Point or Spot light with a radius
+//! is seen from a shading point as a disc through its centre, facing the point; its
+//! visibility is the fraction of `samples` shadow rays, aimed at stratified points of
+//! that disc, that reach it. Strength and direction stay the centre's.
+//!
+//! The points are an Owen-scrambled Sobol sequence (`sobol_burley`, as the pixel samples)
+//! mapped to the disc by Shirley and Chiu's concentric map, which keeps the strata's
+//! areas. The scramble is seeded by the shading point itself, so each pixel sample (its
+//! own point on the surface) uses other light points and the progressive preview
+//! converges to the soft shadow, while the same point always gets the same answer.
+
+use glam::{DVec2, DVec3};
+
+/// A light's sphere: its radius and how many shadow rays each shading point casts.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SphereLight {
+    /// The sphere's radius (> 0).
+    pub radius: f64,
+    /// Shadow rays per shading point (1 to `MAX_LIGHT_SAMPLES`).
+    pub samples: u32,
+}
+
+impl SphereLight {
+    /// The point that shadow ray `index` of a shading point at `p` aims at: on the disc of
+    /// radius `radius` through `centre`, perpendicular to the line from `p`.
+    #[must_use]
+    pub fn disc_point(&self, centre: DVec3, p: DVec3, index: u32, seed: u32) -> DVec3 {
+        let axis = (centre - p).normalize_or_zero();
+        let (u, v) = if axis == DVec3::ZERO {
+            (DVec3::X, DVec3::Y)
+        } else {
+            axis.any_orthonormal_pair()
+        };
+        let [x, y, _, _] = sobol_burley::sample_4d(index, 0, seed);
+        let on_disc = concentric_disc(DVec2::new(f64::from(x), f64::from(y)));
+        centre + self.radius * (on_disc.x * u + on_disc.y * v)
+    }
+}
+
+/// The scramble seed of the shadow rays from `p` to light `light`: from the point's bits,
+/// so every shading point (and so every pixel sample) has its own strata.
+#[must_use]
+pub fn shading_seed(p: DVec3, light: usize) -> u32 {
+    // FNV-1a over the coordinates' bits and the light's index.
+    let mut hash: u64 = 0xcbf2_9ce4_8422_2325;
+    for word in p
+        .to_array()
+        .map(f64::to_bits)
+        .into_iter()
+        .chain([light as u64])
+    {
+        hash ^= word;
+        hash = hash.wrapping_mul(0x0100_0000_01b3);
+    }
+    (hash ^ (hash >> 32)) as u32
+}
+
+/// Shirley and Chiu's concentric map of the unit square onto the unit disc: equal areas
+/// go to equal areas, so stratified square points stay stratified on the disc.
+#[must_use]
+fn concentric_disc(square: DVec2) -> DVec2 {
+    let a = 2.0 * square - DVec2::ONE;
+    if a == DVec2::ZERO {
+        return DVec2::ZERO;
+    }
+    let (r, theta) = if a.x.abs() > a.y.abs() {
+        (a.x, std::f64::consts::FRAC_PI_4 * (a.y / a.x))
+    } else {
+        (
+            a.y,
+            std::f64::consts::FRAC_PI_2 - std::f64::consts::FRAC_PI_4 * (a.x / a.y),
+        )
+    };
+    let (sin, cos) = theta.sin_cos();
+    DVec2::new(r * cos, r * sin)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn disc_points_lie_on_the_disc_facing_the_point_and_cover_it_evenly() {
+        let light = SphereLight {
+            radius: 0.5,
+            samples: 64,
+        };
+        let (centre, p) = (DVec3::new(1.0, 4.0, -2.0), DVec3::new(0.0, 0.0, 0.0));
+        let axis = (centre - p).normalize();
+        let seed = shading_seed(p, 0);
+        let points: Vec<DVec3> = (0..64)
+            .map(|i| light.disc_point(centre, p, i, seed))
+            .collect();
+        for q in &points {
+            assert!((*q - centre).dot(axis).abs() < 1e-12, "in the disc's plane");
+            assert!((*q - centre).length() <= 0.5 + 1e-12, "inside the disc");
+        }
+        // Stratified: each quarter of the disc (by angle) gets 16 of 64 points, and the
+        // inner disc of half the area about half of them.
+        let (u, _) = axis.any_orthonormal_pair();
+        let v = axis.cross(u);
+        let mut quarters = [0; 4];
+        let mut inner = 0;
+        for q in &points {
+            let d = *q - centre;
+            let angle = d.dot(v).atan2(d.dot(u)).rem_euclid(std::f64::consts::TAU);
+            quarters[(angle / std::f64::consts::FRAC_PI_2) as usize % 4] += 1;
+            inner += usize::from(d.length() < 0.5 / 2f64.sqrt());
+        }
+        assert!(
+            quarters.iter().all(|&n| (12..=20).contains(&n)),
+            "{quarters:?}"
+        );
+        assert!(
+            (26..=38).contains(&inner),
+            "{inner} of 64 in the inner half"
+        );
+    }
+
+    #[test]
+    fn each_shading_point_has_its_own_seed() {
+        let a = shading_seed(DVec3::new(0.1, 0.2, 0.3), 0);
+        assert_ne!(
+            a,
+            shading_seed(DVec3::new(0.1, 0.2, 0.300_000_000_000_000_1), 0)
+        );
+        assert_ne!(a, shading_seed(DVec3::new(0.1, 0.2, 0.3), 1));
+        assert_eq!(a, shading_seed(DVec3::new(0.1, 0.2, 0.3), 0));
+    }
+
+    #[test]
+    fn the_concentric_map_keeps_the_square_centre_and_corners_on_the_disc() {
+        assert_eq!(concentric_disc(DVec2::splat(0.5)), DVec2::ZERO);
+        for corner in [DVec2::ZERO, DVec2::ONE, DVec2::new(0.0, 1.0)] {
+            assert!((concentric_disc(corner).length() - 1.0).abs() < 1e-12);
+        }
+    }
+}

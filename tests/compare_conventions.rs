@@ -1,0 +1,114 @@
+//! `raylab diff` and the course's conventions: a picture that blends mirrors or clamps
+//! each ray is named by that convention first (not as a scatter of per-object factors),
+//! a truncating one as `truncate`, and a picture that follows the scene's own
+//! conventions, the course's included, is explained by nothing.
+
+use std::path::Path;
+
+use raylab::compare::{CompareOptions, Comparison, ExplainedTerm, OtherImage, compare};
+use raylab::scene::{ClampConvention, Conventions, Light, MirrorConvention, Scene, load_scene};
+use raylab::trace::{RenderOptions, RenderProgress, World, render};
+
+fn small_default() -> Scene {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/default.ron");
+    let mut scene = load_scene(&path).unwrap();
+    scene.camera.width = 96;
+    scene.camera.height = 72;
+    scene
+}
+
+/// The other picture: raylab's render of `scene` under `conventions` (one sample per
+/// pixel), written as bytes the way `conventions.quantise` says.
+fn rendered_under(scene: &Scene, conventions: Conventions) -> OtherImage {
+    let mut varied = scene.clone();
+    varied.render.conventions = conventions;
+    let world = World::new(&varied).unwrap();
+    let options = RenderOptions {
+        samples_per_pixel: 1,
+        ..RenderOptions::from_scene(&varied)
+    };
+    let (image, _) = render(&world, &options, &RenderProgress::default()).unwrap();
+    let png = image.png_bytes_as(conventions.quantise);
+    OtherImage::from_bytes(&png, Path::new("other.png")).unwrap()
+}
+
+fn diff(scene: &Scene, other: &OtherImage) -> Comparison {
+    let options = CompareOptions {
+        samples_per_pixel: Some(1),
+    };
+    compare(scene, other, &options, &RenderProgress::default()).unwrap()
+}
+
+fn first_cause(c: &Comparison) -> (&'static str, f64) {
+    let first = &c.explanations[0];
+    (first.cause.name(), first.share)
+}
+
+#[test]
+fn mirrors_blended_as_the_skeleton_does_are_named_mirror_blend() {
+    let scene = small_default();
+    let blend = Conventions {
+        mirror: MirrorConvention::Blend,
+        ..Conventions::default()
+    };
+    let c = diff(&scene, &rendered_under(&scene, blend));
+    let report = c.text_lines().join("\n");
+    let (cause, share) = first_cause(&c);
+    assert_eq!(cause, "mirror-blend", "{report}");
+    assert!(share > 0.8, "{report}");
+    assert_eq!(c.explanations[0].term, ExplainedTerm::Conventions);
+}
+
+#[test]
+fn every_ray_clamped_as_the_skeleton_does_is_named_clamp_each_ray() {
+    // Bright lights, so rays seen in the mirror ball carry colours above 1.
+    let mut scene = small_default();
+    for light in &mut scene.lights {
+        match light {
+            Light::Point { intensity, .. } | Light::Spot { intensity, .. } => *intensity *= 4.0,
+            _ => {}
+        }
+    }
+    let each_ray = Conventions {
+        clamp: ClampConvention::EachRay,
+        ..Conventions::default()
+    };
+    let c = diff(&scene, &rendered_under(&scene, each_ray));
+    let report = c.text_lines().join("\n");
+    assert_eq!(first_cause(&c).0, "clamp-each-ray", "{report}");
+}
+
+#[test]
+fn the_course_skeleton_in_a_contract_scene_is_named_truncate_and_its_conventions() {
+    let scene = small_default();
+    let skeleton = Conventions {
+        mirror: MirrorConvention::Blend,
+        ..Conventions::COURSE
+    };
+    let c = diff(&scene, &rendered_under(&scene, skeleton));
+    let report = c.text_lines().join("\n");
+    let causes: Vec<&str> = c.explanations.iter().map(|e| e.cause.name()).collect();
+    assert_eq!(causes[0], "mirror-blend-clamp-each-ray", "{report}");
+    assert!(causes.contains(&"truncate"), "{report}");
+}
+
+#[test]
+fn a_picture_that_follows_the_scenes_conventions_is_explained_by_nothing() {
+    for conventions in [Conventions::default(), Conventions::COURSE] {
+        let mut scene = small_default();
+        scene.render.conventions = conventions;
+        let c = diff(&scene, &rendered_under(&scene, conventions));
+        assert!(
+            c.explanations.iter().all(|e| e.share < 0.05),
+            "{conventions:?}: {:#?}",
+            c.text_lines()
+        );
+        assert!(
+            !c.explanations
+                .iter()
+                .any(|e| matches!(e.term, ExplainedTerm::Conventions | ExplainedTerm::Encoding)),
+            "{conventions:?}: no convention or encoding verdict: {:#?}",
+            c.text_lines()
+        );
+    }
+}
