@@ -3,13 +3,16 @@
 //! full angle. The student's picture is raylab's own render of the scene with the light
 //! changed the way the bug says (the fall-off bug, which no scene can express, comes
 //! from the test shader of tests/compare/shader.rs), and the first explanation must be
-//! the bug, on the right light. raylab's own picture, and one whose only difference is
-//! the specular term, get no spot cause.
+//! the bug, on the right light, also with a second, different bug in the picture (a
+//! missing ambient term, a scaled diffuse colour, truncation, or the course's mirror
+//! blend, whose convention is then named before it). raylab's own picture, and pictures
+//! with only another bug, get no spot cause.
 
 #[path = "compare/shader.rs"]
 mod shader;
 
-use raylab::compare::{CompareOptions, Comparison, OtherImage, compare};
+use glam::DVec3;
+use raylab::compare::{CompareOptions, Comparison, ExplainedTerm, OtherImage, compare};
 use raylab::scene::{Light, Scene, parse_scene};
 use raylab::trace::{RenderOptions, RenderProgress, World, render};
 use shader::{Bugs, render as render_with};
@@ -40,6 +43,13 @@ fn scene() -> Scene {
     parse_scene(SCENE).unwrap()
 }
 
+/// The scene with a mirror ball, for the course's mirror blend.
+fn mirrored() -> Scene {
+    let mut scene = scene();
+    scene.materials.get_mut("ball").unwrap().mirror = DVec3::splat(0.4);
+    scene
+}
+
 /// raylab's render of `scene`, written as raylab writes it.
 fn raylab_render(scene: &Scene) -> OtherImage {
     let world = World::new(scene).unwrap();
@@ -57,17 +67,57 @@ fn raylab_render(scene: &Scene) -> OtherImage {
 }
 
 fn diff(other: &OtherImage) -> Comparison {
+    diff_with(&scene(), other)
+}
+
+/// `raylab diff` of `other` against `scene`.
+fn diff_with(scene: &Scene, other: &OtherImage) -> Comparison {
     let options = CompareOptions {
         samples_per_pixel: Some(1),
     };
-    compare(&scene(), other, &options, &RenderProgress::default()).unwrap()
+    compare(scene, other, &options, &RenderProgress::default()).unwrap()
 }
 
 /// The scene with spot light `index` changed by `change`.
 fn with_spot(index: usize, change: impl FnOnce(&mut Light)) -> Scene {
-    let mut scene = scene();
+    changed(scene(), index, change)
+}
+
+/// `scene` with light `index` changed by `change`.
+fn changed(mut scene: Scene, index: usize, change: impl FnOnce(&mut Light)) -> Scene {
     change(&mut scene.lights[index]);
     scene
+}
+
+/// A spot light as a point light: the cone forgotten.
+fn no_cone(light: &mut Light) {
+    let Light::Spot {
+        position,
+        colour,
+        intensity,
+        ..
+    } = *light
+    else {
+        panic!("not a spot light: {light:?}")
+    };
+    *light = Light::Point {
+        position,
+        colour,
+        intensity,
+        radius: 0.0,
+        samples: 1,
+    };
+}
+
+/// The angle in degrees read as radians: the cone whose cosine is cos(angle radians).
+fn angle_as_radians(light: &mut Light) {
+    let angle = angle_of(light);
+    *angle = angle.cos().acos().to_degrees();
+}
+
+/// The half angle taken as the full angle.
+fn full_angle(light: &mut Light) {
+    *angle_of(light) /= 2.0;
 }
 
 fn angle_of(light: &mut Light) -> &mut f64 {
@@ -81,12 +131,34 @@ fn angle_of(light: &mut Light) -> &mut f64 {
 /// difference with a weight near 1.
 fn assert_first(c: &Comparison, cause: &str, light: usize) {
     let report = c.text_lines().join("\n");
-    let first = c.explanations.first().unwrap_or_else(|| panic!("{report}"));
-    assert_eq!(first.cause.name(), cause, "{report}");
-    assert_eq!(first.light, Some(light), "{report}");
-    assert!(first.share > 0.8, "explains only {:.3}:\n{report}", first.share);
-    assert!((first.factor - 0.0).abs() < 0.1, "weight {}:\n{report}", 1.0 - first.factor);
-    assert!(first.summary.contains(&format!("light {light}")), "{report}");
+    assert_first_bug(c, cause, light);
+    let first = &c.explanations[0];
+    assert!(
+        first.share > 0.8,
+        "explains only {:.3}:\n{report}",
+        first.share
+    );
+    assert!(
+        first.factor.abs() < 0.1,
+        "weight {}:\n{report}",
+        1.0 - first.factor
+    );
+}
+
+/// Asserts that the first explanation after the conventions' (which, when another
+/// convention fits, comes first by design) is `cause` on `light`, in its summary too.
+fn assert_first_bug(c: &Comparison, cause: &str, light: usize) {
+    let report = c.text_lines().join("\n");
+    let first = c
+        .explanations
+        .iter()
+        .find(|e| e.term != ExplainedTerm::Conventions)
+        .unwrap_or_else(|| panic!("{report}"));
+    let expected = format!("{cause} on light {light}:\n{report}");
+    assert_eq!(first.cause.name(), cause, "{expected}");
+    assert_eq!(first.light, Some(light), "{expected}");
+    let named = format!("Light {light} ");
+    assert!(first.summary.starts_with(&named), "{expected}");
 }
 
 fn assert_no_spot_cause(c: &Comparison) {
@@ -99,35 +171,30 @@ fn assert_no_spot_cause(c: &Comparison) {
     );
 }
 
+/// The test shader's picture of `scene` with `bugs`.
+fn shaded(scene: &Scene, bugs: Bugs) -> OtherImage {
+    render_with(scene, 1, &bugs)
+}
+
+/// The test shader's bugs with no ambient term.
+fn no_ambient() -> Bugs {
+    Bugs {
+        ambient_off: true,
+        ..Bugs::default()
+    }
+}
+
 #[test]
 fn a_spot_light_with_no_cone_is_named_with_its_index() {
-    let student = with_spot(2, |light| {
-        let Light::Spot {
-            position,
-            colour,
-            intensity,
-            ..
-        } = *light
-        else {
-            unreachable!()
-        };
-        *light = Light::Point {
-            position,
-            colour,
-            intensity,
-            radius: 0.0,
-            samples: 1,
-        };
-    });
+    let student = with_spot(2, no_cone);
     assert_first(&diff(&raylab_render(&student)), "spot-no-cone", 2);
 }
 
 #[test]
 fn a_spot_light_with_no_falloff_is_named_with_its_index() {
-    let student = render_with(
+    let student = shaded(
         &scene(),
-        1,
-        &Bugs {
+        Bugs {
             spot_no_falloff: Some(2),
             ..Bugs::default()
         },
@@ -138,19 +205,96 @@ fn a_spot_light_with_no_falloff_is_named_with_its_index() {
 #[test]
 fn a_spot_angle_used_as_radians_is_named_with_its_index() {
     // cos(50 radians) = cos(15.2 degrees): a narrower cone.
-    let student = with_spot(1, |light| {
-        let angle = angle_of(light);
-        *angle = angle.cos().acos().to_degrees();
-    });
+    let student = with_spot(1, angle_as_radians);
     assert_first(&diff(&raylab_render(&student)), "spot-angle-radians", 1);
 }
 
 #[test]
 fn a_half_angle_taken_as_the_full_angle_is_named_with_its_index() {
-    let student = with_spot(1, |light| *angle_of(light) /= 2.0);
+    let student = with_spot(1, full_angle);
     assert_first(&diff(&raylab_render(&student)), "spot-full-angle", 1);
-    let student = with_spot(2, |light| *angle_of(light) /= 2.0);
+    let student = with_spot(2, full_angle);
     assert_first(&diff(&raylab_render(&student)), "spot-full-angle", 2);
+}
+
+#[test]
+fn each_spot_bug_is_named_first_beside_a_missing_ambient_term() {
+    let falloff = Bugs {
+        spot_no_falloff: Some(2),
+        ..no_ambient()
+    };
+    assert_first_bug(&diff(&shaded(&scene(), falloff)), "spot-no-falloff", 2);
+    // The bright light's cone: the spot bug is the larger part of the difference.
+    let cases: [(usize, fn(&mut Light), &str); 3] = [
+        (1, no_cone, "spot-no-cone"),
+        (1, angle_as_radians, "spot-angle-radians"),
+        (1, full_angle, "spot-full-angle"),
+    ];
+    for (light, bug, cause) in cases {
+        let student = shaded(&with_spot(light, bug), no_ambient());
+        assert_first_bug(&diff(&student), cause, light);
+    }
+}
+
+#[test]
+fn each_spot_bug_is_named_first_beside_another_bug() {
+    // A ball with a duller diffuse colour, truncation, no specular term.
+    let student = shaded(
+        &with_spot(2, no_cone),
+        Bugs {
+            diffuse_scale: Some((1, 0.8)),
+            ..Bugs::default()
+        },
+    );
+    assert_first_bug(&diff(&student), "spot-no-cone", 2);
+    let student = shaded(
+        &with_spot(1, full_angle),
+        Bugs {
+            truncate: true,
+            ..Bugs::default()
+        },
+    );
+    assert_first_bug(&diff(&student), "spot-full-angle", 1);
+    let student = shaded(
+        &with_spot(1, angle_as_radians),
+        Bugs {
+            specular_off: true,
+            ..Bugs::default()
+        },
+    );
+    assert_first_bug(&diff(&student), "spot-angle-radians", 1);
+    let student = shaded(
+        &scene(),
+        Bugs {
+            spot_no_falloff: Some(1),
+            specular_off: true,
+            ..Bugs::default()
+        },
+    );
+    assert_first_bug(&diff(&student), "spot-no-falloff", 1);
+}
+
+#[test]
+fn each_spot_bug_is_named_beside_the_courses_mirror_blend() {
+    let blend = Bugs {
+        mirror_blend: true,
+        ..Bugs::default()
+    };
+    let falloff = Bugs {
+        spot_no_falloff: Some(2),
+        ..blend.clone()
+    };
+    let c = diff_with(&mirrored(), &shaded(&mirrored(), falloff));
+    assert_first_bug(&c, "spot-no-falloff", 2);
+    let cases: [(usize, fn(&mut Light), &str); 3] = [
+        (2, no_cone, "spot-no-cone"),
+        (1, angle_as_radians, "spot-angle-radians"),
+        (1, full_angle, "spot-full-angle"),
+    ];
+    for (light, bug, cause) in cases {
+        let student = shaded(&changed(mirrored(), light, bug), blend.clone());
+        assert_first_bug(&diff_with(&mirrored(), &student), cause, light);
+    }
 }
 
 #[test]
@@ -158,14 +302,16 @@ fn raylabs_own_picture_has_no_spot_cause() {
     let c = diff(&raylab_render(&scene()));
     assert!(c.psnr_db >= 60.0, "{}", c.psnr_db);
     assert_no_spot_cause(&c);
+    let c = diff_with(&mirrored(), &raylab_render(&mirrored()));
+    assert!(c.psnr_db >= 60.0, "{}", c.psnr_db);
+    assert_no_spot_cause(&c);
 }
 
 #[test]
 fn a_picture_without_specular_has_no_spot_cause() {
-    let student = render_with(
+    let student = shaded(
         &scene(),
-        1,
-        &Bugs {
+        Bugs {
             specular_off: true,
             ..Bugs::default()
         },
@@ -174,5 +320,36 @@ fn a_picture_without_specular_has_no_spot_cause() {
     let report = c.text_lines().join("\n");
     let first = c.explanations.first().unwrap_or_else(|| panic!("{report}"));
     assert_eq!(first.cause.name(), "factor", "{report}");
+    assert_no_spot_cause(&c);
+}
+
+#[test]
+fn pictures_with_only_other_bugs_have_no_spot_cause() {
+    let others = [
+        no_ambient(),
+        Bugs {
+            diffuse_scale: Some((1, 0.8)),
+            ..Bugs::default()
+        },
+        Bugs {
+            truncate: true,
+            ..Bugs::default()
+        },
+        Bugs {
+            shadows_off: true,
+            ..Bugs::default()
+        },
+    ];
+    for bugs in others {
+        let c = diff(&shaded(&scene(), bugs.clone()));
+        assert!(!c.explanations.is_empty(), "{bugs:?}");
+        assert_no_spot_cause(&c);
+    }
+    let blend = Bugs {
+        mirror_blend: true,
+        ..Bugs::default()
+    };
+    let c = diff_with(&mirrored(), &shaded(&mirrored(), blend));
+    assert_eq!(c.explanations[0].cause.name(), "mirror-blend");
     assert_no_spot_cause(&c);
 }
