@@ -11,7 +11,8 @@ use glam::{DVec2, DVec3};
 use rayon::prelude::*;
 
 use super::channels::ChannelSpace;
-use super::recorder::{Context, SampleRecorder, Tally};
+use super::record_context::Context;
+use super::recorder::{SampleRecorder, Tally};
 use crate::scene::Scene;
 use crate::trace::sample_in_pixel;
 use crate::trace::{

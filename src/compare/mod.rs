@@ -23,6 +23,7 @@ pub mod explanation;
 pub mod groups;
 pub mod localise;
 pub mod other_image;
+pub mod record_context;
 pub mod recorder;
 pub mod report;
 pub mod report_image;

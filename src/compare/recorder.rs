@@ -11,16 +11,14 @@
 use glam::DVec3;
 
 use super::bugs::{ClampBug, LocalLight, NormalBug, Part, SpecularBug, local_terms};
-use super::channels::{ChannelSpace, Kind};
-use super::spot_bugs::{SpotBug, SpotWorld, cone_changes, no_falloff_change};
-use crate::scene::Material;
+use super::channels::Kind;
+use super::record_context::{Context, trace_again};
+use super::spot_bugs::{SpotBug, cone_changes, no_falloff_change};
 use crate::trace::shapes::Primitive;
 use crate::trace::{
-    Branch, LightRecord, NoRecorder, Ray, RayCounts, Recorder, SurfacePoint, TermSwitches, Tracer,
-    View, World,
+    Branch, LightRecord, LightSample, Ray, Recorder, SurfacePoint, WorldLight, spawn_ray,
+    spawn_ray_to,
 };
-use crate::trace::{LightSample, WorldLight};
-use crate::trace::{spawn_ray, spawn_ray_to};
 
 /// Per-channel colour sums of one sample or one pixel: a short list, channels unique.
 #[derive(Clone, Debug, Default)]
@@ -46,54 +44,6 @@ impl Tally {
         for &(channel, value) in &other.entries {
             self.add(channel, value);
         }
-    }
-}
-
-/// What the recorder needs to know about the world, prepared once.
-pub struct Context<'w> {
-    /// The world traced.
-    pub world: &'w World,
-    /// The channel numbering.
-    pub space: ChannelSpace,
-    /// For each scene light index, its index among the world's non-ambient lights.
-    pub world_light: Vec<Option<usize>>,
-    /// For each object, the world without it (for the first few objects), to see what
-    /// a ray would meet if the object were missing.
-    pub without: Vec<Option<World>>,
-    /// The worlds of the spot lights' cone bugs.
-    pub spot: Vec<SpotWorld>,
-}
-
-impl<'w> Context<'w> {
-    /// The context of `world` with `scene_lights` lights in the scene's list, and
-    /// `without[o]` the world without object `o` (or `None` not to try it missing), and
-    /// `spot` the worlds of the spot lights' cone bugs.
-    #[must_use]
-    pub fn new(
-        world: &'w World,
-        scene_lights: usize,
-        without: Vec<Option<World>>,
-        spot: Vec<SpotWorld>,
-    ) -> Self {
-        let mut world_light = vec![None; scene_lights];
-        for (index, &scene_index) in world.light_scene_index.iter().enumerate() {
-            world_light[scene_index] = Some(index);
-        }
-        Self {
-            world,
-            space: ChannelSpace {
-                lights: world.lights.len(),
-                objects: world.objects.len(),
-            },
-            world_light,
-            without,
-            spot,
-        }
-    }
-
-    /// The material of world object `object`.
-    fn material(&self, object: usize) -> &'w Material {
-        &self.world.materials[self.world.objects[object].material]
     }
 }
 
@@ -302,8 +252,7 @@ impl SampleRecorder<'_, '_> {
         let Some(Some(world)) = self.ctx.without.get(hit.object) else {
             return;
         };
-        let tracer = Tracer::new(world, TermSwitches::ALL_ON, View::Beauty);
-        let seen = tracer.trace_primary(&bounce.ray, &mut RayCounts::default(), &mut NoRecorder);
+        let seen = trace_again(world, &bounce.ray);
         if seen.is_finite()
             && let Some(world_object) = bounce.world_object
         {
