@@ -176,6 +176,9 @@ fn shaded(scene: &Scene, bugs: Bugs) -> OtherImage {
     render_with(scene, 1, &bugs)
 }
 
+/// A cone bug planted on a light: the light's scene index, the change, its cause.
+type ConeCase = (usize, fn(&mut Light), &'static str);
+
 /// The test shader's bugs with no ambient term.
 fn no_ambient() -> Bugs {
     Bugs {
@@ -225,7 +228,7 @@ fn each_spot_bug_is_named_first_beside_a_missing_ambient_term() {
     };
     assert_first_bug(&diff(&shaded(&scene(), falloff)), "spot-no-falloff", 2);
     // The bright light's cone: the spot bug is the larger part of the difference.
-    let cases: [(usize, fn(&mut Light), &str); 3] = [
+    let cases: [ConeCase; 3] = [
         (1, no_cone, "spot-no-cone"),
         (1, angle_as_radians, "spot-angle-radians"),
         (1, full_angle, "spot-full-angle"),
@@ -286,7 +289,7 @@ fn each_spot_bug_is_named_beside_the_courses_mirror_blend() {
     };
     let c = diff_with(&mirrored(), &shaded(&mirrored(), falloff));
     assert_first_bug(&c, "spot-no-falloff", 2);
-    let cases: [(usize, fn(&mut Light), &str); 3] = [
+    let cases: [ConeCase; 3] = [
         (2, no_cone, "spot-no-cone"),
         (1, angle_as_radians, "spot-angle-radians"),
         (1, full_angle, "spot-full-angle"),
