@@ -4,6 +4,7 @@
 //! Every channel is a per-pixel colour; the fit scales them.
 
 use super::bugs::{ClampBug, NormalBug, Part, SpecularBug};
+use super::spot_bugs::SpotBug;
 
 /// What a channel holds. Light indices are positions in the world's list of
 /// non-ambient lights.
@@ -29,6 +30,8 @@ pub enum Kind {
     Clamp(ClampBug),
     /// The change of the pixels where a part of the object is seen, if it were missing.
     Missing(Part),
+    /// The change of the pixels seeing the object under a bug of spot light `l`.
+    Spot(SpotBug, usize),
     /// Rays that hit nothing (object: none).
     Background,
 }
@@ -56,6 +59,8 @@ pub enum Family {
     Clamp(ClampBug),
     /// [`Kind::Missing`], any part.
     Missing,
+    /// [`Kind::Spot`] of one bug.
+    Spot(SpotBug),
     /// [`Kind::Background`].
     Background,
 }
@@ -75,6 +80,7 @@ impl Kind {
             Kind::Highlight(b) => Family::Highlight(b),
             Kind::Clamp(b) => Family::Clamp(b),
             Kind::Missing(_) => Family::Missing,
+            Kind::Spot(b, _) => Family::Spot(b),
             Kind::Background => Family::Background,
         }
     }
@@ -83,7 +89,7 @@ impl Kind {
     #[must_use]
     pub fn light(self) -> Option<usize> {
         match self {
-            Kind::Diffuse(l) | Kind::Specular(l) | Kind::Shadow(l) => Some(l),
+            Kind::Diffuse(l) | Kind::Specular(l) | Kind::Shadow(l) | Kind::Spot(_, l) => Some(l),
             _ => None,
         }
     }
@@ -119,6 +125,7 @@ impl ChannelSpace {
             + SpecularBug::ALL.len()
             + ClampBug::ALL.len()
             + Part::ALL.len()
+            + SpotBug::ALL.len() * self.lights
     }
 
     /// How many channels there are.
@@ -154,6 +161,7 @@ impl ChannelSpace {
             Kind::Highlight(b) => FIXED + 3 * l + nb + b as usize,
             Kind::Clamp(b) => FIXED + 3 * l + nb + sb + b as usize,
             Kind::Missing(p) => FIXED + 3 * l + nb + sb + cb + p as usize,
+            Kind::Spot(b, i) => FIXED + 3 * l + nb + sb + cb + Part::ALL.len() + b as usize * l + i,
         };
         if let Some(i) = kind.light() {
             assert!(i < l, "light {i} of {l}");
@@ -192,7 +200,13 @@ impl ChannelSpace {
             s if s < FIXED + 3 * l + nb + sb + cb => {
                 Kind::Clamp(ClampBug::ALL[s - FIXED - 3 * l - nb - sb])
             }
-            s => Kind::Missing(Part::ALL[s - FIXED - 3 * l - nb - sb - cb]),
+            s if s < FIXED + 3 * l + nb + sb + cb + Part::ALL.len() => {
+                Kind::Missing(Part::ALL[s - FIXED - 3 * l - nb - sb - cb])
+            }
+            s => {
+                let spot = s - FIXED - 3 * l - nb - sb - cb - Part::ALL.len();
+                Kind::Spot(SpotBug::ALL[spot / l], spot % l)
+            }
         };
         (kind, Some(object))
     }

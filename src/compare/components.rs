@@ -11,7 +11,8 @@ use glam::{DVec2, DVec3};
 use rayon::prelude::*;
 
 use super::channels::ChannelSpace;
-use super::recorder::{Context, SampleRecorder, Tally};
+use super::record_context::Context;
+use super::recorder::{SampleRecorder, Tally};
 use crate::scene::Scene;
 use crate::trace::sample_in_pixel;
 use crate::trace::{
@@ -119,7 +120,8 @@ pub fn render_components(
                 .flatten()
         })
         .collect();
-    let ctx = Context::new(world, scene.lights.len(), without);
+    let spot = super::spot_bugs::spot_worlds(scene, world);
+    let ctx = Context::new(world, scene.lights.len(), without, spot);
     let space = ctx.space;
     let camera = PinholeCamera::new(&world.camera, width, height);
     let spp = spp.max(1);

@@ -5,6 +5,7 @@ use serde::Serialize;
 
 use super::bugs::{ClampBug, NormalBug, Part, SpecularBug};
 use super::encoding::Encoding;
+use super::spot_bugs::SpotBug;
 use crate::scene::{ClampConvention, Conventions, Light, MirrorConvention, Quantise, Scene};
 
 /// The term an explanation names.
@@ -63,6 +64,8 @@ pub enum Cause {
     Highlight(SpecularBug),
     /// Colour clamped too early.
     Clamp(ClampBug),
+    /// A spot light computed wrongly (the explanation names the light).
+    Spot(SpotBug),
     /// A part of an object (or all of it: `None`) is not there.
     Missing(Option<Part>),
     /// The 8-bit encoding differs.
@@ -90,6 +93,7 @@ impl Cause {
             Cause::Normal(b) => b.name(),
             Cause::Highlight(b) => b.name(),
             Cause::Clamp(b) => b.name(),
+            Cause::Spot(b) => b.name(),
             Cause::Missing(Some(Part::Back)) => "one-sided",
             Cause::Missing(_) => "missing",
             Cause::Encoding(Encoding::LinearTruncate) => "truncate",
@@ -220,6 +224,12 @@ pub fn summary(e: &Explanation, scene: &Scene) -> String {
             "Reflections{} are darker where they exceed 1: {} (weight {weight:.2}).",
             on_object(object).replace(" on ", " in "),
             bug.describe()
+        ),
+        Cause::Spot(bug) => format!(
+            "{} lights the other image as if {} (weight {weight:.2}; explains {:.1}% of the difference).",
+            capitalised(light.as_deref().unwrap_or("a spot light")),
+            bug.describe(),
+            100.0 * e.share
         ),
         Cause::Missing(part) => {
             let o = object.unwrap_or("an object");

@@ -8,6 +8,7 @@ use rayon::prelude::*;
 use super::bugs::{ClampBug, NormalBug, Part, SpecularBug};
 use super::channels::{ChannelSpace, Family, Kind};
 use super::components::{Components, MAX_MISSING_OBJECTS};
+use super::spot_bugs::SpotBug;
 use super::target::{FitState, Target};
 use crate::trace::shapes::Primitive;
 
@@ -135,6 +136,18 @@ impl Groups {
             if parts.len() > 1 {
                 let kinds = parts.iter().map(|&p| Kind::Missing(p)).collect();
                 add(Family::Missing, None, Some(object), None, kinds);
+            }
+        }
+        // A spot light's bug is the light's, wherever it shows.
+        for light in 0..space.lights {
+            for bug in SpotBug::ALL {
+                add(
+                    Family::Spot(bug),
+                    Some(light),
+                    None,
+                    None,
+                    vec![Kind::Spot(bug, light)],
+                );
             }
         }
         let background = space.id(Kind::Background, None);

@@ -23,10 +23,12 @@ pub mod explanation;
 pub mod groups;
 pub mod localise;
 pub mod other_image;
+pub mod record_context;
 pub mod recorder;
 pub mod report;
 pub mod report_image;
 pub mod search;
+pub mod spot_bugs;
 pub mod target;
 pub mod verdicts;
 

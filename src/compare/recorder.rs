@@ -1,7 +1,8 @@
 //! The recorder that splits one camera sample into channels. It listens to the tracer's
 //! own shading code (through [`Recorder`]), so every number is the one the picture
 //! used; what the tracer does not report (the light a shadow took away, the terms under
-//! each known bug) is computed here from the same inputs.
+//! each known bug) is computed here from the same inputs, and what a changed spot light
+//! would show is traced again ([`super::spot_bugs`]).
 //!
 //! A mirror bounce at depth d is weighted by the product of the mirror colours before it
 //! (`throughput`), so a term seen in a mirror lands in the channel of the object it lies
@@ -10,15 +11,14 @@
 use glam::DVec3;
 
 use super::bugs::{ClampBug, LocalLight, NormalBug, Part, SpecularBug, local_terms};
-use super::channels::{ChannelSpace, Kind};
-use crate::scene::Material;
-use crate::trace::LightSample;
+use super::channels::Kind;
+use super::record_context::{Context, trace_again};
+use super::spot_bugs::{SpotBug, cone_changes, no_falloff_change};
 use crate::trace::shapes::Primitive;
 use crate::trace::{
-    Branch, LightRecord, NoRecorder, Ray, RayCounts, Recorder, SurfacePoint, TermSwitches, Tracer,
-    View, World,
+    Branch, LightRecord, LightSample, Ray, Recorder, SurfacePoint, WorldLight, spawn_ray,
+    spawn_ray_to,
 };
-use crate::trace::{spawn_ray, spawn_ray_to};
 
 /// Per-channel colour sums of one sample or one pixel: a short list, channels unique.
 #[derive(Clone, Debug, Default)]
@@ -44,45 +44,6 @@ impl Tally {
         for &(channel, value) in &other.entries {
             self.add(channel, value);
         }
-    }
-}
-
-/// What the recorder needs to know about the world, prepared once.
-pub struct Context<'w> {
-    /// The world traced.
-    pub world: &'w World,
-    /// The channel numbering.
-    pub space: ChannelSpace,
-    /// For each scene light index, its index among the world's non-ambient lights.
-    pub world_light: Vec<Option<usize>>,
-    /// For each object, the world without it (for the first few objects), to see what
-    /// a ray would meet if the object were missing.
-    pub without: Vec<Option<World>>,
-}
-
-impl<'w> Context<'w> {
-    /// The context of `world` with `scene_lights` lights in the scene's list, and
-    /// `without[o]` the world without object `o` (or `None` not to try it missing).
-    #[must_use]
-    pub fn new(world: &'w World, scene_lights: usize, without: Vec<Option<World>>) -> Self {
-        let mut world_light = vec![None; scene_lights];
-        for (index, &scene_index) in world.light_scene_index.iter().enumerate() {
-            world_light[scene_index] = Some(index);
-        }
-        Self {
-            world,
-            space: ChannelSpace {
-                lights: world.lights.len(),
-                objects: world.objects.len(),
-            },
-            world_light,
-            without,
-        }
-    }
-
-    /// The material of world object `object`.
-    fn material(&self, object: usize) -> &'w Material {
-        &self.world.materials[self.world.objects[object].material]
     }
 }
 
@@ -291,8 +252,7 @@ impl SampleRecorder<'_, '_> {
         let Some(Some(world)) = self.ctx.without.get(hit.object) else {
             return;
         };
-        let tracer = Tracer::new(world, TermSwitches::ALL_ON, View::Beauty);
-        let seen = tracer.trace_primary(&bounce.ray, &mut RayCounts::default(), &mut NoRecorder);
+        let seen = trace_again(world, &bounce.ray);
         if seen.is_finite()
             && let Some(world_object) = bounce.world_object
         {
@@ -343,9 +303,16 @@ impl Recorder for SampleRecorder<'_, '_> {
             self.channel(Kind::Specular(index), object),
             t * record.specular,
         );
-        let Some(sample) = self.ctx.world.lights[index].sample(hit.p) else {
+        let world_light = &self.ctx.world.lights[index];
+        let Some(sample) = world_light.sample(hit.p) else {
             return;
         };
+        if matches!(world_light, WorldLight::Spot { .. }) {
+            let change =
+                no_falloff_change(record.diffuse + record.specular, sample.distance_squared);
+            let channel = self.channel(Kind::Spot(SpotBug::NoFalloff, index), object);
+            self.tally.add(channel, t * change);
+        }
         // What the shadow rays took away: all of the light where a point light is
         // blocked, the hidden share of a sphere light.
         let hidden = 1.0 - record.visibility.0;
@@ -418,6 +385,11 @@ impl Recorder for SampleRecorder<'_, '_> {
                     self.tally
                         .add(self.channel(Kind::Clamp(bug), object), bugged - colour);
                 }
+            }
+            // A cone bug changes the whole picture the camera ray brings back.
+            for (bug, light, change) in cone_changes(&self.ctx.spot, &bounce.ray, colour) {
+                let channel = self.channel(Kind::Spot(bug, light), object);
+                self.tally.add(channel, change);
             }
         }
         self.missing(&bounce, colour);

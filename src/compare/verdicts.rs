@@ -59,6 +59,7 @@ fn term_and_cause(
         Family::Highlight(bug) => (ExplainedTerm::Specular, Cause::Highlight(bug)),
         Family::Clamp(bug) => (ExplainedTerm::Reflection, Cause::Clamp(bug)),
         Family::Missing => (ExplainedTerm::Geometry, Cause::Missing(part)),
+        Family::Spot(bug) => (ExplainedTerm::Diffuse, Cause::Spot(bug)),
     }
 }
 

@@ -50,6 +50,6 @@ pub use shapes::{MeshStore, TriangleHit, TriangleMesh};
 pub use terms::{Isolation, Term, TermSwitches, View};
 pub use world::{
     Acceleration, BVH_MIN_OBJECTS, CsgHit, CsgLeaf, CsgTree, Extent, IsolationError, LightSample,
-    SurfacePoint, World, WorldObject, check_indices, scene_without_world_object, spawn_ray,
-    spawn_ray_to,
+    SurfacePoint, World, WorldLight, WorldObject, check_indices, scene_without_world_object,
+    spawn_ray, spawn_ray_to,
 };

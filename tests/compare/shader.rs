@@ -34,6 +34,12 @@ pub struct Bugs {
     pub directional_never_lights: bool,
     /// Write floor(255 c) instead of round(255 c).
     pub truncate: bool,
+    /// Scene index of a spot light whose strength does not fall off as 1/d^2.
+    pub spot_no_falloff: Option<usize>,
+    /// No ambient term.
+    pub ambient_off: bool,
+    /// Mirrors blended as the course skeleton does: `(1 - km) local + km reflected`.
+    pub mirror_blend: bool,
 }
 
 struct Shader<'a> {
@@ -95,7 +101,11 @@ impl Shader<'_> {
         };
         let material = &self.world.materials[self.world.objects[hit.object].material];
         let n = self.normal(&hit, ray.dir);
-        let mut colour = material.ambient * self.world.ambient;
+        let mut colour = if self.bugs.ambient_off {
+            DVec3::ZERO
+        } else {
+            material.ambient * self.world.ambient
+        };
         let kd = match self.bugs.diffuse_scale {
             Some((object, scale)) if object == hit.object => material.diffuse * scale,
             _ => material.diffuse,
@@ -109,9 +119,12 @@ impl Shader<'_> {
             {
                 continue;
             }
-            let Some(sample) = light.sample(hit.p) else {
+            let Some(mut sample) = light.sample(hit.p) else {
                 continue;
             };
+            if self.bugs.spot_no_falloff == Some(scene_index) {
+                sample.radiance = light.strength();
+            }
             let n_dot_l = n.dot(sample.to_light);
             if n_dot_l <= 0.0 || !self.visible(&hit, sample.to_light, sample.light_position) {
                 continue;
@@ -141,7 +154,11 @@ impl Shader<'_> {
         if depth < self.world.max_depth && material.mirror != DVec3::ZERO {
             let d = ray.dir;
             let reflected = spawn_ray(&hit, d - 2.0 * d.dot(hit.n) * hit.n);
-            colour += material.mirror * self.radiance(&reflected, depth + 1);
+            let km = material.mirror;
+            if self.bugs.mirror_blend {
+                colour *= DVec3::ONE - km;
+            }
+            colour += km * self.radiance(&reflected, depth + 1);
         }
         colour
     }

@@ -1,0 +1,67 @@
+//! What the recorder ([`super::recorder`]) needs to know about the world, prepared once
+//! per comparison: the channel numbering, where each scene light is among the world's,
+//! and the changed worlds it traces again (without an object, with a spot light's cone
+//! bug).
+
+use super::channels::ChannelSpace;
+use super::spot_bugs::SpotWorld;
+use crate::scene::Material;
+use glam::DVec3;
+
+use crate::trace::{NoRecorder, Ray, RayCounts, TermSwitches, Tracer, View, World};
+
+/// What the recorder needs to know about the world, prepared once.
+pub struct Context<'w> {
+    /// The world traced.
+    pub world: &'w World,
+    /// The channel numbering.
+    pub space: ChannelSpace,
+    /// For each scene light index, its index among the world's non-ambient lights.
+    pub world_light: Vec<Option<usize>>,
+    /// For each object, the world without it (for the first few objects), to see what
+    /// a ray would meet if the object were missing.
+    pub without: Vec<Option<World>>,
+    /// The worlds of the spot lights' cone bugs.
+    pub spot: Vec<SpotWorld>,
+}
+
+impl<'w> Context<'w> {
+    /// The context of `world` with `scene_lights` lights in the scene's list, and
+    /// `without[o]` the world without object `o` (or `None` not to try it missing), and
+    /// `spot` the worlds of the spot lights' cone bugs.
+    #[must_use]
+    pub fn new(
+        world: &'w World,
+        scene_lights: usize,
+        without: Vec<Option<World>>,
+        spot: Vec<SpotWorld>,
+    ) -> Self {
+        let mut world_light = vec![None; scene_lights];
+        for (index, &scene_index) in world.light_scene_index.iter().enumerate() {
+            world_light[scene_index] = Some(index);
+        }
+        Self {
+            world,
+            space: ChannelSpace {
+                lights: world.lights.len(),
+                objects: world.objects.len(),
+            },
+            world_light,
+            without,
+            spot,
+        }
+    }
+
+    /// The material of world object `object`.
+    pub(super) fn material(&self, object: usize) -> &'w Material {
+        &self.world.materials[self.world.objects[object].material]
+    }
+}
+
+/// The colour a camera ray `ray` brings back in `world` (one of the changed worlds), as
+/// raylab's picture of it would show.
+#[must_use]
+pub fn trace_again(world: &World, ray: &Ray) -> DVec3 {
+    let tracer = Tracer::new(world, TermSwitches::ALL_ON, View::Beauty);
+    tracer.trace_primary(ray, &mut RayCounts::default(), &mut NoRecorder)
+}
