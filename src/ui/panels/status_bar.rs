@@ -93,20 +93,28 @@ pub fn status_bar_ui(ui: &mut Ui, info: &StatusInfo<'_>, commands: &mut Vec<Comm
             let name = std::path::Path::new(file)
                 .file_name()
                 .map_or(file.clone(), |n| n.to_string_lossy().into_owned());
-            ui.label(format!("reading {name}"))
-                .on_hover_text(format!("The preview is reading the mesh file {file}"));
-            ui.add(
-                egui::ProgressBar::new(*fraction as f32)
-                    .desired_width(80.0)
-                    .desired_height(10.0)
-                    .show_percentage(),
-            );
-            if ui
-                .small_button("Cancel")
-                .on_hover_text("Stop reading the file; the object stays in the scene, undrawn")
-                .clicked()
-            {
-                commands.push(Command::CancelMeshLoading);
+            if *fraction < 1.0 {
+                ui.label(format!("reading {name}"))
+                    .on_hover_text(format!("The preview is reading the mesh file {file}"));
+                ui.add(
+                    egui::ProgressBar::new(*fraction as f32)
+                        .desired_width(80.0)
+                        .desired_height(10.0)
+                        .show_percentage(),
+                );
+                if ui
+                    .small_button("Cancel")
+                    .on_hover_text("Stop reading the file; the object stays in the scene, undrawn")
+                    .clicked()
+                {
+                    commands.push(Command::CancelMeshLoading);
+                }
+            } else {
+                // Read: its hierarchy is being built (under a second for a million
+                // triangles), which cannot be stopped half way.
+                ui.label(format!("building {name}"))
+                    .on_hover_text(format!("The preview is building the hierarchy of {file}"));
+                ui.spinner();
             }
         } else if let Some(progress) = info.progress {
             ui.add(
