@@ -15,6 +15,7 @@ mod obj_reader;
 mod shape;
 mod text_file;
 pub mod transform;
+pub mod tree_path;
 mod validate;
 
 pub use conventions::{ClampConvention, Conventions, MirrorConvention, Quantise};

@@ -6,7 +6,7 @@ use crate::ui::commands::{Command, SceneEdit};
 
 /// A shortcut, what it does, and the command it sends. Order matters: a shortcut with
 /// Shift comes before the same one without, which would also match.
-const SHORTCUTS: [(Modifiers, Key, &str); 13] = [
+const SHORTCUTS: [(Modifiers, Key, &str); 14] = [
     (Modifiers::COMMAND, Key::N, "New scene"),
     (Modifiers::COMMAND, Key::O, "Open…"),
     (
@@ -28,6 +28,7 @@ const SHORTCUTS: [(Modifiers, Key, &str); 13] = [
         "Set scene camera from view",
     ),
     (Modifiers::NONE, Key::Num0, "Camera view / view camera"),
+    (Modifiers::COMMAND, Key::G, "Group selection"),
 ];
 
 fn command_for(index: usize) -> Command {
@@ -43,7 +44,8 @@ fn command_for(index: usize) -> Command {
         9 => Command::ShowExport,
         10 => Command::ShowHelp,
         11 => Command::SetSceneCameraFromView,
-        _ => Command::ToggleCameraView,
+        12 => Command::ToggleCameraView,
+        _ => Command::Edit(SceneEdit::GroupSelected),
     }
 }
 
@@ -65,7 +67,10 @@ pub fn shortcut_commands(ctx: &egui::Context) -> Vec<Command> {
     let mut commands = Vec::new();
     ctx.input_mut(|input| {
         for (index, (modifiers, key, _)) in SHORTCUTS.iter().enumerate() {
-            let editing_key = matches!(key, Key::Z | Key::Y | Key::D | Key::Delete | Key::Num0);
+            let editing_key = matches!(
+                key,
+                Key::Z | Key::Y | Key::D | Key::G | Key::Delete | Key::Num0
+            );
             if typing && editing_key {
                 continue;
             }

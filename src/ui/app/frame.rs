@@ -139,8 +139,16 @@ impl EditorApp {
                 can_redo: self.undoer.has_redo(&self.scene),
                 has_selection: matches!(
                     self.selection,
-                    Selection::Object(_) | Selection::Light(_) | Selection::Material(_)
+                    Selection::Object(_)
+                        | Selection::Part(_)
+                        | Selection::Light(_)
+                        | Selection::Material(_)
                 ),
+                has_object_selected: self.selection.node_path().is_some(),
+                group_selected: self.selection.node_path().is_some_and(|path| {
+                    crate::scene::tree_path::object_at(&self.scene.objects, &path)
+                        .is_some_and(|o| matches!(o.shape, crate::scene::Shape::Group { .. }))
+                }),
             };
             menu_ui(ui, &state, &mut commands);
         });

@@ -4,6 +4,7 @@
 
 mod placement;
 mod scene_edit;
+mod tree_edit;
 
 use std::path::PathBuf;
 
@@ -19,8 +20,11 @@ pub enum Selection {
     Camera,
     /// The render settings.
     Render,
-    /// An object, by index.
+    /// A top-level object, by index.
     Object(usize),
+    /// A node inside an object tree (a CSG operand, a group's child), by its path of
+    /// indices from the top-level object down (two or more; see `Selection::node`).
+    Part(Vec<usize>),
     /// A material, by name.
     Material(String),
     /// A light, by index.
@@ -29,6 +33,7 @@ pub enum Selection {
 
 pub use crate::scene::LightKind;
 pub use scene_edit::{material_users, repair_selection, unique_name};
+pub use tree_edit::{CSG_OPS, part_exists};
 
 /// A change to the scene (and the selection that follows it).
 #[derive(Clone, Debug, PartialEq)]
@@ -50,6 +55,14 @@ pub enum SceneEdit {
     DeleteSelected,
     /// Replaces an object.
     SetObject(usize, Object),
+    /// Replaces a node inside an object tree, by path.
+    SetPart(Vec<usize>, Object),
+    /// Puts the selected object or part into a new group in its place (Ctrl+G).
+    GroupSelected,
+    /// Puts the selected group's children in its place, placed as they were.
+    UngroupSelected,
+    /// Adds a unit shape as the last operand or child of the selected tree node.
+    AddOperand(Shape),
     /// Replaces a light.
     SetLight(usize, Light),
     /// Replaces the camera.
@@ -76,7 +89,10 @@ impl SceneEdit {
     pub fn is_by_index(&self) -> bool {
         matches!(
             self,
-            SceneEdit::SetObject(..) | SceneEdit::SetLight(..) | SceneEdit::MakeMaterialUnique(_)
+            SceneEdit::SetObject(..)
+                | SceneEdit::SetPart(..)
+                | SceneEdit::SetLight(..)
+                | SceneEdit::MakeMaterialUnique(_)
         )
     }
 }

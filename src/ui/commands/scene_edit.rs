@@ -3,7 +3,7 @@
 
 use glam::DVec3;
 
-use super::{SceneEdit, Selection, placement};
+use super::{SceneEdit, Selection, placement, tree_edit};
 use crate::scene::{Light, LightKind, Material, Object, Scene, Shape};
 
 impl SceneEdit {
@@ -41,6 +41,10 @@ impl SceneEdit {
             SceneEdit::SetObject(index, object) => {
                 *scene.objects.get_mut(index).ok_or("no such object")? = object;
             }
+            SceneEdit::SetPart(path, object) => tree_edit::set_node(scene, &path, object)?,
+            SceneEdit::GroupSelected => tree_edit::group_selected(scene, selection)?,
+            SceneEdit::UngroupSelected => tree_edit::ungroup_selected(scene, selection)?,
+            SceneEdit::AddOperand(shape) => tree_edit::add_operand(scene, selection, shape)?,
             SceneEdit::SetLight(index, light) => {
                 *scene.lights.get_mut(index).ok_or("no such light")? = light;
             }
@@ -86,6 +90,7 @@ pub fn material_users(scene: &Scene, material: &str) -> usize {
 pub fn repair_selection(scene: &Scene, selection: &mut Selection) {
     let valid = match selection {
         Selection::Object(i) => *i < scene.objects.len(),
+        Selection::Part(path) => tree_edit::part_exists(scene, path),
         Selection::Light(i) => *i < scene.lights.len(),
         Selection::Material(name) => scene.materials.contains_key(name),
         Selection::None | Selection::Camera | Selection::Render => true,
@@ -195,6 +200,7 @@ fn duplicate(scene: &mut Scene, selection: &mut Selection) -> Result<(), String>
             scene.materials.insert(new_name.clone(), copy);
             *selection = Selection::Material(new_name);
         }
+        Selection::Part(path) => tree_edit::duplicate_part(scene, &path, selection)?,
         // Nothing duplicable selected: the shortcut does nothing.
         Selection::None | Selection::Camera | Selection::Render => {}
     }
@@ -207,17 +213,20 @@ fn delete(scene: &mut Scene, selection: &mut Selection) -> Result<(), String> {
             scene.objects.remove(i);
             *selection = neighbour(i, scene.objects.len(), Selection::Object);
         }
+        Selection::Part(path) => tree_edit::delete_part(scene, &path, selection)?,
         Selection::Light(i) if i < scene.lights.len() => {
             scene.lights.remove(i);
             *selection = neighbour(i, scene.lights.len(), Selection::Light);
         }
         Selection::Material(name) => {
-            let users: Vec<&str> = scene
-                .objects
-                .iter()
-                .filter(|o| o.material == name)
-                .map(|o| o.name.as_str())
-                .collect();
+            let mut users: Vec<&str> = Vec::new();
+            let mut work: Vec<&Object> = scene.objects.iter().collect();
+            while let Some(object) = work.pop() {
+                if object.material == name {
+                    users.push(object.name.as_str());
+                }
+                work.extend(object.shape.children());
+            }
             if !users.is_empty() {
                 return Err(format!(
                     "material \"{name}\" is used by {}; give them another material first",
@@ -258,9 +267,14 @@ fn rename_material(scene: &mut Scene, from: &str, to: &str) -> Result<(), String
         .remove(from)
         .ok_or_else(|| format!("no material \"{from}\""))?;
     scene.materials.insert(to.to_owned(), material);
-    for object in &mut scene.objects {
+    // Children and operands name materials too.
+    let mut work: Vec<&mut Object> = scene.objects.iter_mut().collect();
+    while let Some(object) = work.pop() {
         if object.material == from {
             object.material = to.to_owned();
+        }
+        if let Some(children) = object.shape.children_mut() {
+            work.extend(children.iter_mut());
         }
     }
     Ok(())

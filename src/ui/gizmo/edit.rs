@@ -2,7 +2,7 @@
 //! at the drag's start, the pointer's ray then and now, and whether Shift snaps, to the
 //! scene edit to push and the value to show. The adapter in `gizmo_drag.rs` feeds it.
 
-use glam::DVec3;
+use glam::{DAffine3, DVec3};
 
 use crate::gizmo::HandleId;
 use crate::gizmo::snap::{ROTATE_STEP_DEG, SCALE_STEP, TRANSLATE_STEP, snap};
@@ -13,6 +13,7 @@ use crate::gizmo::transform_drag::{
     TranslateHandle, euler_ring_axes, rotate_drag, scale_drag, translate_drag,
 };
 use crate::gizmo::view::object_axes;
+use crate::scene::tree_path::{object_at, world_from_parent};
 use crate::scene::{Camera, Light, Object, Scene, Transform, Trs};
 use crate::trace::Ray;
 use crate::ui::commands::{SceneEdit, Selection};
@@ -22,6 +23,9 @@ use crate::ui::commands::{SceneEdit, Selection};
 pub enum Grabbed {
     /// An object with a translate/rotate/scale transform.
     Object(usize, Object, Trs),
+    /// A part of an object tree with such a transform, by path, and the transform from
+    /// the world to its parent's space (it moves along its parent's axes).
+    Part(Vec<usize>, Object, Trs, DAffine3),
     /// A light.
     Light(usize, Light),
     /// The scene camera (its frustum, seen from the view camera).
@@ -68,6 +72,22 @@ pub fn drag_edit(
             object.transform = Transform::Trs(trs);
             Some(DragEdit {
                 edit: SceneEdit::SetObject(*index, object),
+                readout,
+            })
+        }
+        Grabbed::Part(path, object, trs, parent_from_world) => {
+            // The drag worked out in the parent's space keeps the grabbed point under
+            // the cursor: an affine map keeps points on the pointer's rays on them.
+            let (start, now) = (
+                start.transformed(parent_from_world),
+                now.transformed(parent_from_world),
+            );
+            let trs = object_drag(handle, trs, &start, &now, snapped)?;
+            let readout = object_readout(handle, &trs);
+            let mut object = object.clone();
+            object.transform = Transform::Trs(trs);
+            Some(DragEdit {
+                edit: SceneEdit::SetPart(path.clone(), object),
                 readout,
             })
         }
@@ -243,6 +263,18 @@ pub fn grab(scene: &Scene, selection: &Selection, handle: HandleId) -> Option<Gr
                 Transform::Matrix(_) => None,
             }
         }
+        (Selection::Part(path), _) => {
+            let object = object_at(&scene.objects, path)?;
+            match &object.transform {
+                Transform::Trs(trs) => Some(Grabbed::Part(
+                    path.clone(),
+                    object.clone(),
+                    *trs,
+                    world_from_parent(&scene.objects, path).inverse(),
+                )),
+                Transform::Matrix(_) => None,
+            }
+        }
         (Selection::Light(i), _) => Some(Grabbed::Light(*i, scene.lights.get(*i)?.clone())),
         (Selection::Camera, HandleId::Translate(_)) => Some(Grabbed::Camera(scene.camera.clone())),
         _ => None,
@@ -250,102 +282,5 @@ pub fn grab(scene: &Scene, selection: &Selection, handle: HandleId) -> Option<Gr
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::trace::PinholeCamera;
-
-    fn scene() -> Scene {
-        crate::ui::document::files::default_scene()
-    }
-
-    fn geometry(scene: &Scene) -> DragGeometry {
-        DragGeometry {
-            eye: scene.camera.position,
-            cone_length: (scene.camera.position - scene.camera.look_at).length() * 0.3,
-            sun: (scene.camera.look_at, 1.0),
-        }
-    }
-
-    #[test]
-    fn snapped_translate_lands_on_whole_units_of_the_moved_axis_only() {
-        let scene = scene();
-        let camera = PinholeCamera::new(&scene.camera, 800, 600);
-        let Transform::Trs(trs) = scene.objects[1].transform else {
-            panic!("red ball has a TRS transform");
-        };
-        let grabbed = Grabbed::Object(1, scene.objects[1].clone(), trs);
-        let a = camera.ray(camera.project(trs.translate + DVec3::X * 0.5).unwrap());
-        let b = camera.ray(camera.project(trs.translate + DVec3::X * 1.8).unwrap());
-        let handle = HandleId::Translate(TranslateHandle::Axis(0));
-        let edit = drag_edit(handle, &grabbed, &geometry(&scene), &a, &b, true).unwrap();
-        let SceneEdit::SetObject(1, object) = edit.edit else {
-            panic!("an object edit");
-        };
-        let Transform::Trs(moved) = object.transform else {
-            panic!("still TRS");
-        };
-        // -1.7 + 1.3 = -0.4 snaps to 0; y and z stay.
-        assert_eq!(moved.translate.x, 0.0);
-        assert_eq!(moved.translate.y, trs.translate.y);
-        assert_eq!(moved.translate.z, trs.translate.z);
-    }
-
-    #[test]
-    fn snapped_rotation_and_scale_use_their_steps() {
-        let scene = scene();
-        let camera = PinholeCamera::new(&scene.camera, 800, 600);
-        let Transform::Trs(trs) = scene.objects[2].transform else {
-            panic!("mirror ball has a TRS transform");
-        };
-        let grabbed = Grabbed::Object(2, scene.objects[2].clone(), trs);
-        let ray_at = |p: DVec3| camera.ray(camera.project(p).unwrap());
-        let c = trs.translate;
-        let (a, b) = (ray_at(c + DVec3::X), ray_at(c + DVec3::new(0.8, 0.0, -0.6)));
-        let edit = drag_edit(HandleId::Ring(1), &grabbed, &geometry(&scene), &a, &b, true);
-        assert!(edit.unwrap().readout.contains("rotate y 30.0°"));
-        let (a, b) = (ray_at(c + DVec3::X), ray_at(c + DVec3::X * 1.73));
-        let edit = drag_edit(
-            HandleId::Scale(0),
-            &grabbed,
-            &geometry(&scene),
-            &a,
-            &b,
-            true,
-        );
-        assert_eq!(edit.unwrap().readout, "scale x 1.70");
-    }
-
-    #[test]
-    fn aiming_a_directional_light_puts_its_tail_under_the_cursor() {
-        let scene = scene();
-        let camera = PinholeCamera::new(&scene.camera, 800, 600);
-        let light = scene.lights[2].clone();
-        let Light::Directional { direction: d0, .. } = light else {
-            panic!("light 3 is directional");
-        };
-        let grabbed = Grabbed::Light(2, light);
-        let geometry = geometry(&scene);
-        let (anchor, length) = geometry.sun;
-        // The cursor over a point of the plane through the tail where the drag started,
-        // facing the eye, off the sphere the tail sits on between drags.
-        let start_tail = anchor - d0.normalize() * length;
-        let (u, v) = (geometry.eye - start_tail)
-            .normalize()
-            .any_orthonormal_pair();
-        let tail = start_tail + 0.4 * length * u - 0.7 * length * v;
-        let wanted = -(tail - anchor).normalize();
-        let ray = camera.ray(camera.project(tail).unwrap());
-        let edit = drag_edit(HandleId::Aim, &grabbed, &geometry, &ray, &ray, false);
-        let Some(DragEdit {
-            edit: SceneEdit::SetLight(2, Light::Directional { direction, .. }),
-            ..
-        }) = edit
-        else {
-            panic!("a directional light edit");
-        };
-        assert!(
-            (direction.normalize() - wanted).length() < 1e-6,
-            "{direction}"
-        );
-    }
-}
+#[path = "edit_tests.rs"]
+mod tests;

@@ -12,6 +12,7 @@ use super::projection::ViewMapping;
 use crate::gizmo::transform_drag::{TranslateHandle, euler_ring_axes, world_axis};
 use crate::gizmo::view::object_axes;
 use crate::gizmo::{GizmoMode, HandleId};
+use crate::scene::tree_path::{object_at, world_from_parent};
 use crate::scene::{Light, Scene, Transform};
 use crate::ui::commands::Selection;
 
@@ -77,8 +78,13 @@ pub fn gizmo_elements(
         light_elements(&mut out, view, index, light, selected_light == Some(index));
     }
     match selection {
-        Selection::Object(index) => {
-            if let Some(Transform::Trs(trs)) = scene.objects.get(*index).map(|o| &o.transform) {
+        Selection::Object(_) | Selection::Part(_) => {
+            let path = selection.node_path().unwrap_or_default();
+            if let Some(Transform::Trs(trs)) =
+                object_at(&scene.objects, &path).map(|o| &o.transform)
+            {
+                // A part moves in its parent's space: its handles follow the parent's axes.
+                let view = &view.framed(world_from_parent(&scene.objects, &path));
                 let size = view.world_per_point(trs.translate);
                 match mode {
                     GizmoMode::Translate => translate_elements(&mut out, view, trs.translate, size),

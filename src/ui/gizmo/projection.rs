@@ -5,7 +5,7 @@
 
 use egui::emath::RectTransform;
 use egui::{Pos2, Rect, Vec2};
-use glam::{DVec2, DVec3};
+use glam::{DAffine3, DVec2, DVec3};
 
 use crate::gizmo::view::world_per_pixel;
 use crate::scene::Camera;
@@ -30,6 +30,10 @@ pub struct ViewMapping {
     pub image_from_screen: RectTransform,
     /// The image height over the picture's height on screen.
     pub image_px_per_point: f64,
+    /// The space the points given to `project` and `world_per_point` are in, as a
+    /// transform to the world: the identity, or a tree node's parent space, for drawing
+    /// a part's gizmo along its parent's axes ([`ViewMapping::framed`]).
+    frame: DAffine3,
 }
 
 impl ViewMapping {
@@ -46,13 +50,25 @@ impl ViewMapping {
             image_from_screen: screen_from_image.inverse(),
             screen_from_image,
             image_px_per_point: f64::from(height) / f64::from(picture.height().max(1.0)),
+            frame: DAffine3::IDENTITY,
         }
     }
 
-    /// Where a world point is on screen; `None` behind the eye.
+    /// This mapping for points given in another space (`world_from_local`): what
+    /// `project` and `world_per_point` take. Rays and the light anchors stay in the world.
+    #[must_use]
+    pub fn framed(&self, world_from_local: DAffine3) -> Self {
+        Self {
+            frame: world_from_local,
+            ..self.clone()
+        }
+    }
+
+    /// Where a world point (a point of the frame's space, when framed) is on screen;
+    /// `None` behind the eye.
     #[must_use]
     pub fn project(&self, p_world: DVec3) -> Option<Pos2> {
-        let p = self.camera.project(p_world)?;
+        let p = self.camera.project(self.frame.transform_point3(p_world))?;
         let pos = self
             .screen_from_image
             .transform_pos(Pos2::new(p.x as f32, p.y as f32));
@@ -96,11 +112,16 @@ impl ViewMapping {
         self.shown.position
     }
 
-    /// World units per screen point at `p_world`.
+    /// World units (the frame's units, when framed: by its mean scale) per screen point
+    /// at `p_world`.
     #[must_use]
     pub fn world_per_point(&self, p_world: DVec3) -> f64 {
-        world_per_pixel(&self.shown, p_world, f64::from(self.shown.height.max(1)))
+        let at = self.frame.transform_point3(p_world);
+        let scale = self.frame.matrix3.determinant().abs().cbrt();
+        let scale = if scale.is_normal() { scale } else { 1.0 };
+        world_per_pixel(&self.shown, at, f64::from(self.shown.height.max(1)))
             * self.image_px_per_point
+            / scale
     }
 
     /// The slant length of a spotlight's drawn cone.

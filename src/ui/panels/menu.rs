@@ -20,6 +20,10 @@ pub struct MenuState<'a> {
     pub can_redo: bool,
     /// Whether an object, light or material is selected.
     pub has_selection: bool,
+    /// Whether an object or a part of a tree is selected (it can be grouped).
+    pub has_object_selected: bool,
+    /// Whether the selection is a group (it can be ungrouped).
+    pub group_selected: bool,
 }
 
 /// Shows the menu bar.
@@ -179,6 +183,23 @@ fn edit_menu_ui(ui: &mut Ui, state: &MenuState<'_>, commands: &mut Vec<Command>)
         "Delete selection",
         state.has_selection,
         Command::Edit(SceneEdit::DeleteSelected),
+        commands,
+    );
+    ui.separator();
+    entry_ui(
+        ui,
+        "Group",
+        "Group selection",
+        state.has_object_selected,
+        Command::Edit(SceneEdit::GroupSelected),
+        commands,
+    );
+    entry_ui(
+        ui,
+        "Ungroup",
+        "Ungroup selection",
+        state.group_selected,
+        Command::Edit(SceneEdit::UngroupSelected),
         commands,
     );
 }

@@ -5,4 +5,5 @@ pub mod inspector;
 pub mod menu;
 pub mod notices;
 pub mod outliner;
+mod outliner_tree;
 pub mod status_bar;

@@ -9,6 +9,8 @@ use crate::trace::Isolation;
 use crate::ui::commands::{Command, LightKind, SceneEdit, Selection};
 use crate::ui::state::{IsolationToggle, light_label};
 
+use super::outliner_tree::node_ui;
+
 /// Least width of one isolation toggle at the end of a row.
 const TOGGLE_WIDTH: f32 = 22.0;
 
@@ -51,29 +53,28 @@ pub fn outliner_ui(
                         icon: shape_icon(&object.shape),
                         greyed: !shown,
                     };
-                    row_ui(
+                    node_ui(
                         ui,
+                        object,
+                        &[index],
+                        selection,
                         commands,
-                        |ui, commands| {
-                            let hide = toggle_ui(
+                        &mut |ui, commands| {
+                            row_ui(
                                 ui,
-                                !shown,
-                                HIDE_ICON,
-                                &format!("hide {}", object.name),
-                            )
-                            .on_hover_text(if shown {
-                                "Hide: leave it out of the render (no shadow, no reflection)"
-                            } else {
-                                "Hidden: click to show it again"
-                            });
-                            if hide.clicked() {
-                                commands.push(Command::Isolate(IsolationToggle::Hide(index)));
-                            }
-                        },
-                        |ui, commands| {
-                            let response =
-                                item_ui(ui, &row, selected, Selection::Object(index), commands);
-                            item_menu(&response, Selection::Object(index), commands);
+                                commands,
+                                |ui, commands| hide_toggle_ui(ui, index, object, shown, commands),
+                                |ui, commands| {
+                                    let response = item_ui(
+                                        ui,
+                                        &row,
+                                        selected,
+                                        Selection::Object(index),
+                                        commands,
+                                    );
+                                    item_menu(&response, Selection::Object(index), commands);
+                                },
+                            );
                         },
                     );
                 }
@@ -128,7 +129,7 @@ pub fn outliner_ui(
         });
 }
 
-fn shape_icon(shape: &Shape) -> &'static str {
+pub(super) fn shape_icon(shape: &Shape) -> &'static str {
     match shape {
         Shape::Sphere => "●",
         Shape::Plane => "▭",
@@ -165,7 +166,7 @@ fn section_ui(ui: &mut Ui, title: &str, count: Option<usize>, body: impl FnOnce(
 }
 
 /// The look of a row: its name, icon and whether it is greyed (hidden, muted, not solo).
-struct Row<'a> {
+pub(super) struct Row<'a> {
     name: &'a str,
     icon: &'a str,
     greyed: bool,
@@ -173,7 +174,7 @@ struct Row<'a> {
 
 impl<'a> Row<'a> {
     /// A row that is never greyed.
-    fn plain(name: &'a str, icon: &'a str) -> Self {
+    pub(super) fn plain(name: &'a str, icon: &'a str) -> Self {
         Self {
             name,
             icon,
@@ -201,7 +202,7 @@ fn row_ui(
 
 /// A selectable row as wide as the space left; its accessible name is the item's name
 /// alone.
-fn item_ui(
+pub(super) fn item_ui(
     ui: &mut Ui,
     row: &Row,
     selected: bool,
@@ -226,6 +227,26 @@ fn item_ui(
         commands.push(Command::Select(target));
     }
     response
+}
+
+/// An object's hide toggle, for a right-to-left layout.
+fn hide_toggle_ui(
+    ui: &mut Ui,
+    index: usize,
+    object: &crate::scene::Object,
+    shown: bool,
+    commands: &mut Vec<Command>,
+) {
+    let hide = toggle_ui(ui, !shown, HIDE_ICON, &format!("hide {}", object.name)).on_hover_text(
+        if shown {
+            "Hide: leave it out of the render (no shadow, no reflection)"
+        } else {
+            "Hidden: click to show it again"
+        },
+    );
+    if hide.clicked() {
+        commands.push(Command::Isolate(IsolationToggle::Hide(index)));
+    }
 }
 
 /// A small on/off toggle at the end of a row, named for screen readers and tests.
@@ -267,7 +288,7 @@ fn light_toggles_ui(
 }
 
 /// Right-click menu of an item: rename (objects, materials), duplicate, delete.
-fn item_menu(response: &egui::Response, target: Selection, commands: &mut Vec<Command>) {
+pub(super) fn item_menu(response: &egui::Response, target: Selection, commands: &mut Vec<Command>) {
     response.context_menu(|ui| {
         let renamable = matches!(target, Selection::Object(_) | Selection::Material(_));
         if renamable && ui.button("Rename").clicked() {

@@ -10,6 +10,7 @@ mod material;
 mod mesh;
 mod object;
 mod render_settings;
+mod tree_node;
 
 use std::collections::BTreeMap;
 
@@ -43,7 +44,12 @@ pub fn inspector_ui(
             Selection::Render => render_settings::render_ui(ui, &scene.render, commands),
             Selection::Object(index) => {
                 if let Some(object) = scene.objects.get(*index) {
-                    object::object_ui(ui, scene, *index, object, meshes, focus_name, commands);
+                    object::object_ui(ui, scene, &[*index], object, meshes, focus_name, commands);
+                }
+            }
+            Selection::Part(path) => {
+                if let Some(object) = crate::scene::tree_path::object_at(&scene.objects, path) {
+                    object::object_ui(ui, scene, path, object, meshes, focus_name, commands);
                 }
             }
             Selection::Light(index) => {

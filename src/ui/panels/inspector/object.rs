@@ -9,25 +9,31 @@ use super::fields::{number_row_ui, vec3_row_ui};
 use super::limits::{self, Limits};
 use super::material::material_rows_ui;
 use super::mesh::mesh_rows_ui;
+use super::tree_node::{breadcrumb_ui, csg_op_row_ui, tree_actions_ui};
 use super::{grid_ui, heading_ui};
 use crate::preview::MeshFacts;
+use crate::scene::tree_path::effective_material;
 use crate::scene::*;
 use crate::ui::commands::{Command, SceneEdit};
 
+/// The inspector for the object or tree node at `path` (a top-level object's path is
+/// its index alone).
 pub(super) fn object_ui(
     ui: &mut Ui,
     scene: &Scene,
-    index: usize,
+    path: &[usize],
     object: &Object,
     meshes: &BTreeMap<String, MeshFacts>,
     focus_name: &mut bool,
     commands: &mut Vec<Command>,
 ) {
-    heading_ui(ui, "OBJECT", &object.name);
+    let nested = path.len() > 1;
+    heading_ui(ui, if nested { "PART" } else { "OBJECT" }, &object.name);
+    breadcrumb_ui(ui, scene, path, commands);
     let mut edited = object.clone();
     grid_ui(ui, "object", |ui| {
         ui.label("Name");
-        name_field_ui(ui, index, &mut edited.name, focus_name);
+        name_field_ui(ui, path, &mut edited.name, focus_name);
         ui.end_row();
 
         ui.label("Shape");
@@ -55,14 +61,26 @@ pub(super) fn object_ui(
             // A tree or a mesh is more than a shape: switching it to a unit shape would
             // drop its operands, children or file in one click.
             ui.label(tree_or_mesh_summary(&edited.shape))
-                .on_hover_text("Edit this object's parts in the scene file; see the outliner");
+                .on_hover_text("Its parts are under it in the outliner");
             ui.end_row();
+            csg_op_row_ui(ui, &mut edited.shape);
         }
 
         ui.label("Material");
+        let inherited = effective_material(&scene.objects, &path[..path.len() - 1]);
+        let inherit_label = format!("(inherit: {})", inherited.unwrap_or("none"));
+        let shown = if edited.material.is_empty() {
+            inherit_label.as_str()
+        } else {
+            edited.material.as_str()
+        };
         egui::ComboBox::from_id_salt("material")
-            .selected_text(edited.material.as_str())
+            .selected_text(shown)
             .show_ui(ui, |ui| {
+                // Parts may show their parent's material; a top-level object needs one.
+                if nested {
+                    ui.selectable_value(&mut edited.material, String::new(), &inherit_label);
+                }
                 for name in scene.materials.keys() {
                     ui.selectable_value(&mut edited.material, name.clone(), name);
                 }
@@ -73,16 +91,36 @@ pub(super) fn object_ui(
     });
     ui.add_space(6.0);
     ui.label(egui::RichText::new("Transform").strong());
+    if nested {
+        ui.weak("in its parent's space");
+    }
     transform_ui(ui, &mut edited.transform);
+    ui.add_space(4.0);
+    tree_actions_ui(ui, &object.shape, commands);
     if edited != *object {
-        commands.push(Command::Edit(SceneEdit::SetObject(index, edited)));
+        let edit = match path {
+            [index] => SceneEdit::SetObject(*index, edited),
+            _ => SceneEdit::SetPart(path.to_vec(), edited),
+        };
+        commands.push(Command::Edit(edit));
     }
     // The material's values right here, since that is what one tunes next.
-    if let Some(material) = scene.materials.get(&object.material) {
+    let shown_material = effective_material(&scene.objects, path).unwrap_or_default();
+    if let Some(material) = scene.materials.get(shown_material) {
         ui.add_space(6.0);
-        shared_material_ui(ui, scene, index, &object.material, commands);
+        if let [index] = path {
+            shared_material_ui(ui, scene, *index, &object.material, commands);
+        }
+        let inherited = if object.material.is_empty() {
+            " (inherited)"
+        } else {
+            ""
+        };
         egui::CollapsingHeader::new(
-            egui::RichText::new(format!("Material \u{201c}{}\u{201d}", object.material)).strong(),
+            egui::RichText::new(format!(
+                "Material \u{201c}{shown_material}\u{201d}{inherited}"
+            ))
+            .strong(),
         )
         .id_salt("object material")
         .default_open(true)
@@ -93,7 +131,7 @@ pub(super) fn object_ui(
             });
             if edited != *material {
                 commands.push(Command::Edit(SceneEdit::SetMaterial(
-                    object.material.clone(),
+                    shown_material.to_owned(),
                     edited,
                 )));
             }
@@ -105,8 +143,8 @@ pub(super) fn object_ui(
 /// name (the outliner would show a blank row), so an emptied field keeps its text only
 /// while it is being typed in, and on leaving it the name stays as it was, said in the
 /// status line.
-fn name_field_ui(ui: &mut Ui, index: usize, name: &mut String, focus_name: &mut bool) {
-    let id = ui.make_persistent_id(("object name being typed", index));
+fn name_field_ui(ui: &mut Ui, path: &[usize], name: &mut String, focus_name: &mut bool) {
+    let id = ui.make_persistent_id(("object name being typed", path));
     let mut text = ui
         .data(|d| d.get_temp::<String>(id))
         .unwrap_or_else(|| name.clone());

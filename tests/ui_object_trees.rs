@@ -1,0 +1,104 @@
+//! Object trees in the editor: the outliner folds a CSG node or group open to its parts,
+//! a part is selected and edited in the inspector (in its parent's space, one undo step),
+//! its breadcrumb selects its parent, and Ctrl+G / Ungroup wrap and unwrap an object.
+
+mod editor_harness;
+
+use editor_harness::harness_on_example;
+use egui::{Key, Modifiers};
+use egui_kittest::kittest::Queryable;
+use raylab::scene::Shape;
+use raylab::scene::tree_path::object_at;
+use raylab::ui::{Command, Selection};
+
+fn die_index(harness: &egui_kittest::Harness<'_, raylab::ui::EditorApp>) -> usize {
+    harness
+        .state()
+        .scene()
+        .objects
+        .iter()
+        .position(|o| o.name == "die")
+        .expect("the die")
+}
+
+#[test]
+fn a_part_is_shown_selected_edited_and_undone_and_its_breadcrumb_selects_the_parent() {
+    let mut harness = harness_on_example("csg.ron");
+    let die = die_index(&harness);
+    // Parts are folded away until their node opens.
+    assert!(harness.query_by_label("pip 6.1").is_none());
+    harness
+        .state_mut()
+        .push(Command::Select(Selection::Part(vec![die, 2])));
+    harness.run();
+    // The node holding the selection opens, and the part's row is there to click.
+    harness.get_by_role_and_label(egui::Role::Button, "pip 6.1");
+    harness
+        .get_by_role_and_label(egui::Role::Button, "pip 6.2")
+        .click();
+    harness.run();
+    assert_eq!(harness.state().selection(), &Selection::Part(vec![die, 3]));
+    harness.get_by_label("in its parent's space");
+    let before = harness.state().scene().clone();
+    harness.get_by_label("object name").focus();
+    harness.run();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    harness.key_press(Key::Backspace);
+    harness.run();
+    harness.get_by_label("object name").type_text("six two");
+    harness.run();
+    harness.get_by_label("Camera").click();
+    harness.run();
+    harness
+        .state_mut()
+        .push(Command::Select(Selection::Part(vec![die, 3])));
+    harness.run();
+    let scene = harness.state().scene();
+    assert_eq!(
+        object_at(&scene.objects, &[die, 3]).unwrap().name,
+        "six two"
+    );
+    assert_eq!(scene.objects.len(), before.objects.len());
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    harness.run();
+    assert_eq!(harness.state().scene(), &before, "one undo step");
+    // The breadcrumb's link selects the parent.
+    harness
+        .get_by_role_and_label(egui::Role::Link, "die")
+        .click();
+    harness.run();
+    assert_eq!(harness.state().selection(), &Selection::Object(die));
+    harness.get_by_label("operator");
+}
+
+#[test]
+fn ctrl_g_groups_the_selected_object_and_ungroup_puts_it_back() {
+    let mut harness = harness_on_example("csg.ron");
+    let die = die_index(&harness);
+    let before = harness.state().scene().clone();
+    harness
+        .state_mut()
+        .push(Command::Select(Selection::Object(die)));
+    harness.run();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::G);
+    harness.run();
+    let scene = harness.state().scene();
+    let Shape::Group { children } = &scene.objects[die].shape else {
+        panic!("grouped: {:?}", scene.objects[die].shape);
+    };
+    assert_eq!(children[0], before.objects[die]);
+    assert_eq!(harness.state().selection(), &Selection::Object(die));
+    harness.get_by_label("Ungroup").click();
+    harness.run();
+    assert_eq!(
+        harness.state().scene(),
+        &before,
+        "the group at rest unwraps exactly"
+    );
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    harness.run();
+    assert!(matches!(
+        harness.state().scene().objects[die].shape,
+        Shape::Group { .. }
+    ));
+}
