@@ -425,3 +425,65 @@ fn only_intersections_of_primitives_count_as_convex() {
     let sideways = spawn_ray(&floor, DVec3::new(1.0, 0.0, 0.3));
     assert_eq!(world.occluder(&sideways, f64::INFINITY), Some(0));
 }
+
+#[test]
+fn a_hit_names_the_path_of_the_leaf_it_lies_on_through_groups_and_csg_nodes() {
+    let group = object(
+        "g",
+        Shape::Group {
+            children: vec![
+                object("a", Shape::Sphere, DVec3::new(-3.0, 0.0, 0.0), 1.0, ""),
+                csg(
+                    "c",
+                    CsgOp::Union,
+                    vec![
+                        object("box", Shape::Cube, DVec3::ZERO, 0.8, ""),
+                        object("ball", Shape::Sphere, DVec3::new(3.0, 0.0, 0.0), 1.0, "gold"),
+                    ],
+                ),
+            ],
+        },
+        DVec3::ZERO,
+        1.0,
+        "red plastic",
+    );
+    let lone = object("lone", Shape::Sphere, DVec3::new(0.0, 6.0, 0.0), 1.0, "gold");
+    let world = world_of(vec![lone, group]);
+    let path_at = |x: f64, y: f64| {
+        let hit = world.intersect(&down_from(x, y, 10.0), f64::INFINITY).unwrap();
+        world.node_path(&hit)
+    };
+    assert_eq!(path_at(0.0, 6.0), vec![0]);
+    assert_eq!(path_at(-3.0, 0.0), vec![1, 0]);
+    assert_eq!(path_at(0.0, 0.0), vec![1, 1, 0]);
+    assert_eq!(path_at(3.0, 0.0), vec![1, 1, 1]);
+}
+
+#[test]
+fn every_hit_on_the_csg_example_names_by_index_the_leaf_its_name_path_names() {
+    use raylab::scene::tree_path::path_name;
+    use raylab::trace::PinholeCamera;
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/csg.ron");
+    let scene = raylab::scene::load_scene(&path).unwrap();
+    let world = World::new(&scene).unwrap();
+    let camera = PinholeCamera::new(&scene.camera, 160, 120);
+    let mut leaves = std::collections::BTreeSet::new();
+    for y in 0..120 {
+        for x in 0..160 {
+            let ray = camera.ray(glam::DVec2::new(f64::from(x) + 0.5, f64::from(y) + 0.5));
+            let Some(hit) = world.intersect(&ray, f64::INFINITY) else {
+                continue;
+            };
+            let object = &world.objects[hit.object];
+            let expected = match &object.csg {
+                Some(tree) => tree.leaves[hit.part as usize].path.clone(),
+                None => object.name.clone(),
+            };
+            let by_index = path_name(&scene.objects, &world.node_path(&hit));
+            assert_eq!(by_index, expected, "pixel ({x}, {y})");
+            leaves.insert(by_index);
+        }
+    }
+    // The pips cut in chunks (tested as one box first) are named right too.
+    assert!(leaves.iter().filter(|l| l.contains("pip")).count() >= 5, "{leaves:?}");
+}

@@ -45,6 +45,9 @@ pub struct World {
     /// Index in the scene's object list of each entry of `objects` (the object id): of
     /// the top-level object a group's member belongs to.
     pub object_scene_index: Vec<usize>,
+    /// Per entry of `objects`, the child indices from its top-level object down to it
+    /// (empty for a top-level object), for the editor's selection of a tree's part.
+    pub object_tree_path: Vec<Vec<usize>>,
     /// Materials, indexed by [`WorldObject::material`].
     pub materials: Vec<Material>,
     /// Names of `materials`, same order.
@@ -115,7 +118,8 @@ impl World {
         validate(scene)?;
         let material_names: Vec<String> = scene.materials.keys().cloned().collect();
         let materials = scene.materials.values().cloned().collect();
-        let (objects, object_scene_index) = flatten(scene, &material_names, meshes)?;
+        let (objects, object_scene_index, object_tree_path) =
+            flatten(scene, &material_names, meshes)?;
         let mut lights = Vec::new();
         let mut light_scene_index = Vec::new();
         let mut light_spheres = Vec::new();
@@ -136,6 +140,7 @@ impl World {
         }
         let mut world = Self {
             object_scene_index,
+            object_tree_path,
             objects,
             materials,
             material_names,
@@ -227,6 +232,23 @@ impl World {
         let ray_in_object = ray.transformed(&object.object_from_world);
         let hit = object.hit_unbounded(&ray_in_object, t_max)?;
         Some(self.surface_point(index, ray, &hit))
+    }
+
+    /// The path of the scene node a hit lies on: its top-level object's index, then
+    /// child and operand indices down to the leaf (a CSG operand's too), as the editor
+    /// selects a part of a tree.
+    #[must_use]
+    pub fn node_path(&self, hit: &SurfacePoint) -> Vec<usize> {
+        let mut path = vec![self.scene_object(hit.object)];
+        if let Some(below) = self.object_tree_path.get(hit.object) {
+            path.extend_from_slice(below);
+        }
+        if let Some(tree) = &self.objects[hit.object].csg
+            && let Some(leaf) = tree.leaves.get(hit.part as usize)
+        {
+            path.extend_from_slice(&leaf.tree_path);
+        }
+        path
     }
 
     /// For a mesh object: which triangle the ray meets first and where on it.

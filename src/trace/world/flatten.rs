@@ -22,10 +22,12 @@ struct Pending<'a> {
     material: &'a str,
     path: String,
     top_level: usize,
+    /// Child indices from the top-level object down to this one.
+    below: Vec<usize>,
 }
 
-/// The world objects of `scene` in tree order, and the scene index of each one's
-/// top-level object.
+/// The world objects of `scene` in tree order, the scene index of each one's top-level
+/// object, and the child indices from there down to it.
 ///
 /// # Errors
 /// A shape the tracer cannot draw, or a leaf without a material, by tree path.
@@ -33,7 +35,7 @@ pub(crate) fn flatten(
     scene: &Scene,
     material_names: &[String],
     meshes: &MeshStore,
-) -> Result<(Vec<WorldObject>, Vec<usize>), SceneError> {
+) -> Result<Flattened, SceneError> {
     let material_index = |name: &str| {
         material_names
             .binary_search_by(|m| m.as_str().cmp(name))
@@ -41,6 +43,7 @@ pub(crate) fn flatten(
     };
     let mut objects = Vec::with_capacity(scene.objects.len());
     let mut scene_index = Vec::with_capacity(scene.objects.len());
+    let mut tree_paths = Vec::with_capacity(scene.objects.len());
     let mut work: Vec<Pending> = scene
         .objects
         .iter()
@@ -52,6 +55,7 @@ pub(crate) fn flatten(
             material: &object.material,
             path: object.name.clone(),
             top_level,
+            below: Vec::new(),
         })
         .collect();
     while let Some(node) = work.pop() {
@@ -59,7 +63,7 @@ pub(crate) fn flatten(
         let world_from_object = node.world_from_parent * object.transform.world_from_object();
         let (shape, body) = match &object.shape {
             Shape::Group { children } => {
-                work.extend(children.iter().rev().map(|child| Pending {
+                work.extend(children.iter().enumerate().rev().map(|(k, child)| Pending {
                     object: child,
                     world_from_parent: world_from_object,
                     material: if child.material.is_empty() {
@@ -69,6 +73,7 @@ pub(crate) fn flatten(
                     },
                     path: format!("{}/{}", node.path, child.name),
                     top_level: node.top_level,
+                    below: [node.below.as_slice(), &[k]].concat(),
                 }));
                 continue;
             }
@@ -114,9 +119,14 @@ pub(crate) fn flatten(
             material,
         ));
         scene_index.push(node.top_level);
+        tree_paths.push(node.below);
     }
-    Ok((objects, scene_index))
+    Ok((objects, scene_index, tree_paths))
 }
+
+/// What [`flatten`] makes: the world objects, the scene index of each one's top-level
+/// object, and the child indices from there down to it.
+pub(crate) type Flattened = (Vec<WorldObject>, Vec<usize>, Vec<Vec<usize>>);
 
 /// The error for a shape the tracer cannot draw yet.
 fn not_drawn(path: &str, shape: &Shape) -> SceneError {

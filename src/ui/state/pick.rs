@@ -6,8 +6,12 @@ use crate::trace::Ray;
 /// What a click asks for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum PickPurpose {
-    /// Select the object under the cursor (nothing: clear the selection).
+    /// Select the object under the cursor, the leaf of a tree (nothing: clear the
+    /// selection).
     Select,
+    /// Select the node holding the leaf under the cursor (Shift+click): its CSG node or
+    /// group, or the object itself at the top level.
+    SelectParent,
     /// Inspect the scene camera's pixel that sees the point under the cursor.
     Inspect,
 }

@@ -1,4 +1,5 @@
-//! Clicks on the picture: a click selects what the ray under it meets; in inspect mode
+//! Clicks on the picture: a click selects what the ray under it meets (the leaf of an
+//! object tree; Shift+click the node holding it); in inspect mode
 //! (the toolbar's toggle, or Alt held) a click, or moving with Alt held and no button
 //! down, inspects a pixel of the scene camera instead. The rays are cast off the UI
 //! thread ([`Command::Pick`]); in camera view an inspected pixel is simply the one under
@@ -43,10 +44,19 @@ pub fn picture_clicks(
         }
     } else if clicked && let Some(pos) = response.interact_pointer_pos() {
         match view.pixel_ray(pos) {
-            Some(ray) => commands.push(Command::Pick(PickRequest {
-                ray,
-                purpose: PickPurpose::Select,
-            })),
+            Some(ray) => {
+                // A click selects the leaf hit; Shift+click the node holding it (Alt
+                // is the inspector's).
+                let shift = ui.input(|i| i.modifiers.shift);
+                commands.push(Command::Pick(PickRequest {
+                    ray,
+                    purpose: if shift {
+                        PickPurpose::SelectParent
+                    } else {
+                        PickPurpose::Select
+                    },
+                }));
+            }
             None => commands.push(Command::Select(Selection::None)),
         }
     }

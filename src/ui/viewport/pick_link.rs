@@ -16,9 +16,10 @@ use crate::ui::commands::{Command, Selection};
 use crate::ui::state::{PickPurpose, PickRequest};
 
 /// What the ray met first.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 struct PickAnswer {
-    object: Option<usize>,
+    /// The path of the scene node hit (see `World::node_path`).
+    node: Option<Vec<usize>>,
     point: Option<DVec3>,
 }
 
@@ -49,7 +50,7 @@ impl PickLink {
             Box::new(move |world| {
                 let hit = world.intersect(&ray, f64::INFINITY);
                 PickAnswer {
-                    object: hit.map(|h| world.scene_object(h.object)),
+                    node: hit.as_ref().map(|h| world.node_path(h)),
                     point: hit.map(|h| h.p),
                 }
             }),
@@ -81,8 +82,17 @@ impl PickLink {
 fn command_for(scene: &Scene, purpose: PickPurpose, answer: PickAnswer) -> Result<Command, String> {
     match purpose {
         PickPurpose::Select => Ok(Command::Select(
-            answer.object.map_or(Selection::None, Selection::Object),
+            answer.node.map_or(Selection::None, Selection::node),
         )),
+        PickPurpose::SelectParent => Ok(Command::Select(answer.node.map_or(
+            Selection::None,
+            |mut path| {
+                if path.len() > 1 {
+                    path.pop();
+                }
+                Selection::node(path)
+            },
+        ))),
         PickPurpose::Inspect => {
             let point = answer
                 .point
@@ -108,20 +118,33 @@ mod tests {
         let point = DVec3::new(0.2, 0.5, 0.1);
         let pixel = camera.project(point).unwrap();
         let answer = PickAnswer {
-            object: Some(1),
+            node: Some(vec![1]),
             point: Some(point),
         };
         let expected = (pixel.x.floor() as u32, pixel.y.floor() as u32);
         assert_eq!(
-            command_for(&scene, PickPurpose::Inspect, answer),
+            command_for(&scene, PickPurpose::Inspect, answer.clone()),
             Ok(Command::InspectPixel(Some(expected)))
         );
         assert_eq!(
-            command_for(&scene, PickPurpose::Select, answer),
+            command_for(&scene, PickPurpose::Select, answer.clone()),
             Ok(Command::Select(Selection::Object(1)))
         );
+        // A leaf of a tree is selected as a part; Shift+click takes the node holding it.
+        let leaf = PickAnswer {
+            node: Some(vec![2, 0, 3]),
+            ..answer
+        };
+        assert_eq!(
+            command_for(&scene, PickPurpose::Select, leaf.clone()),
+            Ok(Command::Select(Selection::Part(vec![2, 0, 3])))
+        );
+        assert_eq!(
+            command_for(&scene, PickPurpose::SelectParent, leaf),
+            Ok(Command::Select(Selection::Part(vec![2, 0])))
+        );
         let behind = PickAnswer {
-            object: Some(1),
+            node: Some(vec![1]),
             point: Some(scene.camera.position * 2.0 - scene.camera.look_at),
         };
         assert!(command_for(&scene, PickPurpose::Inspect, behind).is_err());

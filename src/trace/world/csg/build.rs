@@ -18,6 +18,8 @@ enum Work<'a> {
         node_from_object: DAffine3,
         material: &'a str,
         path: String,
+        /// Operand indices from the compiled node down to this object.
+        below: Vec<usize>,
     },
     /// All operands of a node are compiled: combine them.
     Emit { op: CsgOp, operands: u32 },
@@ -62,7 +64,7 @@ impl CsgTree {
         let mut checks: Vec<usize> = Vec::new();
         let mut chunks: Vec<usize> = Vec::new();
         let mut work = Vec::new();
-        push_operands(&mut work, op, operands, &DAffine3::IDENTITY, material, path);
+        push_operands(&mut work, op, operands, &DAffine3::IDENTITY, material, path, &[]);
         while let Some(item) = work.pop() {
             match item {
                 Work::ChunkStart { bounds, leaves } => {
@@ -110,20 +112,16 @@ impl CsgTree {
                     node_from_object,
                     material,
                     path,
+                    below,
                 } => match &object.shape {
                     Shape::Csg { op, operands } => {
-                        push_operands(&mut work, *op, operands, &node_from_object, material, &path);
+                        let place = &node_from_object;
+                        push_operands(&mut work, *op, operands, place, material, &path, &below);
                     }
                     Shape::Group { children } => {
                         let union = CsgOp::Union;
-                        push_operands(
-                            &mut work,
-                            union,
-                            children,
-                            &node_from_object,
-                            material,
-                            &path,
-                        );
+                        let place = &node_from_object;
+                        push_operands(&mut work, union, children, place, material, &path, &below);
                     }
                     shape => {
                         let (primitive, mesh) = match shape {
@@ -149,7 +147,9 @@ impl CsgTree {
                         tree.steps.push(Step::Leaf(index));
                         // Unit shapes are convex; a mesh may not be.
                         convex.push(mesh.is_none());
-                        let leaf = CsgLeaf::new(primitive, mesh, path, material, node_from_object);
+                        let mut leaf =
+                            CsgLeaf::new(primitive, mesh, path, material, node_from_object);
+                        leaf.tree_path = below;
                         extents.push(leaf.bounds.map_or(Extent::Unbounded, Extent::Box));
                         spheres.push((primitive == Primitive::Sphere).then_some(node_from_object));
                         tree.leaves.push(leaf);
@@ -172,13 +172,14 @@ fn push_operands<'a>(
     node_from_parent: &DAffine3,
     material: &'a str,
     path: &str,
+    below: &[usize],
 ) {
     let operands_count = u32::try_from(operands.len()).expect("under 2^32 operands");
     work.push(Work::Emit {
         op,
         operands: operands_count,
     });
-    let visit = |operand: &'a Object| Work::Visit {
+    let visit = |(k, operand): (usize, &'a Object)| Work::Visit {
         object: operand,
         node_from_object: *node_from_parent * operand.transform.world_from_object(),
         material: if operand.material.is_empty() {
@@ -187,6 +188,7 @@ fn push_operands<'a>(
             &operand.material
         },
         path: format!("{path}/{}", operand.name),
+        below: [below, &[k]].concat(),
     };
     let rest = operands.get(1..).unwrap_or_default();
     for chunk in chunks(rest, node_from_parent).iter().rev() {
@@ -194,7 +196,8 @@ fn push_operands<'a>(
         if chunk.len > 1 {
             work.push(Work::ChunkEnd);
         }
-        work.extend(members.iter().rev().map(visit));
+        let first = 1 + chunk.first;
+        work.extend(members.iter().enumerate().rev().map(|(k, o)| visit((first + k, o))));
         if chunk.len > 1 {
             work.push(Work::ChunkStart {
                 bounds: chunk.bounds,
@@ -206,7 +209,7 @@ fn push_operands<'a>(
         if skips(op, operands_count) {
             work.push(Work::Check);
         }
-        work.push(visit(first));
+        work.push(visit((0, first)));
     }
 }
 

@@ -22,6 +22,8 @@ pub struct CsgLeaf {
     pub mesh: Option<Arc<TriangleMesh>>,
     /// Its tree path below the scene's top level, `"die/pip 3"`.
     pub path: String,
+    /// Operand (or child) indices from the CSG node down to this leaf.
+    pub tree_path: Vec<usize>,
     /// Index into [`crate::trace::World::materials`] (inherited where it names none).
     pub material: usize,
     /// Leaf-to-node transform (the node's object space, not the world).
@@ -334,6 +336,7 @@ impl CsgLeaf {
             shape,
             mesh,
             path,
+            tree_path: Vec::new(),
             material,
             node_from_leaf,
             leaf_from_node,
