@@ -438,7 +438,13 @@ fn a_hit_names_the_path_of_the_leaf_it_lies_on_through_groups_and_csg_nodes() {
                     CsgOp::Union,
                     vec![
                         object("box", Shape::Cube, DVec3::ZERO, 0.8, ""),
-                        object("ball", Shape::Sphere, DVec3::new(3.0, 0.0, 0.0), 1.0, "gold"),
+                        object(
+                            "ball",
+                            Shape::Sphere,
+                            DVec3::new(3.0, 0.0, 0.0),
+                            1.0,
+                            "gold",
+                        ),
                     ],
                 ),
             ],
@@ -447,10 +453,18 @@ fn a_hit_names_the_path_of_the_leaf_it_lies_on_through_groups_and_csg_nodes() {
         1.0,
         "red plastic",
     );
-    let lone = object("lone", Shape::Sphere, DVec3::new(0.0, 6.0, 0.0), 1.0, "gold");
+    let lone = object(
+        "lone",
+        Shape::Sphere,
+        DVec3::new(0.0, 6.0, 0.0),
+        1.0,
+        "gold",
+    );
     let world = world_of(vec![lone, group]);
     let path_at = |x: f64, y: f64| {
-        let hit = world.intersect(&down_from(x, y, 10.0), f64::INFINITY).unwrap();
+        let hit = world
+            .intersect(&down_from(x, y, 10.0), f64::INFINITY)
+            .unwrap();
         world.node_path(&hit)
     };
     assert_eq!(path_at(0.0, 6.0), vec![0]);
@@ -485,5 +499,8 @@ fn every_hit_on_the_csg_example_names_by_index_the_leaf_its_name_path_names() {
         }
     }
     // The pips cut in chunks (tested as one box first) are named right too.
-    assert!(leaves.iter().filter(|l| l.contains("pip")).count() >= 5, "{leaves:?}");
+    assert!(
+        leaves.iter().filter(|l| l.contains("pip")).count() >= 5,
+        "{leaves:?}"
+    );
 }

@@ -59,6 +59,9 @@ pub enum SceneEdit {
     SetPart(Vec<usize>, Object),
     /// Puts the selected object or part into a new group in its place (Ctrl+G).
     GroupSelected,
+    /// Puts the selected object or part, as the first operand, into a new CSG node of
+    /// this operator in its place (add the other operands next).
+    CsgSelected(crate::scene::CsgOp),
     /// Puts the selected group's children in its place, placed as they were.
     UngroupSelected,
     /// Adds a unit shape as the last operand or child of the selected tree node.

@@ -42,7 +42,8 @@ impl SceneEdit {
                 *scene.objects.get_mut(index).ok_or("no such object")? = object;
             }
             SceneEdit::SetPart(path, object) => tree_edit::set_node(scene, &path, object)?,
-            SceneEdit::GroupSelected => tree_edit::group_selected(scene, selection)?,
+            SceneEdit::GroupSelected => tree_edit::wrap_selected(scene, selection, None)?,
+            SceneEdit::CsgSelected(op) => tree_edit::wrap_selected(scene, selection, Some(op))?,
             SceneEdit::UngroupSelected => tree_edit::ungroup_selected(scene, selection)?,
             SceneEdit::AddOperand(shape) => tree_edit::add_operand(scene, selection, shape)?,
             SceneEdit::SetLight(index, light) => {

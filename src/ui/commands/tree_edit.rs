@@ -38,23 +38,43 @@ pub(super) fn set_node(scene: &mut Scene, path: &[usize], node: Object) -> Resul
     Ok(())
 }
 
-/// Puts the selected node into a new group in its place (the group at the identity, so
-/// nothing moves), and selects the group.
-pub(super) fn group_selected(scene: &mut Scene, selection: &mut Selection) -> Result<(), String> {
-    let path = selection.node_path().ok_or("select an object to group")?;
+/// Puts the selected node into a new group (`op` `None`) or CSG node (as its first
+/// operand) in its place, at the identity so nothing moves, and selects the new node.
+pub(super) fn wrap_selected(
+    scene: &mut Scene,
+    selection: &mut Selection,
+    op: Option<CsgOp>,
+) -> Result<(), String> {
+    let path = selection.node_path().ok_or("select an object first")?;
     let siblings = siblings_mut(&mut scene.objects, &path).ok_or("no such object")?;
     let at = *path.last().expect("a node path is never empty");
     let node = siblings.get(at).ok_or("no such object")?.clone();
-    let name = unique_name("group", siblings.iter().map(|o| &o.name));
-    // A top-level group keeps the node's material, so its children can inherit it.
-    let material = node.material.clone();
+    let (base, shape) = match op {
+        None => (
+            "group",
+            Shape::Group {
+                children: vec![node.clone()],
+            },
+        ),
+        Some(op) => (
+            match op {
+                CsgOp::Union => "union",
+                CsgOp::Intersection => "intersection",
+                CsgOp::Difference => "difference",
+            },
+            Shape::Csg {
+                op,
+                operands: vec![node.clone()],
+            },
+        ),
+    };
+    let name = unique_name(base, siblings.iter().map(|o| &o.name));
+    // The new node keeps the object's material, so what is added to it inherits that.
     siblings[at] = Object {
         name,
-        shape: Shape::Group {
-            children: vec![node],
-        },
+        shape,
         transform: Transform::Trs(Trs::default()),
-        material,
+        material: node.material,
     };
     *selection = Selection::node(path);
     Ok(())
@@ -211,174 +231,5 @@ pub const CSG_OPS: [(CsgOp, &str); 3] = [
 ];
 
 #[cfg(test)]
-mod tests {
-    use glam::DVec3;
-
-    use super::*;
-    use crate::scene::tree_path::world_from_parent;
-    use crate::ui::commands::SceneEdit;
-
-    /// The CSG example scene: its die is rotated, scaled and holds a nested node.
-    fn csg_scene() -> Scene {
-        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/csg.ron");
-        crate::scene::load_scene(&path).expect("example")
-    }
-
-    fn die(scene: &Scene) -> usize {
-        scene
-            .objects
-            .iter()
-            .position(|o| o.name == "die")
-            .expect("die")
-    }
-
-    /// Where each leaf of the scene is, in the world.
-    fn leaf_placements(scene: &Scene) -> Vec<(String, DAffine3)> {
-        let mut out = Vec::new();
-        let mut work: Vec<(Vec<usize>, &Object)> = scene
-            .objects
-            .iter()
-            .enumerate()
-            .map(|(i, o)| (vec![i], o))
-            .collect();
-        while let Some((path, object)) = work.pop() {
-            let children = object.shape.children();
-            if children.is_empty() {
-                let world =
-                    world_from_parent(&scene.objects, &path) * object.transform.world_from_object();
-                out.push((object.name.clone(), world));
-            }
-            for (k, child) in children.iter().enumerate() {
-                let mut p = path.clone();
-                p.push(k);
-                work.push((p, child));
-            }
-        }
-        out.sort_by(|a, b| a.0.cmp(&b.0));
-        out
-    }
-
-    #[test]
-    fn grouping_then_ungrouping_a_moved_group_leaves_every_leaf_where_it_was() {
-        let mut scene = csg_scene();
-        let before = leaf_placements(&scene);
-        let mut selection = Selection::Object(die(&scene));
-        SceneEdit::GroupSelected
-            .apply(&mut scene, &mut selection)
-            .unwrap();
-        let group_path = selection.node_path().unwrap();
-        let group = object_at(&scene.objects, &group_path).unwrap();
-        assert!(matches!(group.shape, Shape::Group { .. }), "{selection:?}");
-        assert_eq!(leaf_placements(&scene), before, "grouping moves nothing");
-        // Move and turn the group; its leaves go with it.
-        let mut moved = group.clone();
-        moved.transform = Transform::Trs(Trs {
-            translate: DVec3::new(1.0, 0.5, -2.0),
-            rotate_deg: DVec3::new(0.0, 40.0, 10.0),
-            scale: DVec3::splat(1.5),
-        });
-        SceneEdit::SetObject(group_path[0], moved)
-            .apply(&mut scene, &mut selection)
-            .unwrap();
-        let grouped = leaf_placements(&scene);
-        SceneEdit::UngroupSelected
-            .apply(&mut scene, &mut selection)
-            .unwrap();
-        let die = object_at(&scene.objects, &selection.node_path().unwrap()).unwrap();
-        assert_eq!(die.name, "die");
-        assert!(
-            matches!(die.transform, Transform::Trs(_)),
-            "a uniform scale stays TRS"
-        );
-        for ((name, a), (_, b)) in grouped.iter().zip(leaf_placements(&scene)) {
-            assert!(a.abs_diff_eq(b, 1e-9), "{name} moved: {a:?} against {b:?}");
-        }
-    }
-
-    #[test]
-    fn ungrouping_a_non_uniformly_scaled_group_of_a_turned_child_keeps_it_as_a_matrix() {
-        let mut scene = csg_scene();
-        let mut selection = Selection::Object(die(&scene));
-        SceneEdit::GroupSelected
-            .apply(&mut scene, &mut selection)
-            .unwrap();
-        let index = selection.node_path().unwrap()[0];
-        if let Transform::Trs(trs) = &mut scene.objects[index].transform {
-            trs.scale = DVec3::new(2.0, 1.0, 1.0);
-        }
-        let grouped = leaf_placements(&scene);
-        SceneEdit::UngroupSelected
-            .apply(&mut scene, &mut selection)
-            .unwrap();
-        let die = &scene.objects[index];
-        // A sheared product has no scale-rotate-translate form.
-        assert!(matches!(die.transform, Transform::Matrix(_)));
-        for ((name, a), (_, b)) in grouped.iter().zip(leaf_placements(&scene)) {
-            assert!(a.abs_diff_eq(b, 1e-9), "{name} moved");
-        }
-    }
-
-    #[test]
-    fn parts_are_added_duplicated_and_deleted_in_place_and_a_csg_keeps_one_operand() {
-        let mut scene = csg_scene();
-        let die = die(&scene);
-        let operands = scene.objects[die].shape.children().len();
-        let mut selection = Selection::Object(die);
-        SceneEdit::AddOperand(Shape::Cube)
-            .apply(&mut scene, &mut selection)
-            .unwrap();
-        assert_eq!(selection, Selection::Part(vec![die, operands]));
-        let added = object_at(&scene.objects, &[die, operands]).unwrap();
-        assert_eq!((added.name.as_str(), added.material.as_str()), ("Cube", ""));
-        SceneEdit::DuplicateSelected
-            .apply(&mut scene, &mut selection)
-            .unwrap();
-        assert_eq!(selection, Selection::Part(vec![die, operands + 1]));
-        assert_eq!(
-            object_at(&scene.objects, &[die, operands + 1])
-                .unwrap()
-                .name,
-            "Cube 2"
-        );
-        SceneEdit::DeleteSelected
-            .apply(&mut scene, &mut selection)
-            .unwrap();
-        SceneEdit::DeleteSelected
-            .apply(&mut scene, &mut selection)
-            .unwrap();
-        assert_eq!(scene.objects[die].shape.children().len(), operands);
-        // A CSG node of one operand keeps it.
-        let lens = scene.objects.iter().position(|o| o.name == "lens").unwrap();
-        let mut selection = Selection::Part(vec![lens, 0]);
-        SceneEdit::DeleteSelected
-            .apply(&mut scene, &mut selection)
-            .unwrap();
-        let mut selection = Selection::Part(vec![lens, 0]);
-        let error = SceneEdit::DeleteSelected
-            .apply(&mut scene, &mut selection)
-            .unwrap_err();
-        assert!(error.contains("at least one operand"), "{error}");
-    }
-
-    #[test]
-    fn a_material_used_only_inside_a_tree_is_not_deleted_and_renames_reach_inside() {
-        let mut scene = csg_scene();
-        let mut selection = Selection::Material("pip".to_owned());
-        let error = SceneEdit::DeleteSelected
-            .apply(&mut scene, &mut selection)
-            .unwrap_err();
-        assert!(error.contains("pip"), "{error}");
-        SceneEdit::RenameMaterial {
-            from: "pip".to_owned(),
-            to: "dot".to_owned(),
-        }
-        .apply(&mut scene, &mut selection)
-        .unwrap();
-        crate::scene::validate(&scene).expect("every reference renamed");
-        let die = die(&scene);
-        assert_eq!(
-            object_at(&scene.objects, &[die, 1]).unwrap().material,
-            "dot"
-        );
-    }
-}
+#[path = "tree_edit_tests.rs"]
+mod tests;

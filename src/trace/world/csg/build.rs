@@ -64,7 +64,15 @@ impl CsgTree {
         let mut checks: Vec<usize> = Vec::new();
         let mut chunks: Vec<usize> = Vec::new();
         let mut work = Vec::new();
-        push_operands(&mut work, op, operands, &DAffine3::IDENTITY, material, path, &[]);
+        push_operands(
+            &mut work,
+            op,
+            operands,
+            &DAffine3::IDENTITY,
+            material,
+            path,
+            &[],
+        );
         while let Some(item) = work.pop() {
             match item {
                 Work::ChunkStart { bounds, leaves } => {
@@ -197,7 +205,13 @@ fn push_operands<'a>(
             work.push(Work::ChunkEnd);
         }
         let first = 1 + chunk.first;
-        work.extend(members.iter().enumerate().rev().map(|(k, o)| visit((first + k, o))));
+        work.extend(
+            members
+                .iter()
+                .enumerate()
+                .rev()
+                .map(|(k, o)| visit((first + k, o))),
+        );
         if chunk.len > 1 {
             work.push(Work::ChunkStart {
                 bounds: chunk.bounds,

@@ -1,6 +1,6 @@
 //! What the object inspector adds for object trees: where a node sits (a breadcrumb of
 //! its parents, each a link), a CSG node's operator, and the tree actions (group,
-//! ungroup, add an operand).
+//! ungroup, start a CSG solid, add an operand).
 
 use egui::Ui;
 
@@ -71,6 +71,23 @@ pub(super) fn tree_actions_ui(ui: &mut Ui, shape: &Shape, commands: &mut Vec<Com
         {
             commands.push(Command::Edit(SceneEdit::GroupSelected));
         }
+        ui.menu_button("Boolean", |ui| {
+            for (op, keeps) in CSG_OPS {
+                if ui
+                    .button(op.name())
+                    .on_hover_text(format!(
+                        "Make this the first operand of a new {} node: the solid is what \
+                         lies {keeps}; add the other operands next",
+                        op.name()
+                    ))
+                    .clicked()
+                {
+                    commands.push(Command::Edit(SceneEdit::CsgSelected(op)));
+                }
+            }
+        })
+        .response
+        .on_hover_text("Start a CSG solid from this object");
         if matches!(shape, Shape::Group { .. })
             && ui
                 .button("Ungroup")

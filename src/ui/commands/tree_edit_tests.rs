@@ -1,0 +1,200 @@
+//! Tree edits: group and ungroup (nothing moves), booleans, parts added, duplicated and
+//! deleted in place, and materials named inside trees.
+
+use glam::DVec3;
+
+use super::*;
+use crate::scene::tree_path::world_from_parent;
+use crate::ui::commands::SceneEdit;
+
+/// The CSG example scene: its die is rotated, scaled and holds a nested node.
+fn csg_scene() -> Scene {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/csg.ron");
+    crate::scene::load_scene(&path).expect("example")
+}
+
+fn die(scene: &Scene) -> usize {
+    scene
+        .objects
+        .iter()
+        .position(|o| o.name == "die")
+        .expect("die")
+}
+
+/// Where each leaf of the scene is, in the world.
+fn leaf_placements(scene: &Scene) -> Vec<(String, DAffine3)> {
+    let mut out = Vec::new();
+    let mut work: Vec<(Vec<usize>, &Object)> = scene
+        .objects
+        .iter()
+        .enumerate()
+        .map(|(i, o)| (vec![i], o))
+        .collect();
+    while let Some((path, object)) = work.pop() {
+        let children = object.shape.children();
+        if children.is_empty() {
+            let world =
+                world_from_parent(&scene.objects, &path) * object.transform.world_from_object();
+            out.push((object.name.clone(), world));
+        }
+        for (k, child) in children.iter().enumerate() {
+            let mut p = path.clone();
+            p.push(k);
+            work.push((p, child));
+        }
+    }
+    out.sort_by(|a, b| a.0.cmp(&b.0));
+    out
+}
+
+#[test]
+fn grouping_then_ungrouping_a_moved_group_leaves_every_leaf_where_it_was() {
+    let mut scene = csg_scene();
+    let before = leaf_placements(&scene);
+    let mut selection = Selection::Object(die(&scene));
+    SceneEdit::GroupSelected
+        .apply(&mut scene, &mut selection)
+        .unwrap();
+    let group_path = selection.node_path().unwrap();
+    let group = object_at(&scene.objects, &group_path).unwrap();
+    assert!(matches!(group.shape, Shape::Group { .. }), "{selection:?}");
+    assert_eq!(leaf_placements(&scene), before, "grouping moves nothing");
+    // Move and turn the group; its leaves go with it.
+    let mut moved = group.clone();
+    moved.transform = Transform::Trs(Trs {
+        translate: DVec3::new(1.0, 0.5, -2.0),
+        rotate_deg: DVec3::new(0.0, 40.0, 10.0),
+        scale: DVec3::splat(1.5),
+    });
+    SceneEdit::SetObject(group_path[0], moved)
+        .apply(&mut scene, &mut selection)
+        .unwrap();
+    let grouped = leaf_placements(&scene);
+    SceneEdit::UngroupSelected
+        .apply(&mut scene, &mut selection)
+        .unwrap();
+    let die = object_at(&scene.objects, &selection.node_path().unwrap()).unwrap();
+    assert_eq!(die.name, "die");
+    assert!(
+        matches!(die.transform, Transform::Trs(_)),
+        "a uniform scale stays TRS"
+    );
+    for ((name, a), (_, b)) in grouped.iter().zip(leaf_placements(&scene)) {
+        assert!(a.abs_diff_eq(b, 1e-9), "{name} moved: {a:?} against {b:?}");
+    }
+}
+
+#[test]
+fn ungrouping_a_non_uniformly_scaled_group_of_a_turned_child_keeps_it_as_a_matrix() {
+    let mut scene = csg_scene();
+    let mut selection = Selection::Object(die(&scene));
+    SceneEdit::GroupSelected
+        .apply(&mut scene, &mut selection)
+        .unwrap();
+    let index = selection.node_path().unwrap()[0];
+    if let Transform::Trs(trs) = &mut scene.objects[index].transform {
+        trs.scale = DVec3::new(2.0, 1.0, 1.0);
+    }
+    let grouped = leaf_placements(&scene);
+    SceneEdit::UngroupSelected
+        .apply(&mut scene, &mut selection)
+        .unwrap();
+    let die = &scene.objects[index];
+    // A sheared product has no scale-rotate-translate form.
+    assert!(matches!(die.transform, Transform::Matrix(_)));
+    for ((name, a), (_, b)) in grouped.iter().zip(leaf_placements(&scene)) {
+        assert!(a.abs_diff_eq(b, 1e-9), "{name} moved");
+    }
+}
+
+#[test]
+fn parts_are_added_duplicated_and_deleted_in_place_and_a_csg_keeps_one_operand() {
+    let mut scene = csg_scene();
+    let die = die(&scene);
+    let operands = scene.objects[die].shape.children().len();
+    let mut selection = Selection::Object(die);
+    SceneEdit::AddOperand(Shape::Cube)
+        .apply(&mut scene, &mut selection)
+        .unwrap();
+    assert_eq!(selection, Selection::Part(vec![die, operands]));
+    let added = object_at(&scene.objects, &[die, operands]).unwrap();
+    assert_eq!((added.name.as_str(), added.material.as_str()), ("Cube", ""));
+    SceneEdit::DuplicateSelected
+        .apply(&mut scene, &mut selection)
+        .unwrap();
+    assert_eq!(selection, Selection::Part(vec![die, operands + 1]));
+    assert_eq!(
+        object_at(&scene.objects, &[die, operands + 1])
+            .unwrap()
+            .name,
+        "Cube 2"
+    );
+    SceneEdit::DeleteSelected
+        .apply(&mut scene, &mut selection)
+        .unwrap();
+    SceneEdit::DeleteSelected
+        .apply(&mut scene, &mut selection)
+        .unwrap();
+    assert_eq!(scene.objects[die].shape.children().len(), operands);
+    // A CSG node of one operand keeps it.
+    let lens = scene.objects.iter().position(|o| o.name == "lens").unwrap();
+    let mut selection = Selection::Part(vec![lens, 0]);
+    SceneEdit::DeleteSelected
+        .apply(&mut scene, &mut selection)
+        .unwrap();
+    let mut selection = Selection::Part(vec![lens, 0]);
+    let error = SceneEdit::DeleteSelected
+        .apply(&mut scene, &mut selection)
+        .unwrap_err();
+    assert!(error.contains("at least one operand"), "{error}");
+}
+
+#[test]
+fn a_material_used_only_inside_a_tree_is_not_deleted_and_renames_reach_inside() {
+    let mut scene = csg_scene();
+    let mut selection = Selection::Material("pip".to_owned());
+    let error = SceneEdit::DeleteSelected
+        .apply(&mut scene, &mut selection)
+        .unwrap_err();
+    assert!(error.contains("pip"), "{error}");
+    SceneEdit::RenameMaterial {
+        from: "pip".to_owned(),
+        to: "dot".to_owned(),
+    }
+    .apply(&mut scene, &mut selection)
+    .unwrap();
+    crate::scene::validate(&scene).expect("every reference renamed");
+    let die = die(&scene);
+    assert_eq!(
+        object_at(&scene.objects, &[die, 1]).unwrap().material,
+        "dot"
+    );
+}
+
+#[test]
+fn a_cube_becomes_a_die_by_subtracting_added_spheres_and_the_scene_still_renders() {
+    let mut scene = crate::ui::document::files::default_scene();
+    let cube = scene
+        .objects
+        .iter()
+        .position(|o| o.name == "blue box")
+        .unwrap();
+    let box_before = scene.objects[cube].clone();
+    let mut selection = Selection::Object(cube);
+    SceneEdit::CsgSelected(CsgOp::Difference)
+        .apply(&mut scene, &mut selection)
+        .unwrap();
+    assert_eq!(selection, Selection::Object(cube));
+    let node = &scene.objects[cube];
+    assert_eq!(node.name, "difference");
+    assert_eq!(node.shape.children(), &[box_before]);
+    for _ in 0..2 {
+        let mut at_node = Selection::Object(cube);
+        SceneEdit::AddOperand(Shape::Sphere)
+            .apply(&mut scene, &mut at_node)
+            .unwrap();
+    }
+    assert_eq!(scene.objects[cube].shape.children().len(), 3);
+    crate::scene::validate(&scene).expect("valid");
+    crate::trace::World::new(&scene).expect("compiles");
+}
