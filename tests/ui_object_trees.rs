@@ -86,7 +86,11 @@ fn ctrl_g_groups_the_selected_object_and_ungroup_puts_it_back() {
     let Shape::Group { children } = &scene.objects[die].shape else {
         panic!("grouped: {:?}", scene.objects[die].shape);
     };
-    assert_eq!(children[0], before.objects[die]);
+    // The group stands where the die stood; the die, at its origin, has not moved.
+    let placed = scene.objects[die].transform.world_from_object()
+        * children[0].transform.world_from_object();
+    assert!(placed.abs_diff_eq(before.objects[die].transform.world_from_object(), 1e-12));
+    assert_eq!(children[0].shape, before.objects[die].shape);
     assert_eq!(harness.state().selection(), &Selection::Object(die));
     harness.get_by_label("Ungroup").click();
     harness.run();

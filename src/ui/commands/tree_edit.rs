@@ -69,15 +69,50 @@ pub(super) fn wrap_selected(
         ),
     };
     let name = unique_name(base, siblings.iter().map(|o| &o.name));
+    // The new node stands where the object stood (its gizmo there, operands added at
+    // its centre), the object at the node's origin: the product is the same transform.
+    let (outer, inner) = split_translation(&node.transform);
+    let mut shape = shape;
+    if let Some(children) = shape.children_mut() {
+        children[0].transform = inner;
+    }
     // The new node keeps the object's material, so what is added to it inherits that.
     siblings[at] = Object {
         name,
         shape,
-        transform: Transform::Trs(Trs::default()),
+        transform: outer,
         material: node.material,
     };
     *selection = Selection::node(path);
     Ok(())
+}
+
+/// A transform as a translation, and what is left of it at the origin.
+fn split_translation(transform: &Transform) -> (Transform, Transform) {
+    match transform {
+        Transform::Trs(trs) => (
+            Transform::Trs(Trs {
+                translate: trs.translate,
+                ..Trs::default()
+            }),
+            Transform::Trs(Trs {
+                translate: glam::DVec3::ZERO,
+                ..*trs
+            }),
+        ),
+        Transform::Matrix(_) => {
+            let mut affine = transform.world_from_object();
+            let translate = affine.translation;
+            affine.translation = glam::DVec3::ZERO;
+            (
+                Transform::Trs(Trs {
+                    translate,
+                    ..Trs::default()
+                }),
+                Transform::Matrix(rows_from_affine(&affine)),
+            )
+        }
+    }
 }
 
 /// Puts the selected group's children in its place, each placed as it was (the group's
@@ -121,6 +156,16 @@ fn folded(outer: &DAffine3, inner: &Transform) -> Transform {
     if *outer == DAffine3::IDENTITY {
         return *inner;
     }
+    // A node that only moves its children (as a fresh group does): add the offset, so
+    // grouping and ungrouping give back exactly the numbers typed.
+    if let Transform::Trs(trs) = inner
+        && outer.matrix3 == glam::DMat3::IDENTITY
+    {
+        return Transform::Trs(Trs {
+            translate: trs.translate + outer.translation,
+            ..*trs
+        });
+    }
     let product = *outer * inner.world_from_object();
     let trs = trs_from_matrix(&product);
     let again = trs.world_from_object();
@@ -150,10 +195,11 @@ pub(super) fn add_operand(
         .shape
         .children_mut()
         .ok_or_else(|| format!("\u{201c}{}\u{201d} is not a CSG node or a group", node.name))?;
+    let transform = beside_first(children.first());
     children.push(Object {
         name,
         shape,
-        transform: Transform::Trs(Trs::default()),
+        transform,
         // Inherits the node's material.
         material: String::new(),
     });
@@ -161,6 +207,22 @@ pub(super) fn add_operand(
     child.push(children.len() - 1);
     *selection = Selection::Part(child);
     Ok(())
+}
+
+/// Where a new operand goes: half the size of the node's first operand, centred on that
+/// one's +x face, so it shows at once (a bite of a Difference, a bump of a Union);
+/// unit size at the origin in an empty node.
+fn beside_first(first: Option<&Object>) -> Transform {
+    let Some(Transform::Trs(first)) = first.map(|o| &o.transform) else {
+        return Transform::Trs(Trs::default());
+    };
+    let size = first.scale.abs().element_sum() / 3.0;
+    let face = first.world_from_object().transform_point3(glam::DVec3::X);
+    Transform::Trs(Trs {
+        translate: face,
+        rotate_deg: glam::DVec3::ZERO,
+        scale: glam::DVec3::splat(size * 0.5),
+    })
 }
 
 /// Deletes the selected part of a tree (a CSG node keeps at least one operand), and

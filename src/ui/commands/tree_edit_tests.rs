@@ -187,14 +187,39 @@ fn a_cube_becomes_a_die_by_subtracting_added_spheres_and_the_scene_still_renders
     assert_eq!(selection, Selection::Object(cube));
     let node = &scene.objects[cube];
     assert_eq!(node.name, "difference");
-    assert_eq!(node.shape.children(), &[box_before]);
+    // The node stands where the box stood; the box, at its origin, has not moved.
+    let Transform::Trs(placed) = (&node.transform, &box_before.transform).1 else {
+        panic!("the box has a TRS");
+    };
+    assert_eq!(
+        node.transform.world_from_object().translation,
+        placed.translate
+    );
+    let inner = &node.shape.children()[0];
+    let world = node.transform.world_from_object() * inner.transform.world_from_object();
+    assert!(world.abs_diff_eq(box_before.transform.world_from_object(), 1e-12));
+    assert_eq!(
+        (inner.name.as_str(), &inner.shape),
+        ("blue box", &Shape::Cube)
+    );
     for _ in 0..2 {
         let mut at_node = Selection::Object(cube);
         SceneEdit::AddOperand(Shape::Sphere)
             .apply(&mut scene, &mut at_node)
             .unwrap();
     }
-    assert_eq!(scene.objects[cube].shape.children().len(), 3);
+    let operands = scene.objects[cube].shape.children();
+    assert_eq!(operands.len(), 3);
+    // Added on the box's +x face at half its size: a bite that shows.
+    let Transform::Trs(bite) = operands[1].transform else {
+        panic!("a TRS");
+    };
+    let face = operands[0]
+        .transform
+        .world_from_object()
+        .transform_point3(DVec3::X);
+    assert!((bite.translate - face).length() < 1e-12);
+    assert!((bite.scale.x - placed.scale.x * 0.5).abs() < 1e-12);
     crate::scene::validate(&scene).expect("valid");
     crate::trace::World::new(&scene).expect("compiles");
 }
