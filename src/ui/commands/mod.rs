@@ -64,6 +64,14 @@ pub enum SceneEdit {
     CsgSelected(crate::scene::CsgOp),
     /// Puts the selected group's children in its place, placed as they were.
     UngroupSelected,
+    /// Moves a node (by path) into a tree node, as its last child or operand, or beside
+    /// a leaf, right after it; it stays where it is in the world (outliner drag).
+    MoveNode {
+        /// The node moved.
+        from: Vec<usize>,
+        /// Where it was dropped.
+        onto: Vec<usize>,
+    },
     /// Adds a unit shape as the last operand or child of the selected tree node.
     AddOperand(Shape),
     /// Replaces a light.

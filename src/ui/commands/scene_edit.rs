@@ -45,6 +45,9 @@ impl SceneEdit {
             SceneEdit::GroupSelected => tree_edit::wrap_selected(scene, selection, None)?,
             SceneEdit::CsgSelected(op) => tree_edit::wrap_selected(scene, selection, Some(op))?,
             SceneEdit::UngroupSelected => tree_edit::ungroup_selected(scene, selection)?,
+            SceneEdit::MoveNode { from, onto } => {
+                tree_edit::move_node(scene, selection, &from, &onto)?;
+            }
             SceneEdit::AddOperand(shape) => tree_edit::add_operand(scene, selection, shape)?,
             SceneEdit::SetLight(index, light) => {
                 *scene.lights.get_mut(index).ok_or("no such light")? = light;

@@ -223,3 +223,88 @@ fn a_cube_becomes_a_die_by_subtracting_added_spheres_and_the_scene_still_renders
     crate::scene::validate(&scene).expect("valid");
     crate::trace::World::new(&scene).expect("compiles");
 }
+
+/// Where the leaf named `name` is in the world, and the material it shows.
+fn placed(scene: &Scene, name: &str) -> (DAffine3, String) {
+    let mut work: Vec<Vec<usize>> = (0..scene.objects.len()).map(|i| vec![i]).collect();
+    while let Some(path) = work.pop() {
+        let object = object_at(&scene.objects, &path).unwrap();
+        if object.name == name {
+            let world =
+                world_from_parent(&scene.objects, &path) * object.transform.world_from_object();
+            let material = crate::scene::tree_path::effective_material(&scene.objects, &path);
+            return (world, material.unwrap_or_default().to_owned());
+        }
+        for k in 0..object.shape.children().len() {
+            work.push([path.as_slice(), &[k]].concat());
+        }
+    }
+    panic!("no {name}");
+}
+
+#[test]
+fn a_dragged_node_moves_into_a_tree_or_beside_a_leaf_and_stays_where_it_was() {
+    let mut scene = csg_scene();
+    let die = die(&scene);
+    let pip = object_at(&scene.objects, &[die, 5]).unwrap().name.clone();
+    let before = placed(&scene, &pip);
+    let mut selection = Selection::None;
+    // Out of the turned, scaled die, beside the floor at the top level.
+    SceneEdit::MoveNode {
+        from: vec![die, 5],
+        onto: vec![0],
+    }
+    .apply(&mut scene, &mut selection)
+    .unwrap();
+    assert_eq!(selection, Selection::Object(1));
+    assert_eq!(scene.objects[1].name, pip);
+    let after = placed(&scene, &pip);
+    assert!(
+        after.0.abs_diff_eq(before.0, 1e-9),
+        "{:?} {:?}",
+        after.0,
+        before.0
+    );
+    assert_eq!(after.1, before.1, "the material it showed, now its own");
+    crate::scene::validate(&scene).expect("a top-level object has a material");
+    // And back into the die (now one further down the list), as its last operand.
+    let die = die + 1;
+    let operands = scene.objects[die].shape.children().len();
+    SceneEdit::MoveNode {
+        from: vec![1],
+        onto: vec![die],
+    }
+    .apply(&mut scene, &mut selection)
+    .unwrap();
+    assert_eq!(selection, Selection::Part(vec![die - 1, operands]));
+    assert!(placed(&scene, &pip).0.abs_diff_eq(before.0, 1e-9));
+    crate::trace::World::new(&scene).expect("compiles");
+}
+
+#[test]
+fn a_node_cannot_go_inside_itself_and_a_csg_keeps_its_last_operand() {
+    let mut scene = csg_scene();
+    let die = die(&scene);
+    let mut selection = Selection::None;
+    let error = SceneEdit::MoveNode {
+        from: vec![die],
+        onto: vec![die, 0],
+    }
+    .apply(&mut scene, &mut selection)
+    .unwrap_err();
+    assert!(error.contains("inside itself"), "{error}");
+    let lens = scene.objects.iter().position(|o| o.name == "lens").unwrap();
+    SceneEdit::MoveNode {
+        from: vec![lens, 1],
+        onto: vec![die],
+    }
+    .apply(&mut scene, &mut selection)
+    .unwrap();
+    let error = SceneEdit::MoveNode {
+        from: vec![lens, 0],
+        onto: vec![die],
+    }
+    .apply(&mut scene, &mut selection)
+    .unwrap_err();
+    assert!(error.contains("at least one operand"), "{error}");
+}

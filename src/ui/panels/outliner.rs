@@ -57,6 +57,7 @@ pub fn outliner_ui(
                         ui,
                         object,
                         &[index],
+                        "",
                         selection,
                         commands,
                         &mut |ui, commands| {
@@ -216,15 +217,26 @@ pub(super) fn item_ui(
         RichText::new(text)
     };
     let width = ui.available_width().max(40.0);
+    // Objects and parts can be dragged onto one another (re-parenting).
+    let node = target.node_path();
+    let sense = if node.is_some() {
+        egui::Sense::click_and_drag()
+    } else {
+        egui::Sense::click()
+    };
     let response = ui
         // The growing atom after the text keeps the name at the left of the wide button.
         .add(
             egui::Button::selectable(selected, (text, egui::Atom::grow()))
-                .min_size(egui::vec2(width, 0.0)),
+                .min_size(egui::vec2(width, 0.0))
+                .sense(sense),
         )
         .accessible_name(row.name);
     if response.clicked() && !selected {
         commands.push(Command::Select(target));
+    }
+    if let Some(path) = node {
+        super::outliner_tree::drag_and_drop(ui, &response, path, commands);
     }
     response
 }

@@ -1,21 +1,24 @@
 //! The outliner's object rows as a tree: a CSG node or a group folds open to show its
 //! operands or children (indented, each selectable, with its own menu), to any depth.
+//! A row dragged onto a tree node moves into it; onto a leaf, next to it.
 
 use egui::Ui;
 use egui::collapsing_header::CollapsingState;
 
 use crate::scene::Object;
-use crate::ui::commands::{Command, Selection};
+use crate::ui::commands::{Command, SceneEdit, Selection};
 
 use super::outliner::{Row, item_menu, item_ui, shape_icon};
 
-/// An object row for `object` at `path` (its index alone at the top level): a plain row
+/// An object row for `object` at `path` (its index alone at the top level), `key` the
+/// names of its parents (for the folding state): a plain row
 /// for a leaf, a row that folds open for a tree node. `top_row` draws the row itself
 /// (the top level adds its hide toggle); parts below get plain rows.
 pub(super) fn node_ui(
     ui: &mut Ui,
     object: &Object,
     path: &[usize],
+    key: &str,
     selection: &Selection,
     commands: &mut Vec<Command>,
     row: &mut dyn FnMut(&mut Ui, &mut Vec<Command>),
@@ -25,7 +28,8 @@ pub(super) fn node_ui(
         row(ui, commands);
         return;
     }
-    let id = ui.make_persistent_id(("outliner node", path));
+    // Keyed by names, not indices: a node keeps its folding when a move shifts indices.
+    let id = ui.make_persistent_id(("outliner node", key, &object.name));
     // A node holding the selection opens, so a part picked in the picture is shown.
     let holds_selection =
         matches!(selection, Selection::Part(p) if p.len() > path.len() && p.starts_with(path));
@@ -44,7 +48,46 @@ pub(super) fn node_ui(
                 let response = item_ui(ui, &row, selected, target.clone(), commands);
                 item_menu(&response, target.clone(), commands);
             };
-            node_ui(ui, child, &child_path, selection, commands, &mut child_row);
+            let child_key = format!("{key}/{}", object.name);
+            node_ui(
+                ui,
+                child,
+                &child_path,
+                &child_key,
+                selection,
+                commands,
+                &mut child_row,
+            );
         }
     });
+}
+
+/// What an outliner drag carries: the path of the node dragged.
+struct DraggedNode(Vec<usize>);
+
+/// Makes an object row a drag source and a drop target: a node dropped on it moves
+/// into it (a tree node) or beside it (a leaf), in one undo step.
+pub(super) fn drag_and_drop(
+    ui: &Ui,
+    response: &egui::Response,
+    path: Vec<usize>,
+    commands: &mut Vec<Command>,
+) {
+    if let Some(dragged) = response.dnd_hover_payload::<DraggedNode>()
+        && dragged.0 != path
+    {
+        // Where it would land: a line around the row.
+        let stroke = egui::Stroke::new(1.5, crate::ui::style::ACCENT);
+        ui.painter()
+            .rect_stroke(response.rect, 2.0, stroke, egui::StrokeKind::Inside);
+    }
+    if let Some(dragged) = response.dnd_release_payload::<DraggedNode>()
+        && dragged.0 != path
+    {
+        commands.push(Command::Edit(SceneEdit::MoveNode {
+            from: dragged.0.clone(),
+            onto: path.clone(),
+        }));
+    }
+    response.dnd_set_drag_payload(DraggedNode(path));
 }
