@@ -106,3 +106,42 @@ fn ctrl_g_groups_the_selected_object_and_ungroup_puts_it_back() {
         Shape::Group { .. }
     ));
 }
+
+#[test]
+fn ctrl_click_picks_several_objects_and_subtract_makes_one_csg_of_them() {
+    let mut harness = harness_on_example("csg.ron");
+    let names = |h: &egui_kittest::Harness<'_, raylab::ui::EditorApp>| -> Vec<String> {
+        h.state()
+            .scene()
+            .objects
+            .iter()
+            .map(|o| o.name.clone())
+            .collect()
+    };
+    assert_eq!(names(&harness), ["floor", "lens", "die", "hollow cube"]);
+    harness
+        .get_by_role_and_label(egui::Role::Button, "hollow cube")
+        .click();
+    harness.run();
+    harness
+        .get_by_role_and_label(egui::Role::Button, "lens")
+        .click_modifiers(Modifiers::COMMAND);
+    harness.run();
+    assert_eq!(
+        harness.state().selection(),
+        &Selection::Several(vec![vec![3], vec![1]])
+    );
+    harness.get_by_label("2 objects");
+    harness.get_by_label("hollow cube  (first)");
+    harness.get_by_label("Subtract").click();
+    harness.run();
+    assert_eq!(names(&harness), ["floor", "difference", "die"]);
+    let Shape::Csg { operands, .. } = &harness.state().scene().objects[1].shape else {
+        panic!("a CSG node");
+    };
+    assert_eq!(operands[0].name, "hollow cube");
+    assert_eq!(operands[1].name, "lens");
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    harness.run();
+    assert_eq!(names(&harness), ["floor", "lens", "die", "hollow cube"]);
+}

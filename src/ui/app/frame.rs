@@ -141,10 +141,11 @@ impl EditorApp {
                     self.selection,
                     Selection::Object(_)
                         | Selection::Part(_)
+                        | Selection::Several(_)
                         | Selection::Light(_)
                         | Selection::Material(_)
                 ),
-                has_object_selected: self.selection.node_path().is_some(),
+                has_object_selected: !self.selection.node_paths().is_empty(),
                 group_selected: self.selection.node_path().is_some_and(|path| {
                     crate::scene::tree_path::object_at(&self.scene.objects, &path)
                         .is_some_and(|o| matches!(o.shape, crate::scene::Shape::Group { .. }))

@@ -25,6 +25,9 @@ pub enum Selection {
     /// A node inside an object tree (a CSG operand, a group's child), by its path of
     /// indices from the top-level object down (two or more; see `Selection::node`).
     Part(Vec<usize>),
+    /// Two or more objects or parts (Ctrl+click in the outliner), by path, in the
+    /// order picked (see `Selection::several`).
+    Several(Vec<Vec<usize>>),
     /// A material, by name.
     Material(String),
     /// A light, by index.

@@ -95,6 +95,7 @@ pub fn repair_selection(scene: &Scene, selection: &mut Selection) {
     let valid = match selection {
         Selection::Object(i) => *i < scene.objects.len(),
         Selection::Part(path) => tree_edit::part_exists(scene, path),
+        Selection::Several(paths) => paths.iter().all(|p| tree_edit::part_exists(scene, p)),
         Selection::Light(i) => *i < scene.lights.len(),
         Selection::Material(name) => scene.materials.contains_key(name),
         Selection::None | Selection::Camera | Selection::Render => true,
@@ -206,7 +207,7 @@ fn duplicate(scene: &mut Scene, selection: &mut Selection) -> Result<(), String>
         }
         Selection::Part(path) => tree_edit::duplicate_part(scene, &path, selection)?,
         // Nothing duplicable selected: the shortcut does nothing.
-        Selection::None | Selection::Camera | Selection::Render => {}
+        Selection::None | Selection::Camera | Selection::Render | Selection::Several(_) => {}
     }
     Ok(())
 }

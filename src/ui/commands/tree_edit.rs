@@ -23,6 +23,25 @@ impl Selection {
         }
     }
 
+    /// The selection of the nodes at `paths`: several, one, or none.
+    #[must_use]
+    pub fn several(mut paths: Vec<Vec<usize>>) -> Selection {
+        match paths.len() {
+            0 => Selection::None,
+            1 => Selection::node(paths.remove(0)),
+            _ => Selection::Several(paths),
+        }
+    }
+
+    /// The paths of every selected object or part (one, several or none).
+    #[must_use]
+    pub fn node_paths(&self) -> Vec<Vec<usize>> {
+        match self {
+            Selection::Several(paths) => paths.clone(),
+            _ => self.node_path().into_iter().collect(),
+        }
+    }
+
     /// The path of the selected object or part, if one is selected.
     #[must_use]
     pub fn node_path(&self) -> Option<Vec<usize>> {
@@ -47,6 +66,9 @@ pub(super) fn wrap_selected(
     selection: &mut Selection,
     op: Option<CsgOp>,
 ) -> Result<(), String> {
+    if let Selection::Several(paths) = selection.clone() {
+        return combine(scene, selection, &paths, op);
+    }
     let path = selection.node_path().ok_or("select an object first")?;
     let siblings = siblings_mut(&mut scene.objects, &path).ok_or("no such object")?;
     let at = *path.last().expect("a node path is never empty");
@@ -86,6 +108,65 @@ pub(super) fn wrap_selected(
         material: node.material,
     };
     *selection = Selection::node(path);
+    Ok(())
+}
+
+/// Puts several nodes of one parent into a new group or CSG node (the first picked as
+/// the first operand) where the first of them stood in the list; nothing moves. Selects
+/// the new node.
+fn combine(
+    scene: &mut Scene,
+    selection: &mut Selection,
+    paths: &[Vec<usize>],
+    op: Option<CsgOp>,
+) -> Result<(), String> {
+    let parent = &paths[0][..paths[0].len() - 1];
+    if paths
+        .iter()
+        .any(|p| p.len() != paths[0].len() || &p[..p.len() - 1] != parent)
+    {
+        return Err(
+            "to combine objects, pick them in one list (all top-level, or all in one node)"
+                .to_owned(),
+        );
+    }
+    let picked: Vec<usize> = paths.iter().map(|p| p[p.len() - 1]).collect();
+    let siblings = siblings_mut(&mut scene.objects, &paths[0]).ok_or("no such object")?;
+    if picked.iter().any(|&k| k >= siblings.len()) {
+        return Err("no such object".to_owned());
+    }
+    let members: Vec<Object> = picked.iter().map(|&k| siblings[k].clone()).collect();
+    let base = match op {
+        None => "group",
+        Some(CsgOp::Union) => "union",
+        Some(CsgOp::Intersection) => "intersection",
+        Some(CsgOp::Difference) => "difference",
+    };
+    let name = unique_name(base, siblings.iter().map(|o| &o.name));
+    let material = members[0].material.clone();
+    let shape = match op {
+        None => Shape::Group { children: members },
+        Some(op) => Shape::Csg {
+            op,
+            operands: members,
+        },
+    };
+    let at = *picked.iter().min().expect("two or more picked");
+    let mut gone = picked.clone();
+    gone.sort_unstable();
+    for &k in gone.iter().rev() {
+        siblings.remove(k);
+    }
+    siblings.insert(
+        at,
+        Object {
+            name,
+            shape,
+            transform: Transform::Trs(Trs::default()),
+            material,
+        },
+    );
+    *selection = Selection::node([parent, &[at]].concat());
     Ok(())
 }
 

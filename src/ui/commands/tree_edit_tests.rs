@@ -308,3 +308,34 @@ fn a_node_cannot_go_inside_itself_and_a_csg_keeps_its_last_operand() {
     .unwrap_err();
     assert!(error.contains("at least one operand"), "{error}");
 }
+
+#[test]
+fn several_objects_of_one_list_combine_into_one_node_where_the_first_stood() {
+    let mut scene = csg_scene();
+    let die = die(&scene);
+    let lens = scene.objects.iter().position(|o| o.name == "lens").unwrap();
+    let before_die = placed(&scene, "pip 6.1");
+    let count = scene.objects.len();
+    // Picked die first: it is the first operand.
+    let mut selection = Selection::several(vec![vec![die], vec![lens]]);
+    SceneEdit::CsgSelected(CsgOp::Difference)
+        .apply(&mut scene, &mut selection)
+        .unwrap();
+    assert_eq!(scene.objects.len(), count - 1);
+    let at = die.min(lens);
+    assert_eq!(selection, Selection::Object(at));
+    let Shape::Csg { op, operands } = &scene.objects[at].shape else {
+        panic!("a CSG node");
+    };
+    assert_eq!(*op, CsgOp::Difference);
+    let names: Vec<&str> = operands.iter().map(|o| o.name.as_str()).collect();
+    assert_eq!(names, ["die", "lens"]);
+    assert!(placed(&scene, "pip 6.1").0.abs_diff_eq(before_die.0, 1e-12));
+    crate::trace::World::new(&scene).expect("compiles");
+    // Nodes from different lists are not combined.
+    let mut mixed = Selection::several(vec![vec![0], vec![at, 0, 1]]);
+    let error = SceneEdit::GroupSelected
+        .apply(&mut scene, &mut mixed)
+        .unwrap_err();
+    assert!(error.contains("one list"), "{error}");
+}

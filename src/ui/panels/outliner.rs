@@ -9,7 +9,7 @@ use crate::trace::Isolation;
 use crate::ui::commands::{Command, LightKind, SceneEdit, Selection};
 use crate::ui::state::{IsolationToggle, light_label};
 
-use super::outliner_tree::node_ui;
+use super::outliner_tree::{node_row_ui, node_ui};
 
 /// Least width of one isolation toggle at the end of a row.
 const TOGGLE_WIDTH: f32 = 22.0;
@@ -46,7 +46,6 @@ pub fn outliner_ui(
             });
             section_ui(ui, "Objects", Some(scene.objects.len()), |ui| {
                 for (index, object) in scene.objects.iter().enumerate() {
-                    let selected = selection == &Selection::Object(index);
                     let shown = isolation.is_object_shown(index);
                     let row = Row {
                         name: &object.name,
@@ -66,13 +65,8 @@ pub fn outliner_ui(
                                 commands,
                                 |ui, commands| hide_toggle_ui(ui, index, object, shown, commands),
                                 |ui, commands| {
-                                    let response = item_ui(
-                                        ui,
-                                        &row,
-                                        selected,
-                                        Selection::Object(index),
-                                        commands,
-                                    );
+                                    let response =
+                                        node_row_ui(ui, &row, &[index], selection, commands);
                                     item_menu(&response, Selection::Object(index), commands);
                                 },
                             );
@@ -210,6 +204,21 @@ pub(super) fn item_ui(
     target: Selection,
     commands: &mut Vec<Command>,
 ) -> egui::Response {
+    let response = item_button(ui, row, selected, egui::Sense::click());
+    if response.clicked() && !selected {
+        commands.push(Command::Select(target));
+    }
+    response
+}
+
+/// The selectable button of a row, as wide as the space left, sensing `sense`; its
+/// accessible name is the item's name alone.
+pub(super) fn item_button(
+    ui: &mut Ui,
+    row: &Row,
+    selected: bool,
+    sense: egui::Sense,
+) -> egui::Response {
     let text = format!("{}  {}", row.icon, row.name);
     let text = if row.greyed {
         RichText::new(text).weak().italics()
@@ -217,28 +226,14 @@ pub(super) fn item_ui(
         RichText::new(text)
     };
     let width = ui.available_width().max(40.0);
-    // Objects and parts can be dragged onto one another (re-parenting).
-    let node = target.node_path();
-    let sense = if node.is_some() {
-        egui::Sense::click_and_drag()
-    } else {
-        egui::Sense::click()
-    };
-    let response = ui
+    ui
         // The growing atom after the text keeps the name at the left of the wide button.
         .add(
             egui::Button::selectable(selected, (text, egui::Atom::grow()))
                 .min_size(egui::vec2(width, 0.0))
                 .sense(sense),
         )
-        .accessible_name(row.name);
-    if response.clicked() && !selected {
-        commands.push(Command::Select(target));
-    }
-    if let Some(path) = node {
-        super::outliner_tree::drag_and_drop(ui, &response, path, commands);
-    }
-    response
+        .accessible_name(row.name)
 }
 
 /// An object's hide toggle, for a right-to-left layout.

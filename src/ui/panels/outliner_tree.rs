@@ -8,7 +8,7 @@ use egui::collapsing_header::CollapsingState;
 use crate::scene::Object;
 use crate::ui::commands::{Command, SceneEdit, Selection};
 
-use super::outliner::{Row, item_menu, item_ui, shape_icon};
+use super::outliner::{Row, item_button, item_menu, shape_icon};
 
 /// An object row for `object` at `path` (its index alone at the top level), `key` the
 /// names of its parents (for the folding state): a plain row
@@ -42,10 +42,9 @@ pub(super) fn node_ui(
             let mut child_path = path.to_vec();
             child_path.push(index);
             let target = Selection::Part(child_path.clone());
-            let selected = *selection == target;
             let mut child_row = |ui: &mut Ui, commands: &mut Vec<Command>| {
                 let row = Row::plain(&child.name, shape_icon(&child.shape));
-                let response = item_ui(ui, &row, selected, target.clone(), commands);
+                let response = node_row_ui(ui, &row, &child_path, selection, commands);
                 item_menu(&response, target.clone(), commands);
             };
             let child_key = format!("{key}/{}", object.name);
@@ -65,9 +64,40 @@ pub(super) fn node_ui(
 /// What an outliner drag carries: the path of the node dragged.
 struct DraggedNode(Vec<usize>);
 
+/// The row of the object or part at `path`: a click selects it, Ctrl+click adds it to
+/// (or takes it from) a selection of several, and it can be dragged onto another row.
+pub(super) fn node_row_ui(
+    ui: &mut Ui,
+    row: &Row,
+    path: &[usize],
+    selection: &Selection,
+    commands: &mut Vec<Command>,
+) -> egui::Response {
+    let picked = selection.node_paths();
+    let selected = picked.iter().any(|p| p == path);
+    let response = item_button(ui, row, selected, egui::Sense::click_and_drag());
+    if response.clicked() {
+        let several = ui.input(|i| i.modifiers.command);
+        if several && !picked.is_empty() {
+            let mut paths = picked;
+            match paths.iter().position(|p| p == path) {
+                Some(at) => {
+                    paths.remove(at);
+                }
+                None => paths.push(path.to_vec()),
+            }
+            commands.push(Command::Select(Selection::several(paths)));
+        } else if selection.node_path().as_deref() != Some(path) {
+            commands.push(Command::Select(Selection::node(path.to_vec())));
+        }
+    }
+    drag_and_drop(ui, &response, path.to_vec(), commands);
+    response
+}
+
 /// Makes an object row a drag source and a drop target: a node dropped on it moves
 /// into it (a tree node) or beside it (a leaf), in one undo step.
-pub(super) fn drag_and_drop(
+fn drag_and_drop(
     ui: &Ui,
     response: &egui::Response,
     path: Vec<usize>,

@@ -10,6 +10,7 @@ mod material;
 mod mesh;
 mod object;
 mod render_settings;
+mod several;
 mod tree_node;
 
 use std::collections::BTreeMap;
@@ -52,6 +53,7 @@ pub fn inspector_ui(
                     object::object_ui(ui, scene, path, object, meshes, focus_name, commands);
                 }
             }
+            Selection::Several(paths) => several::several_ui(ui, scene, paths, commands),
             Selection::Light(index) => {
                 if let Some(light) = scene.lights.get(*index) {
                     light::light_ui(ui, *index, light, commands);
