@@ -5,6 +5,8 @@
 mod placement;
 mod scene_edit;
 mod tree_edit;
+mod tree_move;
+mod tree_wrap;
 
 use std::path::PathBuf;
 

@@ -3,7 +3,7 @@
 
 use glam::DVec3;
 
-use super::{SceneEdit, Selection, placement, tree_edit};
+use super::{SceneEdit, Selection, placement, tree_edit, tree_move, tree_wrap};
 use crate::scene::{Light, LightKind, Material, Object, Scene, Shape};
 
 impl SceneEdit {
@@ -42,11 +42,11 @@ impl SceneEdit {
                 *scene.objects.get_mut(index).ok_or("no such object")? = object;
             }
             SceneEdit::SetPart(path, object) => tree_edit::set_node(scene, &path, object)?,
-            SceneEdit::GroupSelected => tree_edit::wrap_selected(scene, selection, None)?,
-            SceneEdit::CsgSelected(op) => tree_edit::wrap_selected(scene, selection, Some(op))?,
-            SceneEdit::UngroupSelected => tree_edit::ungroup_selected(scene, selection)?,
+            SceneEdit::GroupSelected => tree_wrap::wrap_selected(scene, selection, None)?,
+            SceneEdit::CsgSelected(op) => tree_wrap::wrap_selected(scene, selection, Some(op))?,
+            SceneEdit::UngroupSelected => tree_wrap::ungroup_selected(scene, selection)?,
             SceneEdit::MoveNode { from, onto } => {
-                tree_edit::move_node(scene, selection, &from, &onto)?;
+                tree_move::move_node(scene, selection, &from, &onto)?;
             }
             SceneEdit::AddOperand(shape) => tree_edit::add_operand(scene, selection, shape)?,
             SceneEdit::SetLight(index, light) => {

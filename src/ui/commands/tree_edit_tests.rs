@@ -1,7 +1,7 @@
 //! Tree edits: group and ungroup (nothing moves), booleans, parts added, duplicated and
 //! deleted in place, and materials named inside trees.
 
-use glam::DVec3;
+use glam::{DAffine3, DVec3};
 
 use super::*;
 use crate::scene::tree_path::world_from_parent;
