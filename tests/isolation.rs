@@ -335,6 +335,7 @@ fn raylab_render_with_the_flags_writes_the_librarys_pixels_and_rejects_bad_ones(
         muted_lights: BTreeSet::from([2]),
         solo_lights: BTreeSet::from([1, 3]),
         hidden_objects: BTreeSet::from([1, 5]),
+        hidden_parts: BTreeSet::new(),
     };
     let expected = render_with(&scene(), TermSwitches::ALL_ON, &isolation);
     let written = image::open(&out).unwrap().to_rgba8().into_raw();

@@ -116,6 +116,7 @@ fn outliner_toggles_isolate_without_editing_and_the_final_frame_equals_the_cli()
         muted_lights: set(&[1]),
         solo_lights: set(&[0, 3]),
         hidden_objects: set(&[1]),
+        hidden_parts: std::collections::BTreeSet::new(),
     };
     assert_eq!(isolation(&harness), expected);
     assert!(!harness.state().is_dirty(), "isolation is not a scene edit");

@@ -145,3 +145,26 @@ fn ctrl_click_picks_several_objects_and_subtract_makes_one_csg_of_them() {
     harness.run();
     assert_eq!(names(&harness), ["floor", "lens", "die", "hollow cube"]);
 }
+
+#[test]
+fn a_part_is_hidden_from_its_own_row_and_the_toolbar_names_it() {
+    let mut harness = harness_on_example("csg.ron");
+    let die = die_index(&harness);
+    harness
+        .state_mut()
+        .push(Command::Select(Selection::Part(vec![die, 2])));
+    harness.run();
+    harness.get_by_label("hide pip 6.1").click();
+    harness.run();
+    let isolation = harness.state().isolation().clone();
+    assert_eq!(
+        isolation.hidden_parts,
+        std::collections::BTreeSet::from([vec![die, 2]])
+    );
+    assert!(isolation.hidden_objects.is_empty());
+    assert!(!harness.state().is_dirty(), "hiding is not a scene edit");
+    harness.get_by_label_contains("hidden die/pip 6.1");
+    harness.get_by_label("hide pip 6.1").click();
+    harness.run();
+    assert!(harness.state().isolation().is_none());
+}

@@ -192,6 +192,11 @@ pub struct Isolation {
     pub solo_lights: BTreeSet<usize>,
     /// Objects left out of the render.
     pub hidden_objects: BTreeSet<usize>,
+    /// Parts of object trees left out, by path (a top-level index, then child and
+    /// operand indices; two or more). A hidden part counts as empty space: a hidden
+    /// group child or subtracted operand is as if it were not there; an Intersection
+    /// with a hidden operand is empty.
+    pub hidden_parts: BTreeSet<Vec<usize>>,
 }
 
 impl Isolation {
@@ -200,6 +205,7 @@ impl Isolation {
         muted_lights: BTreeSet::new(),
         solo_lights: BTreeSet::new(),
         hidden_objects: BTreeSet::new(),
+        hidden_parts: BTreeSet::new(),
     };
 
     /// Whether nothing is muted, solo or hidden.
@@ -208,6 +214,7 @@ impl Isolation {
         self.muted_lights.is_empty()
             && self.solo_lights.is_empty()
             && self.hidden_objects.is_empty()
+            && self.hidden_parts.is_empty()
     }
 
     /// Whether light `index` shines: not muted, and solo if any light is.
@@ -235,6 +242,21 @@ impl Isolation {
         if !self.hidden_objects.remove(&index) {
             self.hidden_objects.insert(index);
         }
+    }
+
+    /// Hide or show the part of an object tree at `path` (two indices or more).
+    pub fn toggle_hide_part(&mut self, path: &[usize]) {
+        if !self.hidden_parts.remove(path) {
+            self.hidden_parts.insert(path.to_vec());
+        }
+    }
+
+    /// Whether the node at `path` (or a part of a tree holding it) is hidden.
+    #[must_use]
+    pub fn is_node_hidden(&self, path: &[usize]) -> bool {
+        path.first()
+            .is_some_and(|&top| self.hidden_objects.contains(&top))
+            || (2..=path.len()).any(|n| self.hidden_parts.contains(&path[..n]))
     }
 
     /// Solo light `index`. With `add`, it joins (or, if solo already, leaves) the solo

@@ -16,6 +16,7 @@
 
 use crate::trace::shapes::MeshStore;
 use glam::DVec3;
+use std::collections::BTreeSet;
 
 use super::compiled::{SurfacePoint, World};
 use crate::scene::{Light, Scene, SceneError, validate};
@@ -145,7 +146,7 @@ impl World {
         let kept_lights: Vec<usize> = (0..scene.lights.len())
             .filter(|&i| isolation.is_light_lit(i))
             .collect();
-        let filtered = Scene {
+        let mut filtered = Scene {
             objects: kept_objects
                 .iter()
                 .map(|&i| scene.objects[i].clone())
@@ -156,6 +157,11 @@ impl World {
                 .collect(),
             ..scene.clone()
         };
+        hide_parts(
+            &mut filtered.objects,
+            &kept_objects,
+            &isolation.hidden_parts,
+        );
         let mut world = Self::with_meshes(&filtered, meshes)?;
         world.light_scene_index = world
             .light_scene_index
@@ -198,6 +204,24 @@ impl World {
                 self.intersect_object(i, ray, f64::INFINITY)
                     .is_some_and(|again| again.t == hit.t)
             }),
+        }
+    }
+}
+
+/// Empties the hidden parts of `objects` (the kept top-level objects, `kept[k]` the
+/// scene index of the `k`th): each becomes an empty group where it was, so it draws
+/// nothing, takes no part in its CSG solid, and every other node keeps its path (picks
+/// and the inspector name nodes by path).
+fn hide_parts(objects: &mut [crate::scene::Object], kept: &[usize], hidden: &BTreeSet<Vec<usize>>) {
+    for path in hidden.iter().filter(|p| p.len() >= 2) {
+        let Ok(top) = kept.binary_search(&path[0]) else {
+            continue; // its whole object is hidden
+        };
+        let moved = [&[top], &path[1..]].concat();
+        if let Some(part) = crate::scene::tree_path::object_at_mut(objects, &moved) {
+            part.shape = crate::scene::Shape::Group {
+                children: Vec::new(),
+            };
         }
     }
 }

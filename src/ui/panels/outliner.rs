@@ -15,7 +15,7 @@ use super::outliner_tree::{node_row_ui, node_ui};
 const TOGGLE_WIDTH: f32 = 22.0;
 
 /// The hide toggle's text.
-const HIDE_ICON: &str = "H";
+pub(super) const HIDE_ICON: &str = "H";
 
 /// Shows the outliner.
 pub fn outliner_ui(
@@ -58,6 +58,7 @@ pub fn outliner_ui(
                         &[index],
                         "",
                         selection,
+                        isolation,
                         commands,
                         &mut |ui, commands| {
                             row_ui(
@@ -162,9 +163,9 @@ fn section_ui(ui: &mut Ui, title: &str, count: Option<usize>, body: impl FnOnce(
 
 /// The look of a row: its name, icon and whether it is greyed (hidden, muted, not solo).
 pub(super) struct Row<'a> {
-    name: &'a str,
-    icon: &'a str,
-    greyed: bool,
+    pub(super) name: &'a str,
+    pub(super) icon: &'a str,
+    pub(super) greyed: bool,
 }
 
 impl<'a> Row<'a> {
@@ -180,7 +181,7 @@ impl<'a> Row<'a> {
 
 /// One line of the outliner: `toggles` at its right end (laid out first, right to left,
 /// so they always fit the panel) and `item` filling the width left of them.
-fn row_ui(
+pub(super) fn row_ui(
     ui: &mut Ui,
     commands: &mut Vec<Command>,
     toggles: impl FnOnce(&mut Ui, &mut Vec<Command>),
@@ -257,7 +258,7 @@ fn hide_toggle_ui(
 }
 
 /// A small on/off toggle at the end of a row, named for screen readers and tests.
-fn toggle_ui(ui: &mut Ui, on: bool, text: &str, name: &str) -> egui::Response {
+pub(super) fn toggle_ui(ui: &mut Ui, on: bool, text: &str, name: &str) -> egui::Response {
     ui.add(egui::Button::selectable(on, text).min_size(egui::vec2(TOGGLE_WIDTH, 0.0)))
         .accessible_name(name)
 }

@@ -8,7 +8,9 @@ use egui::collapsing_header::CollapsingState;
 use crate::scene::Object;
 use crate::ui::commands::{Command, SceneEdit, Selection};
 
-use super::outliner::{Row, item_button, item_menu, shape_icon};
+use super::outliner::{HIDE_ICON, Row, item_button, item_menu, row_ui, shape_icon, toggle_ui};
+use crate::trace::Isolation;
+use crate::ui::state::IsolationToggle;
 
 /// An object row for `object` at `path` (its index alone at the top level), `key` the
 /// names of its parents (for the folding state): a plain row
@@ -20,6 +22,7 @@ pub(super) fn node_ui(
     path: &[usize],
     key: &str,
     selection: &Selection,
+    isolation: &Isolation,
     commands: &mut Vec<Command>,
     row: &mut dyn FnMut(&mut Ui, &mut Vec<Command>),
 ) {
@@ -43,9 +46,34 @@ pub(super) fn node_ui(
             child_path.push(index);
             let target = Selection::Part(child_path.clone());
             let mut child_row = |ui: &mut Ui, commands: &mut Vec<Command>| {
-                let row = Row::plain(&child.name, shape_icon(&child.shape));
-                let response = node_row_ui(ui, &row, &child_path, selection, commands);
-                item_menu(&response, target.clone(), commands);
+                let hidden = isolation.is_node_hidden(&child_path);
+                let row = Row {
+                    name: &child.name,
+                    icon: shape_icon(&child.shape),
+                    greyed: hidden,
+                };
+                row_ui(
+                    ui,
+                    commands,
+                    |ui, commands| {
+                        let own = isolation.hidden_parts.contains(&child_path);
+                        let toggle = toggle_ui(ui, own, HIDE_ICON, &format!("hide {}", child.name))
+                            .on_hover_text(if own {
+                                "Hidden: click to show it again"
+                            } else {
+                                "Hide this part: it counts as empty space (a subtracted part cuts nothing)"
+                            });
+                        if toggle.clicked() {
+                            commands.push(Command::Isolate(IsolationToggle::HidePart(
+                                child_path.clone(),
+                            )));
+                        }
+                    },
+                    |ui, commands| {
+                        let response = node_row_ui(ui, &row, &child_path, selection, commands);
+                        item_menu(&response, target.clone(), commands);
+                    },
+                );
             };
             let child_key = format!("{key}/{}", object.name);
             node_ui(
@@ -54,6 +82,7 @@ pub(super) fn node_ui(
                 &child_path,
                 &child_key,
                 selection,
+                isolation,
                 commands,
                 &mut child_row,
             );

@@ -4,11 +4,12 @@
 //! term switches they are debugging state: never in the scene, never an undo step.
 
 use super::labels::light_label;
+use crate::scene::tree_path::object_at;
 use crate::scene::{Light, Object, Scene};
 use crate::trace::Isolation;
 
 /// One click on an isolation toggle.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub enum IsolationToggle {
     /// Mute or unmute a light.
     Mute(usize),
@@ -21,6 +22,8 @@ pub enum IsolationToggle {
     },
     /// Hide or show an object.
     Hide(usize),
+    /// Hide or show a part of an object tree, by path.
+    HidePart(Vec<usize>),
     /// Back to the full picture: nothing muted, solo or hidden.
     ShowAll,
 }
@@ -32,6 +35,7 @@ impl IsolationToggle {
             IsolationToggle::Mute(light) => isolation.toggle_mute(light),
             IsolationToggle::Solo { light, add } => isolation.toggle_solo(light, add),
             IsolationToggle::Hide(object) => isolation.toggle_hide(object),
+            IsolationToggle::HidePart(path) => isolation.toggle_hide_part(&path),
             IsolationToggle::ShowAll => *isolation = Isolation::NONE,
         }
     }
@@ -73,6 +77,16 @@ pub fn isolation_note(isolation: &Isolation, scene: &Scene) -> Option<String> {
             "object",
             listed(isolation.hidden_objects.iter().map(object)),
         ),
+        (
+            "hidden",
+            "part",
+            listed(
+                isolation
+                    .hidden_parts
+                    .iter()
+                    .map(|p| crate::scene::tree_path::path_name(&scene.objects, p)),
+            ),
+        ),
     ];
     let text: Vec<String> = parts
         .into_iter()
@@ -108,6 +122,8 @@ pub struct IsolationAnchors {
     isolation: Isolation,
     lights: Vec<(usize, Light)>,
     objects: Vec<(usize, Object)>,
+    /// The hidden parts' names, by path.
+    parts: Vec<(Vec<usize>, String)>,
 }
 
 impl IsolationAnchors {
@@ -124,10 +140,16 @@ impl IsolationAnchors {
             .iter()
             .filter_map(|&i| scene.objects.get(i).map(|o| (i, o.clone())))
             .collect();
+        let parts = isolation
+            .hidden_parts
+            .iter()
+            .filter_map(|p| object_at(&scene.objects, p).map(|o| (p.clone(), o.name.clone())))
+            .collect();
         Self {
             isolation: isolation.clone(),
             lights,
             objects,
+            parts,
         }
     }
 
@@ -156,6 +178,17 @@ impl IsolationAnchors {
                 .hidden_objects
                 .iter()
                 .filter_map(|&i| object_to(i))
+                .collect(),
+            // A hidden part stays hidden while a node of its name is at its path below
+            // where its top-level object went (edits inside a tree keep it hidden).
+            hidden_parts: self
+                .parts
+                .iter()
+                .filter_map(|(path, name)| {
+                    let top = object_to(path[0]).unwrap_or(path[0]);
+                    let moved = [&[top], &path[1..]].concat();
+                    (object_at(&scene.objects, &moved)?.name == *name).then_some(moved)
+                })
                 .collect(),
         }
     }
@@ -226,6 +259,7 @@ mod tests {
             muted_lights: BTreeSet::from([3]),
             solo_lights: BTreeSet::from([1]),
             hidden_objects: BTreeSet::from([1, 4]),
+            hidden_parts: BTreeSet::new(),
         };
         let anchors = IsolationAnchors::take(&before, &isolation);
         let mut after = before.clone();
@@ -252,6 +286,7 @@ mod tests {
             muted_lights: BTreeSet::from([0, 7]),
             solo_lights: BTreeSet::from([4]),
             hidden_objects: BTreeSet::from([5, 6]),
+            hidden_parts: BTreeSet::new(),
         };
         keep_in_range(&mut isolation, &scene);
         assert_eq!(isolation.muted_lights, BTreeSet::from([0]));

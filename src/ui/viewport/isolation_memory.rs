@@ -19,6 +19,8 @@ struct StoredIsolation {
     muted_lights: Vec<usize>,
     solo_lights: Vec<usize>,
     hidden_objects: Vec<usize>,
+    #[serde(default)]
+    hidden_parts: Vec<Vec<usize>>,
 }
 
 impl StoredIsolation {
@@ -27,6 +29,7 @@ impl StoredIsolation {
             muted_lights: isolation.muted_lights.iter().copied().collect(),
             solo_lights: isolation.solo_lights.iter().copied().collect(),
             hidden_objects: isolation.hidden_objects.iter().copied().collect(),
+            hidden_parts: isolation.hidden_parts.iter().cloned().collect(),
         }
     }
 
@@ -35,6 +38,7 @@ impl StoredIsolation {
             muted_lights: self.muted_lights.iter().copied().collect(),
             solo_lights: self.solo_lights.iter().copied().collect(),
             hidden_objects: self.hidden_objects.iter().copied().collect(),
+            hidden_parts: self.hidden_parts.iter().cloned().collect(),
         }
     }
 }
@@ -89,6 +93,7 @@ mod tests {
             muted_lights: BTreeSet::from([1, 2]),
             solo_lights: BTreeSet::from([3]),
             hidden_objects: BTreeSet::from([0]),
+            hidden_parts: BTreeSet::new(),
         };
         let mut memory = IsolationMemory::default();
         memory.remember(a, &isolation);
