@@ -9,7 +9,7 @@ use crate::trace::Isolation;
 use crate::ui::commands::{Command, LightKind, SceneEdit, Selection};
 use crate::ui::state::{IsolationToggle, light_label};
 
-use super::outliner_tree::{node_row_ui, node_ui};
+use super::outliner_tree::{Shown, node_row_ui, node_ui};
 
 /// Least width of one isolation toggle at the end of a row.
 const TOGGLE_WIDTH: f32 = 22.0;
@@ -57,8 +57,10 @@ pub fn outliner_ui(
                         object,
                         &[index],
                         "",
-                        selection,
-                        isolation,
+                        Shown {
+                            selection,
+                            isolation,
+                        },
                         commands,
                         &mut |ui, commands| {
                             row_ui(

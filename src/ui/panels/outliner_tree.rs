@@ -12,20 +12,30 @@ use super::outliner::{HIDE_ICON, Row, item_button, item_menu, row_ui, shape_icon
 use crate::trace::Isolation;
 use crate::ui::state::IsolationToggle;
 
+/// What the rows show beside the scene: the selection and the isolation switches.
+#[derive(Clone, Copy)]
+pub(super) struct Shown<'a> {
+    pub(super) selection: &'a Selection,
+    pub(super) isolation: &'a Isolation,
+}
+
 /// An object row for `object` at `path` (its index alone at the top level), `key` the
-/// names of its parents (for the folding state): a plain row
-/// for a leaf, a row that folds open for a tree node. `top_row` draws the row itself
-/// (the top level adds its hide toggle); parts below get plain rows.
+/// names of its parents (for the folding state): a plain row for a leaf, a row that
+/// folds open for a tree node. `row` draws the row itself (the top level adds its hide
+/// toggle); parts below get rows with their own hide toggle.
 pub(super) fn node_ui(
     ui: &mut Ui,
     object: &Object,
     path: &[usize],
     key: &str,
-    selection: &Selection,
-    isolation: &Isolation,
+    shown: Shown<'_>,
     commands: &mut Vec<Command>,
     row: &mut dyn FnMut(&mut Ui, &mut Vec<Command>),
 ) {
+    let Shown {
+        selection,
+        isolation,
+    } = shown;
     let children = object.shape.children();
     if children.is_empty() {
         row(ui, commands);
@@ -81,8 +91,7 @@ pub(super) fn node_ui(
                 child,
                 &child_path,
                 &child_key,
-                selection,
-                isolation,
+                shown,
                 commands,
                 &mut child_row,
             );
