@@ -130,6 +130,32 @@ fn the_wrong_reflected_vector_is_named() {
 }
 
 #[test]
+fn the_n_minus_l_reflected_vector_is_named_alone_and_beside_a_missing_ambient() {
+    for ambient_off in [false, true] {
+        let c = diff(&Bugs {
+            n_minus_l: true,
+            ambient_off,
+            ..Bugs::default()
+        });
+        let e = named(&c, ExplainedTerm::Specular, None, None);
+        assert_eq!(
+            e.cause.name(),
+            "reflected-vector-n-minus-l",
+            "ambient off: {ambient_off}"
+        );
+    }
+    // The other reflected-vector bug is not taken for this one.
+    let c = diff(&Bugs {
+        negated_reflection: true,
+        ..Bugs::default()
+    });
+    assert_ne!(
+        named(&c, ExplainedTerm::Specular, None, None).cause.name(),
+        "reflected-vector-n-minus-l"
+    );
+}
+
+#[test]
 fn a_cone_normal_without_its_z_part_is_named() {
     let c = diff(&Bugs {
         cone_normal_without_z: true,

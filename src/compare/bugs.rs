@@ -103,14 +103,18 @@ pub enum SpecularBug {
     /// `max(0, (r.v)^s)` instead of `max(0, r.v)^s`: even exponents light the back of
     /// the lobe.
     NoMaxBeforePower,
+    /// `r = 2 (n.l) (n - l)`: the `- l` put inside the product, not normalised (a
+    /// common slip writing `2(n.l)n - l`).
+    NMinusL,
 }
 
 impl SpecularBug {
     /// Every specular bug.
-    pub const ALL: [SpecularBug; 3] = [
+    pub const ALL: [SpecularBug; 4] = [
         SpecularBug::NegatedReflection,
         SpecularBug::HalfVector,
         SpecularBug::NoMaxBeforePower,
+        SpecularBug::NMinusL,
     ];
 
     /// A short name for reports.
@@ -120,6 +124,7 @@ impl SpecularBug {
             SpecularBug::NegatedReflection => "reflected-vector-negated",
             SpecularBug::HalfVector => "half-vector",
             SpecularBug::NoMaxBeforePower => "no-max-before-power",
+            SpecularBug::NMinusL => "reflected-vector-n-minus-l",
         }
     }
 
@@ -132,6 +137,9 @@ impl SpecularBug {
             }
             SpecularBug::HalfVector => "the specular term used Blinn's half vector instead of r.v",
             SpecularBug::NoMaxBeforePower => "the specular term took the power before max(0, r.v)",
+            SpecularBug::NMinusL => {
+                "the specular term used the wrong reflected vector, 2(n.l)(n - l) instead of 2(n.l)n - l"
+            }
         }
     }
 
@@ -153,6 +161,10 @@ impl SpecularBug {
             SpecularBug::HalfVector => {
                 let h = (to_light + view).normalize_or_zero();
                 phong_power(n.dot(h).max(0.0), s)
+            }
+            SpecularBug::NMinusL => {
+                let r = 2.0 * n.dot(to_light) * (n - to_light);
+                phong_power(r.dot(view).max(0.0), s)
             }
             SpecularBug::NoMaxBeforePower => {
                 let r_dot_v = (2.0 * n.dot(to_light) * n - to_light).dot(view);

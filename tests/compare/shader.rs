@@ -24,6 +24,8 @@ pub struct Bugs {
     pub shadows_off: bool,
     /// `r = l - 2 (n.l) n`.
     pub negated_reflection: bool,
+    /// `r = 2 (n.l) (n - l)`.
+    pub n_minus_l: bool,
     /// Cone side normals lose their object-space z component.
     pub cone_normal_without_z: bool,
     /// Each ray's local colour clamped before the reflection is added.
@@ -132,6 +134,8 @@ impl Shader<'_> {
             let diffuse = kd * sample.radiance * n_dot_l;
             let r = if self.bugs.negated_reflection {
                 sample.to_light - 2.0 * n_dot_l * n
+            } else if self.bugs.n_minus_l {
+                2.0 * n_dot_l * (n - sample.to_light)
             } else {
                 2.0 * n_dot_l * n - sample.to_light
             };
