@@ -78,16 +78,32 @@ impl SceneEdit {
     }
 }
 
-/// How many objects (children and operands included) name `material`.
+/// How many leaves (children and operands included) show `material`: their own, or the
+/// one they inherit. A group or CSG node is not counted itself; its material shows only
+/// on the leaves that inherit it.
 #[must_use]
 pub fn material_users(scene: &Scene, material: &str) -> usize {
-    fn count(objects: &[Object], material: &str) -> usize {
-        objects
-            .iter()
-            .map(|o| usize::from(o.material == material) + count(o.shape.children(), material))
-            .sum()
+    let mut count = 0;
+    let mut work: Vec<(&Object, &str)> = scene
+        .objects
+        .iter()
+        .map(|o| (o, o.material.as_str()))
+        .collect();
+    while let Some((object, shown)) = work.pop() {
+        let children = object.shape.children();
+        if children.is_empty() {
+            count += usize::from(shown == material);
+        }
+        for child in children {
+            let inherits = if child.material.is_empty() {
+                shown
+            } else {
+                child.material.as_str()
+            };
+            work.push((child, inherits));
+        }
     }
-    count(&scene.objects, material)
+    count
 }
 
 /// Drops a selection that no longer points at anything (after undo, open, delete).

@@ -339,3 +339,26 @@ fn several_objects_of_one_list_combine_into_one_node_where_the_first_stood() {
         .unwrap_err();
     assert!(error.contains("one list"), "{error}");
 }
+
+#[test]
+fn a_material_is_used_by_the_leaves_that_show_it_not_by_the_nodes_around_them() {
+    let mut scene = crate::ui::document::files::default_scene();
+    let cube = scene
+        .objects
+        .iter()
+        .position(|o| o.name == "blue box")
+        .unwrap();
+    let before = crate::ui::commands::material_users(&scene, "blue satin");
+    let mut selection = Selection::Object(cube);
+    SceneEdit::GroupSelected
+        .apply(&mut scene, &mut selection)
+        .unwrap();
+    SceneEdit::AddOperand(Shape::Sphere)
+        .apply(&mut scene, &mut Selection::Object(cube))
+        .unwrap();
+    // The group names it too, but only the box and the sphere that inherits it show it.
+    assert_eq!(
+        crate::ui::commands::material_users(&scene, "blue satin"),
+        before + 1
+    );
+}
