@@ -112,3 +112,39 @@ fn a_picture_that_follows_the_scenes_conventions_is_explained_by_nothing() {
         );
     }
 }
+
+#[test]
+fn rays_bouncing_past_the_depth_limit_are_named_no_depth_limit_alone_and_with_truncation() {
+    // The scene stops at one bounce; the other tracer has no limit.
+    let mut scene = small_default();
+    scene.render.max_depth = 1;
+    let mut unlimited = scene.clone();
+    unlimited.render.max_depth = 48;
+    for quantise in [
+        raylab::scene::Quantise::Round,
+        raylab::scene::Quantise::Truncate,
+    ] {
+        let conventions = Conventions {
+            quantise,
+            ..Conventions::default()
+        };
+        let c = diff(&scene, &rendered_under(&unlimited, conventions));
+        let report = c.text_lines().join("\n");
+        let causes: Vec<&str> = c.explanations.iter().map(|e| e.cause.name()).collect();
+        let depth = causes
+            .iter()
+            .position(|&n| n == "no-depth-limit")
+            .unwrap_or_else(|| panic!("not named:\n{report}"));
+        // First, or right after the encoding's verdict where the picture truncates.
+        let before: Vec<&str> = causes[..depth].to_vec();
+        assert!(before.iter().all(|&n| n == "truncate"), "{report}");
+        assert!(c.explanations[depth].share > 0.5, "{report}");
+    }
+    // A picture that keeps the limit gets no such verdict.
+    let own = diff(&scene, &rendered_under(&scene, Conventions::default()));
+    assert!(
+        own.explanations
+            .iter()
+            .all(|e| e.cause.name() != "no-depth-limit")
+    );
+}

@@ -4,7 +4,9 @@
 //! picture is rendered under each other choice of mirror and clamp convention; where one
 //! matches the other picture clearly better than the scene's own, the comparison is made
 //! under it, and its first explanation names the convention (`mirror-blend`,
-//! `clamp-each-ray`, ...) with the share of the difference it explains.
+//! `clamp-each-ray`, ...) with the share of the difference it explains. A tracer without
+//! a depth limit is tried the same way: raylab's picture with rays bouncing to
+//! [`NO_LIMIT_DEPTH`] (`no-depth-limit`; in scenes with mirrors and no glass).
 
 use super::target::{FitState, Target};
 use super::{MIN_ERROR, MIN_STEP_SHARE};
@@ -15,11 +17,17 @@ use crate::trace::{MeshStore, RenderOptions, RenderProgress, World, render};
 /// own leaves (a convention is the whole picture's habit: it explains much or nothing).
 const MIN_CONVENTION_SHARE: f64 = 0.2;
 
+/// How deep raylab's picture goes when trying a tracer without a depth limit: far past
+/// any course scene's `max_depth`, where two mirrors' colour has long converged.
+pub const NO_LIMIT_DEPTH: u32 = 48;
+
 /// A convention that explains the other picture better than the scene's.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BetterConventions {
     /// The conventions the other picture follows.
     pub conventions: Conventions,
+    /// The ray depth it reaches (the scene's, or [`NO_LIMIT_DEPTH`]).
+    pub max_depth: u32,
     /// The difference left under the scene's conventions, and under these.
     pub errors: (f64, f64),
     /// Pixels whose error fell, ascending.
@@ -39,9 +47,10 @@ pub fn better_conventions(
     progress: &RenderProgress,
 ) -> Option<BetterConventions> {
     let own = scene.render.conventions;
-    let error_under = |conventions: Conventions| -> Option<FitState> {
+    let error_under = |conventions: Conventions, max_depth: u32| -> Option<FitState> {
         let mut varied = scene.clone();
         varied.render.conventions = conventions;
+        varied.render.max_depth = max_depth;
         let world = World::with_meshes(&varied, meshes).ok()?;
         let options = RenderOptions {
             samples_per_pixel: spp,
@@ -55,7 +64,8 @@ pub fn better_conventions(
             .collect();
         Some(FitState::new(model, target))
     };
-    let baseline = error_under(own)?;
+    let depth = scene.render.max_depth;
+    let baseline = error_under(own, depth)?;
     if baseline.total < MIN_ERROR {
         return None;
     }
@@ -69,7 +79,7 @@ pub fn better_conventions(
     } else {
         std::slice::from_ref(&own.mirror)
     };
-    let mut best: Option<(Conventions, FitState)> = None;
+    let mut candidates: Vec<(Conventions, u32)> = Vec::new();
     for &mirror in mirror_choices {
         for clamp in [ClampConvention::Pixel, ClampConvention::EachRay] {
             let candidate = Conventions {
@@ -77,16 +87,28 @@ pub fn better_conventions(
                 clamp,
                 quantise: own.quantise,
             };
-            if candidate == own {
-                continue;
-            }
-            let state = error_under(candidate)?;
-            if best.as_ref().is_none_or(|(_, b)| state.total < b.total) {
-                best = Some((candidate, state));
+            if candidate != own {
+                candidates.push((candidate, depth));
             }
         }
     }
-    let (conventions, state) = best?;
+    // Rays past the depth limit need mirrors to bounce off. Not tried with glass: a
+    // ray's tree splits at every glass surface, so its size grows as 2^depth.
+    let glass = scene
+        .materials
+        .values()
+        .any(|m| m.transmission != glam::DVec3::ZERO);
+    if mirrors && !glass && depth < NO_LIMIT_DEPTH {
+        candidates.push((own, NO_LIMIT_DEPTH));
+    }
+    let mut best: Option<((Conventions, u32), FitState)> = None;
+    for candidate in candidates {
+        let state = error_under(candidate.0, candidate.1)?;
+        if best.as_ref().is_none_or(|(_, b)| state.total < b.total) {
+            best = Some((candidate, state));
+        }
+    }
+    let ((conventions, max_depth), state) = best?;
     let gain = baseline.total - state.total;
     let floor = (MIN_STEP_SHARE * baseline.total).max(MIN_ERROR);
     (gain >= MIN_CONVENTION_SHARE * baseline.total && gain >= floor).then(|| {
@@ -95,6 +117,7 @@ pub fn better_conventions(
             .collect();
         BetterConventions {
             conventions,
+            max_depth,
             errors: (baseline.total, state.total),
             pixels,
         }

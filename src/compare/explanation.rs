@@ -77,6 +77,10 @@ pub enum Cause {
         scene: Conventions,
         /// The other picture's.
         other: Conventions,
+        /// The ray depth the other picture reaches, where it is the scene's `max_depth`
+        /// exceeded (mirrors facing each other bouncing past the limit); `None` where it
+        /// keeps the limit.
+        depth: Option<u32>,
     },
     /// Pixels at an object's outline differ, no factor explains them.
     Silhouette,
@@ -98,7 +102,8 @@ impl Cause {
             Cause::Missing(_) => "missing",
             Cause::Encoding(Encoding::LinearTruncate) => "truncate",
             Cause::Encoding(e) => e.name(),
-            Cause::Conventions { scene, other } => {
+            Cause::Conventions { depth: Some(_), .. } => "no-depth-limit",
+            Cause::Conventions { scene, other, .. } => {
                 let names = super::conventions_fit::convention_names(scene, other);
                 match names.as_slice() {
                     [one] => one,
@@ -246,6 +251,12 @@ pub fn summary(e: &Explanation, scene: &Scene) -> String {
                 ),
             }
         }
+        Cause::Conventions {
+            depth: Some(depth), ..
+        } => format!(
+            "The other image's rays bounce past the scene's ray depth ({}): its mirrors facing each other go on to depth {depth} or more, as a tracer without a depth limit does.",
+            scene.render.max_depth
+        ),
         Cause::Conventions { other, .. } => {
             let mirror = match other.mirror {
                 MirrorConvention::Blend => "blends mirrors as (1 - km) local + km reflected",

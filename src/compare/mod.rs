@@ -227,6 +227,7 @@ fn with_conventions(
 ) -> Result<Comparison, CompareError> {
     let mut adopted = scene.clone();
     adopted.render.conventions = better.conventions;
+    adopted.render.max_depth = better.max_depth;
     let mut comparison = compare_scene(&adopted, meshes, other, spp, progress, false)?;
     let (before, after) = better.errors;
     let is_encoding = |e: &Explanation| e.term == ExplainedTerm::Encoding;
@@ -253,6 +254,7 @@ fn with_conventions(
         cause: Cause::Conventions {
             scene: scene.render.conventions,
             other: better.conventions,
+            depth: (better.max_depth != scene.render.max_depth).then_some(better.max_depth),
         },
         confidence: 1.0 - after / before,
         summary: String::new(),
