@@ -32,6 +32,8 @@ pub enum ExplainedTerm {
     Encoding,
     /// How the whole picture combines and clamps colour (render.conventions).
     Conventions,
+    /// The picture as a whole: another version of the scene.
+    Scene,
 }
 
 impl ExplainedTerm {
@@ -49,6 +51,7 @@ impl ExplainedTerm {
             ExplainedTerm::Background => "background",
             ExplainedTerm::Encoding => "encoding",
             ExplainedTerm::Conventions => "conventions",
+            ExplainedTerm::Scene => "scene",
         }
     }
 }
@@ -86,6 +89,12 @@ pub enum Cause {
     Silhouette,
     /// Shading varies across an object in a way no factor or known bug explains.
     Shading,
+    /// The picture is of another version of the scene: outlines differ on several
+    /// objects and nothing explains the bulk of the difference.
+    DifferentScene {
+        /// How many objects' outlines differ.
+        objects: u32,
+    },
 }
 
 impl Cause {
@@ -116,6 +125,7 @@ impl Cause {
             }
             Cause::Silhouette => "silhouette",
             Cause::Shading => "shading",
+            Cause::DifferentScene { .. } => "different-scene",
         }
     }
 }
@@ -297,6 +307,9 @@ pub fn summary(e: &Explanation, scene: &Scene) -> String {
         Cause::Shading => format!(
             "Shading varies across {} in a way no factor or known bug explains; it follows the {term} term, as a wrong normal or reflected vector would.",
             object.map_or("the picture".to_owned(), |o| format!("'{o}'"))
+        ),
+        Cause::DifferentScene { objects } => format!(
+            "The picture looks like another version of this scene: the outlines of {objects} objects differ and no factor or known bug explains most of the difference. Was it rendered from an older scene file (the camera or objects moved)? The verdicts below are weak until the two agree."
         ),
     }
 }

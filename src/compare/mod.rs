@@ -17,6 +17,7 @@ pub mod bugs;
 pub mod channels;
 pub mod components;
 pub mod conventions_fit;
+pub mod different_scene;
 pub mod encoding;
 pub mod error;
 pub mod explanation;
@@ -181,6 +182,10 @@ fn compare_scene(
     } else {
         0.0
     };
+    if let Some(mut verdict) = different_scene::different_scene(&explanations, unexplained_share) {
+        verdict.summary = explanation::summary(&verdict, scene);
+        explanations.insert(0, verdict);
+    }
 
     let raylab = components.image();
     let raylab_rgb = report::rgb_of(&raylab);
