@@ -2,6 +2,8 @@
 //! (missing, huge, out-of-range indices, NaN or 1e300 coordinates, zero-area triangles,
 //! garbage) refused with the file's name and line, or skipped with a warning.
 
+mod common;
+
 use std::path::PathBuf;
 
 use raylab::scene::{Shape, load_obj, parse_scene, read_scene_meshes};
@@ -187,36 +189,10 @@ fn normals_indexed_apart_from_positions_get_a_vertex_per_pair() {
     }
 }
 
-/// A large grid of quads as OBJ text (about `n * n * 2` triangles).
-fn big_grid(n: usize) -> String {
-    use std::fmt::Write;
-    let mut text = String::with_capacity(n * n * 60);
-    for j in 0..=n {
-        for i in 0..=n {
-            writeln!(text, "v {i} {j} 0").unwrap();
-        }
-    }
-    for j in 0..n {
-        for i in 0..n {
-            let v = |i: usize, j: usize| j * (n + 1) + i + 1;
-            writeln!(
-                text,
-                "f {} {} {} {}",
-                v(i, j),
-                v(i + 1, j),
-                v(i + 1, j + 1),
-                v(i, j + 1)
-            )
-            .unwrap();
-        }
-    }
-    text
-}
-
 #[test]
 fn a_watched_read_reports_the_whole_file_and_a_cancelled_one_stops_clearly() {
     use raylab::scene::{LoadWatch, load_obj_watched};
-    let path = write("watched", "grid.obj", &big_grid(40));
+    let path = write("watched", "grid.obj", &common::obj::sheet(40, false));
     let watch = LoadWatch::default();
     assert_eq!(watch.fraction(), 0.0);
     load_obj_watched(&path, &watch).expect("reads");
@@ -242,7 +218,7 @@ fn a_read_cancelled_half_way_stops_before_the_end() {
     use raylab::scene::{LoadWatch, load_obj_watched};
     use std::sync::Arc;
     // About 12 MB: reading it takes far longer than the watcher's first look.
-    let path = write("half-way", "grid.obj", &big_grid(600));
+    let path = write("half-way", "grid.obj", &common::obj::sheet(600, false));
     let watch = Arc::new(LoadWatch::default());
     let watcher = {
         let watch = Arc::clone(&watch);

@@ -2,6 +2,7 @@
 //! scene's folder itself (off the UI thread), keeps them, and so re-shades a material
 //! edit without tracing again; a scene never saved has no folder and is refused clearly.
 
+mod common;
 mod worker_harness;
 
 use std::path::Path;
@@ -66,23 +67,10 @@ fn a_scene_without_a_folder_is_refused_naming_the_mesh() {
 
 #[test]
 fn the_worker_shows_the_file_it_reads_and_a_cancel_stops_it_with_a_clear_error() {
-    use std::fmt::Write;
     // A mesh file large enough (about 20 MB) that its reading can be seen and stopped.
     let dir = std::env::temp_dir().join(format!("raylab-mesh-cancel-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("folder");
-    let n = 800;
-    let mut text = String::with_capacity(n * n * 60);
-    for j in 0..=n {
-        for i in 0..=n {
-            writeln!(text, "v {i} {j} 0").unwrap();
-        }
-    }
-    for j in 0..n {
-        for i in 0..n {
-            let v = |i: usize, j: usize| j * (n + 1) + i + 1;
-            writeln!(text, "f {} {} {}", v(i, j), v(i + 1, j), v(i + 1, j + 1)).unwrap();
-        }
-    }
+    let text = common::obj::sheet(800, true);
     std::fs::write(dir.join("sheet.obj"), text).expect("write");
     let mut request = mesh_request(1, Some(&dir));
     let mut scene = (*request.scene).clone();

@@ -2,6 +2,7 @@
 //! it, in one undo step; the scene refers to the file relative to its own folder where
 //! it can, in full otherwise (a scene never saved), and never rewrites it.
 
+mod common;
 mod editor_harness;
 
 use std::path::PathBuf;
@@ -89,42 +90,13 @@ fn a_mesh_beside_the_scene_is_written_relative_to_the_scenes_folder() {
 #[test]
 fn a_large_mesh_shows_its_reading_in_the_status_bar_and_cancel_stops_it_with_a_message() {
     use egui_kittest::kittest::Queryable;
-    use std::fmt::Write;
     // About 50 MB of quads: reading it takes long enough to be seen and stopped.
     let dir = std::env::temp_dir().join(format!("raylab-ui-obj-cancel-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let n = 1000;
-    let mut text = String::with_capacity(n * n * 50);
-    for j in 0..=n {
-        for i in 0..=n {
-            writeln!(text, "v {i} {j} 0").unwrap();
-        }
-    }
-    for j in 0..n {
-        for i in 0..n {
-            let v = |i: usize, j: usize| j * (n + 1) + i + 1;
-            writeln!(
-                text,
-                "f {} {} {} {}",
-                v(i, j),
-                v(i + 1, j),
-                v(i + 1, j + 1),
-                v(i, j + 1)
-            )
-            .unwrap();
-        }
-    }
+    let text = common::obj::sheet(1000, false);
     let obj = dir.join("sheet.obj");
     std::fs::write(&obj, text).unwrap();
-    let mut harness = editor_harness::editor_harness(
-        EditorOptions {
-            preview: true,
-            ..EditorOptions::default()
-        },
-        egui::Vec2::new(1280.0, 800.0),
-        64,
-    );
-    harness.run_ok();
+    let mut harness = harness_with_preview();
     harness.state_mut().push(Command::ImportObj(obj));
     harness.run_ok();
     let deadline = std::time::Instant::now() + std::time::Duration::from_secs(60);
@@ -164,15 +136,7 @@ fn a_large_mesh_shows_its_reading_in_the_status_bar_and_cancel_stops_it_with_a_m
 #[test]
 fn the_inspector_shows_a_read_mesh_s_file_triangles_and_bounds() {
     use egui_kittest::kittest::Queryable;
-    let mut harness = editor_harness::editor_harness(
-        EditorOptions {
-            preview: true,
-            ..EditorOptions::default()
-        },
-        egui::Vec2::new(1280.0, 800.0),
-        64,
-    );
-    harness.run_ok();
+    let mut harness = harness_with_preview();
     harness
         .state_mut()
         .push(Command::ImportObj(scenes().join("pyramid.obj")));
@@ -198,4 +162,18 @@ fn the_inspector_shows_a_read_mesh_s_file_triangles_and_bounds() {
         bounds.contains("y 0.000…1.400") && bounds.contains("z -1.000…1.000"),
         "{bounds}"
     );
+}
+
+/// The editor on the default scene with its preview running.
+fn harness_with_preview() -> egui_kittest::Harness<'static, raylab::ui::EditorApp> {
+    let mut harness = editor_harness::editor_harness(
+        EditorOptions {
+            preview: true,
+            ..EditorOptions::default()
+        },
+        egui::Vec2::new(1280.0, 800.0),
+        64,
+    );
+    harness.run_ok();
+    harness
 }

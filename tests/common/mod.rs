@@ -1,9 +1,11 @@
 //! Helpers shared by the integration tests: small scenes built in code, and single rays;
-//! `cli` for running the binary; `legacy` for the legacy importer's tests.
+//! `cli` for running the binary; `legacy` for the legacy importer's tests; `obj` for
+//! OBJ text.
 #![allow(dead_code)]
 
 pub mod cli;
 pub mod legacy;
+pub mod obj;
 
 use std::collections::BTreeMap;
 
