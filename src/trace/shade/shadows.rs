@@ -126,9 +126,9 @@ impl Tracer<'_> {
         }
     }
 
-    /// The object a shadow ray from `hit` to the light of `sample` cannot meet: every
-    /// shape is convex or flat, so a shadow ray leaving a solid on its outer side, or
-    /// leaving a plane, cannot meet the surface it starts on.
+    /// The object a shadow ray from `hit` to the light of `sample` cannot meet: a shadow
+    /// ray leaving a convex solid on its outer side, or leaving a plane, cannot meet the
+    /// surface it starts on (a torus, a tube, a mesh or a concave CSG node can).
     #[inline]
     fn shadow_except(&self, hit: &SurfacePoint, sample: &LightSample) -> Option<usize> {
         let object = &self.world.objects[hit.object];

@@ -104,10 +104,13 @@ impl WorldObject {
 
     /// Whether a ray leaving the surface on its outer side can meet the object again
     /// (not for a single convex or flat primitive, nor a convex CSG node; possibly for
-    /// other CSG nodes and meshes).
+    /// a torus or a tube, whose far side lies across the hole, other CSG nodes and
+    /// meshes).
     #[must_use]
     pub fn can_meet_itself(&self) -> bool {
-        self.mesh.is_some() || self.csg.as_ref().is_some_and(|tree| !tree.convex)
+        self.mesh.is_some()
+            || !self.shape.is_convex()
+            || self.csg.as_ref().is_some_and(|tree| !tree.convex)
     }
 
     /// The bounds test: whether the ray may meet the object before `t_max`.

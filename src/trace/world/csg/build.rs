@@ -153,8 +153,8 @@ impl CsgTree {
                         })?;
                         let index = u32::try_from(tree.leaves.len()).expect("under 2^32 leaves");
                         tree.steps.push(Step::Leaf(index));
-                        // Unit shapes are convex; a mesh may not be.
-                        convex.push(mesh.is_none());
+                        // Most unit shapes are convex; a torus, a tube or a mesh may not be.
+                        convex.push(mesh.is_none() && primitive.is_convex());
                         let mut leaf =
                             CsgLeaf::new(primitive, mesh, path, material, node_from_object);
                         leaf.tree_path = below;
