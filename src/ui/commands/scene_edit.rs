@@ -235,6 +235,22 @@ fn delete(scene: &mut Scene, selection: &mut Selection) -> Result<(), String> {
             *selection = neighbour(i, scene.objects.len(), Selection::Object);
         }
         Selection::Part(path) => tree_edit::delete_part(scene, &path, selection)?,
+        Selection::Several(paths) => {
+            // Last first, so the paths before stay right; all or nothing.
+            let mut edited = scene.clone();
+            let mut sorted = paths;
+            sorted.sort_unstable_by(|a, b| b.cmp(a));
+            for path in &sorted {
+                let mut one = Selection::node(path.clone());
+                if path.len() == 1 {
+                    edited.objects.remove(path[0]);
+                } else {
+                    tree_edit::delete_part(&mut edited, path, &mut one)?;
+                }
+            }
+            *scene = edited;
+            *selection = Selection::None;
+        }
         Selection::Light(i) if i < scene.lights.len() => {
             scene.lights.remove(i);
             *selection = neighbour(i, scene.lights.len(), Selection::Light);

@@ -362,3 +362,30 @@ fn a_material_is_used_by_the_leaves_that_show_it_not_by_the_nodes_around_them() 
         before + 1
     );
 }
+
+#[test]
+fn several_picked_objects_are_deleted_together_or_not_at_all() {
+    let mut scene = csg_scene();
+    let die = die(&scene);
+    let lens = scene.objects.iter().position(|o| o.name == "lens").unwrap();
+    let count = scene.objects.len();
+    let pips = scene.objects[die].shape.children().len();
+    let mut selection = Selection::several(vec![vec![lens], vec![die, 2], vec![die, 3]]);
+    SceneEdit::DeleteSelected
+        .apply(&mut scene, &mut selection)
+        .unwrap();
+    assert_eq!(selection, Selection::None);
+    assert_eq!(scene.objects.len(), count - 1);
+    let die = scene.objects.iter().position(|o| o.name == "die").unwrap();
+    assert_eq!(scene.objects[die].shape.children().len(), pips - 2);
+    // Both halves of a lens cannot go: the lens keeps its last operand, and nothing is
+    // deleted.
+    let mut scene = csg_scene();
+    let before = scene.clone();
+    let mut both = Selection::several(vec![vec![lens, 0], vec![lens, 1]]);
+    let error = SceneEdit::DeleteSelected
+        .apply(&mut scene, &mut both)
+        .unwrap_err();
+    assert!(error.contains("at least one operand"), "{error}");
+    assert_eq!(scene, before);
+}
