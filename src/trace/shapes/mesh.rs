@@ -304,4 +304,20 @@ impl MeshStore {
     pub fn get(&self, path: &str) -> Option<&Arc<TriangleMesh>> {
         self.meshes.get(path)
     }
+
+    /// The mesh of the object at tree path `object` (for errors), read from `file`.
+    ///
+    /// # Errors
+    /// The file is not among the loaded meshes.
+    pub fn for_object(
+        &self,
+        file: &str,
+        object: &str,
+    ) -> Result<&Arc<TriangleMesh>, crate::scene::SceneError> {
+        self.get(file).ok_or_else(|| {
+            crate::scene::SceneError::Invalid(format!(
+                "object \"{object}\": the mesh file \"{file}\" is not loaded"
+            ))
+        })
+    }
 }

@@ -89,12 +89,7 @@ pub(crate) fn flatten(
                 (Primitive::Cube, Body::Csg(std::sync::Arc::new(tree)))
             }
             Shape::Mesh { path } => {
-                let mesh = meshes.get(path).ok_or_else(|| {
-                    SceneError::Invalid(format!(
-                        "object \"{}\": the mesh file \"{path}\" is not loaded",
-                        node.path
-                    ))
-                })?;
+                let mesh = meshes.for_object(path, &node.path)?;
                 (Primitive::Mesh, Body::Mesh(Arc::clone(mesh)))
             }
             leaf => (

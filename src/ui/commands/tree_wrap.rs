@@ -10,7 +10,8 @@ use crate::scene::tree_path::{object_at, siblings_mut};
 use crate::scene::{CsgOp, Object, Scene, Shape, Transform, Trs, rows_from_affine};
 
 /// Puts the selected node into a new group (`op` `None`) or CSG node (as its first
-/// operand) in its place, at the identity so nothing moves, and selects the new node.
+/// operand) in its place, and selects the new node. The node stands where the object
+/// stood, so nothing moves.
 pub(super) fn wrap_selected(
     scene: &mut Scene,
     selection: &mut Selection,
@@ -22,43 +23,42 @@ pub(super) fn wrap_selected(
     let path = selection.node_path().ok_or("select an object first")?;
     let siblings = siblings_mut(&mut scene.objects, &path).ok_or("no such object")?;
     let at = *path.last().expect("a node path is never empty");
-    let node = siblings.get(at).ok_or("no such object")?.clone();
-    let (base, shape) = match op {
-        None => (
-            "group",
-            Shape::Group {
-                children: vec![node.clone()],
-            },
-        ),
-        Some(op) => (
-            match op {
-                CsgOp::Union => "union",
-                CsgOp::Intersection => "intersection",
-                CsgOp::Difference => "difference",
-            },
-            Shape::Csg {
-                op,
-                operands: vec![node.clone()],
-            },
-        ),
-    };
-    let name = unique_name(base, siblings.iter().map(|o| &o.name));
+    let mut member = siblings.get(at).ok_or("no such object")?.clone();
     // The new node stands where the object stood (its gizmo there, operands added at
     // its centre), the object at the node's origin: the product is the same transform.
-    let (outer, inner) = split_translation(&node.transform);
-    let mut shape = shape;
-    if let Some(children) = shape.children_mut() {
-        children[0].transform = inner;
-    }
+    let (outer, inner) = split_translation(&member.transform);
+    member.transform = inner;
     // The new node keeps the object's material, so what is added to it inherits that.
+    let material = member.material.clone();
     siblings[at] = Object {
-        name,
-        shape,
+        name: unique_name(base_name(op), siblings.iter().map(|o| &o.name)),
+        shape: node_shape(op, vec![member]),
         transform: outer,
-        material: node.material,
+        material,
     };
     *selection = Selection::node(path);
     Ok(())
+}
+
+/// The name a new node starts from: "group", "union", "intersection", "difference".
+fn base_name(op: Option<CsgOp>) -> &'static str {
+    match op {
+        None => "group",
+        Some(CsgOp::Union) => "union",
+        Some(CsgOp::Intersection) => "intersection",
+        Some(CsgOp::Difference) => "difference",
+    }
+}
+
+/// A group of `members`, or a CSG node of `op` with them as operands.
+fn node_shape(op: Option<CsgOp>, members: Vec<Object>) -> Shape {
+    match op {
+        None => Shape::Group { children: members },
+        Some(op) => Shape::Csg {
+            op,
+            operands: members,
+        },
+    }
 }
 
 /// Puts several nodes of one parent into a new group or CSG node (the first picked as
@@ -86,21 +86,9 @@ fn combine(
         return Err("no such object".to_owned());
     }
     let members: Vec<Object> = picked.iter().map(|&k| siblings[k].clone()).collect();
-    let base = match op {
-        None => "group",
-        Some(CsgOp::Union) => "union",
-        Some(CsgOp::Intersection) => "intersection",
-        Some(CsgOp::Difference) => "difference",
-    };
-    let name = unique_name(base, siblings.iter().map(|o| &o.name));
+    let name = unique_name(base_name(op), siblings.iter().map(|o| &o.name));
     let material = members[0].material.clone();
-    let shape = match op {
-        None => Shape::Group { children: members },
-        Some(op) => Shape::Csg {
-            op,
-            operands: members,
-        },
-    };
+    let shape = node_shape(op, members);
     let at = *picked.iter().min().expect("two or more picked");
     let mut gone = picked.clone();
     gone.sort_unstable();

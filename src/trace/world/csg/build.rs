@@ -285,11 +285,7 @@ fn chunks(operands: &[Object], node_from_parent: &DAffine3) -> Vec<Chunk> {
 /// A Mesh operand's triangles, if they are loaded and bound a solid (a CSG operand
 /// needs an inside).
 fn solid_mesh(meshes: &MeshStore, file: &str, path: &str) -> Result<Arc<TriangleMesh>, SceneError> {
-    let mesh = meshes.get(file).ok_or_else(|| {
-        SceneError::Invalid(format!(
-            "object \"{path}\": the mesh file \"{file}\" is not loaded"
-        ))
-    })?;
+    let mesh = meshes.for_object(file, path)?;
     if !mesh.is_closed() {
         return Err(SceneError::Invalid(format!(
             "object \"{path}\": the mesh \"{file}\" is not closed (some edge is not shared \
