@@ -55,7 +55,7 @@ pub(super) fn set_node(scene: &mut Scene, path: &[usize], node: Object) -> Resul
 }
 
 /// Adds a unit shape as the last operand (or child) of the selected tree node, placed
-/// at the node's origin, and selects it.
+/// beside its first operand (see `beside_first`), and selects it.
 pub(super) fn add_operand(
     scene: &mut Scene,
     selection: &mut Selection,
