@@ -94,6 +94,12 @@ pub struct CsgHit {
     pub cut: bool,
 }
 
+/// Marks a [`Crossing::hit`] whose surface point is not in the list of crossings but
+/// worked out when a query needs it (a sphere's or a cube's, the shapes most CSG leaves
+/// are; most crossings a sweep passes are never answered with). The low bit is which
+/// end of the leaf's span. Lists never grow this long.
+const LATER: u32 = 1 << 31;
+
 /// Per-thread buffers, so a ray allocates nothing once warm.
 #[derive(Default)]
 struct Scratch {
@@ -155,6 +161,25 @@ impl CsgTree {
                         }
                         let leaf_ray = ray.transformed(&leaf.leaf_from_node);
                         s.leaf_rays[index as usize] = leaf_ray;
+                        if leaf.mesh.is_none()
+                            && let Some(line) = shapes::line_span(leaf.shape, &leaf_ray)
+                        {
+                            // A sphere's or a cube's span, its surface points worked out
+                            // later for the one crossing a query answers with.
+                            if let Some([t0, t1]) = line.filter(|[t0, t1]| t1 > t0) {
+                                let end = |t, k| Crossing {
+                                    t,
+                                    hit: LATER | k,
+                                    leaf: index,
+                                    cut: false,
+                                };
+                                s.arena.push(Span {
+                                    enter: end(t0, 0),
+                                    leave: end(t1, 1),
+                                });
+                            }
+                            continue;
+                        }
                         let first = s.crossings.len();
                         let inside = if let Some(mesh) = &leaf.mesh {
                             mesh.crossings(&leaf_ray, &mut s.crossings);
@@ -241,8 +266,8 @@ impl CsgTree {
                         return None;
                     }
                     if Self::in_range(s, c, t_max) {
-                        let hit = &s.crossings[c.hit as usize];
-                        return Some(self.node_hit(ray, c, hit, entering));
+                        let hit = self.shape_hit(s, c);
+                        return Some(self.node_hit(ray, c, &hit, entering));
                     }
                 }
             }
@@ -279,12 +304,23 @@ impl CsgTree {
                 .filter(|(c, _)| (c.leaf as usize) < self.leaves.len())
                 .map(|(c, entering)| {
                     (
-                        self.node_hit(ray, &c, &s.crossings[c.hit as usize], entering),
+                        self.node_hit(ray, &c, &self.shape_hit(s, &c), entering),
                         entering,
                     )
                 })
                 .collect()
         })
+    }
+
+    /// A crossing's surface point in its leaf's space: from the list of crossings, or
+    /// worked out now for a sphere's or a cube's (see [`LATER`]).
+    fn shape_hit(&self, s: &Scratch, crossing: &Crossing) -> ShapeHit {
+        if crossing.hit & LATER == 0 {
+            return s.crossings[crossing.hit as usize];
+        }
+        let leaf = crossing.leaf as usize;
+        let k = (crossing.hit & 1) as usize;
+        shapes::line_crossing(self.leaves[leaf].shape, &s.leaf_rays[leaf], k, crossing.t)
     }
 
     /// A crossing in the node's space: the point and normal carried through the leaf's
