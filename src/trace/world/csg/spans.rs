@@ -127,10 +127,17 @@ impl Cursor<'_> {
 /// zero length; where the result's inside begins or ends, the surface named is `a`'s if
 /// `a` crosses there, else `b`'s (a subtracted one marked as a cut).
 pub(crate) fn combine(op: CsgOp, a: &[Span], b: &[Span], out: &mut Vec<Span>) {
-    if let ([a], [b]) = (a, b) {
-        return combine_one(op, *a, *b, out);
+    match (a, b) {
+        ([a], [b]) => combine_one(op, *a, *b, out),
+        // Intersected with or cut by one span (a hollow solid's walls minus a window),
+        // span by span: what the sweep gives, as long as `a`'s spans do not touch.
+        (_, [b]) if op != CsgOp::Union && a.windows(2).all(|w| w[0].leave.t < w[1].enter.t) => {
+            for a in a {
+                combine_one(op, *a, *b, out);
+            }
+        }
+        _ => sweep(op, a, b, out),
     }
-    sweep(op, a, b, out);
 }
 
 /// [`combine`] for any span lists: one pass over both lists' boundaries in order.
@@ -329,6 +336,46 @@ mod tests {
             }
         }
         assert_eq!(compared, 3 * 15 * 15);
+    }
+
+    #[test]
+    fn several_spans_against_one_give_what_the_sweep_gives() {
+        // Two spans against one, ends on a grid: every way the three can meet.
+        let ends = [f64::NEG_INFINITY, 0.0, 1.0, 2.0, 3.0, 4.0, f64::INFINITY];
+        let span = |enter: f64, leave: f64, leaf: u32, hit: u32| Span {
+            enter: Crossing {
+                t: enter,
+                hit,
+                leaf,
+                cut: false,
+            },
+            leave: Crossing {
+                t: leave,
+                hit: hit + 1,
+                leaf,
+                cut: false,
+            },
+        };
+        let n = ends.len();
+        let mut compared = 0;
+        for op in [CsgOp::Union, CsgOp::Intersection, CsgOp::Difference] {
+            for (i, j, k, l) in (0..n).flat_map(|i| {
+                (i + 1..n).flat_map(move |j| {
+                    (j..n).flat_map(move |k| (k + 1..n).map(move |l| (i, j, k, l)))
+                })
+            }) {
+                let a = [span(ends[i], ends[j], 0, 0), span(ends[k], ends[l], 0, 2)];
+                for (x, y) in (0..n).flat_map(|x| (x + 1..n).map(move |y| (x, y))) {
+                    let b = [span(ends[x], ends[y], 1, 4)];
+                    let (mut quick, mut swept) = (Vec::new(), Vec::new());
+                    combine(op, &a, &b, &mut quick);
+                    sweep(op, &a, &b, &mut swept);
+                    assert_eq!(quick, swept, "{op:?} {a:?} {b:?}");
+                    compared += 1;
+                }
+            }
+        }
+        assert!(compared > 1000, "{compared}");
     }
 
     #[test]
