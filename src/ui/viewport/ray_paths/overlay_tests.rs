@@ -4,17 +4,25 @@ use super::*;
 use crate::gizmo::ray_paths::{SegmentKind, SegmentLengths, path_segments};
 use crate::trace::{TermSwitches, World};
 
-#[test]
-fn a_ray_that_meets_a_tree_names_the_leaf_it_hit() {
+/// The CSG example, and every `step`-th pixel of it (each way) inspected, lazily.
+fn csg_pixels(step: usize) -> (Scene, impl Iterator<Item = PixelInspection>) {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/csg.ron");
     let scene = crate::scene::load_scene(&path).unwrap();
     let world = World::new(&scene).unwrap();
-    // A pixel whose camera ray meets a pip's cut in the die.
     let (w, h) = (scene.camera.width, scene.camera.height);
-    let inspection = (0..h)
-        .step_by(3)
-        .flat_map(|y| (0..w).step_by(3).map(move |x| (x, y)))
-        .map(|pixel| PixelInspection::traced(&world, &scene, TermSwitches::ALL_ON, pixel))
+    let inspected = scene.clone();
+    let pixels = (0..h)
+        .step_by(step)
+        .flat_map(move |y| (0..w).step_by(step).map(move |x| (x, y)))
+        .map(move |pixel| PixelInspection::traced(&world, &inspected, TermSwitches::ALL_ON, pixel));
+    (scene, pixels)
+}
+
+#[test]
+fn a_ray_that_meets_a_tree_names_the_leaf_it_hit() {
+    // A pixel whose camera ray meets a pip's cut in the die.
+    let (scene, mut pixels) = csg_pixels(3);
+    let inspection = pixels
         .find(|i| {
             i.result.as_ref().is_ok_and(|r| {
                 r.report.bounces[0]
@@ -52,15 +60,9 @@ fn a_ray_that_meets_a_tree_names_the_leaf_it_hit() {
 
 #[test]
 fn a_shadow_ray_names_the_leaf_that_blocked_it_in_the_card_and_the_inspector() {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/csg.ron");
-    let scene = crate::scene::load_scene(&path).unwrap();
-    let world = World::new(&scene).unwrap();
     // A pixel of the floor in the die's shadow.
-    let (w, h) = (scene.camera.width, scene.camera.height);
-    let (inspection, light) = (0..h)
-        .step_by(4)
-        .flat_map(|y| (0..w).step_by(4).map(move |x| (x, y)))
-        .map(|pixel| PixelInspection::traced(&world, &scene, TermSwitches::ALL_ON, pixel))
+    let (scene, mut pixels) = csg_pixels(4);
+    let (inspection, light) = pixels
         .find_map(|i| {
             let bounce = &i.result.as_ref().ok()?.bounces[0];
             let light = bounce
