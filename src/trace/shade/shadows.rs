@@ -9,7 +9,11 @@ use super::record::{NoRecorder, Recorder, ShadowRay};
 use super::tracer::Tracer;
 use crate::trace::ray_counts::RayCounts;
 use crate::trace::shapes::Primitive;
-use crate::trace::world::{LightSample, SurfacePoint, shading_seed, spawn_ray, spawn_ray_to};
+use glam::DVec3;
+
+use crate::trace::world::{
+    LightSample, SphereLight, SurfacePoint, shading_seed, spawn_ray, spawn_ray_to,
+};
 
 /// Which light a shadow ray goes to, from the hit of which ray of the tree (its depth,
 /// and its index for recorders).
@@ -93,6 +97,23 @@ impl Tracer<'_> {
                 rays: 1,
             };
         };
+        self.sphere_visibility(hit, sample, (sphere, centre), to, rays, counts, recorder)
+    }
+
+    /// [`Self::visibility`] of a sphere light, out of line so that a point light's stays
+    /// small enough to inline.
+    #[inline(never)]
+    #[allow(clippy::too_many_arguments)]
+    fn sphere_visibility<R: Recorder>(
+        &self,
+        hit: &SurfacePoint,
+        sample: &LightSample,
+        (sphere, centre): (SphereLight, DVec3),
+        to: LightAt,
+        rays: &mut impl RaySource,
+        counts: &mut RayCounts,
+        recorder: &mut R,
+    ) -> Visibility {
         let seed = shading_seed(hit.p, to.index);
         let mut cast = false;
         let (clear, first_blocker) = rays.sphere_rays_clear(to.depth, to.index, |rays| {
