@@ -97,13 +97,13 @@ proptest! {
         dir in vector(1.0).prop_filter("a direction", |d| d.length() > 0.1),
         axis in 0usize..4,
     ) {
-        // Axis-parallel rays too (`axis` < 3), which graze faces and edges of the cube.
+        // Axis-parallel rays too (`axis` < 3), which graze faces, edges and rims.
         let dir = if axis < 3 { DVec3::AXES[axis] * dir.length() } else { dir };
         let ray = Ray::new(origin, dir);
-        for shape in [Primitive::Sphere, Primitive::Cube] {
+        for shape in [Primitive::Sphere, Primitive::Cube, Primitive::Cylinder] {
             let mut out: Vec<ShapeHit> = Vec::new();
             crossings(shape, &ray, &mut out);
-            let span = line_span(shape, &ray).expect("spheres and cubes have line spans");
+            let span = line_span(shape, &ray).expect("spheres, cubes and cylinders have line spans");
             match span {
                 None => prop_assert!(out.is_empty(), "{shape:?} {out:?}"),
                 Some([t0, t1]) => {

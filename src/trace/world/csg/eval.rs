@@ -11,7 +11,7 @@ use crate::trace::ray::Ray;
 use crate::trace::shapes::{self, ShapeHit};
 
 /// Marks a [`Crossing::hit`] whose surface point is not in the list of crossings but
-/// worked out when a query needs it (a sphere's or a cube's, the shapes most CSG leaves
+/// worked out when a query needs it (a sphere's, a cube's or a cylinder's, the shapes most CSG leaves
 /// are; most crossings a sweep passes are never answered with). The low bit is which
 /// end of the leaf's span. Lists never grow this long.
 pub(super) const LATER: u32 = 1 << 31;
@@ -92,7 +92,7 @@ impl CsgTree {
                         if leaf.mesh.is_none()
                             && let Some(line) = shapes::line_span(leaf.shape, &leaf_ray)
                         {
-                            // A sphere's or a cube's span, its surface points worked out
+                            // A sphere's, cube's or cylinder's span, its surface points worked out
                             // later for the one crossing a query answers with.
                             if let Some([t0, t1]) = line.filter(|[t0, t1]| t1 > t0) {
                                 let end = |t, k| Crossing {

@@ -12,7 +12,7 @@ pub(crate) struct Crossing {
     /// The ray parameter.
     pub t: f64,
     /// Index of the crossing's [`ShapeHit`] (in the leaf's object space) in the list
-    /// the leaves' crossings were collected in, or a sphere's or cube's end to work out
+    /// the leaves' crossings were collected in, or a sphere's, cube's or cylinder's end to work out
     /// later (`tree::LATER`); `u32::MAX` for an unbounded end.
     pub hit: u32,
     /// Which leaf of the tree; `u32::MAX` for the open end of an unbounded span.
