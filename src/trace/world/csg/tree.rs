@@ -1,18 +1,15 @@
-//! The compiled CSG node and its queries: its operand leaves placed in the node's own
-//! object space, and its operators as a post-order program. A ray is answered by
-//! running the program (`super::eval`), which sweeps the leaves' spans together
-//! (`super::spans`) with explicit stacks, so a tree 1,000 levels deep needs no deeper
-//! call stack than a flat one.
+//! The compiled CSG node: its operand leaves placed in the node's own object space, and
+//! its operators as a post-order program. A ray runs the program (`super::eval`), which
+//! sweeps the leaves' spans together (`super::spans`) with explicit stacks, so a tree
+//! 1,000 levels deep needs no deeper call stack than a flat one; `super::query` answers
+//! from the spans.
 
 use std::sync::Arc;
 
 use glam::{DAffine3, DMat3, DVec3};
 
-use super::eval::{LATER, Scratch};
-use super::spans::Crossing;
 use crate::scene::CsgOp;
-use crate::trace::ray::Ray;
-use crate::trace::shapes::{self, Aabb, Primitive, ShapeHit, TriangleMesh, gamma};
+use crate::trace::shapes::{self, Aabb, Primitive, ShapeHit, TriangleMesh};
 
 /// One operand leaf of a CSG node.
 #[derive(Clone, Debug, PartialEq)]
@@ -30,9 +27,9 @@ pub struct CsgLeaf {
     /// Leaf-to-node transform (the node's object space, not the world).
     pub node_from_leaf: DAffine3,
     pub(super) leaf_from_node: DAffine3,
-    normal_from_leaf: DMat3,
-    abs_node_from_leaf: DMat3,
-    abs_leaf_from_node: DMat3,
+    pub(super) normal_from_leaf: DMat3,
+    pub(super) abs_node_from_leaf: DMat3,
+    pub(super) abs_leaf_from_node: DMat3,
     /// Node-space bounds; `None` for a plane, the half-space z <= 0 in a CSG.
     pub(super) bounds: Option<Aabb>,
 }
@@ -94,109 +91,6 @@ pub struct CsgHit {
     pub leaf: u32,
     /// Whether the surface is a subtracted operand's (a Difference's cut).
     pub cut: bool,
-}
-
-impl CsgTree {
-    /// Whether a crossing lies in (0, t_max), clear of its leaf ray's origin rounding.
-    #[inline]
-    fn in_range(s: &Scratch, crossing: &Crossing, t_max: f64) -> bool {
-        crossing.leaf != u32::MAX
-            && shapes::in_range(&s.leaf_rays[crossing.leaf as usize], crossing.t, t_max)
-    }
-
-    /// The nearest surface of the node along a node-space ray with `t` in (0, t_max).
-    #[must_use]
-    pub fn intersect(&self, ray: &Ray, t_max: f64) -> Option<CsgHit> {
-        self.with_spans(ray, t_max, |s| {
-            for span in &s.arena {
-                for (c, entering) in [(&span.enter, true), (&span.leave, false)] {
-                    if c.t >= t_max {
-                        return None;
-                    }
-                    if Self::in_range(s, c, t_max) {
-                        let hit = self.shape_hit(s, c);
-                        return Some(self.node_hit(ray, c, &hit, entering));
-                    }
-                }
-            }
-            None
-        })
-    }
-
-    /// Whether any surface of the node lies along the ray with `t` in (0, t_max).
-    #[must_use]
-    pub fn occluded(&self, ray: &Ray, t_max: f64) -> bool {
-        self.with_spans(ray, t_max, |s| {
-            for span in &s.arena {
-                for c in [&span.enter, &span.leave] {
-                    if c.t >= t_max {
-                        return false;
-                    }
-                    if Self::in_range(s, c, t_max) {
-                        return true;
-                    }
-                }
-            }
-            false
-        })
-    }
-
-    /// Every surface of the node along the line, in order, for the pixel inspector:
-    /// each with whether the ray enters the result there.
-    #[must_use]
-    pub fn surfaces(&self, ray: &Ray) -> Vec<(CsgHit, bool)> {
-        self.with_spans(ray, f64::INFINITY, |s| {
-            s.arena
-                .iter()
-                .flat_map(|s| [(s.enter, true), (s.leave, false)])
-                .filter(|(c, _)| (c.leaf as usize) < self.leaves.len())
-                .map(|(c, entering)| {
-                    (
-                        self.node_hit(ray, &c, &self.shape_hit(s, &c), entering),
-                        entering,
-                    )
-                })
-                .collect()
-        })
-    }
-
-    /// A crossing's surface point in its leaf's space: from the list of crossings, or
-    /// worked out now for a sphere's, a cube's or a cylinder's (see [`LATER`]).
-    fn shape_hit(&self, s: &Scratch, crossing: &Crossing) -> ShapeHit {
-        if crossing.hit & LATER == 0 {
-            return s.crossings[crossing.hit as usize];
-        }
-        let leaf = crossing.leaf as usize;
-        let k = (crossing.hit & 1) as usize;
-        shapes::line_crossing(self.leaves[leaf].shape, &s.leaf_rays[leaf], k, crossing.t)
-    }
-
-    /// A crossing in the node's space: the point and normal carried through the leaf's
-    /// placement (its rounding added to the error bound, as `World` does for objects),
-    /// the normal turned to face out of the result (against the ray where it enters).
-    fn node_hit(&self, ray: &Ray, crossing: &Crossing, h: &ShapeHit, entering: bool) -> CsgHit {
-        let leaf = &self.leaves[crossing.leaf as usize];
-        let p = leaf.node_from_leaf.transform_point3(h.p);
-        let mut n = leaf.normal_from_leaf * h.n;
-        if (n.dot(ray.dir) > 0.0) == entering {
-            n = -n;
-        }
-        let m = leaf.abs_node_from_leaf;
-        let carried = m * h.p_error;
-        let forward = gamma(3) * (m * h.p.abs() + leaf.node_from_leaf.translation.abs());
-        let back =
-            gamma(3) * (leaf.abs_leaf_from_node * p.abs() + leaf.leaf_from_node.translation.abs());
-        CsgHit {
-            hit: ShapeHit {
-                t: h.t,
-                p,
-                n,
-                p_error: carried + forward + m * back,
-            },
-            leaf: crossing.leaf,
-            cut: crossing.cut,
-        }
-    }
 }
 
 impl CsgLeaf {
