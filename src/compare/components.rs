@@ -94,11 +94,11 @@ struct Row {
     rays: RayCounts,
 }
 
-/// The scene with object `index` taken out, compiled (with `world`'s meshes).
+/// The scene with top-level object `index` taken out (a group with all its members),
+/// compiled (with `world`'s meshes).
 fn world_without(scene: &Scene, world: &World, index: usize) -> Option<World> {
-    // World object `index` is a tree node (a group's member, a CSG node) in scenes with
-    // groups: take out that node.
-    let scene = crate::trace::scene_without_world_object(scene, index)?;
+    let mut scene = scene.clone();
+    scene.objects.remove(index);
     World::with_meshes(&scene, &world.meshes).ok()
 }
 
@@ -112,7 +112,8 @@ pub fn render_components(
     spp: u32,
     progress: &RenderProgress,
 ) -> Option<Components> {
-    let without: Vec<Option<World>> = (0..world.objects.len())
+    // Channels are per scene object: `hit.object` is the scene's index.
+    let without: Vec<Option<World>> = (0..scene.objects.len())
         .into_par_iter()
         .map(|i| {
             (i < MAX_MISSING_OBJECTS)

@@ -11,10 +11,12 @@
 //! competitor ([`super::search::Step::margin`]: 1 when nothing else explains those
 //! pixels, 0 when a competitor explains them as well).
 
+use super::bugs::Part;
 use super::channels::Family;
 use super::components::Components;
 use super::explanation::{Cause, ExplainedTerm, Explanation, summary};
 use super::groups::Groups;
+use super::regions::PixelBox;
 use super::search::Step;
 use crate::scene::Scene;
 use crate::trace::World;
@@ -33,13 +35,20 @@ fn concentrated(energy: &[f64]) -> Option<usize> {
     (total > 0.0 && most >= NAMED * total).then_some(index)
 }
 
+/// Where raylab draws `object` among `pixels` (its first hits there; where it is only
+/// seen in mirrors, all of them).
+fn drawn_box(components: &Components, object: usize, pixels: &[u32]) -> Option<PixelBox> {
+    let own: Vec<u32> = pixels
+        .iter()
+        .copied()
+        .filter(|&p| components.labels[p as usize] == object as u32)
+        .collect();
+    PixelBox::of(if own.is_empty() { pixels } else { &own }, components.width)
+}
+
 /// The term and cause a family stands for; `split` tells a normal bug's diffuse from
 /// its specular share.
-fn term_and_cause(
-    family: Family,
-    split: [f64; 2],
-    part: Option<super::bugs::Part>,
-) -> (ExplainedTerm, Cause) {
+fn term_and_cause(family: Family, split: [f64; 2], part: Option<Part>) -> (ExplainedTerm, Cause) {
     match family {
         Family::Ambient => (ExplainedTerm::Ambient, Cause::Factor),
         Family::Reflection => (ExplainedTerm::Reflection, Cause::Factor),
@@ -118,6 +127,7 @@ pub fn explain_steps(
                     pixels: step.pixels.clone(),
                     cause,
                     confidence,
+                    bbox: None,
                     summary: String::new(),
                 },
                 step.coefficient,
@@ -134,6 +144,9 @@ pub fn explain_steps(
             };
             // Rounding noise around 0 reads as "-0.00" otherwise.
             e.factor = if factor.abs() < 1e-6 { 0.0 } else { factor };
+            if let (Cause::Missing(Some(Part::Whole) | None), Some(object)) = (e.cause, e.object) {
+                e.bbox = drawn_box(components, object, &e.pixels);
+            }
             e.summary = summary(&e, scene);
             e
         })

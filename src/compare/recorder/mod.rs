@@ -10,9 +10,11 @@
 
 use glam::DVec3;
 
-use super::bugs::{ClampBug, LocalLight, NormalBug, Part, SpecularBug, local_terms};
+use super::bugs::{ClampBug, LocalLight, NormalBug, SpecularBug, local_terms};
 use super::channels::Kind;
-use super::record_context::{Context, trace_again};
+mod missing;
+
+use super::record_context::Context;
 use super::spot_bugs::{SpotBug, cone_changes, no_falloff_change};
 use crate::trace::shapes::Primitive;
 use crate::trace::{
@@ -244,25 +246,6 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
     }
 }
 
-impl SampleRecorder<'_, '_> {
-    /// What the ray of `bounce` would return if the object it hit were missing (traced
-    /// again in the world without it), as a change of the pixel.
-    fn missing(&mut self, bounce: &Bounce, colour: DVec3) {
-        let Some(hit) = bounce.hit else { return };
-        let Some(Some(world)) = self.ctx.without.get(hit.object) else {
-            return;
-        };
-        let seen = trace_again(world, &bounce.ray);
-        if seen.is_finite()
-            && let Some(world_object) = bounce.world_object
-        {
-            let part = Part::at(&self.ctx.world.objects[world_object], &hit, bounce.ray_dir);
-            let channel = self.channel(Kind::Missing(part), hit.object);
-            self.tally.add(channel, bounce.throughput * (seen - colour));
-        }
-    }
-}
-
 impl Recorder for SampleRecorder<'_, '_> {
     fn started(&mut self, node: u32, _depth: u32, from: Option<(u32, Branch)>) {
         self.begin(node, from);
@@ -330,6 +313,13 @@ impl Recorder for SampleRecorder<'_, '_> {
             self.tally.add(
                 self.channel(Kind::Shadow(index), object),
                 t * hidden * (diffuse + specular),
+            );
+            self.shadow_cast(
+                record,
+                &hit,
+                &sample,
+                world_object,
+                t * (diffuse + specular),
             );
         }
         self.bugs(&bounce, &hit, record, &sample);
