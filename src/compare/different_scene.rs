@@ -64,6 +64,7 @@ pub fn different_scene(explanations: &[Explanation], unexplained: f64) -> Option
         share: share + unexplained,
         pixels: pixels.into_iter().collect(),
         bbox: None,
+        fits_as_well: Vec::new(),
         cause: Cause::DifferentScene {
             objects: u32::try_from(outlines).unwrap_or(u32::MAX),
         },

@@ -96,6 +96,7 @@ fn extra_verdict(extra: &ExtraObject, start: &FitState, scene: &Scene, total: f6
         cause: Cause::ExtraObject(extra.shape),
         confidence: extra.edge_share,
         bbox: Some(extra.bbox),
+        fits_as_well: Vec::new(),
         summary: String::new(),
     };
     e.summary = summary::extra_object(&e, extra.shape, &extra.behind, scene);

@@ -161,6 +161,9 @@ pub struct Explanation {
     /// For an object missing or extra: the bounding box of its pixels (for a missing
     /// one, where raylab draws it).
     pub bbox: Option<PixelBox>,
+    /// Other readings that fit the same pixels as well (the less specific, or another
+    /// story), each a short phrase.
+    pub fits_as_well: Vec<String>,
     /// How sure the numbers make it, 0 to 1.
     pub confidence: f64,
     /// One sentence for a reader.

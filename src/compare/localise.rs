@@ -223,6 +223,7 @@ pub fn localise(
                 cause,
                 confidence,
                 bbox: None,
+                fits_as_well: Vec::new(),
                 summary: String::new(),
             };
             e.summary = summary(&e, scene);

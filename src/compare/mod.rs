@@ -251,6 +251,7 @@ fn with_conventions(
         share: (before - after) / found.total,
         pixels: better.pixels.clone(),
         bbox: None,
+        fits_as_well: Vec::new(),
         cause: Cause::Conventions {
             scene: scene.render.conventions,
             other: better.conventions,
@@ -288,6 +289,7 @@ fn encoding_explanation(
         pixels,
         cause: Cause::Encoding(encoding),
         bbox: None,
+        fits_as_well: Vec::new(),
         confidence: 1.0 - after.total / before.total.max(f64::MIN_POSITIVE),
         summary: String::new(),
     };

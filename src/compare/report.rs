@@ -81,6 +81,9 @@ struct ExplanationJson<'a> {
     /// For an extra object: the shape its outline suggests.
     #[serde(skip_serializing_if = "Option::is_none")]
     shape: Option<&'static str>,
+    /// Other readings that fit as well.
+    #[serde(skip_serializing_if = "<[String]>::is_empty")]
+    fits_as_well: &'a [String],
 }
 
 /// The JSON form of a comparison.
@@ -138,6 +141,7 @@ impl Comparison {
                     confidence: round4(e.confidence),
                     sure: e.sureness(),
                     bbox: e.bbox.map(|b| [b.x0, b.y0, b.x1, b.y1]),
+                    fits_as_well: &e.fits_as_well,
                     shape: match e.cause {
                         Cause::ExtraObject(shape) => Some(shape.name()),
                         _ => None,

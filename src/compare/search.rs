@@ -24,6 +24,14 @@ const TRIES_PER_ROUND: usize = 4;
 /// The range a bug's weight must fit in to count as that bug.
 const BUG_WEIGHT: (f64, f64) = (0.5, 1.5);
 
+/// Two groups fit alike when their gains differ by less than this share of the larger.
+const ALIKE: f64 = 0.01;
+
+/// A more specific group goes first when its gain is within this share of the best:
+/// the same fit, not merely a close one (a term of every light on a ball, scaled, is
+/// not one light's even where the other adds little there).
+const SAME_FIT: f64 = 0.001;
+
 /// One accepted change.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Step {
@@ -43,6 +51,9 @@ pub struct Step {
     pub energy_by_object: Vec<f64>,
     /// Squared size of the change from each light (per-light families).
     pub energy_by_light: Vec<f64>,
+    /// Other groups that fit alike (their gain within [`ALIKE`] of this one's, and taken
+    /// by it): another reading of the same pixels, more general or another story.
+    pub alike: Vec<usize>,
 }
 
 /// Whether the family scales raylab's terms (any factor >= 0) rather than adding a bug.
@@ -179,6 +190,33 @@ fn change_of(components: &Components, group: &Group, c: f64) -> Change {
     all
 }
 
+/// How specific a group is: one for each of a light, an object and a part it names.
+fn specificity(group: &Group) -> usize {
+    usize::from(group.light.is_some())
+        + usize::from(group.object.is_some())
+        + usize::from(group.part.is_some())
+}
+
+/// Among the groups that fit the same as the best ([`SAME_FIT`]) and tell its story
+/// (nested in it or around it), the most specific goes first: where one light lights the whole diffuse
+/// term, "light 2 contributes nothing" explains as much as "the diffuse term is
+/// missing", and a light that never lights is the likelier bug.
+fn prefer_specific(groups: &Groups, ranked: &mut [(usize, f64, f64)]) {
+    let Some(&(best, _, gain)) = ranked.first() else {
+        return;
+    };
+    let same = ranked
+        .iter()
+        .take_while(|r| r.2 >= (1.0 - SAME_FIT) * gain)
+        .count();
+    let most_specific = (0..same)
+        .filter(|&i| compatible(&groups.list[best], &groups.list[ranked[i].0]))
+        .max_by_key(|&i| (specificity(&groups.list[ranked[i].0]), std::cmp::Reverse(i)));
+    if let Some(i) = most_specific {
+        ranked[..=i].rotate_right(1);
+    }
+}
+
 /// The groups' fitted coefficients and ranking gains on the current residual, best first.
 fn rank(
     groups: &Groups,
@@ -193,7 +231,23 @@ fn rank(
         .filter_map(|(i, g)| fit(g, correlations[i], norms[i], scale).map(|(c, gain)| (i, c, gain)))
         .collect();
     ranked.sort_by(|a, b| b.2.total_cmp(&a.2));
+    prefer_specific(groups, &mut ranked);
     ranked
+}
+
+/// The groups other than `chosen` that fit alike with it before it was applied and
+/// whose gain it took (they explain the same pixels).
+fn alike(chosen: usize, before: &[(usize, f64, f64)], after: &[(usize, f64, f64)]) -> Vec<usize> {
+    let gain = before.iter().find(|r| r.0 == chosen).map_or(0.0, |r| r.2);
+    before
+        .iter()
+        .filter(|r| r.0 != chosen && r.2 >= (1.0 - ALIKE) * gain)
+        .filter(|r| {
+            let kept = after.iter().find(|a| a.0 == r.0).map_or(0.0, |a| a.2);
+            kept < 0.5 * r.2
+        })
+        .map(|r| r.0)
+        .collect()
 }
 
 /// How sure a step is against its best competitor: among the groups telling another
@@ -278,6 +332,7 @@ pub fn search(
             coefficient: c,
             gain,
             margin: margin(groups, index, &ranked, &after, left),
+            alike: alike(index, &ranked, &after),
             pixels: change
                 .pixels
                 .iter()

@@ -15,7 +15,7 @@ use super::bugs::Part;
 use super::channels::Family;
 use super::components::Components;
 use super::explanation::{Cause, ExplainedTerm, Explanation, summary};
-use super::groups::Groups;
+use super::groups::{Group, Groups};
 use super::regions::PixelBox;
 use super::search::Step;
 use crate::scene::Scene;
@@ -86,11 +86,7 @@ pub fn explain_steps(
     let mut out: Vec<(Explanation, f64)> = Vec::new();
     for step in steps {
         let group = &groups.list[step.group];
-        let split = group.members.iter().fold([0.0; 2], |acc, &m| {
-            let s = components.split[m as usize];
-            [acc[0] + s[0], acc[1] + s[1]]
-        });
-        let (term, cause) = term_and_cause(group.family, split, group.part);
+        let (term, cause) = term_and_cause(group.family, split_of(group, components), group.part);
         // Lights are named only by the group: every light is every light, even where
         // one of them dominates.
         let light = group.light.map(|l| world.light_scene_index[l]);
@@ -103,11 +99,17 @@ pub fn explain_steps(
         } else {
             step.margin
         };
+        let readings: Vec<String> = step
+            .alike
+            .iter()
+            .map(|&g| reading(&groups.list[g], components, world, scene))
+            .collect();
         let found = out.iter_mut().find(|(e, _)| {
             e.term == term && e.cause == cause && e.light == light && e.object == object
         });
         match found {
             Some((e, coefficient)) => {
+                e.fits_as_well.extend(readings);
                 *coefficient += step.coefficient;
                 let weight = e.share + step.gain / total;
                 e.confidence = (e.confidence * e.share + confidence * step.gain / total) / weight;
@@ -128,6 +130,7 @@ pub fn explain_steps(
                     cause,
                     confidence,
                     bbox: None,
+                    fits_as_well: readings,
                     summary: String::new(),
                 },
                 step.coefficient,
@@ -147,8 +150,46 @@ pub fn explain_steps(
             if let (Cause::Missing(Some(Part::Whole) | None), Some(object)) = (e.cause, e.object) {
                 e.bbox = drawn_box(components, object, &e.pixels);
             }
+            e.fits_as_well.sort();
+            e.fits_as_well.dedup();
             e.summary = summary(&e, scene);
+            if !e.fits_as_well.is_empty() {
+                let list = e.fits_as_well.join("; ");
+                e.summary.push_str(&format!(" Fits as well: {list}."));
+            }
             e
         })
         .collect()
+}
+
+/// The diffuse and specular shares of a group's normal-bug channels.
+fn split_of(group: &Group, components: &Components) -> [f64; 2] {
+    group.members.iter().fold([0.0; 2], |acc, &m| {
+        let s = components.split[m as usize];
+        [acc[0] + s[0], acc[1] + s[1]]
+    })
+}
+
+/// A group read as a short phrase ("the diffuse term of every light", "the ambient
+/// term on 'floor'", "the normal-without-z bug on 'cone'"), for what fits as well.
+fn reading(group: &Group, components: &Components, world: &World, scene: &Scene) -> String {
+    let (term, cause) = term_and_cause(group.family, split_of(group, components), group.part);
+    let what = match cause {
+        Cause::Factor => format!("the {} term", term.name()),
+        Cause::Missing(_) => format!("{} (geometry)", cause.name()),
+        other => format!("the {} bug", other.name()),
+    };
+    let per_light = matches!(
+        group.family,
+        Family::Diffuse | Family::Specular | Family::Shadow
+    );
+    let light = match group.light {
+        Some(l) => format!(" of light {}", world.light_scene_index[l]),
+        None if per_light => " of every light".to_owned(),
+        None => String::new(),
+    };
+    let object = group
+        .object
+        .map_or_else(String::new, |o| format!(" on '{}'", scene.objects[o].name));
+    format!("{what}{light}{object}")
 }
