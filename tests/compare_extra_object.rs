@@ -180,3 +180,22 @@ fn the_json_has_the_box_and_the_shape() {
         serde_json::json!([bbox.x0, bbox.y0, bbox.x1, bbox.y1])
     );
 }
+
+#[test]
+fn an_extra_ball_and_a_missing_cone_are_both_named_and_nothing_else() {
+    // The second worked example of docs/COMPARE.md (480x360): the ball's shadow falls
+    // where the cone was, on the floor raylab shows behind the cone.
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/compare/example.ron");
+    let mut scene = raylab::scene::load_scene(std::path::Path::new(path)).unwrap();
+    scene
+        .materials
+        .insert("blue".to_owned(), lab().materials["blue"].clone());
+    let mut student = with(&scene, SPHERE);
+    student.objects.retain(|o| o.name != "gold cone");
+    let c = diff(&scene, &render(&student, 1, &Bugs::default()));
+    let report = c.text_lines().join("\n");
+    let causes: Vec<&str> = c.explanations.iter().map(|e| e.cause.name()).collect();
+    assert_eq!(causes, ["extra-object", "missing-object"], "{report}");
+    assert_eq!(c.explanations[1].object_name.as_deref(), Some("gold cone"));
+    assert!(c.unexplained_share < 0.02, "{report}");
+}

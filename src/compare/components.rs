@@ -51,6 +51,9 @@ pub struct Components {
     pub labels: Vec<u32>,
     /// Whether a pixel's samples saw more than one object (or some missed).
     pub mixed: Vec<bool>,
+    /// The object the first sample of each pixel would hit were the object it hit
+    /// missing, or [`MISS`] (nothing behind, or that object not tried missing).
+    pub behind: Vec<u32>,
     /// Start of each pixel's entries; one more than there are pixels.
     pub offsets: Vec<u32>,
     /// The entries, pixel by pixel.
@@ -87,6 +90,7 @@ impl Components {
 struct Row {
     beauty: Vec<[f64; 3]>,
     labels: Vec<u32>,
+    behind: Vec<u32>,
     mixed: Vec<bool>,
     counts: Vec<u32>,
     entries: Vec<Entry>,
@@ -151,6 +155,7 @@ pub fn render_components(
         space,
         beauty: Vec::with_capacity(pixels),
         labels: Vec::with_capacity(pixels),
+        behind: Vec::with_capacity(pixels),
         mixed: Vec::with_capacity(pixels),
         offsets: Vec::with_capacity(pixels + 1),
         entries: Vec::new(),
@@ -161,6 +166,7 @@ pub fn render_components(
     for row in rows {
         components.beauty.extend(row.beauty);
         components.labels.extend(row.labels);
+        components.behind.extend(row.behind);
         components.mixed.extend(row.mixed);
         let base = components.entries.len() as u32;
         let mut end = base;
@@ -185,6 +191,7 @@ fn render_row(ctx: &Context, camera: &PinholeCamera, width: u32, y: u32, spp: u3
     let mut row = Row {
         beauty: Vec::with_capacity(width as usize),
         labels: Vec::with_capacity(width as usize),
+        behind: Vec::with_capacity(width as usize),
         mixed: Vec::with_capacity(width as usize),
         counts: Vec::with_capacity(width as usize),
         entries: Vec::new(),
@@ -196,6 +203,7 @@ fn render_row(ctx: &Context, camera: &PinholeCamera, width: u32, y: u32, spp: u3
         pixel.entries.clear();
         let mut sum = DVec3::ZERO;
         let mut labels = Vec::with_capacity(1);
+        let mut behind = MISS;
         for index in 0..spp {
             let point = DVec2::new(f64::from(x), f64::from(y)) + sample_in_pixel(x, y, index, spp);
             let ray = camera.ray(point);
@@ -206,12 +214,16 @@ fn render_row(ctx: &Context, camera: &PinholeCamera, width: u32, y: u32, spp: u3
             }
             sum += colour;
             let hit = recorder.primary_hit();
+            if labels.is_empty() {
+                behind = recorder.behind;
+            }
             labels.push(hit.map_or(MISS, |h| h.object as u32));
             pixel.absorb(&recorder.tally);
         }
         row.beauty.push((sum * scale).to_array());
         let first = labels.first().copied().unwrap_or(MISS);
         row.labels.push(first);
+        row.behind.push(behind);
         row.mixed.push(labels.iter().any(|&l| l != first));
         pixel.entries.sort_unstable_by_key(|(c, _)| *c);
         row.counts.push(pixel.entries.len() as u32);

@@ -53,7 +53,7 @@ pub fn explain(
         let without = target.without(&claimed(&extras));
         let mut refit = FitState::new(start.model.clone(), &without);
         steps = search::search(components, &groups, &without, &mut refit, floor);
-        extra_shadow::confirm_shadows(&mut extras, components, target, &refit.model);
+        extra_shadow::confirm_shadows(&mut extras, components, &palette, target, &refit.model);
         let without = target.without(&claimed(&extras));
         state = FitState::new(refit.model, &without);
         masked = Some(without);

@@ -7,7 +7,7 @@
 //! The evidence, pixel by pixel and at its outline:
 //! - the pixel is still off after the search, and no lighting of raylab's surface there,
 //!   or of what lies behind it, gives its colour ([`super::relit`]: a missing object is
-//!   not an extra one);
+//!   not an extra one), nor the fitted model with some lights taken away (a shadow);
 //! - along the region's outline, where raylab sees one surface on both sides, the other
 //!   picture has an edge raylab's does not: a sharp outline, not a shading that fades;
 //! - and it is not one of raylab's surfaces reaching further: where the region's
@@ -21,6 +21,7 @@ use rayon::prelude::*;
 
 use super::channels::Kind;
 use super::components::{Components, MISS};
+use super::extra_shadow::shadow_like;
 use super::localise::OFF_LEVELS;
 use super::regions::{Grid, PixelBox};
 use super::relit::{Palette, is_relit};
@@ -227,7 +228,9 @@ pub fn find(
     let evidence: Vec<bool> = (0..state.error.len())
         .into_par_iter()
         .map(|p| {
-            state.error[p] >= off && !is_relit(components, palette, target, p, RELIT_TOLERANCE)
+            state.error[p] >= off
+                && !is_relit(components, palette, target, p, RELIT_TOLERANCE)
+                && !shadow_like(components, target, state.model[p], p)
         })
         .collect();
     // (region, edge share, on a mirror, its error)
@@ -299,7 +302,7 @@ pub fn find(
         strongest.pixels.sort_unstable();
         strongest.pixels.dedup();
     }
-    super::extra_shadow::find_shadows(&mut found, components, target, &state.model);
+    super::extra_shadow::find_shadows(&mut found, components, palette, target, &state.model);
     found
 }
 

@@ -1,6 +1,7 @@
 //! The shadow an extra object casts, and its reflections, where they touch it: pixels
-//! still off after the search whose colour is the model with some lights taken away
-//! (or that lie on a mirror), reached from the object through such pixels.
+//! still off after the search whose colour is the model with some lights taken away,
+//! or darker than it and a lighting of the surfaces there (or that lie on a mirror),
+//! reached from the object through such pixels.
 //!
 //! Claimed in two steps, because the model they are compared with is not yet right when
 //! they are found: first generously (against the model of the first search, which the
@@ -13,11 +14,17 @@ use super::components::Components;
 use super::extra_object::{ExtraObject, RELIT_TOLERANCE, on_mirror};
 use super::localise::OFF_LEVELS;
 use super::regions::{Grid, PixelBox};
+use super::relit::{Palette, is_relit};
 use super::target::Target;
 
 /// Whether the other picture at `p` is `model`'s colour there with the light of one or
 /// more lights taken away: a shadow.
-fn shadow_like(components: &Components, target: &Target, model: [f64; 3], p: usize) -> bool {
+pub(super) fn shadow_like(
+    components: &Components,
+    target: &Target,
+    model: [f64; 3],
+    p: usize,
+) -> bool {
     let lights = components.space.lights;
     let mut lit = vec![[0.0f64; 3]; lights];
     for entry in components.pixel(p) {
@@ -40,17 +47,36 @@ fn shadow_like(components: &Components, target: &Target, model: [f64; 3], p: usi
     })
 }
 
+/// Whether the other picture at `p` may be a shadow on `model`: darker than it in every
+/// channel and some lighting of the surfaces there ([`is_relit`]: where an object is
+/// missing too, the surface behind it, whose lights the model's channels do not hold),
+/// or exactly the model with some lights taken away, or on a mirror.
+fn dark(
+    components: &Components,
+    palette: &Palette,
+    target: &Target,
+    model: [f64; 3],
+    p: usize,
+) -> bool {
+    let darker =
+        (0..3).all(|c| target.middle[p][c] <= model[c].clamp(0.0, 1.0) + OFF_LEVELS / 255.0);
+    on_mirror(components, p)
+        || shadow_like(components, target, model, p)
+        || (darker && is_relit(components, palette, target, p, RELIT_TOLERANCE))
+}
+
 /// Whether the model `model` leaves pixel `p` off.
 fn is_off(target: &Target, model: &[[f64; 3]], p: usize) -> bool {
     target.pixel_error(p, &model[p]) >= (OFF_LEVELS / 255.0).powi(2)
 }
 
 /// Sets each extra object's shadow: the pixels off under `model` (the first search's)
-/// that are a shadow of it or of raylab's own picture, or on a mirror, reached from
-/// the object's pixels, within the object's size of its box.
+/// that may be a shadow on it ([`dark`]) or are one of raylab's own picture, reached
+/// from the object's pixels, within the object's size of its box.
 pub fn find_shadows(
     extras: &mut [ExtraObject],
     components: &Components,
+    palette: &Palette,
     target: &Target,
     model: &[[f64; 3]],
 ) {
@@ -59,29 +85,28 @@ pub fn find_shadows(
         height: components.height,
     };
     for extra in extras.iter_mut() {
-        let dark = |p: usize| {
+        let shadow = |p: usize| {
             is_off(target, model, p)
-                && (on_mirror(components, p)
-                    || shadow_like(components, target, model[p], p)
+                && (dark(components, palette, target, model[p], p)
                     || shadow_like(components, target, components.beauty[p], p))
         };
-        extra.shadow = reached(grid, &extra.pixels, extra.bbox, dark);
+        extra.shadow = reached(grid, &extra.pixels, extra.bbox, shadow);
     }
 }
 
 /// Keeps of each extra object's shadow the pixels that `model` (fitted without the
-/// objects and their shadows) leaves off and shows as a shadow, or on a mirror.
+/// objects and their shadows) leaves off and that may be a shadow on it ([`dark`]).
 pub fn confirm_shadows(
     extras: &mut [ExtraObject],
     components: &Components,
+    palette: &Palette,
     target: &Target,
     model: &[[f64; 3]],
 ) {
     for extra in extras.iter_mut() {
         extra.shadow.retain(|&p| {
             let p = p as usize;
-            is_off(target, model, p)
-                && (on_mirror(components, p) || shadow_like(components, target, model[p], p))
+            is_off(target, model, p) && dark(components, palette, target, model[p], p)
         });
     }
 }

@@ -69,7 +69,8 @@ impl Palette {
 /// The colours of the cone at pixel `p`: first its term colours, summed over objects
 /// (ambient, reflection, transmission, background, then per light its diffuse, specular
 /// and shadowed light) and its own surface's palette; then what lies behind each object
-/// it sees and the palettes of the surfaces within [`NEIGHBOURS`] pixels.
+/// it sees (as raylab shows it without, and the palette of the surface behind the
+/// first) and the palettes of the surfaces within [`NEIGHBOURS`] pixels.
 fn cone_colours(components: &Components, palette: &Palette, p: usize) -> (Vec<DVec3>, Vec<DVec3>) {
     let lights = components.space.lights;
     let mut own = vec![DVec3::ZERO; 4 + 3 * lights];
@@ -105,6 +106,10 @@ fn cone_colours(components: &Components, palette: &Palette, p: usize) -> (Vec<DV
         .into_iter()
         .map(|(_, change)| beauty + change)
         .collect();
+    let behind = components.behind[p];
+    if behind != MISS {
+        more.extend(&palette.per_object[behind as usize]);
+    }
     // The surfaces around the pixel, too: where an outline moved a little, or an
     // object is gone, the other picture shows one of those.
     let (w, h) = (i64::from(components.width), i64::from(components.height));

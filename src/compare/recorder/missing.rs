@@ -7,18 +7,30 @@ use glam::DVec3;
 use super::{Bounce, SampleRecorder};
 use crate::compare::bugs::Part;
 use crate::compare::channels::Kind;
+use crate::compare::components::MISS;
 use crate::compare::record_context::trace_again;
 use crate::trace::shapes::Primitive;
 use crate::trace::{LightRecord, LightSample, SurfacePoint};
 
 impl SampleRecorder<'_, '_> {
     /// What the ray of `bounce` would return if the object it hit were missing (traced
-    /// again in the world without it), as a change of the pixel.
-    pub(super) fn missing(&mut self, bounce: &Bounce, colour: DVec3) {
+    /// again in the world without it), as a change of the pixel; for the camera ray
+    /// (`primary`), also the scene object it would meet then ([`Self::behind`]).
+    pub(super) fn missing(&mut self, bounce: &Bounce, colour: DVec3, primary: bool) {
         let Some(hit) = bounce.hit else { return };
         let Some(Some(world)) = self.ctx.without.get(hit.object) else {
             return;
         };
+        if primary {
+            // The world without scene object o numbers the later objects one less.
+            let removed = hit.object;
+            self.behind = world
+                .intersect(&bounce.ray, f64::INFINITY)
+                .map_or(MISS, |h| {
+                    let s = world.scene_object(h.object);
+                    (if s >= removed { s + 1 } else { s }) as u32
+                });
+        }
         let seen = trace_again(world, &bounce.ray);
         if seen.is_finite()
             && let Some(world_object) = bounce.world_object

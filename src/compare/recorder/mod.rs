@@ -12,6 +12,7 @@ use glam::DVec3;
 
 use super::bugs::{ClampBug, LocalLight, NormalBug, SpecularBug, local_terms};
 use super::channels::Kind;
+use super::components::MISS;
 mod missing;
 
 use super::record_context::Context;
@@ -85,6 +86,9 @@ pub struct SampleRecorder<'c, 'w> {
     /// Per channel, squared changes of the diffuse and of the specular part (for the
     /// normal bugs: which term shows the bug more).
     pub split: Vec<[f64; 2]>,
+    /// The scene object the current sample's camera ray would meet were the one it hit
+    /// missing ([`MISS`]: none, or that object is not tried missing).
+    pub behind: u32,
 }
 
 impl<'c, 'w> SampleRecorder<'c, 'w> {
@@ -96,6 +100,7 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
             chain: Vec::new(),
             tally: Tally::default(),
             split: vec![[0.0; 2]; ctx.space.count()],
+            behind: MISS,
         }
     }
 
@@ -103,6 +108,7 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
     pub fn start(&mut self) {
         self.chain.clear();
         self.tally.entries.clear();
+        self.behind = MISS;
     }
 
     /// The camera ray's hit of the current sample, if it hit something.
@@ -382,6 +388,6 @@ impl Recorder for SampleRecorder<'_, '_> {
                 self.tally.add(channel, change);
             }
         }
-        self.missing(&bounce, colour);
+        self.missing(&bounce, colour, d == 0);
     }
 }
