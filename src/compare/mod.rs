@@ -33,6 +33,7 @@ pub mod regions;
 pub mod relit;
 pub mod report;
 pub mod report_image;
+pub mod rivals;
 pub mod search;
 pub mod shape_guess;
 pub mod spot_bugs;

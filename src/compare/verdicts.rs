@@ -176,7 +176,7 @@ fn reading(group: &Group, components: &Components, world: &World, scene: &Scene)
     let (term, cause) = term_and_cause(group.family, split_of(group, components), group.part);
     let what = match cause {
         Cause::Factor => format!("the {} term", term.name()),
-        Cause::Missing(_) => format!("{} (geometry)", cause.name()),
+        Cause::Missing(_) => cause.name().to_owned(),
         other => format!("the {} bug", other.name()),
     };
     let per_light = matches!(
