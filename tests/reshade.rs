@@ -344,3 +344,52 @@ fn geometry_camera_size_and_hidden_objects_retrace_everything() {
         "world light 0 is scene light 1"
     );
 }
+
+/// A sphere light's hits keep the count of its rays that reached the light: an edit of
+/// anything else re-shades them (the scenes of `SCENES` include one), while a new
+/// radius, sample count or position recasts that light's rays and no other.
+#[test]
+fn a_sphere_lights_new_size_count_or_place_recasts_its_rays_only() {
+    let base = Shot::of(example("soft_spot.ron"));
+    let index = base
+        .scene
+        .lights
+        .iter()
+        .position(|l| matches!(l, Light::Spot { radius, .. } if *radius > 0.0))
+        .expect("the example's soft spot");
+    let with = |change: fn(&mut Light)| base.edited(|s, _| change(&mut s.lights[index]));
+    let edits = [
+        (
+            "twice the radius",
+            with(|l| {
+                if let Light::Spot { radius, .. } = l {
+                    *radius *= 2.0
+                }
+            }),
+        ),
+        (
+            "4 rays, not 16",
+            with(|l| {
+                if let Light::Spot { samples, .. } = l {
+                    *samples = 4
+                }
+            }),
+        ),
+        (
+            "moved",
+            with(|l| {
+                if let Light::Spot { position, .. } = l {
+                    position.x += 0.3
+                }
+            }),
+        ),
+    ];
+    for (what, edited) in edits {
+        let passes = edit_chain(&base, std::slice::from_ref(&edited), what);
+        let traced = passes[0].traced;
+        assert!(passes[0].reused, "{what}");
+        assert_eq!((traced.primary, traced.reflection), (0, 0), "{what}");
+        assert!(traced.shadow > 0, "{what}");
+        assert_eq!(traced.shadow, shadow_rays_of(&edited, index), "{what}");
+    }
+}

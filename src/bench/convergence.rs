@@ -253,4 +253,38 @@ mod tests {
             "{low} {high}"
         );
     }
+
+    #[test]
+    fn a_sphere_lights_soft_shadow_converges_in_the_preview_as_in_uniform_sampling() {
+        let (_, text) = crate::scene::examples::EXAMPLE_SCENES
+            .iter()
+            .find(|(name, _)| *name == "soft_spot.ron")
+            .expect("the soft spot example");
+        let scene = crate::scene::parse_scene(text).unwrap();
+        let plan = ConvergencePlan {
+            width: 80,
+            height: 60,
+            reference_spp: 256,
+            uniform_spp: vec![1, 4, 16],
+            adaptive_spp: vec![],
+        };
+        let curve = convergence_curves(&scene, &plan).unwrap();
+        let uniform = |spp: f64| {
+            curve
+                .iter()
+                .find(|p| p.strategy == "uniform" && p.spp == spp)
+                .map(|p| p.rmse)
+                .unwrap()
+        };
+        // The penumbra's noise falls as 1/sqrt(spp), a quarter at 16 times the samples
+        // (at most half allows for the edges' share), and the preview's passes fall with
+        // uniform sampling's: the curve measures a sphere light as it does the rest.
+        assert!(uniform(16.0) < 0.5 * uniform(1.0), "{curve:?}");
+        let checks = curve_checks(&curve);
+        assert!(
+            checks.progressive_over_uniform <= 1.15,
+            "{:?}",
+            checks.progressive_over_uniform
+        );
+    }
 }

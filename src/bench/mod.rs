@@ -46,6 +46,10 @@ pub struct BenchReport {
     pub scenes: Vec<SceneThroughput>,
     /// Error against time for the default scene, per strategy.
     pub curve: Vec<CurvePoint>,
+    /// The same curve for the sphere-light example (`soft_spot.ron`), where one exists
+    /// among the measured scenes. Printed, not in `--json` (no issue has named a key).
+    #[serde(skip)]
+    pub sphere_light_curve: Vec<CurvePoint>,
     /// The curve's progressive passes against uniform sampling, and the preview's error
     /// estimate against the true error.
     pub curve_checks: CurveChecks,

@@ -127,6 +127,15 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
         }
     };
     let curve = convergence_curves(&default_scene, &plan)?;
+    // Soft shadows converge only if a pixel's samples aim at different points of the
+    // light: the same curve on the sphere-light example shows they do, and at what cost.
+    let sphere_light_curve = match examples.iter().find(|(name, _)| name == SPHERE_LIGHT_SCENE) {
+        Some((name, scene)) => {
+            eprintln!("speed against error: {name} (a sphere light)");
+            convergence_curves(scene, &plan)?
+        }
+        None => Vec::new(),
+    };
     eprintln!("preview latency: default scene through the preview worker");
     let latency = crate::preview::measure_latency(
         &default_scene,
@@ -166,6 +175,7 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
         scenes,
         curve_checks: curve_checks(&curve),
         curve,
+        sphere_light_curve,
         precision,
         bvh_crossover,
         diff_500_ms,
@@ -176,6 +186,9 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
         mesh_edit_first_frame_ms: Some(mesh_edit),
     })
 }
+
+/// The example whose speed-against-error curve shows a sphere light's soft shadows.
+const SPHERE_LIGHT_SCENE: &str = "soft_spot.ron";
 
 /// Sample counts whose restart latency the report gives.
 const RESTART_SPP: [u32; 2] = [16, 4096];
@@ -257,22 +270,12 @@ fn print_tables(report: &BenchReport) {
         println!("| {kind} | {ms:.1} | {:.2} |", ms / frame);
     }
     println!();
-    println!("| strategy | spp | time (ms) | RMSE | estimated RMSE | PSNR (dB) |");
-    println!("|---|---|---|---|---|---|");
-    for p in &report.curve {
-        let estimate = p
-            .estimated_rmse
-            .map_or(String::new(), |e| format!("{e:.5}"));
-        println!(
-            "| {} | {:.3} | {:.1} | {:.5} | {estimate} | {:.2} |",
-            p.strategy, p.spp, p.time_ms, p.rmse, p.psnr
-        );
+    print_curve(&report.curve);
+    if !report.sphere_light_curve.is_empty() {
+        println!();
+        println!("speed against error, {SPHERE_LIGHT_SCENE} (a sphere light, soft shadows):");
+        print_curve(&report.sphere_light_curve);
     }
-    let checks = &report.curve_checks;
-    println!(
-        "progressive RMSE / uniform RMSE at equal spp: at most {:.3}; preview estimate / true RMSE from 4 spp: {:.2} to {:.2}",
-        checks.progressive_over_uniform, checks.estimate_over_true[0], checks.estimate_over_true[1]
-    );
     println!();
     println!("| objects | flat list (ms) | BVH (ms) | BVH / flat |");
     println!("|---|---|---|---|");
@@ -308,4 +311,24 @@ fn print_tables(report: &BenchReport) {
             edit.material, edit.light_colour
         );
     }
+}
+
+/// A speed-against-error curve as a table, with its checks.
+fn print_curve(curve: &[crate::bench::CurvePoint]) {
+    println!("| strategy | spp | time (ms) | RMSE | estimated RMSE | PSNR (dB) |");
+    println!("|---|---|---|---|---|---|");
+    for p in curve {
+        let estimate = p
+            .estimated_rmse
+            .map_or(String::new(), |e| format!("{e:.5}"));
+        println!(
+            "| {} | {:.3} | {:.1} | {:.5} | {estimate} | {:.2} |",
+            p.strategy, p.spp, p.time_ms, p.rmse, p.psnr
+        );
+    }
+    let checks = curve_checks(curve);
+    println!(
+        "progressive RMSE / uniform RMSE at equal spp: at most {:.3}; preview estimate / true RMSE from 4 spp: {:.2} to {:.2}",
+        checks.progressive_over_uniform, checks.estimate_over_true[0], checks.estimate_over_true[1]
+    );
 }

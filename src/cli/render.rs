@@ -100,7 +100,7 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     write_atomically(&args.output, &image.png_bytes_as(quantise))
         .map_err(|e| format!("cannot write {}: {e}", args.output.display()))?;
     eprintln!(
-        "{}: {}x{} at {} spp in {:.1} ms, {} rays ({:.2} Mrays/s)",
+        "{}: {}x{} at {} spp in {:.1} ms, {} rays ({:.2} Mrays/s; {} camera, {} shadow, {} mirror, {} transmitted)",
         args.output.display(),
         options.width,
         options.height,
@@ -108,6 +108,10 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         elapsed.as_secs_f64() * 1e3,
         rays.total(),
         rays.total() as f64 / elapsed.as_secs_f64() / 1e6,
+        rays.primary,
+        rays.shadow,
+        rays.reflection,
+        rays.transmission,
     );
     non_finite_report(&sums)
 }

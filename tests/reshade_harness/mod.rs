@@ -11,12 +11,13 @@ use raylab::trace::{
     render_one_sample_cached, render_samples,
 };
 
-/// Scenes with mirrors, every light kind, spots and shininess below 1.
-pub const SCENES: [&str; 4] = [
+/// Scenes with mirrors, every light kind, spots, shininess below 1 and a sphere light.
+pub const SCENES: [&str; 5] = [
     "default.ron",
     "spotlights.ron",
     "specular_exponents.ron",
     "mirror_cap.ron",
+    "soft_spot.ron",
 ];
 
 /// An example scene at 64 x 48.

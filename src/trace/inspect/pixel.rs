@@ -40,8 +40,8 @@ pub struct BounceReport {
     /// The lights passed over at the point, and why.
     pub skipped: Vec<SkippedLight>,
     /// Where each blocked shadow ray met its blocker: `(scene index of the light, the
-    /// blocker's surface)`.
-    pub blocker_hits: Vec<(usize, SurfacePoint)>,
+    /// blocker's surface, which leaf of its tree that is)`.
+    pub blocker_hits: Vec<(usize, SurfacePoint, HitSurface)>,
     /// The shadow rays of sphere lights, as cast: `(scene index of the light, the ray)`.
     pub sphere_shadow_rays: Vec<(usize, ShadowRay)>,
     /// `(km, colour of the reflected ray)` when a mirror ray was cast.
@@ -99,8 +99,18 @@ impl BounceReport {
     pub fn blocker_hit(&self, scene_index: usize) -> Option<&SurfacePoint> {
         self.blocker_hits
             .iter()
-            .find(|(light, _)| *light == scene_index)
-            .map(|(_, hit)| hit)
+            .find(|(light, ..)| *light == scene_index)
+            .map(|(_, hit, _)| hit)
+    }
+
+    /// The leaf of the blocker's tree that the shadow ray at `point` met (a blocker's
+    /// surface point names the ray), if some shadow ray of this bounce was blocked there.
+    #[must_use]
+    pub fn blocker_surface_at(&self, point: DVec3) -> Option<&HitSurface> {
+        self.blocker_hits
+            .iter()
+            .find(|(_, hit, _)| hit.p == point)
+            .map(|(.., surface)| surface)
     }
 
     /// The sum of the recorded terms; equals `colour` (checked by the tests).
@@ -209,16 +219,20 @@ impl Recorder for ReportRecorder<'_> {
         // where the ray meets the blocker (the record names it by its scene index).
         if let Some(shadow) = record.shadow_ray
             && let Some(blocker) = shadow.blocked_by
-            && let Some(hit) = (0..self.world.objects.len())
+            && let Some((index, hit)) = (0..self.world.objects.len())
                 .filter(|&i| self.world.object_scene_index[i] == blocker)
-                .filter_map(|i| self.world.intersect_object(i, &shadow.ray, shadow.t_max))
-                .min_by(|a, b| a.t.total_cmp(&b.t))
+                .filter_map(|i| {
+                    let hit = self.world.intersect_object(i, &shadow.ray, shadow.t_max)?;
+                    Some((i, hit))
+                })
+                .min_by(|(_, a), (_, b)| a.t.total_cmp(&b.t))
         {
+            let surface = HitSurface::find(self.world, index, &shadow.ray, &hit);
             let hit = SurfacePoint {
                 object: blocker,
                 ..hit
             };
-            bounce.blocker_hits.push((record.scene_index, hit));
+            bounce.blocker_hits.push((record.scene_index, hit, surface));
         }
     }
     fn sphere_shadow_ray(&mut self, node: u32, light: usize, ray: &ShadowRay) {

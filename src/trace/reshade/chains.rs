@@ -69,16 +69,40 @@ impl CachedHit {
     }
 }
 
+/// Marks a sphere light's answer: how many of its rays reached it (the low 11 bits) of
+/// how many (the 11 above), each at most `MAX_LIGHT_SAMPLES` (1024). Blockers' indices
+/// stay below it.
+const SPHERE: u32 = 1 << 31;
+const COUNT_BITS: u32 = 11;
+const COUNT_MASK: u32 = (1 << COUNT_BITS) - 1;
+
 /// A shadow answer as cached.
 pub(crate) fn encode_blocker(blocked_by: Option<usize>) -> u32 {
     blocked_by.map_or(CLEAR, |i| {
-        u32::try_from(i).expect("fewer than 2^32 - 2 objects")
+        let code = u32::try_from(i).expect("fewer than 2^31 objects");
+        assert!(code < SPHERE, "fewer than 2^31 objects");
+        code
     })
 }
 
-/// The cached shadow answer `code` (not [`NOT_CAST`]).
+/// The cached shadow answer `code` (not [`NOT_CAST`], nor a sphere light's).
 pub(crate) fn decode_blocker(code: u32) -> Option<usize> {
     (code != CLEAR).then_some(code as usize)
+}
+
+/// A sphere light's answer as cached: `clear` of its `samples` rays reached it.
+pub(crate) fn encode_sphere(clear: u32, samples: u32) -> u32 {
+    assert!(
+        clear <= samples && samples <= COUNT_MASK,
+        "{clear} of {samples} rays"
+    );
+    SPHERE | (samples << COUNT_BITS) | clear
+}
+
+/// `(clear, samples)` of a sphere light's cached answer; `None` for any other code.
+pub(crate) fn decode_sphere(code: u32) -> Option<(u32, u32)> {
+    (code & SPHERE != 0 && code < CLEAR)
+        .then_some((code & COUNT_MASK, (code >> COUNT_BITS) & COUNT_MASK))
 }
 
 /// The mirror chains of one tile's pixels, row-major within the tile.

@@ -5,7 +5,7 @@
 //! traced (the closest hit, or the miss that ends the chain), and per entry and light
 //! what that light's shadow ray met: clear, a blocker, or "not cast" (the shader did not
 //! need it, e.g. the light was behind the surface or the material had no diffuse and no
-//! specular). Which rays a pixel needs depends on the materials, the switches and the
+//! specular); for a sphere light, how many of its rays reached it. Which rays a pixel needs depends on the materials, the switches and the
 //! view; what each traced ray found depends only on the geometry (objects, camera, size)
 //! and, for shadow rays, on where the light is. So:
 //!
@@ -30,7 +30,7 @@ use crate::scene::{Camera, Material};
 use crate::trace::film::RenderOptions;
 use crate::trace::shapes::Primitive;
 use crate::trace::terms::{TermSwitches, View};
-use crate::trace::world::{CsgTree, World, WorldLight};
+use crate::trace::world::{CsgTree, SphereLight, World, WorldLight};
 
 /// The most memory the preview's cache may take, as [`cache_fits`] estimates it: larger
 /// previews re-trace every edit.
@@ -50,17 +50,16 @@ pub fn cache_fits(world: &World, width: u32, height: u32) -> bool {
         <= MAX_CACHE_BYTES
 }
 
-/// Whether the cache can hold the rays of `world`: a chain of rays per pixel, one shadow
-/// ray per light at each. A transmissive material makes trees (a mirror and a
-/// transmitted ray from one hit) and a sphere light many shadow rays per point; the
-/// preview traces such worlds afresh on every edit instead.
+/// Whether the cache can hold the rays of `world`: a chain of rays per pixel, and per
+/// light at each hit a shadow answer (a sphere light's as the count of its rays that
+/// reach it). A transmissive material makes trees (a mirror and a transmitted ray from
+/// one hit); the preview traces such worlds afresh on every edit instead.
 #[must_use]
 pub fn cache_serves(world: &World) -> bool {
-    let no_glass = world
+    world
         .materials
         .iter()
-        .all(|material| material.transmission == DVec3::ZERO);
-    no_glass && world.light_spheres.iter().all(Option::is_none)
+        .all(|material| material.transmission == DVec3::ZERO)
 }
 
 /// The cached rays of one tile. The chains and light slots are shared with the cache
@@ -87,6 +86,8 @@ struct Shading {
     switches: TermSwitches,
     view: View,
     lights: Vec<WorldLight>,
+    /// Each light's sphere, if it has one (its size and ray count set its shadows).
+    light_spheres: Vec<Option<SphereLight>>,
     ambient: DVec3,
     background: DVec3,
     max_depth: u32,
@@ -101,6 +102,7 @@ impl Shading {
             switches: options.switches,
             view: options.view,
             lights: world.lights.clone(),
+            light_spheres: world.light_spheres.clone(),
             ambient: world.ambient,
             background: world.background,
             max_depth: world.max_depth,
@@ -169,19 +171,33 @@ impl RayGeometry {
 enum ShadowTarget {
     /// To a point (point and spot lights).
     Position([u64; 3]),
+    /// To a sphere (point and spot lights with a radius): its centre, its radius and
+    /// how many rays aim at it.
+    Sphere([u64; 3], u64, u32),
     /// Towards a light at infinity.
     Direction([u64; 3]),
 }
 
 impl ShadowTarget {
-    fn of(light: &WorldLight) -> Self {
+    fn of(light: &WorldLight, sphere: Option<SphereLight>) -> Self {
         let bits = |v: DVec3| v.to_array().map(f64::to_bits);
-        match *light {
-            WorldLight::Point { position, .. } | WorldLight::Spot { position, .. } => {
+        match (*light, sphere) {
+            (WorldLight::Point { position, .. } | WorldLight::Spot { position, .. }, None) => {
                 Self::Position(bits(position))
             }
-            WorldLight::Directional { to_light, .. } => Self::Direction(bits(to_light)),
+            (
+                WorldLight::Point { position, .. } | WorldLight::Spot { position, .. },
+                Some(sphere),
+            ) => Self::Sphere(bits(position), sphere.radius.to_bits(), sphere.samples),
+            (WorldLight::Directional { to_light, .. }, _) => Self::Direction(bits(to_light)),
         }
+    }
+
+    /// Per light of `world`, its target.
+    fn all(world: &World) -> Vec<Self> {
+        (world.lights.iter().zip(&world.light_spheres))
+            .map(|(light, sphere)| Self::of(light, *sphere))
+            .collect()
     }
 }
 
@@ -250,7 +266,7 @@ impl HitCache {
     pub(crate) fn new(world: &World, options: &RenderOptions, tiles: Vec<TileHits>) -> Self {
         Self {
             geometry: RayGeometry::of(world, options.width, options.height),
-            lights: world.lights.iter().map(ShadowTarget::of).collect(),
+            lights: ShadowTarget::all(world),
             placements: light_factors::placements(world),
             shading: Shading::of(world, options),
             object_materials: object_materials(world),
@@ -321,13 +337,9 @@ impl HitCache {
         if now != *old || world.objects.iter().any(mixes_materials) {
             return Reuse::Retrace(RetraceReason::Objects);
         }
-        let kept_columns = world
-            .lights
+        let kept_columns = ShadowTarget::all(world)
             .iter()
-            .map(|light| {
-                let target = ShadowTarget::of(light);
-                self.lights.iter().position(|old| *old == target)
-            })
+            .map(|target| self.lights.iter().position(|old| old == target))
             .collect();
         Reuse::Reshade { kept_columns }
     }

@@ -15,7 +15,7 @@
 
 use glam::DVec3;
 
-use super::chains::{CLEAR, NOT_CAST};
+use super::chains::{CLEAR, NOT_CAST, decode_sphere};
 use super::dependence::{DependenceRule, EntryTerms, TermDependence};
 use super::light_factors::LightSlot;
 use crate::trace::ray_counts::RayCounts;
@@ -215,26 +215,40 @@ impl<'r> QuickShade<'r> {
                 }
                 let lobe = factors.lobe();
                 entry.lit(lobe.is_some());
+                // vis_l: all or nothing for a point light, a fraction for a sphere light.
+                let mut fraction = 1.0;
                 if terms.shadows {
                     if slot.shadow == NOT_CAST {
                         return None;
                     }
-                    counts.shadow += 1;
-                    if slot.shadow != CLEAR {
-                        continue;
+                    if let Some((clear, rays)) = decode_sphere(slot.shadow) {
+                        counts.shadow += u64::from(rays);
+                        fraction = f64::from(clear) / f64::from(rays);
+                        if clear == 0 {
+                            continue;
+                        }
+                    } else {
+                        counts.shadow += 1;
+                        if slot.shadow != CLEAR {
+                            continue;
+                        }
                     }
                 }
                 let strength = falloff(strength, factors.distance_squared());
-                let diffuse = if terms.diffuse {
+                let mut diffuse = if terms.diffuse {
                     diffuse_term(shade.diffuse, strength, n_dot_l)
                 } else {
                     DVec3::ZERO
                 };
-                let specular = if terms.specular {
+                let mut specular = if terms.specular {
                     specular_term(shade.specular, strength, lobe)
                 } else {
                     DVec3::ZERO
                 };
+                if fraction < 1.0 {
+                    diffuse *= fraction;
+                    specular *= fraction;
+                }
                 colour += diffuse + specular;
             }
         } else if shade.has_local {

@@ -6,7 +6,9 @@ use std::sync::Arc;
 
 use glam::DVec3;
 
-use super::chains::{CachedHit, Chains, NOT_CAST, decode_blocker, encode_blocker};
+use super::chains::{
+    CachedHit, Chains, NOT_CAST, decode_blocker, decode_sphere, encode_blocker, encode_sphere,
+};
 use super::dependence::TermDependence;
 use super::hit_cache::TileHits;
 use super::keep_rule::{KeepRule, TileSummary};
@@ -371,6 +373,11 @@ impl RaySource for PixelRays<'_, '_, '_> {
     }
 
     fn occluder(&mut self, world: &World, to: ShadowRequest, ray: impl MakeRay) -> Option<usize> {
+        // One of a sphere light's rays: the slot keeps their count, not each answer.
+        if to.off_centre {
+            self.tile.traced.shadow += 1;
+            return self.live.occluder(world, to, ray);
+        }
         let slot = self.tile.slot_index(to.depth, to.light);
         let code = self.tile.slot(slot).shadow;
         if code != NOT_CAST {
@@ -380,6 +387,26 @@ impl RaySource for PixelRays<'_, '_, '_> {
         let blocked_by = self.live.occluder(world, to, ray);
         self.tile.slot_mut(slot).shadow = encode_blocker(blocked_by);
         blocked_by
+    }
+
+    /// A sphere light's count kept is valid (the column of a light placed anew, or made
+    /// another size, was forgotten): only a missing one is cast and kept.
+    fn sphere_rays_clear(
+        &mut self,
+        depth: u32,
+        light: usize,
+        cast: impl FnOnce(&mut Self) -> (u32, Option<usize>),
+    ) -> (u32, Option<usize>) {
+        let slot = self.tile.slot_index(depth, light);
+        if let Some((clear, _)) = decode_sphere(self.tile.slot(slot).shadow) {
+            return (clear, None);
+        }
+        let before = self.tile.traced.shadow;
+        let (clear, blocker) = cast(self);
+        // Each of the light's rays went through `occluder`, which counted it.
+        let rays = u32::try_from(self.tile.traced.shadow - before).expect("a light's rays");
+        self.tile.slot_mut(slot).shadow = encode_sphere(clear, rays);
+        (clear, blocker)
     }
 
     /// Factors kept are valid (those of a stale lobe or a light placed anew were

@@ -51,6 +51,23 @@ pub trait RaySource {
     /// the ray, for a source that has to cast it.
     fn occluder(&mut self, world: &World, to: ShadowRequest, ray: impl MakeRay) -> Option<usize>;
 
+    /// How many of the shadow rays from the hit at `depth` to sphere light `light` reach
+    /// it, and the first blocker met: `cast` casts them through this source (each an
+    /// `off_centre` request) and counts. A source that keeps the count may give it
+    /// without casting, and then names no blocker.
+    #[inline]
+    fn sphere_rays_clear(
+        &mut self,
+        _depth: u32,
+        _light: usize,
+        cast: impl FnOnce(&mut Self) -> (u32, Option<usize>),
+    ) -> (u32, Option<usize>)
+    where
+        Self: Sized,
+    {
+        cast(self)
+    }
+
     /// Offers what light `light` gave the hit at `depth` (an index into
     /// [`World::lights`]), for a source that keeps it: the one call through which the
     /// re-shade cache learns from the shader. `factors` is worked out only if the source

@@ -9,7 +9,11 @@ use super::record::{NoRecorder, Recorder, ShadowRay};
 use super::tracer::Tracer;
 use crate::trace::ray_counts::RayCounts;
 use crate::trace::shapes::Primitive;
-use crate::trace::world::{LightSample, SurfacePoint, shading_seed, spawn_ray, spawn_ray_to};
+use glam::DVec3;
+
+use crate::trace::world::{
+    LightSample, SphereLight, SurfacePoint, shading_seed, spawn_ray, spawn_ray_to,
+};
 
 /// Which light a shadow ray goes to, from the hit of which ray of the tree (its depth,
 /// and its index for recorders).
@@ -93,31 +97,57 @@ impl Tracer<'_> {
                 rays: 1,
             };
         };
+        self.sphere_visibility(hit, sample, (sphere, centre), to, rays, counts, recorder)
+    }
+
+    /// [`Self::visibility`] of a sphere light, out of line so that a point light's stays
+    /// small enough to inline.
+    #[inline(never)]
+    #[allow(clippy::too_many_arguments)]
+    fn sphere_visibility<R: Recorder>(
+        &self,
+        hit: &SurfacePoint,
+        sample: &LightSample,
+        (sphere, centre): (SphereLight, DVec3),
+        to: LightAt,
+        rays: &mut impl RaySource,
+        counts: &mut RayCounts,
+        recorder: &mut R,
+    ) -> Visibility {
         let seed = shading_seed(hit.p, to.index);
-        let mut clear = 0u32;
-        let mut first_blocker = None;
-        for i in 0..sphere.samples {
-            let target = sphere.disc_point(centre, hit.p, i, seed);
-            let toward = LightSample {
-                light_position: Some(target),
-                to_light: (target - hit.p).normalize_or_zero(),
-                ..*sample
-            };
-            let blocker = self.shadow_ray_blocker(hit, &toward, to, true, rays, counts);
-            match blocker {
-                None => clear += 1,
-                Some(_) => first_blocker = first_blocker.or(blocker),
-            }
-            if R::ACTIVE {
-                let query = self.shadow_query(hit, &toward);
-                let light = self.world.light_scene_index[to.index];
-                let shadow = ShadowRay {
-                    ray: query.ray,
-                    t_max: query.t_max,
-                    blocked_by: blocker.map(|b| self.world.scene_object(b)),
+        let mut cast = false;
+        let (clear, first_blocker) = rays.sphere_rays_clear(to.depth, to.index, |rays| {
+            cast = true;
+            let mut clear = 0u32;
+            let mut first_blocker = None;
+            for i in 0..sphere.samples {
+                let target = sphere.disc_point(centre, hit.p, i, seed);
+                let toward = LightSample {
+                    light_position: Some(target),
+                    to_light: (target - hit.p).normalize_or_zero(),
+                    ..*sample
                 };
-                recorder.sphere_shadow_ray(to.node, light, &shadow);
+                let blocker = self.shadow_ray_blocker(hit, &toward, to, true, rays, counts);
+                match blocker {
+                    None => clear += 1,
+                    Some(_) => first_blocker = first_blocker.or(blocker),
+                }
+                if R::ACTIVE {
+                    let query = self.shadow_query(hit, &toward);
+                    let light = self.world.light_scene_index[to.index];
+                    let shadow = ShadowRay {
+                        ray: query.ray,
+                        t_max: query.t_max,
+                        blocked_by: blocker.map(|b| self.world.scene_object(b)),
+                    };
+                    recorder.sphere_shadow_ray(to.node, light, &shadow);
+                }
             }
+            (clear, first_blocker)
+        });
+        // Counted as cast, as a point light's answer from the cache is.
+        if !cast {
+            counts.shadow += u64::from(sphere.samples);
         }
         Visibility {
             fraction: f64::from(clear) / f64::from(sphere.samples),

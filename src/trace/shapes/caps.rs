@@ -28,9 +28,21 @@ pub(crate) fn cap_point(ray: &Ray, z_cap: f64, normal_z: f64) -> Option<ShapeHit
     cap_point_at(ray, (z_cap - ray.origin.z) / ray.dir.z, z_cap, normal_z)
 }
 
+/// Where the line meets the disc cap `z = z_cap`, if it does ([`cap_point`]'s `t`,
+/// without its point).
+#[inline]
+pub(crate) fn cap_t(ray: &Ray, z_cap: f64) -> Option<f64> {
+    if ray.dir.z == 0.0 {
+        return None;
+    }
+    let t = (z_cap - ray.origin.z) / ray.dir.z;
+    let p = ray.at(t);
+    (p.x * p.x + p.y * p.y <= 1.0).then_some(t)
+}
+
 /// The point at `t` on the plane of a disc cap, if it lies on the disc.
 #[inline(always)]
-fn cap_point_at(ray: &Ray, t: f64, z_cap: f64, normal_z: f64) -> Option<ShapeHit> {
+pub(crate) fn cap_point_at(ray: &Ray, t: f64, z_cap: f64, normal_z: f64) -> Option<ShapeHit> {
     let p = ray.at(t);
     if p.x * p.x + p.y * p.y > 1.0 {
         return None;

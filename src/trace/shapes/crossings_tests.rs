@@ -5,7 +5,9 @@
 use glam::DVec3;
 use proptest::prelude::*;
 
-use super::{Primitive, ShapeHit, crossings, in_range, intersect, starts_inside};
+use super::{
+    Primitive, ShapeHit, crossings, in_range, intersect, line_crossing, line_span, starts_inside,
+};
 use crate::trace::ray::Ray;
 
 const SHAPES: [Primitive; 10] = [
@@ -84,6 +86,32 @@ proptest! {
                     let touch = out.windows(2).any(|w| (w[1].t - w[0].t).abs() < 1e-6 && (w[0].t - t).abs() < 1e-6);
                     prop_assert!(touch || a.is_none() && out.len() == 2 && (out[1].t - out[0].t).abs() < 1e-6,
                         "{shape:?}: crossings {out:?} but closest {b:?}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_line_span_and_its_crossings_are_crossings_own(
+        origin in vector(3.0),
+        dir in vector(1.0).prop_filter("a direction", |d| d.length() > 0.1),
+        axis in 0usize..4,
+    ) {
+        // Axis-parallel rays too (`axis` < 3), which graze faces, edges and rims.
+        let dir = if axis < 3 { DVec3::AXES[axis] * dir.length() } else { dir };
+        let ray = Ray::new(origin, dir);
+        for shape in [Primitive::Sphere, Primitive::Cube, Primitive::Cylinder] {
+            let mut out: Vec<ShapeHit> = Vec::new();
+            crossings(shape, &ray, &mut out);
+            let span = line_span(shape, &ray).expect("spheres, cubes and cylinders have line spans");
+            match span {
+                None => prop_assert!(out.is_empty(), "{shape:?} {out:?}"),
+                Some([t0, t1]) => {
+                    prop_assert_eq!(out.len(), 2);
+                    prop_assert_eq!([out[0].t, out[1].t], [t0, t1]);
+                    for (k, t) in [t0, t1].into_iter().enumerate() {
+                        prop_assert_eq!(line_crossing(shape, &ray, k, t), out[k]);
+                    }
                 }
             }
         }

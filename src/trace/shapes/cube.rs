@@ -41,22 +41,46 @@ pub fn intersect(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
 
 /// Both crossings of the whole line (entry, exit), for CSG.
 pub(crate) fn crossings(ray: &Ray, out: &mut Vec<ShapeHit>) {
-    let Some(s) = span(ray) else { return };
-    if !(s.t_near.is_finite() && s.t_far.is_finite()) {
-        return; // a zero direction: no crossing
+    if let Some(s) = line_slabs(ray) {
+        out.extend([crossing(ray, &s, 0), crossing(ray, &s, 1)]);
     }
-    for (t, axis, entering) in [(s.t_near, s.near_slab, true), (s.t_far, s.far_slab, false)] {
-        // The entry face faces against the ray along its axis, the exit face with it.
-        let along = if ray.dir[axis] > 0.0 { 1.0 } else { -1.0 };
-        let side = if entering { -along } else { along };
-        let mut p = ray.at(t).clamp(DVec3::splat(-1.0), DVec3::splat(1.0));
-        p[axis] = side;
-        let mut n = DVec3::ZERO;
-        n[axis] = side;
-        let mut p_error = gamma(3) * p.abs();
-        p_error[axis] = 0.0;
-        out.push(ShapeHit { t, p, n, p_error });
-    }
+}
+
+/// The slab span of the whole line, if it crosses the cube (a zero direction does not).
+fn line_slabs(ray: &Ray) -> Option<SlabSpan> {
+    span(ray).filter(|s| s.t_near.is_finite() && s.t_far.is_finite())
+}
+
+/// The ends of the whole line's span (`crossings`' two `t`s without their points), for
+/// CSG leaves that work out a surface point only for the crossing a query answers with.
+pub(crate) fn line_span(ray: &Ray) -> Option<[f64; 2]> {
+    line_slabs(ray).map(|s| [s.t_near, s.t_far])
+}
+
+/// Crossing `k` of the line (0 the entry, 1 the exit), as [`crossings`] gives it; the
+/// line must cross the cube ([`line_span`] is `Some`).
+pub(crate) fn crossing_of_line(ray: &Ray, k: usize) -> ShapeHit {
+    let s = line_slabs(ray).expect("a crossing of a line that crosses the cube");
+    crossing(ray, &s, k)
+}
+
+/// Crossing `k` (0 the entry, 1 the exit) of a line with slab span `s`.
+fn crossing(ray: &Ray, s: &SlabSpan, k: usize) -> ShapeHit {
+    let (t, axis, entering) = if k == 0 {
+        (s.t_near, s.near_slab, true)
+    } else {
+        (s.t_far, s.far_slab, false)
+    };
+    // The entry face faces against the ray along its axis, the exit face with it.
+    let along = if ray.dir[axis] > 0.0 { 1.0 } else { -1.0 };
+    let side = if entering { -along } else { along };
+    let mut p = ray.at(t).clamp(DVec3::splat(-1.0), DVec3::splat(1.0));
+    p[axis] = side;
+    let mut n = DVec3::ZERO;
+    n[axis] = side;
+    let mut p_error = gamma(3) * p.abs();
+    p_error[axis] = 0.0;
+    ShapeHit { t, p, n, p_error }
 }
 
 /// Whether any hit has `t` in (0, t_max).

@@ -49,6 +49,25 @@ pub(crate) fn nearer(a: Option<ShapeHit>, b: Option<ShapeHit>) -> Option<ShapeHi
     }
 }
 
+/// Which of a convex solid's candidate surface points along a line (`t` where the line
+/// meets that surface, `None` where it does not) are its entry and exit: the smallest
+/// and largest `t`, the earlier candidate where two tie, as [`first_and_last`] picks.
+pub(crate) fn first_and_last_of(candidates: &[Option<f64>]) -> Option<(usize, usize)> {
+    let mut span: Option<(usize, usize)> = None;
+    for (k, t) in candidates.iter().enumerate() {
+        let Some(t) = *t else { continue };
+        let t_of = |i: usize| candidates[i].expect("a chosen candidate");
+        span = Some(match span {
+            None => (k, k),
+            Some((first, last)) => (
+                if t < t_of(first) { k } else { first },
+                if t > t_of(last) { k } else { last },
+            ),
+        });
+    }
+    span
+}
+
 /// Appends the first and the last of a convex solid's surface points along a line: its
 /// entry and exit.
 pub(crate) fn first_and_last(candidates: impl Iterator<Item = ShapeHit>, out: &mut Vec<ShapeHit>) {

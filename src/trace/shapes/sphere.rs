@@ -43,16 +43,25 @@ pub fn intersect(ray: &Ray, t_max: f64) -> Option<ShapeHit> {
 /// entry and the exit, for CSG (see `super::crossings`).
 pub(crate) fn crossings(ray: &Ray, out: &mut Vec<ShapeHit>) {
     if let Some(roots) = roots(ray) {
-        out.extend(roots.map(|t| {
-            let p = ray.at(t);
-            let p = p / p.length();
-            ShapeHit {
-                t,
-                p,
-                n: p,
-                p_error: gamma(5) * p.abs(),
-            }
-        }));
+        out.extend(roots.map(|t| crossing_at(ray, t)));
+    }
+}
+
+/// The ends of the whole line's span (`crossings`' two `t`s without their points), for
+/// CSG leaves that work out a surface point only for the crossing a query answers with.
+pub(crate) fn line_span(ray: &Ray) -> Option<[f64; 2]> {
+    roots(ray)
+}
+
+/// The crossing at `t`, one of [`line_span`]'s, as [`crossings`] gives it.
+pub(crate) fn crossing_at(ray: &Ray, t: f64) -> ShapeHit {
+    let p = ray.at(t);
+    let p = p / p.length();
+    ShapeHit {
+        t,
+        p,
+        n: p,
+        p_error: gamma(5) * p.abs(),
     }
 }
 

@@ -12,7 +12,8 @@ pub(crate) struct Crossing {
     /// The ray parameter.
     pub t: f64,
     /// Index of the crossing's [`ShapeHit`] (in the leaf's object space) in the list
-    /// the leaves' crossings were collected in; `u32::MAX` for an unbounded end.
+    /// the leaves' crossings were collected in, or a sphere's, cube's or cylinder's end to work out
+    /// later (`tree::LATER`); `u32::MAX` for an unbounded end.
     pub hit: u32,
     /// Which leaf of the tree; `u32::MAX` for the open end of an unbounded span.
     pub leaf: u32,
@@ -126,6 +127,21 @@ impl Cursor<'_> {
 /// zero length; where the result's inside begins or ends, the surface named is `a`'s if
 /// `a` crosses there, else `b`'s (a subtracted one marked as a cut).
 pub(crate) fn combine(op: CsgOp, a: &[Span], b: &[Span], out: &mut Vec<Span>) {
+    match (a, b) {
+        ([a], [b]) => combine_one(op, *a, *b, out),
+        // Intersected with or cut by one span (a hollow solid's walls minus a window),
+        // span by span: what the sweep gives, as long as `a`'s spans do not touch.
+        (_, [b]) if op != CsgOp::Union && a.windows(2).all(|w| w[0].leave.t < w[1].enter.t) => {
+            for a in a {
+                combine_one(op, *a, *b, out);
+            }
+        }
+        _ => sweep(op, a, b, out),
+    }
+}
+
+/// [`combine`] for any span lists: one pass over both lists' boundaries in order.
+fn sweep(op: CsgOp, a: &[Span], b: &[Span], out: &mut Vec<Span>) {
     let mut ca = Cursor {
         spans: a,
         index: 0,
@@ -172,6 +188,55 @@ pub(crate) fn combine(op: CsgOp, a: &[Span], b: &[Span], out: &mut Vec<Span>) {
         }
     }
     debug_assert!(open.is_none(), "every span list ends outside");
+}
+
+/// [`combine`] for one span on each side (a convex leaf against a convex leaf, the
+/// usual case), in closed form; the same spans and surfaces as the sweep, ties included:
+/// a boundary both sides share at one `t` is `a`'s.
+fn combine_one(op: CsgOp, a: Span, b: Span, out: &mut Vec<Span>) {
+    let earlier = |x: Crossing, y: Crossing| if y.t < x.t { y } else { x };
+    let later = |x: Crossing, y: Crossing| if y.t > x.t { y } else { x };
+    let cut = |mut x: Crossing| {
+        x.cut = !x.cut;
+        x
+    };
+    let apart = b.leave.t < a.enter.t || a.leave.t < b.enter.t;
+    match op {
+        CsgOp::Intersection => {
+            let (enter, leave) = (later(a.enter, b.enter), earlier(a.leave, b.leave));
+            if enter.t < leave.t {
+                out.push(Span { enter, leave });
+            }
+        }
+        // Spans that only touch join into one.
+        CsgOp::Union if apart => {
+            let (first, second) = if b.leave.t < a.enter.t {
+                (b, a)
+            } else {
+                (a, b)
+            };
+            out.extend([first, second]);
+        }
+        CsgOp::Union => out.push(Span {
+            enter: earlier(a.enter, b.enter),
+            leave: later(a.leave, b.leave),
+        }),
+        CsgOp::Difference if b.leave.t <= a.enter.t || a.leave.t <= b.enter.t => out.push(a),
+        CsgOp::Difference => {
+            if a.enter.t < b.enter.t {
+                out.push(Span {
+                    enter: a.enter,
+                    leave: cut(b.enter),
+                });
+            }
+            if b.leave.t < a.leave.t {
+                out.push(Span {
+                    enter: cut(b.leave),
+                    leave: a.leave,
+                });
+            }
+        }
+    }
 }
 
 #[cfg(test)]
@@ -231,6 +296,86 @@ mod tests {
         assert!(ends(CsgOp::Intersection, &[(0.0, 1.0)], &[(1.0, 2.0)]).is_empty());
         // Equal spans: a - a is empty.
         assert!(ends(CsgOp::Difference, &[(0.0, 1.0)], &[(0.0, 1.0)]).is_empty());
+    }
+
+    #[test]
+    fn one_span_each_gives_what_the_sweep_gives_ties_included() {
+        // Every pair of spans with ends on a small grid (so that ends coincide in every
+        // way), unbounded ends too, under each operator.
+        let ends = [f64::NEG_INFINITY, 0.0, 1.0, 2.0, 3.0, f64::INFINITY];
+        let span = |enter: f64, leave: f64, leaf: u32| Span {
+            enter: Crossing {
+                t: enter,
+                hit: 2 * leaf,
+                leaf,
+                cut: false,
+            },
+            leave: Crossing {
+                t: leave,
+                hit: 2 * leaf + 1,
+                leaf,
+                cut: leaf == 1,
+            },
+        };
+        let pairs: Vec<(f64, f64)> = ends
+            .iter()
+            .flat_map(|&x| ends.iter().map(move |&y| (x, y)))
+            .filter(|(x, y)| x < y)
+            .collect();
+        let mut compared = 0;
+        for op in [CsgOp::Union, CsgOp::Intersection, CsgOp::Difference] {
+            for &(a0, a1) in &pairs {
+                for &(b0, b1) in &pairs {
+                    let (a, b) = ([span(a0, a1, 0)], [span(b0, b1, 1)]);
+                    let (mut quick, mut swept) = (Vec::new(), Vec::new());
+                    combine_one(op, a[0], b[0], &mut quick);
+                    sweep(op, &a, &b, &mut swept);
+                    assert_eq!(quick, swept, "{op:?} {a:?} {b:?}");
+                    compared += 1;
+                }
+            }
+        }
+        assert_eq!(compared, 3 * 15 * 15);
+    }
+
+    #[test]
+    fn several_spans_against_one_give_what_the_sweep_gives() {
+        // Two spans against one, ends on a grid: every way the three can meet.
+        let ends = [f64::NEG_INFINITY, 0.0, 1.0, 2.0, 3.0, 4.0, f64::INFINITY];
+        let span = |enter: f64, leave: f64, leaf: u32, hit: u32| Span {
+            enter: Crossing {
+                t: enter,
+                hit,
+                leaf,
+                cut: false,
+            },
+            leave: Crossing {
+                t: leave,
+                hit: hit + 1,
+                leaf,
+                cut: false,
+            },
+        };
+        let n = ends.len();
+        let mut compared = 0;
+        for op in [CsgOp::Union, CsgOp::Intersection, CsgOp::Difference] {
+            for (i, j, k, l) in (0..n).flat_map(|i| {
+                (i + 1..n).flat_map(move |j| {
+                    (j..n).flat_map(move |k| (k + 1..n).map(move |l| (i, j, k, l)))
+                })
+            }) {
+                let a = [span(ends[i], ends[j], 0, 0), span(ends[k], ends[l], 0, 2)];
+                for (x, y) in (0..n).flat_map(|x| (x + 1..n).map(move |y| (x, y))) {
+                    let b = [span(ends[x], ends[y], 1, 4)];
+                    let (mut quick, mut swept) = (Vec::new(), Vec::new());
+                    combine(op, &a, &b, &mut quick);
+                    sweep(op, &a, &b, &mut swept);
+                    assert_eq!(quick, swept, "{op:?} {a:?} {b:?}");
+                    compared += 1;
+                }
+            }
+        }
+        assert!(compared > 1000, "{compared}");
     }
 
     #[test]

@@ -1,14 +1,15 @@
 //! The compiled CSG node and its queries: its operand leaves placed in the node's own
 //! object space, and its operators as a post-order program. A ray is answered by
-//! sweeping the leaves' spans together (`super::spans`) with explicit stacks, so a tree
-//! 1,000 levels deep needs no deeper call stack than a flat one.
+//! running the program (`super::eval`), which sweeps the leaves' spans together
+//! (`super::spans`) with explicit stacks, so a tree 1,000 levels deep needs no deeper
+//! call stack than a flat one.
 
-use std::cell::RefCell;
 use std::sync::Arc;
 
 use glam::{DAffine3, DMat3, DVec3};
 
-use super::spans::{self, Crossing, Span};
+use super::eval::{LATER, Scratch};
+use super::spans::Crossing;
 use crate::scene::CsgOp;
 use crate::trace::ray::Ray;
 use crate::trace::shapes::{self, Aabb, Primitive, ShapeHit, TriangleMesh, gamma};
@@ -28,7 +29,7 @@ pub struct CsgLeaf {
     pub material: usize,
     /// Leaf-to-node transform (the node's object space, not the world).
     pub node_from_leaf: DAffine3,
-    leaf_from_node: DAffine3,
+    pub(super) leaf_from_node: DAffine3,
     normal_from_leaf: DMat3,
     abs_node_from_leaf: DMat3,
     abs_leaf_from_node: DMat3,
@@ -43,8 +44,9 @@ pub(super) enum Step {
     Leaf(u32),
     /// Pop the top `operands` span lists and push them combined by `op`, left to right.
     Combine { op: CsgOp, operands: u32 },
-    /// After an Intersection's or Difference's first operand: if its list is empty, so
-    /// is the node's, and the program goes on at `skip_to` (past the node's Combine).
+    /// After an Intersection's or Difference's first operand: if its list is empty (in
+    /// the query's range), so is the node's, and the program goes on at `skip_to` (past
+    /// the node's Combine).
     SkipIfEmpty { skip_to: u32 },
     /// Before a run of `lists` leaves whose boxes lie in `bounds`: a ray that misses the
     /// box pushes an empty list for each and goes on at `skip_to`.
@@ -94,136 +96,7 @@ pub struct CsgHit {
     pub cut: bool,
 }
 
-/// Per-thread buffers, so a ray allocates nothing once warm.
-#[derive(Default)]
-struct Scratch {
-    crossings: Vec<ShapeHit>,
-    /// The ray in each leaf's space (valid for the leaves that have crossings).
-    leaf_rays: Vec<Ray>,
-    /// The span lists of the evaluation stack, one after another.
-    arena: Vec<Span>,
-    /// Where each list on the stack starts in `arena`.
-    starts: Vec<usize>,
-    combined: Vec<Span>,
-    swap: Vec<Span>,
-}
-
-thread_local! {
-    static SCRATCH: RefCell<Scratch> = RefCell::new(Scratch::default());
-}
-
 impl CsgTree {
-    /// The spans of the whole node along a node-space ray, for the part of the line in
-    /// [0, t_max], handed to `answer` (leaves whose bounds the ray misses there count as
-    /// empty: they cannot change the result in that range).
-    fn with_spans<R>(&self, ray: &Ray, t_max: f64, answer: impl FnOnce(&Scratch) -> R) -> R {
-        SCRATCH.with(|cell| {
-            let mut guard = cell.borrow_mut();
-            let s = &mut *guard;
-            s.arena.clear();
-            s.starts.clear();
-            s.crossings.clear();
-            if s.leaf_rays.len() < self.leaves.len() {
-                s.leaf_rays.resize(self.leaves.len(), *ray);
-            }
-            let inv_dir = ray.dir.recip();
-            let mut pc = 0;
-            while let Some(step) = self.steps.get(pc) {
-                pc += 1;
-                match *step {
-                    Step::SkipIfMissed {
-                        bounds,
-                        lists,
-                        skip_to,
-                    } => {
-                        if !bounds.hit_by(ray, inv_dir, t_max) {
-                            let end = s.arena.len();
-                            s.starts.extend(std::iter::repeat_n(end, lists as usize));
-                            pc = skip_to as usize;
-                        }
-                    }
-                    Step::SkipIfEmpty { skip_to } => {
-                        if s.starts.last() == Some(&s.arena.len()) {
-                            pc = skip_to as usize;
-                        }
-                    }
-                    Step::Leaf(index) => {
-                        s.starts.push(s.arena.len());
-                        let leaf = &self.leaves[index as usize];
-                        if leaf.bounds.is_some_and(|b| !b.hit_by(ray, inv_dir, t_max)) {
-                            continue;
-                        }
-                        let leaf_ray = ray.transformed(&leaf.leaf_from_node);
-                        s.leaf_rays[index as usize] = leaf_ray;
-                        let first = s.crossings.len();
-                        let inside = if let Some(mesh) = &leaf.mesh {
-                            mesh.crossings(&leaf_ray, &mut s.crossings);
-                            // A closed surface's crossings alternate: the ray starts
-                            // inside where the first one leaves.
-                            s.crossings[first..]
-                                .first()
-                                .is_some_and(|c| c.n.dot(leaf_ray.dir) > 0.0)
-                        } else {
-                            shapes::crossings(leaf.shape, &leaf_ray, &mut s.crossings);
-                            shapes::starts_inside(leaf.shape, &leaf_ray)
-                        };
-                        let own = &s.crossings[first..];
-                        spans::leaf_spans(own, first, index, inside, &mut s.arena);
-                    }
-                    Step::Combine { operands: 0, .. } => s.starts.push(s.arena.len()),
-                    Step::Combine { op, operands } => {
-                        let first = s.starts.len() - operands as usize;
-                        let base = s.starts[first];
-                        let end_of = |k: usize, s: &Scratch| {
-                            s.starts.get(k + 1).copied().unwrap_or(s.arena.len())
-                        };
-                        // The result so far: the first list where it lies (no copy) until
-                        // a sweep makes a new one in `combined`.
-                        let mut first_end = end_of(first, s);
-                        let mut in_place = true;
-                        for k in first + 1..s.starts.len() {
-                            let operand = s.starts[k]..end_of(k, s);
-                            let acc_empty = if in_place {
-                                first_end == base
-                            } else {
-                                s.combined.is_empty()
-                            };
-                            // Empty sides settle most combinations without a sweep (a
-                            // die's pips miss most rays).
-                            match (op, acc_empty, operand.is_empty()) {
-                                (CsgOp::Intersection | CsgOp::Difference, true, _) => break,
-                                (CsgOp::Union | CsgOp::Difference, _, true) => continue,
-                                (CsgOp::Intersection, _, true) => {
-                                    first_end = base;
-                                    in_place = true;
-                                    break;
-                                }
-                                _ => {}
-                            }
-                            let acc = if in_place {
-                                &s.arena[base..first_end]
-                            } else {
-                                &s.combined[..]
-                            };
-                            s.swap.clear();
-                            spans::combine(op, acc, &s.arena[operand], &mut s.swap);
-                            std::mem::swap(&mut s.combined, &mut s.swap);
-                            in_place = false;
-                        }
-                        s.starts.truncate(first + 1);
-                        if in_place {
-                            s.arena.truncate(first_end);
-                        } else {
-                            s.arena.truncate(base);
-                            s.arena.extend_from_slice(&s.combined);
-                        }
-                    }
-                }
-            }
-            answer(s)
-        })
-    }
-
     /// Whether a crossing lies in (0, t_max), clear of its leaf ray's origin rounding.
     #[inline]
     fn in_range(s: &Scratch, crossing: &Crossing, t_max: f64) -> bool {
@@ -241,8 +114,8 @@ impl CsgTree {
                         return None;
                     }
                     if Self::in_range(s, c, t_max) {
-                        let hit = &s.crossings[c.hit as usize];
-                        return Some(self.node_hit(ray, c, hit, entering));
+                        let hit = self.shape_hit(s, c);
+                        return Some(self.node_hit(ray, c, &hit, entering));
                     }
                 }
             }
@@ -279,12 +152,23 @@ impl CsgTree {
                 .filter(|(c, _)| (c.leaf as usize) < self.leaves.len())
                 .map(|(c, entering)| {
                     (
-                        self.node_hit(ray, &c, &s.crossings[c.hit as usize], entering),
+                        self.node_hit(ray, &c, &self.shape_hit(s, &c), entering),
                         entering,
                     )
                 })
                 .collect()
         })
+    }
+
+    /// A crossing's surface point in its leaf's space: from the list of crossings, or
+    /// worked out now for a sphere's, a cube's or a cylinder's (see [`LATER`]).
+    fn shape_hit(&self, s: &Scratch, crossing: &Crossing) -> ShapeHit {
+        if crossing.hit & LATER == 0 {
+            return s.crossings[crossing.hit as usize];
+        }
+        let leaf = crossing.leaf as usize;
+        let k = (crossing.hit & 1) as usize;
+        shapes::line_crossing(self.leaves[leaf].shape, &s.leaf_rays[leaf], k, crossing.t)
     }
 
     /// A crossing in the node's space: the point and normal carried through the leaf's

@@ -171,10 +171,17 @@ fn resolve(scene: &Scene, isolation: &Isolation, report: PixelReport) -> Inspect
                         });
                     }
                     let (_, outcome, record) = outcomes.iter().find(|(i, ..)| *i == index)?;
+                    // A blocker in a tree is named by the leaf the shadow ray met.
+                    let blocker_name = |blocker: usize| {
+                        b.blocker_hits
+                            .iter()
+                            .find(|(light, ..)| *light == index)
+                            .map_or_else(|| object_name(blocker), |(.., s)| s.path.clone())
+                    };
                     Some(InspectedLight {
                         scene_index: index,
                         label,
-                        outcome: outcome.text(&object_name),
+                        outcome: outcome.text(&blocker_name),
                         adds_light: outcome.adds_light(),
                         record: record.copied(),
                     })

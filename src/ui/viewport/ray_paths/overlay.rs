@@ -275,14 +275,18 @@ fn hover_lines(s: &ScreenSegment, scene: &Scene, inspections: &[PixelInspection]
                     } else {
                         "hits"
                     };
-                    // The leaf of a tree, where the ray is one of the pixel's bounces
-                    // (a shadow ray's blocker is named by its object).
+                    // The leaf of a tree the ray met: a bounce's surface, or where a
+                    // shadow ray met its blocker.
                     let leaf = report.and_then(|r| {
-                        r.bounces
-                            .iter()
-                            .find(|b| b.hit.is_some_and(|h| h.p == hit.point))
-                            .and_then(|b| b.surface.as_ref())
-                            .map(|s| s.path.clone())
+                        let mut bounces = r.bounces.iter();
+                        if kind == RayKind::Shadow {
+                            bounces.find_map(|b| b.blocker_surface_at(hit.point))
+                        } else {
+                            bounces
+                                .find(|b| b.hit.is_some_and(|h| h.p == hit.point))
+                                .and_then(|b| b.surface.as_ref())
+                        }
+                        .map(|s| s.path.clone())
                     });
                     let name = leaf.unwrap_or_else(|| object(hit.object).to_owned());
                     lines.push(format!("{verb} {name} at t {t:.6}"));
@@ -336,54 +340,5 @@ fn v(p: DVec3) -> String {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::gizmo::ray_paths::{SegmentKind, SegmentLengths, path_segments};
-    use crate::trace::{TermSwitches, World};
-
-    #[test]
-    fn a_ray_that_meets_a_tree_names_the_leaf_it_hit() {
-        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/csg.ron");
-        let scene = crate::scene::load_scene(&path).unwrap();
-        let world = World::new(&scene).unwrap();
-        // A pixel whose camera ray meets a pip's cut in the die.
-        let (w, h) = (scene.camera.width, scene.camera.height);
-        let inspection = (0..h)
-            .step_by(3)
-            .flat_map(|y| (0..w).step_by(3).map(move |x| (x, y)))
-            .map(|pixel| PixelInspection::traced(&world, &scene, TermSwitches::ALL_ON, pixel))
-            .find(|i| {
-                i.result.as_ref().is_ok_and(|r| {
-                    r.report.bounces[0]
-                        .surface
-                        .as_ref()
-                        .is_some_and(|s| s.path.starts_with("die/pip"))
-                })
-            })
-            .expect("the die's pips are in the picture");
-        let report = &inspection.result.as_ref().unwrap().report;
-        let leaf = report.bounces[0].surface.as_ref().unwrap().path.clone();
-        let lengths = SegmentLengths {
-            run_off: 1.0,
-            normal: 0.1,
-        };
-        let camera_ray = path_segments(report, &scene.lights, lengths)
-            .into_iter()
-            .find(|s| matches!(s.kind, SegmentKind::Ray(RayKind::Primary)))
-            .expect("the camera ray");
-        let segment = ScreenSegment {
-            pixel: inspection.pixel,
-            inspected: true,
-            segment: camera_ray,
-            from: Pos2::ZERO,
-            to: Pos2::ZERO,
-        };
-        let lines = hover_lines(&segment, &scene, std::slice::from_ref(&inspection));
-        assert!(
-            lines
-                .iter()
-                .any(|l| l.starts_with(&format!("hits {leaf} at t"))),
-            "{lines:?}"
-        );
-    }
-}
+#[path = "overlay_tests.rs"]
+mod tests;
