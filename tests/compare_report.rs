@@ -206,9 +206,39 @@ fn write_the_worked_example() {
         cone_normal_without_z: true,
         ..Bugs::default()
     };
-    let other = render_with(&scene, 1, &bugs);
+    save(&render_with(&scene, 1, &bugs), "compare_other.png");
+}
+
+/// The second worked example: the same scene as another student rendered it, from a
+/// scene file with one more object (a blue ball in front of the mirror ball) and with
+/// a tracer that never hits cones. Run as the first, then
+/// `raylab diff tests/compare/example.ron docs/compare_other_objects.png -o docs/compare_report_objects.png`.
+#[test]
+#[ignore = "writes docs/compare_other_objects.png"]
+fn write_the_second_worked_example() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/compare/example.ron");
+    let mut scene = raylab::scene::load_scene(std::path::Path::new(path)).unwrap();
+    let blue = raylab::scene::Material {
+        ambient: glam::DVec3::new(0.02, 0.04, 0.15),
+        diffuse: glam::DVec3::new(0.1, 0.2, 0.8),
+        specular: glam::DVec3::splat(0.4),
+        shininess: 30.0,
+        ..raylab::scene::Material::default()
+    };
+    scene.materials.insert("blue".to_owned(), blue);
+    let ball = r#"(name: "blue ball", shape: Sphere, transform: (translate: (0.9, 0.5, 1.8), scale: (0.5, 0.5, 0.5)), material: "blue")"#;
+    scene.objects.push(ron::from_str(ball).unwrap());
+    scene.objects.retain(|o| o.name != "gold cone");
+    save(
+        &render_with(&scene, 1, &Bugs::default()),
+        "compare_other_objects.png",
+    );
+}
+
+/// Writes `other` to docs/`name`.
+fn save(other: &OtherImage, name: &str) {
     let flat: Vec<u8> = other.rgb.iter().flatten().copied().collect();
-    let out = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/compare_other.png");
+    let out = format!("{}/docs/{name}", env!("CARGO_MANIFEST_DIR"));
     image::RgbImage::from_raw(other.width, other.height, flat)
         .unwrap()
         .save(out)

@@ -8,9 +8,9 @@ use glam::DVec3;
 
 use crate::scene::Material;
 use crate::trace::SurfacePoint;
-use crate::trace::WorldObject;
 use crate::trace::shapes::Primitive;
 pub use crate::trace::{LocalLight, phong_power};
+use crate::trace::{World, WorldObject};
 
 /// A wrong shading normal.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -263,6 +263,21 @@ impl Part {
             Primitive::Cylinder | Primitive::Cone | Primitive::Tube { .. } => {
                 &[Part::Side, Part::Caps]
             }
+        }
+    }
+
+    /// The parts of scene object `index` of `world`: its shape's when it is one world
+    /// object; a group (several, or none) is missing whole or not at all.
+    #[must_use]
+    pub fn of_scene_object(world: &World, index: usize) -> &'static [Part] {
+        let mut members = world
+            .object_scene_index
+            .iter()
+            .enumerate()
+            .filter(|&(_, &s)| s == index);
+        match (members.next(), members.next()) {
+            (Some((only, _)), None) => Part::of_shape(world.objects[only].shape),
+            _ => &[Part::Whole],
         }
     }
 

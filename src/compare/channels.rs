@@ -16,6 +16,9 @@ pub enum Kind {
     Reflection,
     /// `kt * colour(transmitted ray)` at the object's hits: all that is seen through it.
     Transmission,
+    /// The light the object's shadows take away from other surfaces, where no other
+    /// object blocks it (0 in raylab's picture): part of the object's missing picture.
+    ShadowCast,
     /// Light `l`'s diffuse term, as shadowed, at the object's hits.
     Diffuse(usize),
     /// Light `l`'s specular term, as shadowed, at the object's hits.
@@ -57,7 +60,7 @@ pub enum Family {
     Highlight(SpecularBug),
     /// [`Kind::Clamp`] of one bug.
     Clamp(ClampBug),
-    /// [`Kind::Missing`], any part.
+    /// [`Kind::Missing`], any part, and [`Kind::ShadowCast`].
     Missing,
     /// [`Kind::Spot`] of one bug.
     Spot(SpotBug),
@@ -79,7 +82,7 @@ impl Kind {
             Kind::Normal(b) => Family::Normal(b),
             Kind::Highlight(b) => Family::Highlight(b),
             Kind::Clamp(b) => Family::Clamp(b),
-            Kind::Missing(_) => Family::Missing,
+            Kind::Missing(_) | Kind::ShadowCast => Family::Missing,
             Kind::Spot(b, _) => Family::Spot(b),
             Kind::Background => Family::Background,
         }
@@ -115,7 +118,7 @@ pub struct ChannelSpace {
 }
 
 /// Kinds per object that do not depend on a light.
-const FIXED: usize = 3;
+const FIXED: usize = 4;
 
 impl ChannelSpace {
     fn per_object(&self) -> usize {
@@ -154,6 +157,7 @@ impl ChannelSpace {
             Kind::Ambient => 0,
             Kind::Reflection => 1,
             Kind::Transmission => 2,
+            Kind::ShadowCast => 3,
             Kind::Diffuse(i) => FIXED + i,
             Kind::Specular(i) => FIXED + l + i,
             Kind::Shadow(i) => FIXED + 2 * l + i,
@@ -190,6 +194,7 @@ impl ChannelSpace {
             0 => Kind::Ambient,
             1 => Kind::Reflection,
             2 => Kind::Transmission,
+            3 => Kind::ShadowCast,
             s if s < FIXED + l => Kind::Diffuse(s - FIXED),
             s if s < FIXED + 2 * l => Kind::Specular(s - FIXED - l),
             s if s < FIXED + 3 * l => Kind::Shadow(s - FIXED - 2 * l),

@@ -51,6 +51,9 @@ pub struct Components {
     pub labels: Vec<u32>,
     /// Whether a pixel's samples saw more than one object (or some missed).
     pub mixed: Vec<bool>,
+    /// The object the first sample of each pixel would hit were the object it hit
+    /// missing, or [`MISS`] (nothing behind, or that object not tried missing).
+    pub behind: Vec<u32>,
     /// Start of each pixel's entries; one more than there are pixels.
     pub offsets: Vec<u32>,
     /// The entries, pixel by pixel.
@@ -87,6 +90,7 @@ impl Components {
 struct Row {
     beauty: Vec<[f64; 3]>,
     labels: Vec<u32>,
+    behind: Vec<u32>,
     mixed: Vec<bool>,
     counts: Vec<u32>,
     entries: Vec<Entry>,
@@ -94,11 +98,11 @@ struct Row {
     rays: RayCounts,
 }
 
-/// The scene with object `index` taken out, compiled (with `world`'s meshes).
+/// The scene with top-level object `index` taken out (a group with all its members),
+/// compiled (with `world`'s meshes).
 fn world_without(scene: &Scene, world: &World, index: usize) -> Option<World> {
-    // World object `index` is a tree node (a group's member, a CSG node) in scenes with
-    // groups: take out that node.
-    let scene = crate::trace::scene_without_world_object(scene, index)?;
+    let mut scene = scene.clone();
+    scene.objects.remove(index);
     World::with_meshes(&scene, &world.meshes).ok()
 }
 
@@ -112,7 +116,8 @@ pub fn render_components(
     spp: u32,
     progress: &RenderProgress,
 ) -> Option<Components> {
-    let without: Vec<Option<World>> = (0..world.objects.len())
+    // Channels are per scene object: `hit.object` is the scene's index.
+    let without: Vec<Option<World>> = (0..scene.objects.len())
         .into_par_iter()
         .map(|i| {
             (i < MAX_MISSING_OBJECTS)
@@ -150,6 +155,7 @@ pub fn render_components(
         space,
         beauty: Vec::with_capacity(pixels),
         labels: Vec::with_capacity(pixels),
+        behind: Vec::with_capacity(pixels),
         mixed: Vec::with_capacity(pixels),
         offsets: Vec::with_capacity(pixels + 1),
         entries: Vec::new(),
@@ -160,6 +166,7 @@ pub fn render_components(
     for row in rows {
         components.beauty.extend(row.beauty);
         components.labels.extend(row.labels);
+        components.behind.extend(row.behind);
         components.mixed.extend(row.mixed);
         let base = components.entries.len() as u32;
         let mut end = base;
@@ -184,6 +191,7 @@ fn render_row(ctx: &Context, camera: &PinholeCamera, width: u32, y: u32, spp: u3
     let mut row = Row {
         beauty: Vec::with_capacity(width as usize),
         labels: Vec::with_capacity(width as usize),
+        behind: Vec::with_capacity(width as usize),
         mixed: Vec::with_capacity(width as usize),
         counts: Vec::with_capacity(width as usize),
         entries: Vec::new(),
@@ -195,6 +203,7 @@ fn render_row(ctx: &Context, camera: &PinholeCamera, width: u32, y: u32, spp: u3
         pixel.entries.clear();
         let mut sum = DVec3::ZERO;
         let mut labels = Vec::with_capacity(1);
+        let mut behind = MISS;
         for index in 0..spp {
             let point = DVec2::new(f64::from(x), f64::from(y)) + sample_in_pixel(x, y, index, spp);
             let ray = camera.ray(point);
@@ -205,12 +214,16 @@ fn render_row(ctx: &Context, camera: &PinholeCamera, width: u32, y: u32, spp: u3
             }
             sum += colour;
             let hit = recorder.primary_hit();
+            if labels.is_empty() {
+                behind = recorder.behind;
+            }
             labels.push(hit.map_or(MISS, |h| h.object as u32));
             pixel.absorb(&recorder.tally);
         }
         row.beauty.push((sum * scale).to_array());
         let first = labels.first().copied().unwrap_or(MISS);
         row.labels.push(first);
+        row.behind.push(behind);
         row.mixed.push(labels.iter().any(|&l| l != first));
         pixel.entries.sort_unstable_by_key(|(c, _)| *c);
         row.counts.push(pixel.entries.len() as u32);

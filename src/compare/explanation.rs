@@ -5,8 +5,12 @@ use serde::Serialize;
 
 use super::bugs::{ClampBug, NormalBug, Part, SpecularBug};
 use super::encoding::Encoding;
+use super::regions::PixelBox;
+use super::shape_guess::ShapeGuess;
 use super::spot_bugs::SpotBug;
-use crate::scene::{ClampConvention, Conventions, Light, MirrorConvention, Quantise, Scene};
+use crate::scene::Conventions;
+
+pub use super::summary::summary;
 
 /// The term an explanation names.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
@@ -85,6 +89,9 @@ pub enum Cause {
         /// keeps the limit.
         depth: Option<u32>,
     },
+    /// The other picture draws an object where raylab sees the background or another
+    /// object (the explanation's `bbox` says where), shaped like this.
+    ExtraObject(ShapeGuess),
     /// Pixels at an object's outline differ, no factor explains them.
     Silhouette,
     /// Shading varies across an object in a way no factor or known bug explains.
@@ -108,7 +115,9 @@ impl Cause {
             Cause::Clamp(b) => b.name(),
             Cause::Spot(b) => b.name(),
             Cause::Missing(Some(Part::Back)) => "one-sided",
-            Cause::Missing(_) => "missing",
+            Cause::Missing(Some(Part::Whole) | None) => "missing-object",
+            Cause::Missing(Some(_)) => "missing-part",
+            Cause::ExtraObject(_) => "extra-object",
             Cause::Encoding(Encoding::LinearTruncate) => "truncate",
             Cause::Encoding(e) => e.name(),
             Cause::Conventions { depth: Some(_), .. } => "no-depth-limit",
@@ -149,6 +158,12 @@ pub struct Explanation {
     pub pixels: Vec<u32>,
     /// Why.
     pub cause: Cause,
+    /// For an object missing or extra: the bounding box of its pixels (for a missing
+    /// one, where raylab draws it).
+    pub bbox: Option<PixelBox>,
+    /// Other readings that fit the same pixels as well (the less specific, or another
+    /// story), each a short phrase.
+    pub fits_as_well: Vec<String>,
     /// How sure the numbers make it, 0 to 1.
     pub confidence: f64,
     /// One sentence for a reader.
@@ -173,150 +188,4 @@ impl Explanation {
     pub fn covers(&self, p: u32) -> bool {
         self.pixels.binary_search(&p).is_ok()
     }
-}
-
-fn light_name(scene: &Scene, light: usize) -> String {
-    let kind = scene.lights.get(light).map_or("?", Light::kind_name);
-    format!("light {light} ({kind})")
-}
-
-fn on_object(name: Option<&str>) -> String {
-    name.map_or_else(String::new, |n| format!(" on '{n}'"))
-}
-
-/// The sentence for an explanation whose other fields are set.
-#[must_use]
-pub fn summary(e: &Explanation, scene: &Scene) -> String {
-    let object = e.object_name.as_deref();
-    let light = e.light.map(|l| light_name(scene, l));
-    let f = e.factor;
-    let weight = 1.0 - f;
-    let term = e.term.name();
-    match e.cause {
-        Cause::Factor if e.term == ExplainedTerm::Shadows => {
-            let whose = light.map_or("Shadows".to_owned(), |l| format!("Shadows of {l}"));
-            if f < 0.1 {
-                format!(
-                    "{whose}{} are missing: shadowed places are lit in the other image (shadow factor {f:.2}).",
-                    on_object(object)
-                )
-            } else {
-                format!(
-                    "{whose}{} take away {f:.2} of the light raylab's take away.",
-                    on_object(object)
-                )
-            }
-        }
-        Cause::Factor => {
-            let subject = match (&light, object) {
-                (Some(l), Some(o)) => format!("The {term} of {l} on '{o}'"),
-                (Some(l), None) => format!("The {term} of {l}"),
-                (None, Some(o)) => format!("The {term} of '{o}'"),
-                (None, None) => format!("The {term} term"),
-            };
-            if f < 0.05 {
-                format!("{subject} is missing in the other image (factor {f:.2}).")
-            } else {
-                format!("{subject} is {f:.2} times raylab's in the other image.")
-            }
-        }
-        Cause::Normal(bug) => match object {
-            Some(o) => format!(
-                "'{o}' is shaded as if {} (the bug's picture fits with weight {weight:.2}).",
-                bug.describe()
-            ),
-            None => format!(
-                "Every object is shaded as if {} (weight {weight:.2}).",
-                bug.describe()
-            ),
-        },
-        Cause::Highlight(bug) => format!(
-            "Highlights{} look as if {} (weight {weight:.2}).",
-            on_object(object),
-            bug.describe()
-        ),
-        Cause::Clamp(bug) => format!(
-            "Reflections{} are darker where they exceed 1: {} (weight {weight:.2}).",
-            on_object(object).replace(" on ", " in "),
-            bug.describe()
-        ),
-        Cause::Spot(bug) => format!(
-            "{} lights the other image as if {} (weight {weight:.2}; explains {:.1}% of the difference).",
-            capitalised(light.as_deref().unwrap_or("a spot light")),
-            bug.describe(),
-            100.0 * e.share
-        ),
-        Cause::Missing(part) => {
-            let o = object.unwrap_or("an object");
-            match part {
-                Some(Part::Back) => format!(
-                    "'{o}' is invisible from behind in the other image: a one-sided plane (weight {weight:.2})."
-                ),
-                Some(Part::Whole) | None => format!(
-                    "'{o}' is missing in the other image: what lies behind it shows instead (weight {weight:.2})."
-                ),
-                Some(p) => format!(
-                    "{} of '{o}' are missing in the other image: what lies behind shows instead (weight {weight:.2}).",
-                    capitalised(p.describe())
-                ),
-            }
-        }
-        Cause::Conventions {
-            depth: Some(depth), ..
-        } => format!(
-            "The other image's rays bounce past the scene's ray depth ({}): its mirrors facing each other go on to depth {depth} or more, as a tracer without a depth limit does.",
-            scene.render.max_depth
-        ),
-        Cause::Conventions { other, .. } => {
-            let mirror = match other.mirror {
-                MirrorConvention::Blend => "blends mirrors as (1 - km) local + km reflected",
-                MirrorConvention::Add => "adds mirrors as local + km reflected",
-            };
-            let clamp = match other.clamp {
-                ClampConvention::EachRay => "clamps each ray's colour to [0, 1]",
-                ClampConvention::Pixel => "clamps only the pixel",
-            };
-            format!(
-                "The other image follows other conventions than the scene: it {mirror} and {clamp} (render.conventions: (mirror: {:?}, clamp: {:?})).",
-                other.mirror, other.clamp
-            )
-        }
-        Cause::Encoding(encoding) => {
-            let scene_writes = match scene.render.conventions.quantise {
-                Quantise::Round => "round(255 c)",
-                Quantise::Truncate => "floor(255 c), as the scene's conventions say",
-            };
-            match encoding {
-                Encoding::LinearTruncate => format!(
-                    "The other image truncates to 8 bits, floor(255 c), where raylab writes {scene_writes}."
-                ),
-                Encoding::LinearRound => format!(
-                    "The other image rounds to 8 bits, round(255 c), where raylab writes {scene_writes}."
-                ),
-                other => format!(
-                    "The other image is written as {}, raylab's as linear {scene_writes}.",
-                    other.name()
-                ),
-            }
-        }
-        Cause::Silhouette => format!(
-            "The outline of {} differs over {} pixels: the shape is elsewhere, another size, or hit where it should not be.",
-            object.map_or("the objects".to_owned(), |o| format!("'{o}'")),
-            e.pixels.len()
-        ),
-        Cause::Shading => format!(
-            "Shading varies across {} in a way no factor or known bug explains; it follows the {term} term, as a wrong normal or reflected vector would.",
-            object.map_or("the picture".to_owned(), |o| format!("'{o}'"))
-        ),
-        Cause::DifferentScene { objects } => format!(
-            "The picture looks like another version of this scene: the outlines of {objects} objects differ and no factor or known bug explains most of the difference. Was it rendered from an older scene file (the camera or objects moved)? The verdicts below are weak until the two agree."
-        ),
-    }
-}
-
-fn capitalised(text: &str) -> String {
-    let mut chars = text.chars();
-    chars
-        .next()
-        .map_or_else(String::new, |c| c.to_uppercase().chain(chars).collect())
 }

@@ -10,7 +10,6 @@ use super::channels::{ChannelSpace, Family, Kind};
 use super::components::{Components, MAX_MISSING_OBJECTS};
 use super::spot_bugs::SpotBug;
 use super::target::{FitState, Target};
-use crate::trace::shapes::Primitive;
 
 /// A set of channels scaled by one number.
 #[derive(Clone, Debug, PartialEq)]
@@ -42,9 +41,10 @@ fn choices(count: usize) -> impl Iterator<Item = Option<usize>> + Clone {
 }
 
 impl Groups {
-    /// The groups of a world numbered by `space` whose objects have these shapes.
+    /// The groups of a world numbered by `space` whose objects are made of these parts
+    /// ([`Part::of_scene_object`]).
     #[must_use]
-    pub fn new(space: ChannelSpace, shapes: &[Primitive]) -> Self {
+    pub fn new(space: ChannelSpace, parts_of: &[&'static [Part]]) -> Self {
         let mut list = Vec::new();
         let objects = space.objects;
         let mut add = |family, light, object: Option<usize>, part, kinds: Vec<Kind>| {
@@ -122,20 +122,25 @@ impl Groups {
                 );
             }
         }
-        for (object, &shape) in shapes.iter().enumerate().take(MAX_MISSING_OBJECTS) {
-            let parts = Part::of_shape(shape);
+        for (object, &parts) in parts_of.iter().enumerate().take(MAX_MISSING_OBJECTS) {
+            // The whole object missing takes its shadows with it; a part alone (a
+            // plane's back) still casts them.
+            let whole = |mut kinds: Vec<Kind>| {
+                kinds.push(Kind::ShadowCast);
+                kinds
+            };
             for &part in parts {
-                add(
-                    Family::Missing,
-                    None,
-                    Some(object),
-                    Some(part),
-                    vec![Kind::Missing(part)],
-                );
+                let kinds = vec![Kind::Missing(part)];
+                let kinds = if parts.len() == 1 {
+                    whole(kinds)
+                } else {
+                    kinds
+                };
+                add(Family::Missing, None, Some(object), Some(part), kinds);
             }
             if parts.len() > 1 {
                 let kinds = parts.iter().map(|&p| Kind::Missing(p)).collect();
-                add(Family::Missing, None, Some(object), None, kinds);
+                add(Family::Missing, None, Some(object), None, whole(kinds));
             }
         }
         // A spot light's bug is the light's, wherever it shows.

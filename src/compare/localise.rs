@@ -1,15 +1,19 @@
 //! What no factor or known bug explains, localised. After the search, pixels still off
 //! by more than [`OFF_LEVELS`] levels are sorted into two verdicts:
 //!
-//! - near an outline in raylab's object-id view (within [`OUTLINE_REACH`] pixels):
-//!   *geometry*, the surfaces differ there (a silhouette that moved, grew or shrank);
-//! - inside an object: *shading* that varies across it, labelled with the term whose
-//!   picture the left-over difference follows most (its magnitude-weighted overlap).
+//! - near an outline in raylab's object-id view (within [`OUTLINE_REACH`] pixels), where
+//!   the other picture shows another surface than raylab's there (its colour is what
+//!   the fitted model shows on another object or the background nearby, and not what
+//!   it shows on the pixel's own object): *geometry*, a silhouette that moved, grew or
+//!   shrank. Lighting that differs at an edge is no evidence of that;
+//! - inside an object (or at its edge without that evidence): *shading* that varies
+//!   across it, labelled with the term whose picture the left-over difference follows
+//!   most (its magnitude-weighted overlap).
 
 use super::channels::Kind;
 use super::components::{Components, MISS};
 use super::explanation::{Cause, ExplainedTerm, Explanation, summary};
-use super::target::FitState;
+use super::target::{FitState, Target};
 use crate::scene::Scene;
 
 /// A pixel counts as still different when some channel is this many 8-bit levels outside
@@ -18,6 +22,16 @@ pub const OFF_LEVELS: f64 = 2.0;
 
 /// Pixels this close to an outline count as geometry.
 pub const OUTLINE_REACH: i64 = 2;
+
+/// How far around an outline pixel to look for the surface the other picture shows.
+const LOOK: i64 = 3;
+
+/// The other picture shows a neighbour's surface where its colour is within this many
+/// 8-bit levels of the model's there (in every channel)...
+const LOOKS_LIKE_LEVELS: f64 = 6.0;
+
+/// ...and at most this fraction of its distance from the pixel's own surface nearby.
+const CLEARLY_NEARER: f64 = 0.5;
 
 /// A localised verdict must explain at least this share to be reported.
 pub const MIN_SHARE: f64 = 0.02;
@@ -81,6 +95,62 @@ fn outline_object(components: &Components, p: usize) -> Option<usize> {
     None
 }
 
+/// Whether the other picture at `p` shows another surface than raylab's there. Either
+/// its colour is, within [`LOOK`] pixels, what the fitted model shows on another object
+/// (or the background), and clearly not what the model shows on `p`'s own object nor
+/// what the other picture shows on it where the two pictures agree; or the other
+/// picture itself is smooth from `p` into another object's pixels and has an edge
+/// towards `p`'s own (its outline is elsewhere). Where the other picture is clipped
+/// white, nothing tells.
+fn object_differs(components: &Components, target: &Target, state: &FitState, p: usize) -> bool {
+    let w = i64::from(components.width);
+    let (x, y) = (p as i64 % w, p as i64 / w);
+    let off = (OFF_LEVELS / 255.0).powi(2);
+    let theirs = target.middle[p];
+    // Channels the other picture clipped say nothing of the surface: white is white.
+    let seen = target.weight[p];
+    if seen == [0.0; 3] {
+        return false;
+    }
+    let levels = |colour: [f64; 3]| {
+        (0..3)
+            .filter(|&c| seen[c] > 0.0)
+            .map(|c| (theirs[c] - colour[c].clamp(0.0, 1.0)).abs())
+            .fold(0.0, f64::max)
+            * 255.0
+    };
+    let own = components.labels[p];
+    // Nearest colours on p's own object and on others: the model's, the other
+    // picture's, and the other picture's where it agrees with the model.
+    let (mut model_own, mut model_other) = (levels(state.model[p]), f64::INFINITY);
+    let (mut other_own, mut other_other) = (f64::INFINITY, f64::INFINITY);
+    let mut agreeing_own = f64::INFINITY;
+    for ny in (y - LOOK).max(0)..=(y + LOOK).min(i64::from(components.height) - 1) {
+        for nx in (x - LOOK).max(0)..=(x + LOOK).min(w - 1) {
+            let q = (ny * w + nx) as usize;
+            // A pixel whose samples saw two surfaces is neither side's.
+            if components.mixed[q] || q == p {
+                continue;
+            }
+            let (by_model, by_other) = (levels(state.model[q]), levels(target.middle[q]));
+            if components.labels[q] == own {
+                model_own = model_own.min(by_model);
+                other_own = other_own.min(by_other);
+                if state.error[q] < off {
+                    agreeing_own = agreeing_own.min(by_other);
+                }
+            } else {
+                model_other = model_other.min(by_model);
+                other_other = other_other.min(by_other);
+            }
+        }
+    }
+    let nearer = |to_other: f64, to_own: f64| {
+        to_other <= LOOKS_LIKE_LEVELS && to_other <= CLEARLY_NEARER * to_own
+    };
+    nearer(model_other, model_own.min(agreeing_own)) || nearer(other_other, other_own)
+}
+
 /// The term whose picture a pixel's left-over difference overlaps, weighted.
 fn term_weights(components: &Components, p: usize, size: f64, weights: &mut [f64; 5]) {
     for entry in components.pixel(p) {
@@ -105,10 +175,12 @@ struct Pile {
     terms: [f64; 5],
 }
 
-/// The localised verdicts for what `state` leaves unexplained, as shares of `total`.
+/// The localised verdicts for what `state` leaves unexplained of `target`, as shares
+/// of `total`.
 #[must_use]
 pub fn localise(
     components: &Components,
+    target: &Target,
     state: &FitState,
     scene: &Scene,
     total: f64,
@@ -122,7 +194,7 @@ pub fn localise(
         if error < off {
             continue;
         }
-        let pile = if near[p] {
+        let pile = if near[p] && object_differs(components, target, state, p) {
             &mut outline[outline_object(components, p).unwrap_or(objects)]
         } else if components.labels[p] != MISS {
             let pile = &mut inside[components.labels[p] as usize];
@@ -150,6 +222,8 @@ pub fn localise(
                 pixels: pile.pixels,
                 cause,
                 confidence,
+                bbox: None,
+                fits_as_well: Vec::new(),
                 summary: String::new(),
             };
             e.summary = summary(&e, scene);

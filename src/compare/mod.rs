@@ -20,16 +20,24 @@ pub mod conventions_fit;
 pub mod different_scene;
 pub mod encoding;
 pub mod error;
+pub mod explain;
 pub mod explanation;
+pub mod extra_object;
+pub mod extra_shadow;
 pub mod groups;
 pub mod localise;
 pub mod other_image;
 pub mod record_context;
 pub mod recorder;
+pub mod regions;
+pub mod relit;
 pub mod report;
 pub mod report_image;
+pub mod rivals;
 pub mod search;
+pub mod shape_guess;
 pub mod spot_bugs;
+pub mod summary;
 pub mod target;
 pub mod verdicts;
 
@@ -156,36 +164,23 @@ fn compare_scene(
         };
         return with_conventions(scene, meshes, other, spp, progress, &better, found);
     }
-    if total >= MIN_ERROR {
-        let shapes: Vec<_> = world.objects.iter().map(|o| o.shape).collect();
-        let groups = groups::Groups::new(components.space, &shapes);
-        let steps = search::search(&components, &groups, &target, &mut state, floor);
-        explanations.extend(verdicts::explain_steps(
-            &steps,
-            &groups,
-            &components,
-            scene,
-            &world,
-            total,
-        ));
-    }
-    let localised = if total >= MIN_ERROR {
-        localise::localise(&components, &state, scene, total)
+    let explained = if total >= MIN_ERROR {
+        explain::explain(&components, scene, &world, &target, &state, (total, floor))
     } else {
-        Vec::new()
+        explain::Explained {
+            explanations: Vec::new(),
+            unexplained_share: 0.0,
+        }
     };
-    let localised_share: f64 = localised.iter().map(|e| e.share).sum();
-    explanations.extend(localised);
-    explanations.sort_by(|a, b| b.share.total_cmp(&a.share));
-    let unexplained_share = if total >= MIN_ERROR {
-        (state.total / total - localised_share).max(0.0)
-    } else {
-        0.0
-    };
-    if let Some(mut verdict) = different_scene::different_scene(&explanations, unexplained_share) {
-        verdict.summary = explanation::summary(&verdict, scene);
-        explanations.insert(0, verdict);
-    }
+    explanations.extend(explained.explanations);
+    // Largest share first, after a different-scene verdict, which frames the rest.
+    explanations.sort_by(|a, b| {
+        let framing = |e: &Explanation| e.term == ExplainedTerm::Scene;
+        framing(b)
+            .cmp(&framing(a))
+            .then(b.share.total_cmp(&a.share))
+    });
+    let unexplained_share = explained.unexplained_share;
 
     let raylab = components.image();
     let raylab_rgb = report::rgb_of(&raylab);
@@ -256,6 +251,8 @@ fn with_conventions(
         factor: 1.0,
         share: (before - after) / found.total,
         pixels: better.pixels.clone(),
+        bbox: None,
+        fits_as_well: Vec::new(),
         cause: Cause::Conventions {
             scene: scene.render.conventions,
             other: better.conventions,
@@ -292,6 +289,8 @@ fn encoding_explanation(
         share: (before.total - after.total) / total,
         pixels,
         cause: Cause::Encoding(encoding),
+        bbox: None,
+        fits_as_well: Vec::new(),
         confidence: 1.0 - after.total / before.total.max(f64::MIN_POSITIVE),
         summary: String::new(),
     };

@@ -5,7 +5,7 @@
 use serde::Serialize;
 
 use super::encoding::Encoding;
-use super::explanation::Explanation;
+use super::explanation::{Cause, Explanation};
 use super::other_image::OtherImage;
 use crate::trace::Image;
 use crate::trace::encode_linear;
@@ -75,6 +75,15 @@ struct ExplanationJson<'a> {
     cause: &'static str,
     confidence: f64,
     sure: &'static str,
+    /// For an object missing or extra: `[x0, y0, x1, y1]`, inclusive.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    bbox: Option<[u32; 4]>,
+    /// For an extra object: the shape its outline suggests.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    shape: Option<&'static str>,
+    /// Other readings that fit as well.
+    #[serde(skip_serializing_if = "<[String]>::is_empty")]
+    fits_as_well: &'a [String],
 }
 
 /// The JSON form of a comparison.
@@ -131,6 +140,12 @@ impl Comparison {
                     cause: e.cause.name(),
                     confidence: round4(e.confidence),
                     sure: e.sureness(),
+                    bbox: e.bbox.map(|b| [b.x0, b.y0, b.x1, b.y1]),
+                    fits_as_well: &e.fits_as_well,
+                    shape: match e.cause {
+                        Cause::ExtraObject(shape) => Some(shape.name()),
+                        _ => None,
+                    },
                 })
                 .collect(),
             unexplained_share: round4(self.unexplained_share),

@@ -5,14 +5,15 @@
 //! clipping and rounding count). Bugs and missing parts must fit with a weight near 1
 //! (the bug is there or not); term factors may take any value >= 0.
 //!
-//! The best group that would tell a *different* story (another term, bug, light or
-//! object) about the same pixels measures how sure the verdict is.
+//! The groups that compete with each step ([`super::rivals`]) say how sure it is, what
+//! fits as well, and which of two that fit the same goes first.
 
 use rayon::prelude::*;
 
 use super::channels::{Family, Kind};
 use super::components::Components;
 use super::groups::{Group, Groups};
+use super::rivals::{alike, margin, prefer_specific};
 use super::target::{FitState, Target};
 
 /// Rounds of the search at most.
@@ -43,6 +44,9 @@ pub struct Step {
     pub energy_by_object: Vec<f64>,
     /// Squared size of the change from each light (per-light families).
     pub energy_by_light: Vec<f64>,
+    /// Other groups that fit alike (their gain within [`ALIKE`] of this one's, and taken
+    /// by it): another reading of the same pixels, more general or another story.
+    pub alike: Vec<usize>,
 }
 
 /// Whether the family scales raylab's terms (any factor >= 0) rather than adding a bug.
@@ -56,13 +60,6 @@ fn is_term(family: Family) -> bool {
             | Family::Specular
             | Family::Background
     )
-}
-
-/// Whether two groups tell the same story (one may be more specific than the other).
-#[must_use]
-pub fn compatible(a: &Group, b: &Group) -> bool {
-    let agree = |x: Option<usize>, y: Option<usize>| x.is_none() || y.is_none() || x == y;
-    a.family == b.family && agree(a.light, b.light) && agree(a.object, b.object)
 }
 
 /// The lowest and highest current scale of a group's channels.
@@ -193,38 +190,8 @@ fn rank(
         .filter_map(|(i, g)| fit(g, correlations[i], norms[i], scale).map(|(c, gain)| (i, c, gain)))
         .collect();
     ranked.sort_by(|a, b| b.2.total_cmp(&a.2));
+    prefer_specific(groups, &mut ranked);
     ranked
-}
-
-/// How sure a step is against its best competitor: among the groups telling another
-/// story, those whose gain the step took (it fell by half or more once the step was
-/// applied; a group that keeps its gain explains something else), the best. With `g`
-/// the step's gain, `g_r` the competitor's and `left` the error the step leaves on the
-/// pixels it changed, `(g - g_r) / (g - g_r + left)`: what the step explains beyond the
-/// competitor, against what it leaves unexplained where it acts.
-fn margin(
-    groups: &Groups,
-    chosen: usize,
-    before: &[(usize, f64, f64)],
-    after: &[(usize, f64, f64)],
-    left: f64,
-) -> f64 {
-    let gain = before.iter().find(|r| r.0 == chosen).map_or(0.0, |r| r.2);
-    let rival = before
-        .iter()
-        .filter(|r| r.0 != chosen && !compatible(&groups.list[chosen], &groups.list[r.0]))
-        .filter(|r| {
-            let kept = after.iter().find(|a| a.0 == r.0).map_or(0.0, |a| a.2);
-            kept < 0.5 * r.2
-        })
-        .map(|r| r.2)
-        .fold(0.0, f64::max);
-    let beyond = (gain - rival).max(0.0);
-    if beyond + left <= 0.0 {
-        0.0
-    } else {
-        beyond / (beyond + left)
-    }
 }
 
 /// Runs the search on `state` (changed in place), keeping steps that lower the error by
@@ -278,6 +245,7 @@ pub fn search(
             coefficient: c,
             gain,
             margin: margin(groups, index, &ranked, &after, left),
+            alike: alike(groups, index, &ranked, &after),
             pixels: change
                 .pixels
                 .iter()
@@ -320,17 +288,5 @@ mod tests {
         // Shadows take away between none and all of a light.
         let (c, _) = fit(&group(Family::Shadow), 5.0, 1.0, &[0.0]).unwrap();
         assert_eq!(c, 1.0);
-    }
-
-    #[test]
-    fn groups_that_name_different_lights_or_terms_compete() {
-        let mut a = group(Family::Diffuse);
-        let mut b = group(Family::Diffuse);
-        assert!(compatible(&a, &b));
-        (a.light, b.light) = (Some(0), Some(1));
-        assert!(!compatible(&a, &b));
-        b.light = None;
-        assert!(compatible(&a, &b));
-        assert!(!compatible(&a, &group(Family::Specular)));
     }
 }

@@ -52,6 +52,19 @@ impl Target {
         }
     }
 
+    /// This target with `pixels` out of the fit: any value is right there, and the
+    /// linear fit does not see them.
+    #[must_use]
+    pub fn without(&self, pixels: &[u32]) -> Self {
+        let mut target = self.clone();
+        for &p in pixels {
+            let p = p as usize;
+            target.intervals[p] = [(f64::NEG_INFINITY, f64::INFINITY); 3];
+            target.weight[p] = [0.0; 3];
+        }
+        target
+    }
+
     /// The error of `model` at pixel `p`.
     #[inline]
     #[must_use]

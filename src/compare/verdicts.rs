@@ -11,10 +11,12 @@
 //! competitor ([`super::search::Step::margin`]: 1 when nothing else explains those
 //! pixels, 0 when a competitor explains them as well).
 
+use super::bugs::Part;
 use super::channels::Family;
 use super::components::Components;
 use super::explanation::{Cause, ExplainedTerm, Explanation, summary};
-use super::groups::Groups;
+use super::groups::{Group, Groups};
+use super::regions::PixelBox;
 use super::search::Step;
 use crate::scene::Scene;
 use crate::trace::World;
@@ -33,13 +35,20 @@ fn concentrated(energy: &[f64]) -> Option<usize> {
     (total > 0.0 && most >= NAMED * total).then_some(index)
 }
 
+/// Where raylab draws `object` among `pixels` (its first hits there; where it is only
+/// seen in mirrors, all of them).
+fn drawn_box(components: &Components, object: usize, pixels: &[u32]) -> Option<PixelBox> {
+    let own: Vec<u32> = pixels
+        .iter()
+        .copied()
+        .filter(|&p| components.labels[p as usize] == object as u32)
+        .collect();
+    PixelBox::of(if own.is_empty() { pixels } else { &own }, components.width)
+}
+
 /// The term and cause a family stands for; `split` tells a normal bug's diffuse from
 /// its specular share.
-fn term_and_cause(
-    family: Family,
-    split: [f64; 2],
-    part: Option<super::bugs::Part>,
-) -> (ExplainedTerm, Cause) {
+fn term_and_cause(family: Family, split: [f64; 2], part: Option<Part>) -> (ExplainedTerm, Cause) {
     match family {
         Family::Ambient => (ExplainedTerm::Ambient, Cause::Factor),
         Family::Reflection => (ExplainedTerm::Reflection, Cause::Factor),
@@ -77,11 +86,7 @@ pub fn explain_steps(
     let mut out: Vec<(Explanation, f64)> = Vec::new();
     for step in steps {
         let group = &groups.list[step.group];
-        let split = group.members.iter().fold([0.0; 2], |acc, &m| {
-            let s = components.split[m as usize];
-            [acc[0] + s[0], acc[1] + s[1]]
-        });
-        let (term, cause) = term_and_cause(group.family, split, group.part);
+        let (term, cause) = term_and_cause(group.family, split_of(group, components), group.part);
         // Lights are named only by the group: every light is every light, even where
         // one of them dominates.
         let light = group.light.map(|l| world.light_scene_index[l]);
@@ -94,11 +99,17 @@ pub fn explain_steps(
         } else {
             step.margin
         };
+        let readings: Vec<String> = step
+            .alike
+            .iter()
+            .map(|&g| reading(&groups.list[g], components, world, scene))
+            .collect();
         let found = out.iter_mut().find(|(e, _)| {
             e.term == term && e.cause == cause && e.light == light && e.object == object
         });
         match found {
             Some((e, coefficient)) => {
+                e.fits_as_well.extend(readings);
                 *coefficient += step.coefficient;
                 let weight = e.share + step.gain / total;
                 e.confidence = (e.confidence * e.share + confidence * step.gain / total) / weight;
@@ -118,6 +129,8 @@ pub fn explain_steps(
                     pixels: step.pixels.clone(),
                     cause,
                     confidence,
+                    bbox: None,
+                    fits_as_well: readings,
                     summary: String::new(),
                 },
                 step.coefficient,
@@ -134,8 +147,49 @@ pub fn explain_steps(
             };
             // Rounding noise around 0 reads as "-0.00" otherwise.
             e.factor = if factor.abs() < 1e-6 { 0.0 } else { factor };
+            if let (Cause::Missing(Some(Part::Whole) | None), Some(object)) = (e.cause, e.object) {
+                e.bbox = drawn_box(components, object, &e.pixels);
+            }
+            e.fits_as_well.sort();
+            e.fits_as_well.dedup();
             e.summary = summary(&e, scene);
+            if !e.fits_as_well.is_empty() {
+                let list = e.fits_as_well.join("; ");
+                e.summary.push_str(&format!(" Fits as well: {list}."));
+            }
             e
         })
         .collect()
+}
+
+/// The diffuse and specular shares of a group's normal-bug channels.
+fn split_of(group: &Group, components: &Components) -> [f64; 2] {
+    group.members.iter().fold([0.0; 2], |acc, &m| {
+        let s = components.split[m as usize];
+        [acc[0] + s[0], acc[1] + s[1]]
+    })
+}
+
+/// A group read as a short phrase ("the diffuse term of every light", "the ambient
+/// term on 'floor'", "the normal-without-z bug on 'cone'"), for what fits as well.
+fn reading(group: &Group, components: &Components, world: &World, scene: &Scene) -> String {
+    let (term, cause) = term_and_cause(group.family, split_of(group, components), group.part);
+    let what = match cause {
+        Cause::Factor => format!("the {} term", term.name()),
+        Cause::Missing(_) => cause.name().to_owned(),
+        other => format!("the {} bug", other.name()),
+    };
+    let per_light = matches!(
+        group.family,
+        Family::Diffuse | Family::Specular | Family::Shadow
+    );
+    let light = match group.light {
+        Some(l) => format!(" of light {}", world.light_scene_index[l]),
+        None if per_light => " of every light".to_owned(),
+        None => String::new(),
+    };
+    let object = group
+        .object
+        .map_or_else(String::new, |o| format!(" on '{}'", scene.objects[o].name));
+    format!("{what}{light}{object}")
 }

@@ -28,6 +28,9 @@ pub struct Bugs {
     pub n_minus_l: bool,
     /// Cone side normals lose their object-space z component.
     pub cone_normal_without_z: bool,
+    /// An object (scene index) whose normal is left in object space: not taken to the
+    /// world by the normal matrix (a bug the catalogue does not know).
+    pub normal_in_object_space: Option<usize>,
     /// Each ray's local colour clamped before the reflection is added.
     pub clamp_before_reflection: bool,
     /// Planes cannot be hit from behind.
@@ -66,6 +69,10 @@ impl Shader<'_> {
 
     fn normal(&self, hit: &SurfacePoint, dir: DVec3) -> DVec3 {
         let object = &self.world.objects[hit.object];
+        if self.bugs.normal_in_object_space == Some(hit.object) {
+            let n = (object.world_from_object.matrix3.transpose() * hit.n_outward).normalize();
+            return if n.dot(dir) > 0.0 { -n } else { n };
+        }
         if !(self.bugs.cone_normal_without_z && object.shape == Primitive::Cone) {
             return hit.n;
         }

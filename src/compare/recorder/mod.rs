@@ -10,9 +10,12 @@
 
 use glam::DVec3;
 
-use super::bugs::{ClampBug, LocalLight, NormalBug, Part, SpecularBug, local_terms};
+use super::bugs::{ClampBug, LocalLight, NormalBug, SpecularBug, local_terms};
 use super::channels::Kind;
-use super::record_context::{Context, trace_again};
+use super::components::MISS;
+mod missing;
+
+use super::record_context::Context;
 use super::spot_bugs::{SpotBug, cone_changes, no_falloff_change};
 use crate::trace::shapes::Primitive;
 use crate::trace::{
@@ -83,6 +86,9 @@ pub struct SampleRecorder<'c, 'w> {
     /// Per channel, squared changes of the diffuse and of the specular part (for the
     /// normal bugs: which term shows the bug more).
     pub split: Vec<[f64; 2]>,
+    /// The scene object the current sample's camera ray would meet were the one it hit
+    /// missing ([`MISS`]: none, or that object is not tried missing).
+    pub behind: u32,
 }
 
 impl<'c, 'w> SampleRecorder<'c, 'w> {
@@ -94,6 +100,7 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
             chain: Vec::new(),
             tally: Tally::default(),
             split: vec![[0.0; 2]; ctx.space.count()],
+            behind: MISS,
         }
     }
 
@@ -101,6 +108,7 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
     pub fn start(&mut self) {
         self.chain.clear();
         self.tally.entries.clear();
+        self.behind = MISS;
     }
 
     /// The camera ray's hit of the current sample, if it hit something.
@@ -244,25 +252,6 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
     }
 }
 
-impl SampleRecorder<'_, '_> {
-    /// What the ray of `bounce` would return if the object it hit were missing (traced
-    /// again in the world without it), as a change of the pixel.
-    fn missing(&mut self, bounce: &Bounce, colour: DVec3) {
-        let Some(hit) = bounce.hit else { return };
-        let Some(Some(world)) = self.ctx.without.get(hit.object) else {
-            return;
-        };
-        let seen = trace_again(world, &bounce.ray);
-        if seen.is_finite()
-            && let Some(world_object) = bounce.world_object
-        {
-            let part = Part::at(&self.ctx.world.objects[world_object], &hit, bounce.ray_dir);
-            let channel = self.channel(Kind::Missing(part), hit.object);
-            self.tally.add(channel, bounce.throughput * (seen - colour));
-        }
-    }
-}
-
 impl Recorder for SampleRecorder<'_, '_> {
     fn started(&mut self, node: u32, _depth: u32, from: Option<(u32, Branch)>) {
         self.begin(node, from);
@@ -331,6 +320,13 @@ impl Recorder for SampleRecorder<'_, '_> {
                 self.channel(Kind::Shadow(index), object),
                 t * hidden * (diffuse + specular),
             );
+            self.shadow_cast(
+                record,
+                &hit,
+                &sample,
+                world_object,
+                t * (diffuse + specular),
+            );
         }
         self.bugs(&bounce, &hit, record, &sample);
     }
@@ -392,6 +388,6 @@ impl Recorder for SampleRecorder<'_, '_> {
                 self.tally.add(channel, change);
             }
         }
-        self.missing(&bounce, colour);
+        self.missing(&bounce, colour, d == 0);
     }
 }
