@@ -8,6 +8,7 @@ mod hit_cache;
 mod keep_rule;
 mod light_factors;
 mod pixel_colour;
+mod pixel_rays;
 mod quick_shade;
 mod tile_rays;
 
@@ -15,5 +16,6 @@ pub(crate) use dependence::{DependenceRule, TermDependence};
 pub use hit_cache::{HitCache, MAX_CACHE_BYTES, RetraceReason, Reuse, cache_fits, cache_serves};
 pub(crate) use light_factors::LightSlot;
 pub(crate) use pixel_colour::PixelColour;
+pub(crate) use pixel_rays::PixelRays;
 pub(crate) use quick_shade::QuickShade;
-pub(crate) use tile_rays::{PixelRays, SlotColumns, TileRays};
+pub(crate) use tile_rays::{SlotColumns, TileRays};

@@ -1,33 +1,29 @@
-//! One tile's rays during the one-sample pass ([`crate::trace::render::cached`]): the previous cache's
-//! chains and light slots read in place, and [`PixelRays`], the [`RaySource`] that
-//! answers a pixel's rays from them and traces (and keeps) whatever they lack.
+//! One tile's rays during the one-sample pass ([`crate::trace::render::cached`]): the
+//! previous cache's chains and light slots read in place, grown where a pixel needs a ray
+//! they lack (`super::pixel_rays` answers the shader from them).
 
 use std::sync::Arc;
 
 use glam::DVec3;
 
-use super::chains::{
-    CachedHit, Chains, NOT_CAST, decode_blocker, decode_sphere, encode_blocker, encode_sphere,
-};
+use super::chains::{Chains, NOT_CAST};
 use super::dependence::TermDependence;
 use super::hit_cache::TileHits;
 use super::keep_rule::{KeepRule, TileSummary};
 use super::light_factors::LightSlot;
 use super::pixel_colour::PixelColour;
-use crate::trace::ray::Ray;
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::shade::{LitFactors, LiveRays, MakeRay, RaySource, ShadowRequest};
-use crate::trace::world::{SurfacePoint, World};
+use crate::trace::shade::LitFactors;
 
 /// One tile's rays during the pass. It reads the previous cache's chains in place, shared,
 /// until a pixel needs a ray the cache lacks; from then on the tile's chains are rebuilt
 /// (the pixels before copied at once, each later one as it comes). Light slots are
 /// written into the shared ones on first change (copied once per tile).
 pub(crate) struct TileRays {
-    chains: Arc<Chains>,
+    pub(super) chains: Arc<Chains>,
     slots: Arc<Vec<LightSlot>>,
     /// The rebuilt chains and slots, once one chain had to grow.
-    grown: Option<(Chains, Vec<LightSlot>)>,
+    pub(super) grown: Option<(Chains, Vec<LightSlot>)>,
     /// The pixels' colours in the cache read (none for a fresh tile), and in this pass
     /// once one of them changed (until then the old ones stand for them).
     old_colours: Option<Arc<Vec<PixelColour>>>,
@@ -46,7 +42,7 @@ pub(crate) struct TileRays {
     /// Where the pixel's chain starts, read or rebuilt (rebuilding keeps the entries
     /// before it where they were, so this holds for the whole pixel).
     entry_start: usize,
-    lights: usize,
+    pub(super) lights: usize,
     pub traced: RayCounts,
 }
 
@@ -145,7 +141,7 @@ impl TileRays {
 
     /// The light slot of light `light` at the current pixel's entry at `depth`.
     #[inline]
-    fn slot_index(&self, depth: u32, light: usize) -> usize {
+    pub(super) fn slot_index(&self, depth: u32, light: usize) -> usize {
         debug_assert_eq!(self.entry_start, self.chain().start);
         (self.entry_start + depth as usize) * self.lights + light
     }
@@ -266,7 +262,7 @@ impl TileRays {
     }
 
     /// Where the current pixel's chain is, in the chains read or rebuilt.
-    fn chain(&self) -> std::ops::Range<usize> {
+    pub(super) fn chain(&self) -> std::ops::Range<usize> {
         match &self.grown {
             Some((chains, _)) => chains.building(),
             None => self.read_chain.clone(),
@@ -274,7 +270,7 @@ impl TileRays {
     }
 
     /// Starts rebuilding, copying every chain up to and including the current pixel's.
-    fn grow(&mut self) -> &mut (Chains, Vec<LightSlot>) {
+    pub(super) fn grow(&mut self) -> &mut (Chains, Vec<LightSlot>) {
         let (pixel, lights) = (self.pixel, self.lights);
         let (chains, slots) = (&self.chains, &self.slots);
         self.grown.get_or_insert_with(|| {
@@ -285,7 +281,7 @@ impl TileRays {
 
     /// The light slot `index` (entry * lights + light) to write.
     #[inline(always)]
-    fn slot_mut(&mut self, index: usize) -> &mut LightSlot {
+    pub(super) fn slot_mut(&mut self, index: usize) -> &mut LightSlot {
         match &mut self.grown {
             Some((_, slots)) => &mut slots[index],
             // Copied once per tile, while the cache before still holds the original.
@@ -295,7 +291,7 @@ impl TileRays {
 
     /// The light slot `index` to read.
     #[inline(always)]
-    fn slot(&self, index: usize) -> LightSlot {
+    pub(super) fn slot(&self, index: usize) -> LightSlot {
         match &self.grown {
             Some((_, slots)) => slots[index],
             None => self.slots[index],
@@ -324,103 +320,6 @@ impl TileRays {
             slots,
             colours,
             summary,
-        }
-    }
-}
-
-/// Answers one pixel's rays from its tile, tracing (and keeping) whatever it lacks, and
-/// keeps what each light gives each hit.
-pub(crate) struct PixelRays<'t, 'c, 's> {
-    pub tile: &'t mut TileRays,
-    /// What traces the rays the cache lacks (culled for the camera ray's tile).
-    pub live: LiveRays<'c>,
-    /// Per object, whether the light factors kept for its hits have a stale lobe: they
-    /// are forgotten as the shader reaches the hit, and worked out again where it can.
-    pub stale_lobes: &'s [bool],
-}
-
-impl RaySource for PixelRays<'_, '_, '_> {
-    fn closest_hit(&mut self, world: &World, depth: u32, ray: &Ray) -> Option<SurfacePoint> {
-        let chain = self.tile.chain();
-        let depth = depth as usize;
-        let lights = self.tile.lights;
-        if depth < chain.len() {
-            let entry = chain.start + depth;
-            let hit = match &self.tile.grown {
-                Some((chains, _)) => chains.hit(entry),
-                None => self.tile.chains.hit(entry),
-            };
-            let hit = hit.point();
-            if hit.is_some_and(|h| self.stale_lobes.get(h.object).copied().unwrap_or(false)) {
-                for slot in entry * lights..(entry + 1) * lights {
-                    self.tile.slot_mut(slot).factors = LitFactors::UNKNOWN;
-                }
-            }
-            return hit;
-        }
-        // The chain is walked depth by depth: the missing entry is the next one.
-        debug_assert_eq!(depth, chain.len());
-        if depth == 0 {
-            self.tile.traced.primary += 1;
-        } else {
-            self.tile.traced.reflection += 1;
-        }
-        let hit = self.live.closest_hit(world, depth as u32, ray);
-        let (chains, slots) = self.tile.grow();
-        chains.push(CachedHit::new(hit.as_ref()));
-        slots.resize(slots.len() + lights, LightSlot::NOTHING);
-        hit
-    }
-
-    fn occluder(&mut self, world: &World, to: ShadowRequest, ray: impl MakeRay) -> Option<usize> {
-        // One of a sphere light's rays: the slot keeps their count, not each answer.
-        if to.off_centre {
-            self.tile.traced.shadow += 1;
-            return self.live.occluder(world, to, ray);
-        }
-        let slot = self.tile.slot_index(to.depth, to.light);
-        let code = self.tile.slot(slot).shadow;
-        if code != NOT_CAST {
-            return decode_blocker(code);
-        }
-        self.tile.traced.shadow += 1;
-        let blocked_by = self.live.occluder(world, to, ray);
-        self.tile.slot_mut(slot).shadow = encode_blocker(blocked_by);
-        blocked_by
-    }
-
-    /// A sphere light's count kept is valid (the column of a light placed anew, or made
-    /// another size, was forgotten): only a missing one is cast and kept.
-    fn sphere_rays_clear(
-        &mut self,
-        depth: u32,
-        light: usize,
-        cast: impl FnOnce(&mut Self) -> (u32, Option<usize>),
-    ) -> (u32, Option<usize>) {
-        let slot = self.tile.slot_index(depth, light);
-        if let Some((clear, _)) = decode_sphere(self.tile.slot(slot).shadow) {
-            return (clear, None);
-        }
-        let before = self.tile.traced.shadow;
-        let (clear, blocker) = cast(self);
-        // Each of the light's rays went through `occluder`, which counted it.
-        let rays = u32::try_from(self.tile.traced.shadow - before).expect("a light's rays");
-        self.tile.slot_mut(slot).shadow = encode_sphere(clear, rays);
-        (clear, blocker)
-    }
-
-    /// Factors kept are valid (those of a stale lobe or a light placed anew were
-    /// forgotten): only unknown ones are worked out and kept.
-    fn keep_light_factors(
-        &mut self,
-        depth: u32,
-        light: usize,
-        factors: impl FnOnce() -> LitFactors,
-    ) {
-        let slot = self.tile.slot_index(depth, light);
-        let kept = self.tile.slot(slot).factors;
-        if kept.is_unknown() {
-            self.tile.slot_mut(slot).factors = factors();
         }
     }
 }
