@@ -3,9 +3,13 @@
 //! a truncating one as `truncate`, and a picture that follows the scene's own
 //! conventions, the course's included, is explained by nothing.
 
+#[path = "compare/one_sample.rs"]
+mod one_sample;
+
 use std::path::Path;
 
-use raylab::compare::{CompareOptions, Comparison, ExplainedTerm, OtherImage, compare};
+use one_sample::diff;
+use raylab::compare::{Comparison, ExplainedTerm, OtherImage};
 use raylab::scene::{ClampConvention, Conventions, Light, MirrorConvention, Scene, load_scene};
 use raylab::trace::{RenderOptions, RenderProgress, World, render};
 
@@ -30,13 +34,6 @@ fn rendered_under(scene: &Scene, conventions: Conventions) -> OtherImage {
     let (image, _) = render(&world, &options, &RenderProgress::default()).unwrap();
     let png = image.png_bytes_as(conventions.quantise);
     OtherImage::from_bytes(&png, Path::new("other.png")).unwrap()
-}
-
-fn diff(scene: &Scene, other: &OtherImage) -> Comparison {
-    let options = CompareOptions {
-        samples_per_pixel: Some(1),
-    };
-    compare(scene, other, &options, &RenderProgress::default()).unwrap()
 }
 
 fn first_cause(c: &Comparison) -> (&'static str, f64) {

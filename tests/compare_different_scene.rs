@@ -2,10 +2,14 @@
 //! objects moved): named `different-scene` first, instead of a list of weak factors;
 //! and never for pictures of this scene with one bug in them.
 
+#[path = "compare/one_sample.rs"]
+mod one_sample;
+
 use std::path::Path;
 
 use glam::DVec3;
-use raylab::compare::{CompareOptions, Comparison, OtherImage, compare};
+use one_sample::diff;
+use raylab::compare::{Comparison, OtherImage};
 use raylab::scene::{Scene, Transform, load_scene};
 use raylab::trace::{RenderOptions, RenderProgress, Term, World, render};
 
@@ -33,13 +37,6 @@ fn picture(scene: &Scene, off: Option<Term>) -> OtherImage {
         Path::new("o.png"),
     )
     .unwrap()
-}
-
-fn diff(scene: &Scene, other: &OtherImage) -> Comparison {
-    let options = CompareOptions {
-        samples_per_pixel: Some(1),
-    };
-    compare(scene, other, &options, &RenderProgress::default()).unwrap()
 }
 
 fn causes(c: &Comparison) -> Vec<&'static str> {

@@ -11,18 +11,14 @@ mod pixels;
 #[path = "compare/shader.rs"]
 mod shader;
 
-use raylab::compare::shape_guess::ShapeGuess;
-use raylab::compare::{Cause, CompareOptions, Comparison, ExplainedTerm, OtherImage, compare};
-use raylab::scene::{Material, Object, Scene};
-use raylab::trace::RenderProgress;
-use shader::{Bugs, lab_scene, render};
+#[path = "compare/one_sample.rs"]
+mod one_sample;
 
-fn diff(scene: &Scene, other: &OtherImage) -> Comparison {
-    let options = CompareOptions {
-        samples_per_pixel: Some(1),
-    };
-    compare(scene, other, &options, &RenderProgress::default()).unwrap()
-}
+use one_sample::diff;
+use raylab::compare::shape_guess::ShapeGuess;
+use raylab::compare::{Cause, Comparison, ExplainedTerm};
+use raylab::scene::{Material, Object, Scene};
+use shader::{Bugs, lab_scene, render};
 
 /// The lab scene with a blue material no object of it uses.
 fn lab() -> Scene {

@@ -7,18 +7,14 @@
 #[path = "compare/shader.rs"]
 mod shader;
 
-use glam::DVec3;
-use raylab::compare::{CompareOptions, Comparison, ExplainedTerm, OtherImage, compare};
-use raylab::scene::{Light, Scene, Transform};
-use raylab::trace::RenderProgress;
-use shader::{Bugs, lab_scene, render};
+#[path = "compare/one_sample.rs"]
+mod one_sample;
 
-fn diff(scene: &Scene, other: &OtherImage) -> Comparison {
-    let options = CompareOptions {
-        samples_per_pixel: Some(1),
-    };
-    compare(scene, other, &options, &RenderProgress::default()).unwrap()
-}
+use glam::DVec3;
+use one_sample::diff;
+use raylab::compare::{Comparison, ExplainedTerm};
+use raylab::scene::{Light, Scene, Transform};
+use shader::{Bugs, lab_scene, render};
 
 fn assert_no_geometry(label: &str, c: &Comparison) {
     let report = c.text_lines().join("\n");

@@ -11,17 +11,13 @@ mod pixels;
 #[path = "compare/shader.rs"]
 mod shader;
 
-use raylab::compare::{CompareOptions, Comparison, ExplainedTerm, OtherImage, compare};
-use raylab::scene::{Scene, parse_scene};
-use raylab::trace::RenderProgress;
-use shader::{Bugs, lab_scene, render};
+#[path = "compare/one_sample.rs"]
+mod one_sample;
 
-fn diff(scene: &Scene, other: &OtherImage) -> Comparison {
-    let options = CompareOptions {
-        samples_per_pixel: Some(1),
-    };
-    compare(scene, other, &options, &RenderProgress::default()).unwrap()
-}
+use one_sample::diff;
+use raylab::compare::{Comparison, ExplainedTerm};
+use raylab::scene::{Scene, parse_scene};
+use shader::{Bugs, lab_scene, render};
 
 /// `scene` without its object named `name`.
 fn without(scene: &Scene, name: &str) -> Scene {

@@ -7,17 +7,13 @@
 #[path = "compare/shader.rs"]
 mod shader;
 
-use raylab::compare::{Cause, CompareOptions, Comparison, ExplainedTerm, OtherImage, compare};
-use raylab::scene::{Light, Scene};
-use raylab::trace::RenderProgress;
-use shader::{Bugs, lab_scene, render};
+#[path = "compare/one_sample.rs"]
+mod one_sample;
 
-fn diff(scene: &Scene, other: &OtherImage) -> Comparison {
-    let options = CompareOptions {
-        samples_per_pixel: Some(1),
-    };
-    compare(scene, other, &options, &RenderProgress::default()).unwrap()
-}
+use one_sample::diff;
+use raylab::compare::{Cause, Comparison, ExplainedTerm};
+use raylab::scene::{Light, Scene};
+use shader::{Bugs, lab_scene, render};
 
 /// The lab scene with only the lights `keep` says (by kind) besides the ambient.
 fn lit_by(keep: fn(&Light) -> bool) -> Scene {

@@ -26,6 +26,20 @@ pub struct Group {
     pub members: Vec<u32>,
 }
 
+impl Group {
+    /// A group of one channel (number 0) on object 0, for tests of what reads groups.
+    #[cfg(test)]
+    pub(crate) fn of_one_channel(family: Family) -> Self {
+        Self {
+            family,
+            light: None,
+            object: Some(0),
+            part: None,
+            members: vec![0],
+        }
+    }
+}
+
 /// Every group of a world.
 #[derive(Clone, Debug)]
 pub struct Groups {

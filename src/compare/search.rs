@@ -265,13 +265,7 @@ mod tests {
     use crate::compare::bugs::NormalBug;
 
     fn group(family: Family) -> Group {
-        Group {
-            family,
-            light: None,
-            object: Some(0),
-            part: None,
-            members: vec![0],
-        }
+        Group::of_one_channel(family)
     }
 
     #[test]
