@@ -19,17 +19,8 @@ pub(crate) fn disc_cap(ray: &Ray, t_max: f64, z_cap: f64, normal_z: f64) -> Opti
     cap_point_at(ray, t, z_cap, normal_z)
 }
 
-/// The line's point on the disc cap `z = z_cap` at any `t`, if it lies on the disc.
-#[inline]
-pub(crate) fn cap_point(ray: &Ray, z_cap: f64, normal_z: f64) -> Option<ShapeHit> {
-    if ray.dir.z == 0.0 {
-        return None;
-    }
-    cap_point_at(ray, (z_cap - ray.origin.z) / ray.dir.z, z_cap, normal_z)
-}
-
-/// Where the line meets the disc cap `z = z_cap`, if it does ([`cap_point`]'s `t`,
-/// without its point).
+/// Where the line meets the disc cap `z = z_cap`, at any `t`, if it does on the disc
+/// (its point, if needed, is [`cap_point_at`]'s).
 #[inline]
 pub(crate) fn cap_t(ray: &Ray, z_cap: f64) -> Option<f64> {
     if ray.dir.z == 0.0 {

@@ -100,10 +100,10 @@ proptest! {
         // Axis-parallel rays too (`axis` < 3), which graze faces, edges and rims.
         let dir = if axis < 3 { DVec3::AXES[axis] * dir.length() } else { dir };
         let ray = Ray::new(origin, dir);
-        for shape in [Primitive::Sphere, Primitive::Cube, Primitive::Cylinder] {
+        for shape in [Primitive::Sphere, Primitive::Cube, Primitive::Cylinder, Primitive::Cone] {
             let mut out: Vec<ShapeHit> = Vec::new();
             crossings(shape, &ray, &mut out);
-            let span = line_span(shape, &ray).expect("spheres, cubes and cylinders have line spans");
+            let span = line_span(shape, &ray).expect("a shape with line spans");
             match span {
                 None => prop_assert!(out.is_empty(), "{shape:?} {out:?}"),
                 Some([t0, t1]) => {

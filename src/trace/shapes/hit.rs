@@ -49,39 +49,49 @@ pub(crate) fn nearer(a: Option<ShapeHit>, b: Option<ShapeHit>) -> Option<ShapeHi
     }
 }
 
-/// Which of a convex solid's candidate surface points along a line (`t` where the line
-/// meets that surface, `None` where it does not) are its entry and exit: the smallest
-/// and largest `t`, the earlier candidate where two tie, as [`first_and_last`] picks.
-pub(crate) fn first_and_last_of(candidates: &[Option<f64>]) -> Option<(usize, usize)> {
-    let mut span: Option<(usize, usize)> = None;
-    for (k, t) in candidates.iter().enumerate() {
-        let Some(t) = *t else { continue };
-        let t_of = |i: usize| candidates[i].expect("a chosen candidate");
-        span = Some(match span {
-            None => (k, k),
-            Some((first, last)) => (
-                if t < t_of(first) { k } else { first },
-                if t > t_of(last) { k } else { last },
-            ),
-        });
-    }
-    span
+/// A convex solid's entry and exit along a whole line, picked from its candidate surface
+/// points: per surface (a side root, a cap) the `t` where the line meets it, or `None`.
+/// They are the smallest and largest `t` (the earlier candidate where two tie), and only
+/// those two ever get a surface point: the cylinder's and the cone's `crossings`, and
+/// the two-`t` spans of CSG leaves, all read them from here.
+pub(crate) struct ConvexEnds {
+    /// The entry's and the exit's candidate and `t`, if the line meets the solid.
+    ends: Option<[(usize, f64); 2]>,
 }
 
-/// Appends the first and the last of a convex solid's surface points along a line: its
-/// entry and exit.
-pub(crate) fn first_and_last(candidates: impl Iterator<Item = ShapeHit>, out: &mut Vec<ShapeHit>) {
-    let mut span: Option<(ShapeHit, ShapeHit)> = None;
-    for hit in candidates {
-        span = Some(match span {
-            None => (hit, hit),
-            Some((first, last)) => (
-                if hit.t < first.t { hit } else { first },
-                if hit.t > last.t { hit } else { last },
-            ),
-        });
+impl ConvexEnds {
+    #[inline]
+    pub fn of(candidates: &[Option<f64>]) -> Self {
+        let mut ends: Option<[(usize, f64); 2]> = None;
+        for (k, t) in candidates.iter().enumerate() {
+            let Some(t) = *t else { continue };
+            ends = Some(match ends {
+                None => [(k, t); 2],
+                Some([first, last]) => [
+                    if t < first.1 { (k, t) } else { first },
+                    if t > last.1 { (k, t) } else { last },
+                ],
+            });
+        }
+        Self { ends }
     }
-    if let Some((first, last)) = span {
-        out.extend([first, last]);
+
+    /// End `k` (0 the entry, 1 the exit): its candidate and `t`.
+    #[inline]
+    pub fn end(&self, k: usize) -> Option<(usize, f64)> {
+        self.ends.map(|ends| ends[k])
+    }
+
+    /// The entry's and the exit's `t`.
+    #[inline]
+    pub fn span(&self) -> Option<[f64; 2]> {
+        self.ends.map(|[first, last]| [first.1, last.1])
+    }
+
+    /// Appends the entry and the exit, `point(candidate, t)` making each surface point.
+    pub fn crossings(&self, point: impl Fn(usize, f64) -> ShapeHit, out: &mut Vec<ShapeHit>) {
+        if let Some(ends) = self.ends {
+            out.extend(ends.map(|(c, t)| point(c, t)));
+        }
     }
 }

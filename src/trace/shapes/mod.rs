@@ -224,28 +224,30 @@ pub(crate) fn crossings(shape: Primitive, ray: &Ray, out: &mut Vec<ShapeHit>) {
     }
 }
 
-/// The ends of the whole line's span through a unit sphere, cube or cylinder (`crossings`' two
-/// `t`s, without their surface points): `Some(None)` where the line misses; `None` for
-/// the other shapes, whose crossings are worked out in full.
+/// The ends of the whole line's span through a unit sphere, cube, cylinder or cone
+/// (`crossings`' two `t`s, without their surface points): `Some(None)` where the line
+/// misses; `None` for the other shapes, whose crossings are worked out in full.
 #[must_use]
-#[inline]
+#[inline(always)]
 pub(crate) fn line_span(shape: Primitive, ray: &Ray) -> Option<Option<[f64; 2]>> {
     match shape {
         Primitive::Sphere => Some(sphere::line_span(ray)),
         Primitive::Cube => Some(cube::line_span(ray)),
         Primitive::Cylinder => Some(cylinder::line_span(ray)),
+        Primitive::Cone => Some(cone::line_span(ray)),
         _ => None,
     }
 }
 
-/// Crossing `k` (0 the entry, 1 the exit) of a line through a sphere, cube or cylinder whose
-/// [`line_span`] is some span, exactly as [`crossings`] would list it.
+/// Crossing `k` (0 the entry, 1 the exit) of a line through a sphere, cube, cylinder or
+/// cone whose [`line_span`] is some span, exactly as [`crossings`] would list it.
 #[must_use]
 pub(crate) fn line_crossing(shape: Primitive, ray: &Ray, k: usize, t: f64) -> ShapeHit {
     match shape {
         Primitive::Sphere => sphere::crossing_at(ray, t),
         Primitive::Cube => cube::crossing_of_line(ray, k),
         Primitive::Cylinder => cylinder::crossing_of_line(ray, k),
+        Primitive::Cone => cone::crossing_of_line(ray, k),
         _ => unreachable!("line_span is None for {shape:?}"),
     }
 }

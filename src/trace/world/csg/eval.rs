@@ -11,9 +11,9 @@ use crate::trace::ray::Ray;
 use crate::trace::shapes::{self, ShapeHit};
 
 /// Marks a [`Crossing::hit`] whose surface point is not in the list of crossings but
-/// worked out when a query needs it (a sphere's, a cube's or a cylinder's, the shapes most CSG leaves
-/// are; most crossings a sweep passes are never answered with). The low bit is which
-/// end of the leaf's span. Lists never grow this long.
+/// worked out when a query needs it (a sphere's, cube's, cylinder's or cone's: the
+/// shapes most CSG leaves are, and most crossings a sweep passes are never answered
+/// with). The low bit is which end of the leaf's span. Lists never grow this long.
 pub(super) const LATER: u32 = 1 << 31;
 
 /// Per-thread buffers, so a ray allocates nothing once warm.
@@ -92,8 +92,8 @@ impl CsgTree {
                         if leaf.mesh.is_none()
                             && let Some(line) = shapes::line_span(leaf.shape, &leaf_ray)
                         {
-                            // A sphere's, cube's or cylinder's span, its surface points worked out
-                            // later for the one crossing a query answers with.
+                            // A sphere's, cube's, cylinder's or cone's span, its surface
+                            // points worked out later for the one crossing answered with.
                             if let Some([t0, t1]) = line.filter(|[t0, t1]| t1 > t0) {
                                 let end = |t, k| Crossing {
                                     t,

@@ -74,7 +74,7 @@ impl CsgTree {
     }
 
     /// A crossing's surface point in its leaf's space: from the list of crossings, or
-    /// worked out now for a sphere's, a cube's or a cylinder's (see [`LATER`]).
+    /// worked out now for a sphere's, cube's, cylinder's or cone's (see [`LATER`]).
     fn shape_hit(&self, s: &Scratch, crossing: &Crossing) -> ShapeHit {
         if crossing.hit & LATER == 0 {
             return s.crossings[crossing.hit as usize];

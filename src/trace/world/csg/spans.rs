@@ -12,8 +12,8 @@ pub(crate) struct Crossing {
     /// The ray parameter.
     pub t: f64,
     /// Index of the crossing's [`ShapeHit`] (in the leaf's object space) in the list
-    /// the leaves' crossings were collected in, or a sphere's, cube's or cylinder's end to work out
-    /// later (`tree::LATER`); `u32::MAX` for an unbounded end.
+    /// the leaves' crossings were collected in, or a sphere's, cube's, cylinder's or
+    /// cone's end to work out later (`eval::LATER`); `u32::MAX` for an unbounded end.
     pub hit: u32,
     /// Which leaf of the tree; `u32::MAX` for the open end of an unbounded span.
     pub leaf: u32,
@@ -48,9 +48,10 @@ impl Crossing {
 }
 
 /// The spans of one leaf from its crossings (ascending `t`; the first one at index
-/// `first` of the evaluation's list), starting inside or not at t = -infinity. Crossings alternate between entering and leaving; spans of zero length
-/// (a line that only touches the solid) are left out: the set operations are
-/// regularised, so a touch is no surface.
+/// `first` of the evaluation's list), starting inside or not at t = -infinity.
+/// Crossings alternate between entering and leaving; spans of zero length (a line that
+/// only touches the solid) are left out: the set operations are regularised, so a
+/// touch is no surface.
 pub(crate) fn leaf_spans(
     crossings: &[ShapeHit],
     first: usize,
