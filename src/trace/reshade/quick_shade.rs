@@ -19,7 +19,9 @@ use super::chains::{CLEAR, NOT_CAST, decode_sphere};
 use super::dependence::{DependenceRule, EntryTerms, TermDependence};
 use super::light_factors::LightSlot;
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::shade::{Bounce, BroughtBack, Tracer, diffuse_term, specular_term};
+use crate::trace::shade::{
+    Bounce, BroughtBack, Tracer, diffuse_term, seen_terms, specular_term, visible_fraction,
+};
 use crate::trace::terms::ActiveTerms;
 use crate::trace::world::falloff;
 
@@ -223,7 +225,7 @@ impl<'r> QuickShade<'r> {
                     }
                     if let Some((clear, rays)) = decode_sphere(slot.shadow) {
                         counts.shadow += u64::from(rays);
-                        fraction = f64::from(clear) / f64::from(rays);
+                        fraction = visible_fraction(clear, rays);
                         if clear == 0 {
                             continue;
                         }
@@ -235,20 +237,17 @@ impl<'r> QuickShade<'r> {
                     }
                 }
                 let strength = falloff(strength, factors.distance_squared());
-                let mut diffuse = if terms.diffuse {
+                let diffuse = if terms.diffuse {
                     diffuse_term(shade.diffuse, strength, n_dot_l)
                 } else {
                     DVec3::ZERO
                 };
-                let mut specular = if terms.specular {
+                let specular = if terms.specular {
                     specular_term(shade.specular, strength, lobe)
                 } else {
                     DVec3::ZERO
                 };
-                if fraction < 1.0 {
-                    diffuse *= fraction;
-                    specular *= fraction;
-                }
+                let (diffuse, specular) = seen_terms(fraction, diffuse, specular);
                 colour += diffuse + specular;
             }
         } else if shade.has_local {

@@ -16,7 +16,7 @@ use glam::DVec3;
 use super::bounce_tree::{Bounce, RayAt, Spawned};
 use super::branch::Branch;
 use super::lit_factors::LitFactors;
-use super::phong::LocalLight;
+use super::phong::{LocalLight, seen_terms};
 use super::ray_source::RaySource;
 use super::record::{LightRecord, LightSkip, Recorder, ShadowRay, SkippedLight, unsampled_reason};
 use super::refraction::{Transmitted, media, mirror_dir, refract};
@@ -212,11 +212,7 @@ impl Tracer<'_> {
                 if terms.specular {
                     specular = local.specular(material.specular, material.shininess, n_dot_l);
                 }
-                // vis_l: a sphere light partly hidden (a point light is all or nothing).
-                if seen.fraction < 1.0 {
-                    diffuse *= seen.fraction;
-                    specular *= seen.fraction;
-                }
+                (diffuse, specular) = seen_terms(seen.fraction, diffuse, specular);
                 lit = Some(diffuse + specular);
             }
         }

@@ -20,7 +20,9 @@ pub(crate) use bounce_tree::{Bounce, BroughtBack, RayAt};
 pub use branch::Branch;
 pub use lit_factors::LitFactors;
 pub use object_id::object_id_colour;
-pub use phong::{LocalLight, diffuse_term, phong_power, specular_term};
+pub use phong::{
+    LocalLight, diffuse_term, phong_power, seen_terms, specular_term, visible_fraction,
+};
 pub use ray_source::{LiveRays, MakeRay, RaySource, ShadowRequest};
 pub use record::{
     LightOutcome, LightRecord, LightSkip, NoRecorder, Recorder, ShadowRay, SkippedLight,

@@ -62,6 +62,26 @@ pub fn specular_term(ks: DVec3, strength: DVec3, lobe: Option<f64>) -> DVec3 {
     }
 }
 
+/// vis_l of a sphere light: the share of its `rays` shadow rays, `clear` of which reached
+/// it (1 or 0 for a point light's one ray).
+#[inline]
+#[must_use]
+pub fn visible_fraction(clear: u32, rays: u32) -> f64 {
+    f64::from(clear) / f64::from(rays)
+}
+
+/// The diffuse and specular terms of a light the point sees `fraction` of (a sphere light
+/// partly hidden; a point light is all or nothing, and a whole light is left as it is).
+#[inline]
+#[must_use]
+pub fn seen_terms(fraction: f64, diffuse: DVec3, specular: DVec3) -> (DVec3, DVec3) {
+    if fraction < 1.0 {
+        (diffuse * fraction, specular * fraction)
+    } else {
+        (diffuse, specular)
+    }
+}
+
 /// `x^s` for the Phong lobe; whole exponents (the usual case) by repeated squaring.
 #[inline]
 #[must_use]

@@ -4,6 +4,7 @@
 //! stratified rays that reach it) and the shadow-mask view (the mean visibility of the
 //! lights that reach a point).
 
+use super::phong::visible_fraction;
 use super::ray_source::{RaySource, ShadowQuery, ShadowRequest};
 use super::record::{NoRecorder, Recorder, ShadowRay};
 use super::tracer::Tracer;
@@ -150,7 +151,7 @@ impl Tracer<'_> {
             counts.shadow += u64::from(sphere.samples);
         }
         Visibility {
-            fraction: f64::from(clear) / f64::from(sphere.samples),
+            fraction: visible_fraction(clear, sphere.samples),
             blocker: first_blocker.filter(|_| clear == 0),
             rays: sphere.samples,
         }
