@@ -270,11 +270,12 @@ fn print_tables(report: &BenchReport) {
         println!("| {kind} | {ms:.1} | {:.2} |", ms / frame);
     }
     println!();
-    print_curve(&report.curve);
+    print_curve(&report.curve, &report.curve_checks);
     if !report.sphere_light_curve.is_empty() {
         println!();
         println!("speed against error, {SPHERE_LIGHT_SCENE} (a sphere light, soft shadows):");
-        print_curve(&report.sphere_light_curve);
+        let checks = curve_checks(&report.sphere_light_curve);
+        print_curve(&report.sphere_light_curve, &checks);
     }
     println!();
     println!("| objects | flat list (ms) | BVH (ms) | BVH / flat |");
@@ -314,7 +315,7 @@ fn print_tables(report: &BenchReport) {
 }
 
 /// A speed-against-error curve as a table, with its checks.
-fn print_curve(curve: &[crate::bench::CurvePoint]) {
+fn print_curve(curve: &[crate::bench::CurvePoint], checks: &crate::bench::CurveChecks) {
     println!("| strategy | spp | time (ms) | RMSE | estimated RMSE | PSNR (dB) |");
     println!("|---|---|---|---|---|---|");
     for p in curve {
@@ -326,7 +327,6 @@ fn print_curve(curve: &[crate::bench::CurvePoint]) {
             p.strategy, p.spp, p.time_ms, p.rmse, p.psnr
         );
     }
-    let checks = curve_checks(curve);
     println!(
         "progressive RMSE / uniform RMSE at equal spp: at most {:.3}; preview estimate / true RMSE from 4 spp: {:.2} to {:.2}",
         checks.progressive_over_uniform, checks.estimate_over_true[0], checks.estimate_over_true[1]
