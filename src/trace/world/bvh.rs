@@ -1,5 +1,6 @@
 //! A bounding volume hierarchy over the objects' world boxes, for scenes with many
-//! objects: median split on box centres, up to 4 objects a leaf, the near child first by
+//! objects: split by the surface area heuristic (`super::bvh_split`), up to 4 objects a
+//! leaf, the near child first by
 //! the ray's sign along the split axis. It gives the flat list's answers bit for bit: a
 //! tie in `t` goes to the earlier object, and an occlusion query returns the first
 //! blocker in scene order (leaves are in scene order and nodes know their smallest
@@ -9,6 +10,7 @@
 
 use glam::DVec3;
 
+use super::bvh_split::split;
 use crate::trace::ray::Ray;
 use crate::trace::shapes::Aabb;
 
@@ -38,8 +40,8 @@ pub struct Bvh {
 }
 
 impl Bvh {
-    /// Builds over the objects' boxes: split at the median of the box centres along the
-    /// axis where they spread most.
+    /// Builds over the objects' boxes, each node split where the surface area heuristic
+    /// says.
     #[must_use]
     pub fn build(boxes: &[Aabb]) -> Self {
         let mut bvh = Self {
@@ -64,17 +66,7 @@ impl Bvh {
                 bvh.order[start..start + count].sort_unstable();
                 continue;
             }
-            let slice = &mut bvh.order[start..start + count];
-            let centre = |i: u32| (boxes[i as usize].min + boxes[i as usize].max) * 0.5;
-            let (lo, hi) = slice
-                .iter()
-                .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), &i| {
-                    (lo.min(centre(i)), hi.max(centre(i)))
-                });
-            let axis = (hi - lo).max_position();
-            let half = count / 2;
-            slice
-                .select_nth_unstable_by(half, |&a, &b| centre(a)[axis].total_cmp(&centre(b)[axis]));
+            let (axis, half) = split(boxes, &mut bvh.order[start..start + count]);
             let left = bvh.nodes.len();
             for (first, len) in [(start, half), (start + half, count - half)] {
                 let ids = &bvh.order[first..first + len];

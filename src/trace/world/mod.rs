@@ -3,6 +3,7 @@
 
 mod batch;
 mod bvh;
+mod bvh_split;
 mod compiled;
 mod csg;
 mod flatten;
