@@ -54,6 +54,7 @@ impl CsgTree {
             extent: Extent::Empty,
             bounding_sphere: None,
             convex: false,
+            closed_form: false,
         };
         let mut extents: Vec<Extent> = Vec::new();
         // Per operand on the stack, a sphere leaf's placement that holds all of it.
@@ -168,6 +169,7 @@ impl CsgTree {
         tree.extent = extents.pop().unwrap_or(Extent::Empty);
         tree.bounding_sphere = spheres.pop().flatten();
         tree.convex = convex.pop().unwrap_or(false);
+        tree.closed_form = tree.closed_form_applies();
         Ok(tree)
     }
 }

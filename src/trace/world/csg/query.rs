@@ -1,5 +1,6 @@
 //! The queries a CSG node answers along a ray, from the spans its program leaves
-//! (`super::eval`): the nearest surface, whether any surface is in range, and every
+//! (`super::eval`) or, for an Intersection of convex primitives, its one span
+//! (`super::convex`): the nearest surface, whether any surface is in range, and every
 //! surface for the pixel inspector, each carried into the node's space facing out of the
 //! result.
 
@@ -20,6 +21,21 @@ impl CsgTree {
     /// The nearest surface of the node along a node-space ray with `t` in (0, t_max).
     #[must_use]
     pub fn intersect(&self, ray: &Ray, t_max: f64) -> Option<CsgHit> {
+        if self.closed_form {
+            let ends = self.closed_form_span(ray, t_max)?;
+            for (end, entering) in ends.iter().zip([true, false]) {
+                let c = &end.crossing;
+                if c.t >= t_max {
+                    return None;
+                }
+                if shapes::in_range(&end.leaf_ray, c.t, t_max) {
+                    let shape = self.leaves[c.leaf as usize].shape;
+                    let hit = shapes::line_crossing(shape, &end.leaf_ray, (c.hit & 1) as usize, c.t);
+                    return Some(self.node_hit(ray, c, &hit, entering));
+                }
+            }
+            return None;
+        }
         self.with_spans(ray, t_max, |s| {
             for span in &s.arena {
                 for (c, entering) in [(&span.enter, true), (&span.leave, false)] {
@@ -39,6 +55,14 @@ impl CsgTree {
     /// Whether any surface of the node lies along the ray with `t` in (0, t_max).
     #[must_use]
     pub fn occluded(&self, ray: &Ray, t_max: f64) -> bool {
+        if self.closed_form {
+            return self.closed_form_span(ray, t_max).is_some_and(|ends| {
+                // The exit counts only where the entry lies before t_max.
+                let c = |k: usize| &ends[k].crossing;
+                let in_range = |k: usize| shapes::in_range(&ends[k].leaf_ray, c(k).t, t_max);
+                c(0).t < t_max && (in_range(0) || (c(1).t < t_max && in_range(1)))
+            });
+        }
         self.with_spans(ray, t_max, |s| {
             for span in &s.arena {
                 for c in [&span.enter, &span.leave] {

@@ -80,6 +80,9 @@ pub struct CsgTree {
     /// Whether the solid is known to be convex (an Intersection of primitives, which
     /// are all convex): then a ray leaving it outward cannot meet it again.
     pub convex: bool,
+    /// Whether the node is an Intersection of spheres, cubes, cylinders and cones,
+    /// answered in closed form (`super::convex`) rather than by its program.
+    pub(super) closed_form: bool,
 }
 
 /// A hit on a CSG node: the surface point in the node's space, facing out of the result.

@@ -1,5 +1,6 @@
-//! The CSG example's trees (a lens, a die with 21 pips, a hollow cube with windows)
-//! against the same trees run without their early exits: the same answers for rays from
+//! The CSG example's trees (a lens, a die with 21 pips, a hollow cube with windows) and a
+//! three-way Intersection (a cone, a sphere and a rotated cube), against the same trees
+//! run without their early exits or closed form: the same answers for rays from
 //! anywhere, with any `t_max`, and for rays leaving their own surfaces, as shadow and
 //! mirror rays do (where the exits skip the most).
 
@@ -11,10 +12,28 @@ use crate::scene::{Shape, parse_scene};
 use crate::trace::ray::Ray;
 use crate::trace::shapes::MeshStore;
 
-/// The CSG example's top-level CSG nodes, compiled.
+/// A cone, a sphere and a rotated cube intersected: three leaves in closed form.
+const THREE_WAY: &str = r#"Scene(format: 1,
+    camera: (position: (0.0, 0.0, 5.0), look_at: (0.0, 0.0, 0.0), up: (0.0, 1.0, 0.0), fov_deg: 40.0, width: 8, height: 8),
+    materials: {"m": ()}, lights: [],
+    objects: [(name: "cut cone", material: "m", shape: Csg(op: Intersection, operands: [
+        (name: "cone", shape: Cone, transform: (translate: (0.0, 0.0, -1.0), scale: (1.5, 1.5, 2.0))),
+        (name: "ball", shape: Sphere, transform: (scale: (1.2, 1.2, 1.2))),
+        (name: "box", shape: Cube, transform: (rotate_deg: (30.0, 20.0, 10.0), scale: (0.9, 0.9, 0.9))),
+    ]))],
+)"#;
+
+/// The CSG example's top-level CSG nodes, compiled, and [`THREE_WAY`]'s.
 fn example_trees() -> Vec<CsgTree> {
-    let scene = parse_scene(include_str!("../../../../scenes/csg.ron")).expect("the example");
-    let trees: Vec<CsgTree> = scene
+    let mut trees = csg_trees(include_str!("../../../../scenes/csg.ron"));
+    assert_eq!(trees.len(), 3, "the lens, the die and the hollow cube");
+    trees.extend(csg_trees(THREE_WAY));
+    trees
+}
+
+fn csg_trees(text: &str) -> Vec<CsgTree> {
+    let scene = parse_scene(text).expect("the example");
+    scene
         .objects
         .iter()
         .filter_map(|object| match &object.shape {
@@ -31,9 +50,14 @@ fn example_trees() -> Vec<CsgTree> {
             ),
             _ => None,
         })
-        .collect();
-    assert_eq!(trees.len(), 3, "the lens, the die and the hollow cube");
-    trees
+        .collect()
+}
+
+#[test]
+fn intersections_of_convex_primitives_take_the_closed_form() {
+    let closed: Vec<bool> = example_trees().iter().map(|t| t.closed_form).collect();
+    // The lens and the three-way Intersection; not the die nor the hollow cube.
+    assert_eq!(closed, [true, false, false, true]);
 }
 
 /// The tree without its SkipIfEmpty steps: every operand evaluated in full.
@@ -44,6 +68,7 @@ fn without_early_exits(tree: &CsgTree) -> CsgTree {
     // A jump to old step `i` lands on the first kept step at or after it.
     let moved = |i: u32| kept.partition_point(|&k| k < i as usize) as u32;
     let mut plain = tree.clone();
+    plain.closed_form = false;
     plain.steps = kept
         .iter()
         .map(|&i| match tree.steps[i] {
