@@ -28,8 +28,8 @@ pub(super) fn split(boxes: &[Aabb], ids: &mut [u32]) -> (usize, usize) {
         let mut around = empty();
         for split in 1..ids.len() {
             around = around.union(&boxes[ids[split - 1] as usize]);
-            let cost = half_area(&around) * split as f64
-                + right_areas[split] * (ids.len() - split) as f64;
+            let cost =
+                half_area(&around) * split as f64 + right_areas[split] * (ids.len() - split) as f64;
             // Strictly less: among equal costs the first axis and split found stay.
             if cost.is_finite() && best.is_none_or(|(least, _, _)| cost < least) {
                 best = Some((cost, axis, split));
@@ -47,11 +47,7 @@ pub(super) fn split(boxes: &[Aabb], ids: &mut [u32]) -> (usize, usize) {
 /// Sorts by box centre along `axis`, ties by index, so that a build is the same every
 /// time.
 fn sort_along(ids: &mut [u32], axis: usize, centre: &impl Fn(u32) -> DVec3) {
-    ids.sort_unstable_by(|&a, &b| {
-        centre(a)[axis]
-            .total_cmp(&centre(b)[axis])
-            .then(a.cmp(&b))
-    });
+    ids.sort_unstable_by(|&a, &b| centre(a)[axis].total_cmp(&centre(b)[axis]).then(a.cmp(&b)));
 }
 
 /// The axis along which the box centres spread most.

@@ -49,7 +49,9 @@ impl CsgTree {
         n >= 2
             && *last == combine
             && leaves.iter().copied().eq(0..n as u32)
-            && program.iter().all(|step| !matches!(step, Step::Combine { .. }))
+            && program
+                .iter()
+                .all(|step| !matches!(step, Step::Combine { .. }))
             && self
                 .leaves
                 .iter()
@@ -108,10 +110,11 @@ impl CsgTree {
                     } else {
                         a_leave
                     };
-                    if !(enter.crossing.t < leave.crossing.t) {
+                    if enter.crossing.t < leave.crossing.t {
+                        [enter, leave]
+                    } else {
                         return None;
                     }
-                    [enter, leave]
                 }
             });
         }

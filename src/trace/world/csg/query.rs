@@ -30,7 +30,8 @@ impl CsgTree {
                 }
                 if shapes::in_range(&end.leaf_ray, c.t, t_max) {
                     let shape = self.leaves[c.leaf as usize].shape;
-                    let hit = shapes::line_crossing(shape, &end.leaf_ray, (c.hit & 1) as usize, c.t);
+                    let hit =
+                        shapes::line_crossing(shape, &end.leaf_ray, (c.hit & 1) as usize, c.t);
                     return Some(self.node_hit(ray, c, &hit, entering));
                 }
             }
