@@ -11,13 +11,15 @@ use raylab::trace::{
     render_one_sample_cached, render_samples,
 };
 
-/// Scenes with mirrors, every light kind, spots, shininess below 1 and a sphere light.
-pub const SCENES: [&str; 5] = [
+/// Scenes with mirrors, every light kind, spots, shininess below 1, a sphere light and
+/// glass (trees of rays, total internal reflection, a CSG lens).
+pub const SCENES: [&str; 6] = [
     "default.ron",
     "spotlights.ron",
     "specular_exponents.ron",
     "mirror_cap.ron",
     "soft_spot.ron",
+    "glass.ron",
 ];
 
 /// An example scene at 64 x 48.
