@@ -317,3 +317,7 @@ fn chain_link(index: usize, len: usize) -> Children {
     };
     [next, NO_ENTRY]
 }
+
+#[cfg(test)]
+#[path = "chains_tests.rs"]
+mod tests;

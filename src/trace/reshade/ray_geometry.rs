@@ -105,3 +105,33 @@ pub(super) fn bent_objects(cached: &[Material], world: &World) -> Vec<bool> {
         })
         .collect()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_new_index_bends_the_rays_of_its_objects_but_a_planes() {
+        let text = r#"Scene(
+            camera: (position: (0.0, 1.0, 5.0), look_at: (0.0, 0.0, 0.0), fov_deg: 40.0, width: 8, height: 6),
+            materials: {
+                "glass": (diffuse: (0.1, 0.1, 0.1), transmission: (0.9, 0.9, 0.9), ior: 1.5),
+                "water": (diffuse: (0.1, 0.1, 0.1), transmission: (0.9, 0.9, 0.9), ior: 1.33),
+            },
+            objects: [
+                (name: "window", shape: Plane, material: "glass"),
+                (name: "ball", shape: Sphere, material: "glass"),
+                (name: "pond", shape: Sphere, transform: (translate: (2.0, 0.0, 0.0)), material: "water"),
+            ],
+        )"#;
+        let mut scene = crate::scene::parse_scene(text).unwrap();
+        let world = World::new(&scene).unwrap();
+        let cached: Vec<Material> = (world.objects.iter())
+            .map(|o| world.materials[o.material].clone())
+            .collect();
+        assert_eq!(bent_objects(&cached, &world), [false; 3]);
+        scene.materials.get_mut("glass").unwrap().ior = 1.6;
+        let world = World::new(&scene).unwrap();
+        assert_eq!(bent_objects(&cached, &world), [false, true, false]);
+    }
+}
