@@ -128,8 +128,10 @@ impl<'r> QuickShade<'r> {
         }
     }
 
-    /// [`Self::pixel`] for entries that are a mirror chain.
-    #[inline]
+    /// [`Self::pixel`] for entries that are a mirror chain. Inlined into the tile loop,
+    /// as it was before trees (out of line, a flat scene's material edit took 10% more
+    /// time).
+    #[inline(always)]
     fn chain_pixel(
         &self,
         objects: &[u32],

@@ -27,6 +27,7 @@ impl QuickShade<'_> {
     /// [`Self::pixel`] for entries that form a tree (linked by `children`): the tree the
     /// shader would follow walked breadth first from the camera ray's entry, then folded
     /// back from the last ray walked, as [`crate::trace::shade::fold_back`] folds it.
+    #[inline(never)]
     pub(super) fn tree_pixel(
         &self,
         entries: &PixelEntries,
