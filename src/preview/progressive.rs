@@ -9,8 +9,9 @@
 //! the pass is shown), and a later plan whose world the cache can serve (an edit that
 //! moved no object and not the camera) skips the coarse passes: its one-sample pass
 //! re-shades the cached hits, tracing only the rays the cache lacks, and is the first
-//! frame published. A light moved keeps the coarsest pass before it, since casting its
-//! shadow rays again takes about a traced frame's time.
+//! frame published. A light moved, or the `ior` of glass changed, keeps the coarsest
+//! pass before it, since casting the light's shadow rays, or the rays below the glass,
+//! again takes about a traced frame's time.
 
 use std::sync::Arc;
 use std::time::Instant;
@@ -67,10 +68,12 @@ fn run_plan(
         .filter(|_| cacheable)
         .map(|c| c.reuse(world, target.width, target.height));
     let reshade = reuse.as_ref().is_some_and(Reuse::is_reshade);
-    // A re-shade that casts a moved light's shadow rays again takes about as long as a
-    // traced frame, so it keeps the coarsest pass: without it, a light dragged with
-    // edits coming faster than that frame showed nothing until the drag stopped.
-    let keep_coarsest = reuse.is_some_and(|r| !r.recast_lights().is_empty());
+    // A re-shade that casts a moved light's shadow rays again (or the rays below glass
+    // given another index: 0.42 s against 0.37 s for tracing glass.ron afresh) takes
+    // about as long as a traced frame, so it keeps the coarsest pass: without it, a
+    // light dragged with edits coming faster than that frame showed nothing until the
+    // drag stopped.
+    let keep_coarsest = reuse.is_some_and(|r| r.traces_again());
     let plan = plan_passes(target);
     let coarsest = plan.first().copied();
     let passes: Vec<Pass> = plan

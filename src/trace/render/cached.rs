@@ -63,7 +63,7 @@ pub fn render_one_sample_cached(
     let (width, height) = (options.width, options.height);
     assert_compiled_for(world, &options.isolation);
     let reuse = previous.and_then(|cache| match cache.reuse(world, width, height) {
-        Reuse::Reshade { kept_columns } => Some((
+        Reuse::Reshade { kept_columns, .. } => Some((
             cache,
             kept_columns,
             cache.factor_columns(world),

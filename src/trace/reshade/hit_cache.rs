@@ -154,6 +154,9 @@ pub enum Reuse {
         /// Per light of the new world, the cache's column of shadow answers that stays
         /// valid; `None` where that light's shadow rays must be cast again.
         kept_columns: Vec<Option<usize>>,
+        /// Some object's `ior` changed: the rays below its transmitted rays are traced
+        /// again.
+        bent: bool,
     },
 }
 
@@ -170,9 +173,21 @@ impl Reuse {
     pub fn recast_lights(&self) -> Vec<usize> {
         match self {
             Reuse::Retrace(_) => Vec::new(),
-            Reuse::Reshade { kept_columns } => (0..kept_columns.len())
+            Reuse::Reshade { kept_columns, .. } => (0..kept_columns.len())
                 .filter(|&i| kept_columns[i].is_none())
                 .collect(),
+        }
+    }
+
+    /// Whether the re-shade casts again rays the cache held (a moved light's shadow
+    /// rays, the rays below glass whose index changed): up to a traced frame's work.
+    #[must_use]
+    pub fn traces_again(&self) -> bool {
+        match self {
+            Reuse::Retrace(_) => false,
+            Reuse::Reshade { kept_columns, bent } => {
+                *bent || kept_columns.iter().any(Option::is_none)
+            }
         }
     }
 }
@@ -279,7 +294,8 @@ impl HitCache {
             .iter()
             .map(|target| self.lights.iter().position(|old| old == target))
             .collect();
-        Reuse::Reshade { kept_columns }
+        let bent = bent_objects(&self.object_materials, world).contains(&true);
+        Reuse::Reshade { kept_columns, bent }
     }
 
     /// Rays held (closest hits and misses; shadow answers not counted).
