@@ -112,3 +112,55 @@ fn edits_that_move_no_object_re_shade_and_match_the_direct_render() {
     assert_eq!(passes[0], Pass::Coarse { divider: 4 }, "geometry re-traces");
     assert_eq!(passes.len(), 4);
 }
+
+/// Glass makes trees of rays; the worker's cache holds them, so an edit of the glass
+/// (its colour, its transmission, its index, the transmission switch) is re-shaded, the
+/// direct render's image, as for a scene without glass.
+#[test]
+fn edits_of_glass_re_shade_through_the_worker() {
+    let (mut worker, _) = worker_with_counter();
+    let text = raylab::scene::examples::EXAMPLE_SCENES
+        .iter()
+        .find(|(name, _)| *name == "glass.ron")
+        .unwrap()
+        .1;
+    let mut scene = raylab::scene::parse_scene(text).unwrap();
+    scene.camera.width = 160;
+    scene.camera.height = 120;
+    scene.render.samples_per_pixel = 2;
+    let base = PreviewRequest::for_scene(1, scene);
+    worker.submit(base.clone());
+    let first = checked_passes(&until_final(&mut worker, 1), &base);
+    assert!(
+        matches!(first[0], Pass::Coarse { .. }),
+        "nothing cached yet"
+    );
+
+    let tinted = edited(&base, 2, |s| {
+        let glass = s.materials.get_mut("glass").unwrap();
+        glass.diffuse = DVec3::new(0.3, 0.02, 0.02);
+        glass.transmission = DVec3::new(0.5, 0.8, 0.9);
+    });
+    let water = edited(&tinted, 3, |s| {
+        s.materials.get_mut("glass").unwrap().ior = 1.33
+    });
+    let mut no_glass = edited(&water, 4, |_| {});
+    no_glass.options.switches.set(Term::Transmission, false);
+    let one_sample = Pass::Full {
+        samples: 1,
+        target: 1,
+    };
+    for request in [&tinted, &water, &no_glass] {
+        worker.submit(request.clone());
+        let passes = checked_passes(&until_final(&mut worker, request.generation), request);
+        // A new index traces the rays below the glass again, about a frame's work: the
+        // coarsest pass comes first, as for a light moved.
+        let re_shaded = if request.generation == water.generation {
+            assert_eq!(passes[0], first[0], "the coarsest pass");
+            passes[1]
+        } else {
+            passes[0]
+        };
+        assert_eq!(re_shaded, one_sample, "generation {}", request.generation);
+    }
+}

@@ -42,6 +42,10 @@ pub struct BenchReport {
     /// through the preview worker: material, switch and light colour edits re-shade
     /// cached hits, a moved light re-casts its shadow rays, geometry re-traces.
     pub edit_to_full_frame_ms: EditLatency,
+    /// The same for `glass.ron` (where the measured scenes include it) with its glass
+    /// ball first, so that the material edited is the glass: its trees of rays are
+    /// re-shaded from the cache as a chain is.
+    pub glass_edit_to_full_frame_ms: Option<EditLatency>,
     /// Per example scene.
     pub scenes: Vec<SceneThroughput>,
     /// Error against time for the default scene, per strategy.

@@ -147,6 +147,16 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
     let restart_latency_ms = restart_latency(&default_scene, if args.quick { 3 } else { 7 })?;
     eprintln!("edit to full frame: by kind of edit, through the preview worker");
     let edit_to_full_frame_ms = edit_latency(&default_scene, if args.quick { 5 } else { 15 })?;
+    let glass_edit_to_full_frame_ms = match examples.iter().find(|(name, _)| name == GLASS_SCENE) {
+        Some((name, scene)) => {
+            eprintln!("edit to full frame: {name}, the glass's material first");
+            Some(edit_latency(
+                &glass_first(scene),
+                if args.quick { 5 } else { 15 },
+            )?)
+        }
+        None => None,
+    };
     eprintln!("acceleration: flat list against BVH");
     let counts: &[usize] = if args.quick {
         &[4, 16, 64]
@@ -172,6 +182,7 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
         first_full_preview_ms: Some(latency.full_resolution.as_secs_f64() * 1e3),
         restart_latency_ms,
         edit_to_full_frame_ms,
+        glass_edit_to_full_frame_ms,
         scenes,
         curve_checks: curve_checks(&curve),
         curve,
@@ -189,6 +200,23 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
 
 /// The example whose speed-against-error curve shows a sphere light's soft shadows.
 const SPHERE_LIGHT_SCENE: &str = "soft_spot.ron";
+
+/// The example whose edits show the cache holding trees of rays (glass).
+const GLASS_SCENE: &str = "glass.ron";
+
+/// `scene` with its first object of a transmissive material moved to the front: the
+/// edit latency edits the first object's material.
+fn glass_first(scene: &Scene) -> Scene {
+    let mut scene = scene.clone();
+    let transmits = |o: &crate::scene::Object| {
+        (scene.materials.get(&o.material)).is_some_and(|m| m.transmission != glam::DVec3::ZERO)
+    };
+    if let Some(at) = scene.objects.iter().position(transmits) {
+        let glass = scene.objects.remove(at);
+        scene.objects.insert(0, glass);
+    }
+    scene
+}
 
 /// Sample counts whose restart latency the report gives.
 const RESTART_SPP: [u32; 2] = [16, 4096];
@@ -268,6 +296,16 @@ fn print_tables(report: &BenchReport) {
         ("geometry", e.geometry),
     ] {
         println!("| {kind} | {ms:.1} | {:.2} |", ms / frame);
+    }
+    if let Some(g) = &report.glass_edit_to_full_frame_ms {
+        println!();
+        println!(
+            "{GLASS_SCENE}, the glass's material edited (ms to the first full-resolution frame):"
+        );
+        println!(
+            "material {:.1}, switch {:.1}, light colour {:.1}, light move {:.1}, geometry {:.1}",
+            g.material, g.switch, g.light_colour, g.light_move, g.geometry
+        );
     }
     println!();
     print_curve(&report.curve, &report.curve_checks);

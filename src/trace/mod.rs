@@ -41,7 +41,7 @@ pub use render::{
     AdaptiveOptions, AdaptiveRender, CachedPass, render, render_adaptive, render_one_sample_cached,
     render_samples, render_samples_into,
 };
-pub use reshade::{HitCache, MAX_CACHE_BYTES, RetraceReason, Reuse, cache_fits, cache_serves};
+pub use reshade::{HitCache, MAX_CACHE_BYTES, RetraceReason, Reuse, cache_fits};
 pub use shade::{
     Branch, LightOutcome, LightRecord, LightSkip, LocalLight, NoRecorder, Recorder, ShadowRay,
     SkippedLight, Tracer, object_id_colour, phong_power,

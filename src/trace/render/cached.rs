@@ -21,7 +21,7 @@ use crate::trace::film::{
 };
 use crate::trace::ray_counts::RayCounts;
 use crate::trace::reshade::{
-    DependenceRule, HitCache, LightSlot, PixelColour, PixelRays, QuickShade, Reuse, SlotColumns,
+    DependenceRule, HitCache, PixelColour, PixelEntries, PixelRays, QuickShade, Reuse, SlotColumns,
     TermDependence, TileRays,
 };
 use crate::trace::shade::{LiveRays, Tracer};
@@ -63,7 +63,12 @@ pub fn render_one_sample_cached(
     let (width, height) = (options.width, options.height);
     assert_compiled_for(world, &options.isolation);
     let reuse = previous.and_then(|cache| match cache.reuse(world, width, height) {
-        Reuse::Reshade { kept_columns } => Some((cache, kept_columns, cache.factor_columns(world))),
+        Reuse::Reshade { kept_columns, .. } => Some((
+            cache,
+            kept_columns,
+            cache.factor_columns(world),
+            cache.bent_objects(world),
+        )),
         Reuse::Retrace(_) => None,
     });
     let camera = PinholeCamera::new(&world.camera, width, height);
@@ -81,10 +86,10 @@ pub fn render_one_sample_cached(
     // What each pixel shaded depends on, for the next edit's keep rule: the quick
     // re-shade works it out as it shades, the others from their chain afterwards.
     let dependence = tracer.beauty_terms().map(|_| DependenceRule::new(world));
-    let depends = |objects: &[u32], slots: &[LightSlot]| {
-        dependence.as_ref().map_or(TermDependence::ANY, |rule| {
-            rule.of_chain(objects, slots, lights)
-        })
+    let depends = |entries: &PixelEntries| {
+        dependence
+            .as_ref()
+            .map_or(TermDependence::ANY, |rule| rule.of_pixel(entries, lights))
     };
     let stale_lobes = reuse
         .as_ref()
@@ -94,11 +99,12 @@ pub fn render_one_sample_cached(
         .zip(dependence.as_ref())
         .and_then(|(_, rule)| QuickShade::new(&tracer, &stale_lobes, rule));
     let new_state = |index: u32, rect: TileRect| match &reuse {
-        Some((cache, shadows, factors)) => {
+        Some((cache, shadows, factors, bent)) => {
             let columns = SlotColumns {
                 old_lights: cache.light_count(),
                 shadows,
                 factors,
+                bent: bent.as_deref(),
             };
             TileRays::reading(&cache.tiles[index as usize], &columns)
         }
@@ -120,10 +126,9 @@ pub fn render_one_sample_cached(
         }
         tile.shaded += 1;
         let mut own = RayCounts::default();
-        let (chain, slots) = tile.pixel_chain();
         let quick = quick
             .as_ref()
-            .and_then(|q| q.pixel(chain, slots, tile.lights(), &mut own));
+            .and_then(|q| q.pixel(&tile.pixel_entries(), lights, &mut own));
         let (colour, depends) = match quick {
             Some(shaded) => {
                 tile.quick += 1;
@@ -137,8 +142,7 @@ pub fn render_one_sample_cached(
                     stale_lobes: &stale_lobes,
                 };
                 let colour = camera_sample(&tracer, &camera, point, source, &mut own);
-                let (chain, slots) = tile.pixel_chain();
-                (colour, depends(chain, slots))
+                (colour, depends(&tile.pixel_entries()))
             }
         };
         rays.add(&own);
@@ -147,10 +151,10 @@ pub fn render_one_sample_cached(
     };
     // A tile whose every pixel keeps its colour or is quick-shaded goes in one loop.
     let whole = |tile: &mut TileRays| match &quick {
-        Some(quick) => tile.whole_tile(keep.as_ref(), |objects, slots, own| {
-            quick.pixel(objects, slots, lights, own)
+        Some(quick) => tile.whole_tile(keep.as_ref(), |entries, own| {
+            quick.pixel(entries, lights, own)
         }),
-        None if keep.is_some() => tile.whole_tile(keep.as_ref(), |_, _, _| None),
+        None if keep.is_some() => tile.whole_tile(keep.as_ref(), |_, _| None),
         None => None,
     };
     let work = TileWork {

@@ -58,12 +58,12 @@ impl<'c> KnownHit<'c> {
 
 impl RaySource for KnownHit<'_> {
     #[inline]
-    fn closest_hit(&mut self, world: &World, depth: u32, ray: &Ray) -> Option<SurfacePoint> {
-        if depth == self.depth {
+    fn closest_hit(&mut self, world: &World, at: RayAt, ray: &Ray) -> Option<SurfacePoint> {
+        if at.depth == self.depth {
             debug_assert_eq!(*ray, self.ray, "the batch's hit is this ray's");
             self.hit
         } else {
-            self.live.closest_hit(world, depth, ray)
+            self.live.closest_hit(world, at, ray)
         }
     }
 
@@ -140,8 +140,13 @@ impl TilePass<'_> {
             let (mut next_parents, mut next_rays) = (Vec::new(), Vec::new());
             for (slot, (ray, hit)) in rays.iter().zip(hits).enumerate() {
                 let mut source = KnownHit::new(depth, *ray, hit, among);
-                // No recorder here: the ray's index in its tree is not needed.
-                let at = RayAt { depth, node: 0 };
+                // No recorder and no cache here: only the depth is needed, not the
+                // ray's place in its tree.
+                let at = RayAt {
+                    depth,
+                    node: 0,
+                    from: None,
+                };
                 let (bounce, spawned) =
                     self.tracer
                         .shade(ray, at, terms, &mut source, counts, &mut NoRecorder);

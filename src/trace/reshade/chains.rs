@@ -1,124 +1,78 @@
-//! What the hit cache keeps per ray: each pixel's mirror chain of cached hits, and the
-//! encoding of a shadow ray's answer.
+//! Each pixel's cached rays: the entries of its camera ray's tree (the camera ray's hit,
+//! then the hit of each mirror and transmitted ray traced below it), in the order they
+//! were traced, and how they link.
+//!
+//! A ray's entry is found by its parent's entry and which of the parent's rays it is,
+//! never by its depth or its index in the tree: both change when an edit grows or prunes
+//! the tree (a material given a transmission, a switch, `max_depth`), while a traced
+//! ray's parent and branch do not.
+//!
+//! Most scenes have no glass, and then every pixel's entries are a mirror chain (entry
+//! i + 1 is the mirror ray of entry i): no links are kept at all, so a chain costs what
+//! it did before trees. The first entry that is not the mirror ray of the entry before it
+//! (a transmitted ray, or a mirror ray of an entry that is not the last) gives the tile's
+//! entries their links.
 
-use glam::DVec3;
+use std::ops::Range;
 
-use crate::trace::world::SurfacePoint;
+use super::cached_hit::CachedHit;
+use super::light_factors::LightSlot;
+use crate::trace::shade::Branch;
 
-/// A shadow ray the shader did not cast at that hit.
-pub(crate) const NOT_CAST: u32 = u32::MAX;
-/// A shadow ray that met nothing.
-pub(crate) const CLEAR: u32 = u32::MAX - 1;
+/// No entry: that ray was not traced.
+pub(crate) const NO_ENTRY: u32 = u32::MAX;
 
-/// A hit as cached: a [`SurfacePoint`] with the shading normal kept as one bit (it is
-/// the outward normal or its exact negation), or a miss.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct CachedHit {
-    t: f64,
-    p: DVec3,
-    n_outward: DVec3,
-    p_error: DVec3,
-    /// World index of the object hit; `u32::MAX` for a miss.
-    object: u32,
-    /// The CSG operand leaf hit ([`SurfacePoint::part`]).
-    part: u32,
-    /// Whether the shading normal is `-n_outward`.
-    flipped: bool,
+/// Which of an entry's rays: its mirror ray, or its transmitted one (refracted or
+/// internally reflected: the one share `kt`, whichever way Snell's law sends it).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum ChildRay {
+    Mirror = 0,
+    Transmitted = 1,
 }
 
-impl CachedHit {
-    /// What the closest-hit query returned.
-    pub fn new(hit: Option<&SurfacePoint>) -> Self {
-        match hit {
-            Some(hit) => Self {
-                t: hit.t,
-                p: hit.p,
-                n_outward: hit.n_outward,
-                p_error: hit.p_error,
-                object: u32::try_from(hit.object).expect("fewer than 2^32 - 1 objects"),
-                part: hit.part,
-                flipped: hit.n != hit.n_outward,
-            },
-            None => Self {
-                t: 0.0,
-                p: DVec3::ZERO,
-                n_outward: DVec3::ZERO,
-                p_error: DVec3::ZERO,
-                object: u32::MAX,
-                part: 0,
-                flipped: false,
-            },
+impl ChildRay {
+    /// The child a ray of branch `branch` is.
+    #[inline]
+    pub fn of(branch: Branch) -> Self {
+        if branch.is_transmitted() {
+            Self::Transmitted
+        } else {
+            Self::Mirror
         }
     }
-
-    /// The hit again, bit for bit; `None` for a miss.
-    pub fn point(&self) -> Option<SurfacePoint> {
-        (self.object != u32::MAX).then(|| SurfacePoint {
-            object: self.object as usize,
-            part: self.part,
-            t: self.t,
-            p: self.p,
-            n_outward: self.n_outward,
-            n: if self.flipped {
-                -self.n_outward
-            } else {
-                self.n_outward
-            },
-            p_error: self.p_error,
-        })
-    }
 }
 
-/// Marks a sphere light's answer: how many of its rays reached it (the low 11 bits) of
-/// how many (the 11 above), each at most `MAX_LIGHT_SAMPLES` (1024). Blockers' indices
-/// stay below it.
-const SPHERE: u32 = 1 << 31;
-const COUNT_BITS: u32 = 11;
-const COUNT_MASK: u32 = (1 << COUNT_BITS) - 1;
+/// An entry's children, indexed by [`ChildRay`]: each an entry of the same pixel (an
+/// index from the pixel's first entry), or [`NO_ENTRY`].
+pub(crate) type Children = [u32; 2];
 
-/// A shadow answer as cached.
-pub(crate) fn encode_blocker(blocked_by: Option<usize>) -> u32 {
-    blocked_by.map_or(CLEAR, |i| {
-        let code = u32::try_from(i).expect("fewer than 2^31 objects");
-        assert!(code < SPHERE, "fewer than 2^31 objects");
-        code
-    })
+/// One pixel's entries as the cache holds them.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct PixelEntries<'a> {
+    /// Each entry's object (`u32::MAX` for a miss); entry 0 is the camera ray's.
+    pub objects: &'a [u32],
+    /// Each entry's children; `None`: the entries are a mirror chain.
+    pub children: Option<&'a [Children]>,
+    /// `lights` light slots per entry.
+    pub slots: &'a [LightSlot],
 }
 
-/// The cached shadow answer `code` (not [`NOT_CAST`], nor a sphere light's).
-pub(crate) fn decode_blocker(code: u32) -> Option<usize> {
-    (code != CLEAR).then_some(code as usize)
-}
-
-/// A sphere light's answer as cached: `clear` of its `samples` rays reached it.
-pub(crate) fn encode_sphere(clear: u32, samples: u32) -> u32 {
-    assert!(
-        clear <= samples && samples <= COUNT_MASK,
-        "{clear} of {samples} rays"
-    );
-    SPHERE | (samples << COUNT_BITS) | clear
-}
-
-/// `(clear, samples)` of a sphere light's cached answer; `None` for any other code.
-pub(crate) fn decode_sphere(code: u32) -> Option<(u32, u32)> {
-    (code & SPHERE != 0 && code < CLEAR)
-        .then_some((code & COUNT_MASK, (code >> COUNT_BITS) & COUNT_MASK))
-}
-
-/// The mirror chains of one tile's pixels, row-major within the tile.
+/// The entries of one tile's pixels, row-major within the tile.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Chains {
-    /// End of each pixel's chain in `hits` (a chain starts where the one before ends).
+    /// End of each pixel's entries in `hits` (a pixel's start where the one before ends).
     chain_ends: Vec<u32>,
-    /// Every chain's entries, depth 0 first.
+    /// Every pixel's entries, its camera ray's first.
     hits: Vec<CachedHit>,
     /// Each entry's object (`u32::MAX` for a miss) on its own: all a re-shade from light
     /// factors reads of an entry, 4 bytes instead of a whole hit.
     objects: Vec<u32>,
+    /// Each entry's children; `None` while every pixel's entries are a mirror chain.
+    children: Option<Vec<Children>>,
 }
 
 impl Chains {
-    /// `pixels` pixels with empty chains.
+    /// `pixels` pixels with no entries.
     pub fn empty(pixels: usize) -> Self {
         Self {
             chain_ends: vec![0; pixels],
@@ -132,34 +86,37 @@ impl Chains {
             chain_ends: Vec::with_capacity(pixels),
             hits: Vec::with_capacity(entries),
             objects: Vec::with_capacity(entries),
+            children: None,
         }
     }
 
-    /// The chains of the first `pixels` pixels of `self` (and the entries up to `end`),
+    /// The entries of the first `pixels` pixels of `self` (and the entries up to `end`),
     /// with room for more.
     pub fn prefix(&self, pixels: usize, end: usize) -> Self {
+        fn copy<T: Copy>(from: &[T], end: usize, room: usize) -> Vec<T> {
+            let mut to = Vec::with_capacity(room);
+            to.extend_from_slice(&from[..end]);
+            to
+        }
         let room = self.hits.len() + self.chain_ends.len() / 4;
-        let mut hits = Vec::with_capacity(room);
-        hits.extend_from_slice(&self.hits[..end]);
-        let mut objects = Vec::with_capacity(room);
-        objects.extend_from_slice(&self.objects[..end]);
         Self {
             chain_ends: self.chain_ends[..pixels].to_vec(),
-            hits,
-            objects,
+            hits: copy(&self.hits, end, room),
+            objects: copy(&self.objects, end, room),
+            children: (self.children.as_deref()).map(|links| copy(links, end, room)),
         }
     }
 
-    /// The range of entries holding pixel `pixel`'s chain.
-    pub fn chain(&self, pixel: usize) -> std::ops::Range<usize> {
+    /// The range of entries holding pixel `pixel`'s.
+    pub fn chain(&self, pixel: usize) -> Range<usize> {
         let start = pixel
             .checked_sub(1)
             .map_or(0, |p| self.chain_ends[p] as usize);
         start..self.chain_ends[pixel] as usize
     }
 
-    /// Where the chain being built starts: the end of the last pixel's.
-    pub fn building(&self) -> std::ops::Range<usize> {
+    /// Where the pixel being built starts: the end of the last pixel's entries.
+    pub fn building(&self) -> Range<usize> {
         let start = self.chain_ends.last().map_or(0, |&end| end as usize);
         start..self.hits.len()
     }
@@ -170,8 +127,33 @@ impl Chains {
     }
 
     /// The objects of the entries `range`.
-    pub fn objects(&self, range: std::ops::Range<usize>) -> &[u32] {
+    pub fn objects(&self, range: Range<usize>) -> &[u32] {
         &self.objects[range]
+    }
+
+    /// The children of the entries `range`; `None` for a mirror chain.
+    pub fn children(&self, range: Range<usize>) -> Option<&[Children]> {
+        self.children.as_deref().map(|links| &links[range])
+    }
+
+    /// Whether some pixel's entries are not a mirror chain.
+    pub fn has_trees(&self) -> bool {
+        self.children.is_some()
+    }
+
+    /// The entry (from the pixel's first) of ray `child` of entry `parent`, among the
+    /// pixel's entries `pixel`; `None` where that ray was not traced.
+    #[inline]
+    pub fn child(&self, pixel: Range<usize>, parent: u32, child: ChildRay) -> Option<u32> {
+        match &self.children {
+            // In a chain, entry i + 1 is entry i's mirror ray.
+            None => (child == ChildRay::Mirror && (parent as usize + 1) < pixel.len())
+                .then_some(parent + 1),
+            Some(links) => {
+                let entry = links[pixel.start + parent as usize][child as usize];
+                (entry != NO_ENTRY).then_some(entry)
+            }
+        }
     }
 
     /// Entries held.
@@ -189,20 +171,153 @@ impl Chains {
         self.chain_ends.capacity()
     }
 
-    /// Adds an entry to the chain being built.
-    pub fn push(&mut self, hit: CachedHit) {
-        self.objects.push(hit.object);
-        self.hits.push(hit);
+    /// Bytes per entry held: the hit, its object and, for trees, its links.
+    pub fn entry_bytes(&self) -> usize {
+        let links = if self.has_trees() {
+            size_of::<Children>()
+        } else {
+            0
+        };
+        size_of::<CachedHit>() + size_of::<u32>() + links
     }
 
-    /// Adds `other`'s entries `range` to the chain being built.
-    pub fn extend_from(&mut self, other: &Chains, range: std::ops::Range<usize>) {
+    /// Adds an entry to the pixel being built: its camera ray's (`from` `None`, the
+    /// pixel's first entry) or ray `from.1` of its entry `from.0`. Returns the entry,
+    /// from the pixel's first.
+    pub fn push(&mut self, from: Option<(u32, ChildRay)>, hit: CachedHit) -> u32 {
+        let building = self.building();
+        let entry = u32::try_from(building.len()).expect("fewer than 2^32 rays a pixel");
+        match from {
+            None => debug_assert_eq!(entry, 0, "the camera ray comes first"),
+            // The next link of a chain: still a chain.
+            Some((parent, ChildRay::Mirror)) if self.children.is_none() && parent + 1 == entry => {}
+            Some((parent, child)) => {
+                self.links()[building.start + parent as usize][child as usize] = entry;
+            }
+        }
+        self.objects.push(hit.object());
+        self.hits.push(hit);
+        if let Some(links) = &mut self.children {
+            links.push([NO_ENTRY; 2]);
+        }
+        entry
+    }
+
+    /// Adds `other`'s entries `range` (one pixel's) to the pixel being built.
+    pub fn extend_from(&mut self, other: &Chains, range: Range<usize>) {
+        if other.has_trees() {
+            self.links();
+        }
+        if let Some(links) = &mut self.children {
+            match &other.children {
+                Some(theirs) => links.extend_from_slice(&theirs[range.clone()]),
+                None => links.extend((0..range.len()).map(|i| chain_link(i, range.len()))),
+            }
+        }
         self.hits.extend_from_slice(&other.hits[range.clone()]);
         self.objects.extend_from_slice(&other.objects[range]);
     }
 
-    /// Ends the chain being built: the next entry starts the next pixel's.
+    /// Ends the pixel being built: the next entry starts the next pixel's.
     pub fn end_chain(&mut self) {
         self.chain_ends.push(self.hits.len() as u32);
     }
+
+    /// The links, made for the chains held if there were none.
+    fn links(&mut self) -> &mut Vec<Children> {
+        let (ends, len) = (&self.chain_ends, self.hits.len());
+        self.children.get_or_insert_with(|| {
+            let mut links = Vec::with_capacity(len.max(1) * 2);
+            let mut start = 0;
+            // Every pixel's entries, and those of the pixel being built.
+            for end in ends.iter().map(|&e| e as usize).chain([len]) {
+                links.extend((0..end - start).map(|i| chain_link(i, end - start)));
+                start = end;
+            }
+            links
+        })
+    }
+
+    /// The entries of every pixel but those below ray `child` of an entry on `object`
+    /// where `cut(object, child)`, and their light slots (`lights` per entry, from
+    /// `slots`); `None` where no entry is cut.
+    pub fn pruned(
+        &self,
+        slots: &[LightSlot],
+        lights: usize,
+        cut: impl Fn(u32, ChildRay) -> bool,
+    ) -> Option<(Chains, Vec<LightSlot>)> {
+        let links = self.children.as_ref()?;
+        let cuts = |entry: usize| {
+            let object = self.objects[entry];
+            [ChildRay::Mirror, ChildRay::Transmitted]
+                .into_iter()
+                .any(|child| links[entry][child as usize] != NO_ENTRY && cut(object, child))
+        };
+        if !(0..self.len()).any(cuts) {
+            return None;
+        }
+        let mut kept = Chains::with_capacity(self.chain_ends.len(), self.len());
+        kept.children = Some(Vec::with_capacity(self.len()));
+        let mut kept_slots = Vec::with_capacity(slots.len());
+        // Per entry of the pixel, its index among those kept (NO_ENTRY: cut; KEEP: to
+        // be kept, not reached yet).
+        const KEEP: u32 = NO_ENTRY - 1;
+        let mut renumbered = Vec::new();
+        for pixel in 0..self.chain_ends.len() {
+            let range = self.chain(pixel);
+            renumbered.clear();
+            renumbered.resize(range.len(), NO_ENTRY);
+            if let Some(root) = renumbered.first_mut() {
+                *root = KEEP;
+            }
+            let mut count = 0;
+            // Parents come before their children: an entry is kept when its parent is
+            // and the ray from it is not cut.
+            for local in 0..range.len() {
+                if renumbered[local] != KEEP {
+                    continue;
+                }
+                let entry = range.start + local;
+                renumbered[local] = count;
+                count += 1;
+                kept.hits.push(self.hits[entry]);
+                kept.objects.push(self.objects[entry]);
+                kept_slots.extend_from_slice(&slots[entry * lights..(entry + 1) * lights]);
+                for child in [ChildRay::Mirror, ChildRay::Transmitted] {
+                    let to = links[entry][child as usize];
+                    if to != NO_ENTRY && !cut(self.objects[entry], child) {
+                        renumbered[to as usize] = KEEP;
+                    }
+                }
+            }
+            let kept_links = kept.children.as_mut().expect("made above");
+            for local in (0..range.len()).filter(|&l| renumbered[l] != NO_ENTRY) {
+                let old = links[range.start + local];
+                kept_links.push(old.map(|to| {
+                    if to == NO_ENTRY {
+                        NO_ENTRY
+                    } else {
+                        renumbered[to as usize]
+                    }
+                }));
+            }
+            kept.end_chain();
+        }
+        Some((kept, kept_slots))
+    }
 }
+
+/// The links of entry `index` of a mirror chain of `len` entries.
+fn chain_link(index: usize, len: usize) -> Children {
+    let next = if index + 1 < len {
+        index as u32 + 1
+    } else {
+        NO_ENTRY
+    };
+    [next, NO_ENTRY]
+}
+
+#[cfg(test)]
+#[path = "chains_tests.rs"]
+mod tests;

@@ -1,4 +1,4 @@
-//! Which term switches a pixel's colour can depend on, worked out from its cached chain
+//! Which term switches a pixel's colour can depend on, worked out from its cached entries
 //! each time it is shaded, so that a switch edit re-shades only the pixels it can change:
 //! turning specular off or on leaves alone every pixel none of whose hits has a Phong
 //! lobe (over half of the default scene's).
@@ -8,14 +8,16 @@
 //! factors are unknown counts as reaching the hit with a lobe.
 
 use glam::DVec3;
+use smallvec::SmallVec;
 
+use super::chains::{NO_ENTRY, PixelEntries};
 use super::light_factors::LightSlot;
 use crate::trace::shade::LitFactors;
 use crate::trace::terms::ActiveTerms;
 use crate::trace::world::World;
 
 /// Switches a pixel depends on (or that an edit changed), for the camera ray's hit and
-/// for the hits of its mirror rays.
+/// for the hits of the rays below it.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub(crate) struct TermDependence(u16);
 
@@ -30,8 +32,10 @@ const LIGHTS: u16 = 1 << 2;
 const SPECULAR: u16 = 1 << 3;
 /// The hit casts a mirror ray when reflection is on.
 const REFLECTION: u16 = 1 << 4;
-/// The bits of the mirror rays' hits sit this far up.
-const MIRROR_HITS: u32 = 5;
+/// The hit casts a transmitted ray when transmission is on.
+const TRANSMISSION: u16 = 1 << 5;
+/// The bits of the hits below the camera ray's sit this far up.
+const MIRROR_HITS: u32 = 6;
 
 impl TermDependence {
     /// Depends on every switch: a pixel whose dependence was not worked out.
@@ -40,7 +44,7 @@ impl TermDependence {
     pub const NONE: Self = Self(0);
 
     /// The switches that differ between `old` and `new`, each the terms of camera rays
-    /// and of mirror rays.
+    /// and of the rays below them.
     #[must_use]
     pub fn switched(old: (ActiveTerms, ActiveTerms), new: (ActiveTerms, ActiveTerms)) -> Self {
         let of = |a: ActiveTerms, b: ActiveTerms| {
@@ -54,6 +58,7 @@ impl TermDependence {
                 (looks_at_lights(a) != looks_at_lights(b), LIGHTS),
                 (a.specular != b.specular, SPECULAR),
                 (a.reflection != b.reflection, REFLECTION),
+                (a.transmission != b.transmission, TRANSMISSION),
             ] {
                 if differs {
                     bits |= bit;
@@ -79,7 +84,7 @@ impl TermDependence {
         Self(self.0 | other.0)
     }
 
-    /// Adds what the entry at `depth` of the mirror chain depends on.
+    /// Adds what an entry at `depth` of the tree depends on.
     #[inline]
     pub fn add(&mut self, depth: usize, entry: EntryTerms) {
         self.0 |= if depth == 0 {
@@ -90,8 +95,8 @@ impl TermDependence {
     }
 }
 
-/// What one entry of a mirror chain depends on, found as the shader's tests go (by
-/// [`DependenceRule::of_chain`] and by the quick re-shade as it shades).
+/// What one entry of a tree depends on, found as the shader's tests go (by
+/// [`DependenceRule::of_pixel`] and by the quick re-shade as it shades).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub(crate) struct EntryTerms(u16);
 
@@ -108,17 +113,21 @@ impl EntryTerms {
         })
     }
 
-    /// A hit whose `ka * ambient` is `ambient` and which casts a mirror ray when
-    /// reflection is on exactly if `casts_mirror_ray`.
+    /// A hit whose `ka * ambient` is `ambient`, which casts a mirror ray when
+    /// reflection is on exactly if `casts_mirror_ray` and a transmitted ray when
+    /// transmission is on exactly if `casts_transmitted_ray`.
     #[must_use]
     #[inline]
-    pub fn hit(ambient: DVec3, casts_mirror_ray: bool) -> Self {
+    pub fn hit(ambient: DVec3, casts_mirror_ray: bool, casts_transmitted_ray: bool) -> Self {
         let mut bits = 0;
         if ambient != DVec3::ZERO {
             bits |= AMBIENT;
         }
         if casts_mirror_ray {
             bits |= REFLECTION;
+        }
+        if casts_transmitted_ray {
+            bits |= TRANSMISSION;
         }
         Self(bits)
     }
@@ -156,7 +165,7 @@ impl EntryTerms {
 #[derive(Clone, Copy, Debug)]
 struct ObjectTerms {
     /// What an entry on it depends on before its lights: below `max_depth` (a mirror
-    /// ray cast when reflection is on) and at it.
+    /// and a transmitted ray cast when their terms are on) and at it.
     below_max: EntryTerms,
     at_max: EntryTerms,
     /// A diffuse or specular colour: the shader looks at the lights.
@@ -164,7 +173,7 @@ struct ObjectTerms {
 }
 
 /// The dependence of pixels in one world: for those shaded in full
-/// ([`Self::of_chain`]), and what the quick re-shade starts each entry from.
+/// ([`Self::of_pixel`]), and what the quick re-shade starts each entry from.
 #[derive(Clone, Debug)]
 pub(crate) struct DependenceRule {
     objects: Vec<ObjectTerms>,
@@ -183,8 +192,12 @@ impl DependenceRule {
                 let material = &world.materials[object.material];
                 let ambient = material.ambient * world.ambient;
                 ObjectTerms {
-                    below_max: EntryTerms::hit(ambient, material.mirror != DVec3::ZERO),
-                    at_max: EntryTerms::hit(ambient, false),
+                    below_max: EntryTerms::hit(
+                        ambient,
+                        material.mirror != DVec3::ZERO,
+                        material.transmission != DVec3::ZERO,
+                    ),
+                    at_max: EntryTerms::hit(ambient, false, false),
                     local: material.diffuse != DVec3::ZERO || material.specular != DVec3::ZERO,
                 }
             })
@@ -215,23 +228,38 @@ impl DependenceRule {
         }
     }
 
-    /// The dependence of a pixel whose chain met `objects` (`u32::MAX`: a miss), with
-    /// `lights` light slots per entry in `slots`.
+    /// The dependence of a pixel with cached entries `entries` (`lights` light slots
+    /// each): every entry's, the rays the pixel's tree no longer follows too.
     #[must_use]
-    pub fn of_chain(&self, objects: &[u32], slots: &[LightSlot], lights: usize) -> TermDependence {
+    pub fn of_pixel(&self, entries: &PixelEntries, lights: usize) -> TermDependence {
         let mut all = TermDependence::NONE;
-        for (depth, &object) in objects.iter().enumerate() {
+        let mut add = |index: usize, depth: u32| {
+            let object = entries.objects[index];
             let entry = match self.objects.get(object as usize) {
                 None => self.miss,
                 Some(terms) => {
-                    let mut entry = self.hit_terms(object as usize, depth as u32);
+                    let mut entry = self.hit_terms(object as usize, depth);
                     if terms.local {
-                        entry.lights(&slots[depth * lights..(depth + 1) * lights]);
+                        entry.lights(&entries.slots[index * lights..(index + 1) * lights]);
                     }
                     entry
                 }
             };
-            all.add(depth, entry);
+            all.add(depth as usize, entry);
+        };
+        match entries.children {
+            // A chain: an entry's index is its depth.
+            None => (0..entries.objects.len()).for_each(|i| add(i, i as u32)),
+            Some(children) => {
+                // Parents come before their children.
+                let mut depths: SmallVec<[u32; 16]> = SmallVec::from_elem(0, children.len());
+                for (index, links) in children.iter().enumerate() {
+                    for &child in links.iter().filter(|&&c| c != NO_ENTRY) {
+                        depths[child as usize] = depths[index] + 1;
+                    }
+                    add(index, depths[index]);
+                }
+            }
         }
         all
     }
@@ -279,6 +307,7 @@ mod tests {
         assert_eq!(off(Term::Shadows), both(LIGHTS));
         assert_eq!(off(Term::Ambient), both(AMBIENT));
         assert_eq!(off(Term::Reflection), both(REFLECTION));
+        assert_eq!(off(Term::Transmission), both(TRANSMISSION));
         // With diffuse off, specular decides whether the lights are looked at at all.
         let mut no_diffuse = on;
         no_diffuse.set(Term::Diffuse, false);
@@ -290,7 +319,7 @@ mod tests {
         let solo = TermDependence::switched(terms(on), terms(on.with_solo(Some(Term::Diffuse))));
         assert_eq!(
             solo,
-            TermDependence(AMBIENT | BACKGROUND | SPECULAR | REFLECTION)
+            TermDependence(AMBIENT | BACKGROUND | SPECULAR | REFLECTION | TRANSMISSION)
         );
     }
 
@@ -317,10 +346,14 @@ mod tests {
         );
         assert_eq!(EntryTerms::miss(DVec3::ZERO).0, 0);
         assert_eq!(EntryTerms::miss(DVec3::splat(0.1)).0, BACKGROUND);
-        assert_eq!(EntryTerms::hit(DVec3::ZERO, true).0, REFLECTION);
-        assert_eq!(EntryTerms::hit(DVec3::splat(f64::NAN), false).0, AMBIENT);
+        assert_eq!(EntryTerms::hit(DVec3::ZERO, true, false).0, REFLECTION);
+        assert_eq!(EntryTerms::hit(DVec3::ZERO, false, true).0, TRANSMISSION);
+        assert_eq!(
+            EntryTerms::hit(DVec3::splat(f64::NAN), false, false).0,
+            AMBIENT
+        );
         let mut chain = TermDependence::NONE;
-        chain.add(0, EntryTerms::hit(DVec3::ONE, false));
+        chain.add(0, EntryTerms::hit(DVec3::ONE, false, false));
         chain.add(2, EntryTerms::miss(DVec3::ONE));
         assert_eq!(chain, TermDependence(AMBIENT | BACKGROUND << MIRROR_HITS));
     }

@@ -1,9 +1,10 @@
 //! The hit cache: every ray the one-sample full-resolution pass traced, kept so that an
 //! edit that moves nothing can be re-shaded instead of re-traced ([`crate::trace::render::cached`]).
 //!
-//! Per pixel it keeps the mirror chain of the pixel-centre sample, one entry per depth
-//! traced (the closest hit, or the miss that ends the chain), and per entry and light
-//! what that light's shadow ray met: clear, a blocker, or "not cast" (the shader did not
+//! Per pixel it keeps the tree of rays of the pixel-centre sample (`super::chains`): an
+//! entry per ray traced (the closest hit, or the miss that ends a branch), each found by
+//! its parent's entry and which of the parent's rays it is, and per entry and light what
+//! that light's shadow ray met: clear, a blocker, or "not cast" (the shader did not
 //! need it, e.g. the light was behind the surface or the material had no diffuse and no
 //! specular); for a sphere light, how many of its rays reached it. Which rays a pixel needs depends on the materials, the switches and the
 //! view; what each traced ray found depends only on the geometry (objects, camera, size)
@@ -14,23 +15,28 @@
 //!   shadow answer too for each light whose shadow target (position, or direction for a
 //!   directional light) is bit for bit the same; the other lights' shadow rays are cast
 //!   again, and so is every ray the new scene needs that the cache lacks (a mirror made
-//!   shiny, a deeper `max_depth`, a light in front of a surface that was behind it).
+//!   shiny, glass made transmissive, a deeper `max_depth`, a light in front of a surface
+//!   that was behind it);
+//! - an object's `ior` changed: the rays it transmits bend another way, and the entries
+//!   below them (only those) are dropped and traced again
+//!   ([`super::ray_geometry::bent_objects`]).
 
 use std::sync::Arc;
 
-use glam::{DAffine3, DVec3};
+use glam::DVec3;
 
-use super::chains::{CachedHit, Chains};
+use super::cached_hit::CachedHit;
+use super::chains::{Chains, Children};
 use super::dependence::TermDependence;
 use super::keep_rule::{KeepRule, TileSummary};
 use super::light_factors;
 use super::light_factors::LightSlot;
 use super::pixel_colour::PixelColour;
-use crate::scene::{Camera, Material};
+use super::ray_geometry::{RayGeometry, ShadowTarget, bent_objects};
+use crate::scene::Material;
 use crate::trace::film::RenderOptions;
-use crate::trace::shapes::Primitive;
 use crate::trace::terms::{TermSwitches, View};
-use crate::trace::world::{CsgTree, SphereLight, World, WorldLight};
+use crate::trace::world::{SphereLight, World, WorldLight};
 
 /// The most memory the preview's cache may take, as [`cache_fits`] estimates it: larger
 /// previews re-trace every edit.
@@ -38,28 +44,26 @@ pub const MAX_CACHE_BYTES: usize = 512 << 20;
 
 /// Whether the cache of `world` rendered at `width` x `height` stays under
 /// [`MAX_CACHE_BYTES`], for two rays a pixel (the default scene has 1.6: some 160 MB at
-/// 800 x 600 with its three lights, each ray 92 bytes and 32 more per light).
+/// 800 x 600 with its three lights, each ray 92 bytes and 32 more per light), or for
+/// `rays` rays (closest-hit rays: camera, mirror and transmitted) where a pass traced
+/// them already (`scenes/glass.ron` has 2.6 a pixel, each with 8 bytes of links more).
 #[must_use]
-pub fn cache_fits(world: &World, width: u32, height: u32) -> bool {
+pub fn cache_fits(world: &World, width: u32, height: u32, rays: Option<u64>) -> bool {
     let per_ray =
         size_of::<CachedHit>() + size_of::<u32>() + world.lights.len() * size_of::<LightSlot>();
-    let per_pixel = 2 * per_ray + size_of::<PixelColour>() + size_of::<u32>();
-    (width as usize)
-        .saturating_mul(height as usize)
-        .saturating_mul(per_pixel)
+    let pixels = (width as usize).saturating_mul(height as usize);
+    let per_pixel = size_of::<PixelColour>() + size_of::<u32>();
+    let rays = rays.map_or(pixels.saturating_mul(2), |rays| {
+        usize::try_from(rays).unwrap_or(usize::MAX)
+    });
+    let links = if rays > pixels {
+        size_of::<Children>()
+    } else {
+        0
+    };
+    rays.saturating_mul(per_ray + links)
+        .saturating_add(pixels.saturating_mul(per_pixel))
         <= MAX_CACHE_BYTES
-}
-
-/// Whether the cache can hold the rays of `world`: a chain of rays per pixel, and per
-/// light at each hit a shadow answer (a sphere light's as the count of its rays that
-/// reach it). A transmissive material makes trees (a mirror and a transmitted ray from
-/// one hit); the preview traces such worlds afresh on every edit instead.
-#[must_use]
-pub fn cache_serves(world: &World) -> bool {
-    world
-        .materials
-        .iter()
-        .all(|material| material.transmission == DVec3::ZERO)
 }
 
 /// The cached rays of one tile. The chains and light slots are shared with the cache
@@ -67,7 +71,7 @@ pub fn cache_serves(world: &World) -> bool {
 /// copies nothing.
 #[derive(Clone, Debug)]
 pub(crate) struct TileHits {
-    /// The pixels' mirror chains.
+    /// The pixels' entries.
     pub chains: Arc<Chains>,
     /// Per entry of `chains.hits`, one slot per light of the cache: its shadow ray's
     /// answer (`NOT_CAST`, `CLEAR` or the blocker's world index) and what it gave the hit.
@@ -129,78 +133,6 @@ fn object_materials(world: &World) -> Vec<Material> {
         .collect()
 }
 
-/// What a traced ray's answer depends on besides the light: the image size, the camera
-/// and every object's shape and placement.
-#[derive(Clone, Debug, PartialEq)]
-struct RayGeometry {
-    width: u32,
-    height: u32,
-    camera: Camera,
-    /// Each object's shape, placement and (for a mesh) which triangles.
-    objects: Vec<(Primitive, DAffine3, Option<u64>)>,
-    /// The CSG trees, compared by value: a node's operands are its shape.
-    trees: Vec<Option<Arc<CsgTree>>>,
-    object_scene_index: Vec<usize>,
-}
-
-impl RayGeometry {
-    fn of(world: &World, width: u32, height: u32) -> Self {
-        Self {
-            width,
-            height,
-            camera: world.camera.clone(),
-            objects: world
-                .objects
-                .iter()
-                .map(|o| {
-                    (
-                        o.shape,
-                        o.world_from_object,
-                        o.mesh.as_ref().map(|m| m.id()),
-                    )
-                })
-                .collect(),
-            trees: world.objects.iter().map(|o| o.csg.clone()).collect(),
-            object_scene_index: world.object_scene_index.clone(),
-        }
-    }
-}
-
-/// What a light's shadow rays depend on: where they go (bit for bit).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum ShadowTarget {
-    /// To a point (point and spot lights).
-    Position([u64; 3]),
-    /// To a sphere (point and spot lights with a radius): its centre, its radius and
-    /// how many rays aim at it.
-    Sphere([u64; 3], u64, u32),
-    /// Towards a light at infinity.
-    Direction([u64; 3]),
-}
-
-impl ShadowTarget {
-    fn of(light: &WorldLight, sphere: Option<SphereLight>) -> Self {
-        let bits = |v: DVec3| v.to_array().map(f64::to_bits);
-        match (*light, sphere) {
-            (WorldLight::Point { position, .. } | WorldLight::Spot { position, .. }, None) => {
-                Self::Position(bits(position))
-            }
-            (
-                WorldLight::Point { position, .. } | WorldLight::Spot { position, .. },
-                Some(sphere),
-            ) => Self::Sphere(bits(position), sphere.radius.to_bits(), sphere.samples),
-            (WorldLight::Directional { to_light, .. }, _) => Self::Direction(bits(to_light)),
-        }
-    }
-
-    /// Per light of `world`, its target.
-    fn all(world: &World) -> Vec<Self> {
-        (world.lights.iter().zip(&world.light_spheres))
-            .map(|(light, sphere)| Self::of(light, *sphere))
-            .collect()
-    }
-}
-
 /// Why a cache cannot serve a world.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum RetraceReason {
@@ -222,6 +154,9 @@ pub enum Reuse {
         /// Per light of the new world, the cache's column of shadow answers that stays
         /// valid; `None` where that light's shadow rays must be cast again.
         kept_columns: Vec<Option<usize>>,
+        /// Some object's `ior` changed: the rays below its transmitted rays are traced
+        /// again.
+        bent: bool,
     },
 }
 
@@ -238,9 +173,21 @@ impl Reuse {
     pub fn recast_lights(&self) -> Vec<usize> {
         match self {
             Reuse::Retrace(_) => Vec::new(),
-            Reuse::Reshade { kept_columns } => (0..kept_columns.len())
+            Reuse::Reshade { kept_columns, .. } => (0..kept_columns.len())
                 .filter(|&i| kept_columns[i].is_none())
                 .collect(),
+        }
+    }
+
+    /// Whether the re-shade casts again rays the cache held (a moved light's shadow
+    /// rays, the rays below glass whose index changed): up to a traced frame's work.
+    #[must_use]
+    pub fn traces_again(&self) -> bool {
+        match self {
+            Reuse::Retrace(_) => false,
+            Reuse::Reshade { kept_columns, bent } => {
+                *bent || kept_columns.iter().any(Option::is_none)
+            }
         }
     }
 }
@@ -306,6 +253,12 @@ impl HitCache {
         Some(KeepRule::new(changed, switched))
     }
 
+    /// Per object of `world`, whether its transmitted rays bend another way than when
+    /// they were cached (the entries below them are stale); `None` where no object's do.
+    pub(crate) fn bent_objects(&self, world: &World) -> Option<Vec<bool>> {
+        Some(bent_objects(&self.object_materials, world)).filter(|bent| bent.contains(&true))
+    }
+
     /// Per light of `world`, the column of light factors that serves it.
     pub(crate) fn factor_columns(&self, world: &World) -> Vec<Option<usize>> {
         light_factors::factor_columns(&self.placements, world)
@@ -341,7 +294,8 @@ impl HitCache {
             .iter()
             .map(|target| self.lights.iter().position(|old| old == target))
             .collect();
-        Reuse::Reshade { kept_columns }
+        let bent = bent_objects(&self.object_materials, world).contains(&true);
+        Reuse::Reshade { kept_columns, bent }
     }
 
     /// Rays held (closest hits and misses; shadow answers not counted).
@@ -356,7 +310,7 @@ impl HitCache {
         self.tiles
             .iter()
             .map(|t| {
-                t.chains.capacity() * (size_of::<CachedHit>() + size_of::<u32>())
+                t.chains.capacity() * t.chains.entry_bytes()
                     + t.slots.capacity() * size_of::<LightSlot>()
                     + t.chains.pixel_capacity() * size_of::<u32>()
             })
@@ -379,16 +333,19 @@ mod tests {
             .1;
         let mut scene = parse_scene(text).unwrap();
         let world = World::new(&scene).unwrap();
-        assert!(cache_fits(&world, 800, 600));
-        assert!(cache_fits(&world, 1280, 960));
-        assert!(!cache_fits(&world, 4000, 3000));
+        assert!(cache_fits(&world, 800, 600, None));
+        assert!(cache_fits(&world, 1280, 960, None));
+        assert!(!cache_fits(&world, 4000, 3000, None));
         let light = scene.lights.last().unwrap().clone();
         scene.lights.extend(std::iter::repeat_n(light, 10));
         let many = World::new(&scene).unwrap();
         assert!(
-            !cache_fits(&many, 1280, 960),
+            !cache_fits(&many, 1280, 960, None),
             "each light adds a slot to every ray"
         );
-        assert!(cache_fits(&many, 640, 480));
+        assert!(cache_fits(&many, 640, 480, None));
+        // Counted rays: a tree of 8 rays a pixel does not fit where 2 would.
+        assert!(!cache_fits(&world, 1280, 960, Some(8 * 1280 * 960)));
+        assert!(cache_fits(&world, 1280, 960, Some(1280 * 960)));
     }
 }

@@ -4,13 +4,13 @@
 //! ray, a light sample or a lobe. They depend on the geometry, on where each light is and
 //! points ([`crate::trace::world::WorldLight::placement`]) and, for the lobe, on the shininess.
 
-use super::chains::NOT_CAST;
+use super::cached_hit::NOT_CAST;
 use crate::scene::Material;
 use crate::trace::shade::LitFactors;
 use crate::trace::world::{World, WorldLight};
 
 /// What the cache keeps per hit and light: the shadow ray's answer
-/// ([`super::chains::encode_blocker`], or `NOT_CAST`) and the light's factors.
+/// ([`super::cached_hit::encode_blocker`], or `NOT_CAST`) and the light's factors.
 /// Packed to 28 bytes instead of 32: a re-shade reads little else, and waits on memory.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[repr(C, packed(4))]

@@ -2,6 +2,7 @@
 //! hit, and the rule that says which pixels an edit leaves as they were, so a material or
 //! switch edit re-shades the cached hits without tracing a ray.
 
+mod cached_hit;
 mod chains;
 mod dependence;
 mod hit_cache;
@@ -10,11 +11,13 @@ mod light_factors;
 mod pixel_colour;
 mod pixel_rays;
 mod quick_shade;
+mod quick_tree;
+mod ray_geometry;
 mod tile_rays;
 
+pub(crate) use chains::PixelEntries;
 pub(crate) use dependence::{DependenceRule, TermDependence};
-pub use hit_cache::{HitCache, MAX_CACHE_BYTES, RetraceReason, Reuse, cache_fits, cache_serves};
-pub(crate) use light_factors::LightSlot;
+pub use hit_cache::{HitCache, MAX_CACHE_BYTES, RetraceReason, Reuse, cache_fits};
 pub(crate) use pixel_colour::PixelColour;
 pub(crate) use pixel_rays::PixelRays;
 pub(crate) use quick_shade::QuickShade;

@@ -13,7 +13,8 @@ use crate::trace::ray_counts::RayCounts;
 pub(crate) struct PixelColour {
     /// The colour.
     pub colour: DVec3,
-    /// Primary, shadow and reflection rays behind it.
+    /// Shadow, mirror and transmitted rays behind it (and one camera ray: one sample a
+    /// pixel), each saturating at `u32::MAX`.
     pub rays: [u32; 3],
     /// The switches whose change may change it.
     pub depends: TermDependence,
@@ -22,9 +23,10 @@ pub(crate) struct PixelColour {
 impl PixelColour {
     /// `colour`, made of the rays `rays`, depending on the switches `depends`.
     pub fn of(colour: DVec3, rays: &RayCounts, depends: TermDependence) -> Self {
+        debug_assert_eq!(rays.primary, 1, "one camera ray a pixel");
         Self {
             colour,
-            rays: [rays.primary, rays.shadow, rays.reflection]
+            rays: [rays.shadow, rays.reflection, rays.transmission]
                 .map(|n| u32::try_from(n).unwrap_or(u32::MAX)),
             depends,
         }
@@ -33,11 +35,10 @@ impl PixelColour {
     /// The rays behind it.
     pub fn counts(&self) -> RayCounts {
         RayCounts {
-            primary: u64::from(self.rays[0]),
-            shadow: u64::from(self.rays[1]),
-            reflection: u64::from(self.rays[2]),
-            // The cache holds only worlds without transmission (`cache_serves`).
-            transmission: 0,
+            primary: 1,
+            shadow: u64::from(self.rays[0]),
+            reflection: u64::from(self.rays[1]),
+            transmission: u64::from(self.rays[2]),
         }
     }
 }

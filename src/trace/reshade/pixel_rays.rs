@@ -1,13 +1,12 @@
 //! [`PixelRays`], the [`RaySource`] that answers a pixel's rays from its tile's cached
-//! chains and light slots (`super::tile_rays`) and traces (and keeps) whatever they lack.
+//! entries and light slots (`super::tile_rays`) and traces (and keeps) whatever they lack.
 
-use super::chains::{
+use super::cached_hit::{
     CachedHit, NOT_CAST, decode_blocker, decode_sphere, encode_blocker, encode_sphere,
 };
-use super::light_factors::LightSlot;
 use super::tile_rays::TileRays;
 use crate::trace::ray::Ray;
-use crate::trace::shade::{LitFactors, LiveRays, MakeRay, RaySource, ShadowRequest};
+use crate::trace::shade::{LitFactors, LiveRays, MakeRay, RayAt, RaySource, ShadowRequest};
 use crate::trace::world::{SurfacePoint, World};
 
 /// Answers one pixel's rays from its tile, tracing (and keeping) whatever it lacks, and
@@ -22,17 +21,10 @@ pub(crate) struct PixelRays<'t, 'c, 's> {
 }
 
 impl RaySource for PixelRays<'_, '_, '_> {
-    fn closest_hit(&mut self, world: &World, depth: u32, ray: &Ray) -> Option<SurfacePoint> {
-        let chain = self.tile.chain();
-        let depth = depth as usize;
+    fn closest_hit(&mut self, world: &World, at: RayAt, ray: &Ray) -> Option<SurfacePoint> {
         let lights = self.tile.lights;
-        if depth < chain.len() {
-            let entry = chain.start + depth;
-            let hit = match &self.tile.grown {
-                Some((chains, _)) => chains.hit(entry),
-                None => self.tile.chains.hit(entry),
-            };
-            let hit = hit.point();
+        if let Some(entry) = self.tile.entry_for(at) {
+            let hit = self.tile.hit(entry).point();
             if hit.is_some_and(|h| self.stale_lobes.get(h.object).copied().unwrap_or(false)) {
                 for slot in entry * lights..(entry + 1) * lights {
                     self.tile.slot_mut(slot).factors = LitFactors::UNKNOWN;
@@ -40,17 +32,14 @@ impl RaySource for PixelRays<'_, '_, '_> {
             }
             return hit;
         }
-        // The chain is walked depth by depth: the missing entry is the next one.
-        debug_assert_eq!(depth, chain.len());
-        if depth == 0 {
-            self.tile.traced.primary += 1;
-        } else {
-            self.tile.traced.reflection += 1;
+        let traced = &mut self.tile.traced;
+        match at.from {
+            None => traced.primary += 1,
+            Some((_, branch)) if branch.is_transmitted() => traced.transmission += 1,
+            Some(_) => traced.reflection += 1,
         }
-        let hit = self.live.closest_hit(world, depth as u32, ray);
-        let (chains, slots) = self.tile.grow();
-        chains.push(CachedHit::new(hit.as_ref()));
-        slots.resize(slots.len() + lights, LightSlot::NOTHING);
+        let hit = self.live.closest_hit(world, at, ray);
+        self.tile.push_entry(at, CachedHit::new(hit.as_ref()));
         hit
     }
 
@@ -60,7 +49,7 @@ impl RaySource for PixelRays<'_, '_, '_> {
             self.tile.traced.shadow += 1;
             return self.live.occluder(world, to, ray);
         }
-        let slot = self.tile.slot_index(to.depth, to.light);
+        let slot = self.tile.slot_index(to.node, to.light);
         let code = self.tile.slot(slot).shadow;
         if code != NOT_CAST {
             return decode_blocker(code);
@@ -75,11 +64,11 @@ impl RaySource for PixelRays<'_, '_, '_> {
     /// another size, was forgotten): only a missing one is cast and kept.
     fn sphere_rays_clear(
         &mut self,
-        depth: u32,
+        node: u32,
         light: usize,
         cast: impl FnOnce(&mut Self) -> (u32, Option<usize>),
     ) -> (u32, Option<usize>) {
-        let slot = self.tile.slot_index(depth, light);
+        let slot = self.tile.slot_index(node, light);
         if let Some((clear, _)) = decode_sphere(self.tile.slot(slot).shadow) {
             return (clear, None);
         }
@@ -95,11 +84,11 @@ impl RaySource for PixelRays<'_, '_, '_> {
     /// forgotten): only unknown ones are worked out and kept.
     fn keep_light_factors(
         &mut self,
-        depth: u32,
+        node: u32,
         light: usize,
         factors: impl FnOnce() -> LitFactors,
     ) {
-        let slot = self.tile.slot_index(depth, light);
+        let slot = self.tile.slot_index(node, light);
         let kept = self.tile.slot(slot).factors;
         if kept.is_unknown() {
             self.tile.slot_mut(slot).factors = factors();

@@ -1,21 +1,22 @@
-//! The quick re-shade: a pixel's colour from its cached mirror chain, its shadow answers
-//! and what each light gave each hit ([`LitFactors`]), with no ray, no light sample and
-//! no Phong lobe worked out again. An edit of colours (materials other than shininess,
-//! light colours and intensities, ambient, background) or of the term switches needs no
-//! more.
+//! The quick re-shade: a pixel's colour from its cached entries (a mirror chain, or a
+//! tree where there is glass), its shadow answers and what each light gave each hit
+//! ([`LitFactors`]), with no ray, no light sample and no Phong lobe worked out again. An
+//! edit of colours (materials other than shininess and `ior`, light colours and
+//! intensities, ambient, background) or of the term switches needs no more.
 //!
 //! It takes the shader's steps (`Tracer::shade` for the beauty view, then the fold of
-//! [`crate::trace::shade::fold_back`], deepest entry first, through the same
-//! [`Bounce::returns`] step but with no chain kept) with the shared term functions of
-//! [`crate::trace::shade::phong`], so its colour is
-//! the shader's bit for bit (tests/reshade.rs holds every edit kind to that). Where the
+//! [`crate::trace::shade::fold_back`], deepest ray first, through the same
+//! [`Bounce::returns`] step) with the shared term functions of
+//! [`crate::trace::shade::phong`], so its colour is the shader's bit for bit
+//! (tests/reshade.rs and tests/reshade_glass.rs hold every edit kind to that). Where the
 //! cache lacks something the shader would need (a ray never traced, a shadow ray never
 //! cast, a light's factors unknown, a lobe for another shininess) it gives up, and the
 //! pixel is shaded in full.
 
 use glam::DVec3;
 
-use super::chains::{CLEAR, NOT_CAST, decode_sphere};
+use super::cached_hit::{CLEAR, NOT_CAST, decode_sphere};
+use super::chains::PixelEntries;
 use super::dependence::{DependenceRule, EntryTerms, TermDependence};
 use super::light_factors::LightSlot;
 use crate::trace::ray_counts::RayCounts;
@@ -27,12 +28,13 @@ use crate::trace::world::falloff;
 
 /// What an entry on one object needs of its material, looked up once per pass.
 #[derive(Clone, Copy, Debug)]
-struct ObjectShade {
+pub(super) struct ObjectShade {
     /// `ka * ambient`, as the shader works it out.
     ambient: DVec3,
     diffuse: DVec3,
     specular: DVec3,
-    mirror: DVec3,
+    pub(super) mirror: DVec3,
+    pub(super) transmission: DVec3,
     /// A diffuse or specular colour: the shader looks at the lights.
     has_local: bool,
     /// The cached lobes are for another shininess.
@@ -48,11 +50,14 @@ pub(crate) struct QuickShade<'r> {
     dependence: &'r DependenceRule,
     max_depth: u32,
     /// How mirror colours combine and where they are clamped.
-    conventions: crate::scene::Conventions,
-    objects: Vec<ObjectShade>,
+    pub(super) conventions: crate::scene::Conventions,
+    pub(super) objects: Vec<ObjectShade>,
     /// Per light, its strength; `None` for a light of zero strength, which the shader
     /// does not sample.
     lights: Vec<Option<DVec3>>,
+    /// Some ray may cast a transmitted ray (a material has a transmission and the term
+    /// is on): without glass a pixel's rays are a mirror chain.
+    transmits: bool,
 }
 
 impl<'r> QuickShade<'r> {
@@ -77,6 +82,7 @@ impl<'r> QuickShade<'r> {
                     diffuse: material.diffuse,
                     specular: material.specular,
                     mirror: material.mirror,
+                    transmission: material.transmission,
                     has_local: material.diffuse != DVec3::ZERO || material.specular != DVec3::ZERO,
                     stale_lobes,
                 }
@@ -87,6 +93,11 @@ impl<'r> QuickShade<'r> {
             .iter()
             .map(|light| Some(light.strength()).filter(|s| *s != DVec3::ZERO))
             .collect();
+        let transmits = (primary.transmission || secondary.transmission)
+            && world
+                .materials
+                .iter()
+                .any(|m| m.transmission != DVec3::ZERO);
         Some(Self {
             primary,
             secondary,
@@ -96,15 +107,32 @@ impl<'r> QuickShade<'r> {
             conventions: world.conventions,
             objects,
             lights,
+            transmits,
         })
     }
 
-    /// The colour of the pixel whose chain's entries met `objects` (`u32::MAX`: a miss),
-    /// with `lights` light slots per entry in `slots`, and the switches it depends on
-    /// (worked out as it is shaded, as [`super::dependence::DependenceRule`] would); also
-    /// the rays the shader would count for it. `None` where the cache cannot answer.
+    /// The colour of the pixel with cached entries `entries` (`lights` light slots
+    /// each), and the switches it depends on (worked out as it is shaded, as
+    /// [`super::dependence::DependenceRule`] would); also the rays the shader would count
+    /// for it. `None` where the cache cannot answer.
     #[inline]
     pub fn pixel(
+        &self,
+        entries: &PixelEntries,
+        lights: usize,
+        counts: &mut RayCounts,
+    ) -> Option<(DVec3, TermDependence)> {
+        match entries.children {
+            None => self.chain_pixel(entries.objects, entries.slots, lights, counts),
+            Some(children) => self.tree_pixel(entries, children, lights, counts),
+        }
+    }
+
+    /// [`Self::pixel`] for entries that are a mirror chain. Inlined into the tile loop,
+    /// as it was before trees (out of line, a flat scene's material edit took 10% more
+    /// time).
+    #[inline(always)]
+    fn chain_pixel(
         &self,
         objects: &[u32],
         slots: &[LightSlot],
@@ -117,6 +145,13 @@ impl<'r> QuickShade<'r> {
             .iter()
             .enumerate()
             .position(|(depth, &object)| !self.casts_mirror_ray(depth, object))?;
+        // Nor does a chain hold a transmitted ray.
+        if self.transmits
+            && (objects[..=last].iter().enumerate())
+                .any(|(depth, &object)| self.casts_transmitted_ray(depth, object))
+        {
+            return None;
+        }
         let mut own = RayCounts {
             primary: 1,
             ..RayCounts::default()
@@ -165,17 +200,26 @@ impl<'r> QuickShade<'r> {
     /// Whether the shader casts a mirror ray from entry `depth` on `object`
     /// (`u32::MAX`: a miss, which casts none).
     #[inline]
-    fn casts_mirror_ray(&self, depth: usize, object: u32) -> bool {
+    pub(super) fn casts_mirror_ray(&self, depth: usize, object: u32) -> bool {
         object != u32::MAX
             && self.terms(depth).reflection
             && depth < self.max_depth as usize
             && self.objects[object as usize].mirror != DVec3::ZERO
     }
 
+    /// Whether the shader casts a transmitted ray from entry `depth` on `object`.
+    #[inline]
+    pub(super) fn casts_transmitted_ray(&self, depth: usize, object: u32) -> bool {
+        object != u32::MAX
+            && self.terms(depth).transmission
+            && depth < self.max_depth as usize
+            && self.objects[object as usize].transmission != DVec3::ZERO
+    }
+
     /// One entry's own colour (its mirror ray's share apart) and what the entry depends
     /// on. Inlined into [`Self::pixel`], as the shader's `shade` is.
     #[inline(always)]
-    fn entry(
+    pub(super) fn entry(
         &self,
         depth: usize,
         object: u32,

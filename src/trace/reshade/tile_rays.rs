@@ -1,24 +1,26 @@
 //! One tile's rays during the one-sample pass ([`crate::trace::render::cached`]): the
-//! previous cache's chains and light slots read in place, grown where a pixel needs a ray
+//! previous cache's entries and light slots read in place, grown where a pixel needs a ray
 //! they lack (`super::pixel_rays` answers the shader from them).
 
 use std::sync::Arc;
 
 use glam::DVec3;
+use smallvec::SmallVec;
 
-use super::chains::{Chains, NOT_CAST};
+use super::cached_hit::{CachedHit, NOT_CAST};
+use super::chains::{Chains, ChildRay, PixelEntries};
 use super::dependence::TermDependence;
 use super::hit_cache::TileHits;
 use super::keep_rule::{KeepRule, TileSummary};
 use super::light_factors::LightSlot;
 use super::pixel_colour::PixelColour;
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::shade::LitFactors;
+use crate::trace::shade::{LitFactors, RayAt};
 
-/// One tile's rays during the pass. It reads the previous cache's chains in place, shared,
-/// until a pixel needs a ray the cache lacks; from then on the tile's chains are rebuilt
-/// (the pixels before copied at once, each later one as it comes). Light slots are
-/// written into the shared ones on first change (copied once per tile).
+/// One tile's rays during the pass. It reads the previous cache's entries in place,
+/// shared, until a pixel needs a ray the cache lacks; from then on the tile's entries are
+/// rebuilt (the pixels before copied at once, each later one as it comes). Light slots
+/// are written into the shared ones on first change (copied once per tile).
 pub(crate) struct TileRays {
     pub(super) chains: Arc<Chains>,
     slots: Arc<Vec<LightSlot>>,
@@ -39,9 +41,12 @@ pub(crate) struct TileRays {
     /// read.
     pixel: usize,
     read_chain: std::ops::Range<usize>,
-    /// Where the pixel's chain starts, read or rebuilt (rebuilding keeps the entries
+    /// Where the pixel's entries start, read or rebuilt (rebuilding keeps the entries
     /// before it where they were, so this holds for the whole pixel).
     entry_start: usize,
+    /// Per ray of the pixel's tree shaded so far ([`RayAt::node`]), its entry (from the
+    /// pixel's first).
+    nodes: SmallVec<[u32; 16]>,
     pub(super) lights: usize,
     pub traced: RayCounts,
 }
@@ -54,6 +59,10 @@ pub(crate) struct SlotColumns<'a> {
     pub shadows: &'a [Option<usize>],
     /// Per new light, the old column whose light factors stay valid.
     pub factors: &'a [Option<usize>],
+    /// Per world object, whether its transmitted rays go another way now (its `ior`
+    /// changed): the entries below them are dropped, to be traced again. `None`: no
+    /// object's do.
+    pub bent: Option<&'a [bool]>,
 }
 
 impl TileRays {
@@ -81,10 +90,23 @@ impl TileRays {
             }
             Arc::new(remapped)
         };
+        let lights = columns.shadows.len();
+        // (The summary read still holds: its objects, a superset of those kept, are
+        // what decides whether the tile can be kept whole, and a pixel with an entry cut
+        // met a changed material, so it is shaded.)
+        let pruned = columns.bent.and_then(|bent| {
+            old.chains.pruned(&slots, lights, |object, child| {
+                child == ChildRay::Transmitted && bent.get(object as usize) == Some(&true)
+            })
+        });
+        let (chains, slots) = match pruned {
+            Some((chains, slots)) => (Arc::new(chains), Arc::new(slots)),
+            None => (Arc::clone(&old.chains), slots),
+        };
         Self {
             old_colours: Some(Arc::clone(&old.colours)),
             old_summary: old.summary,
-            ..Self::at_start(Arc::clone(&old.chains), slots, columns.shadows.len())
+            ..Self::at_start(chains, slots, lights)
         }
     }
 
@@ -121,15 +143,17 @@ impl TileRays {
             pixel: 0,
             read_chain: 0..0,
             entry_start: 0,
+            nodes: SmallVec::new(),
             lights,
             traced: RayCounts::default(),
         }
     }
 
-    /// Starts the next pixel: once rebuilding, copies its cached chain across.
+    /// Starts the next pixel: once rebuilding, copies its cached entries across.
     pub fn begin_pixel(&mut self) {
         self.read_chain = self.chains.chain(self.pixel);
         self.entry_start = self.chain().start;
+        self.nodes.clear();
         // Nothing to copy for an empty chain (each of a fresh tile's).
         if let Some((chains, slots)) = self.grown.as_mut().filter(|_| !self.read_chain.is_empty()) {
             let chain = self.read_chain.clone();
@@ -139,44 +163,82 @@ impl TileRays {
         }
     }
 
-    /// The light slot of light `light` at the current pixel's entry at `depth`.
+    /// The light slot of light `light` at the entry of ray `node` of the current
+    /// pixel's tree (found or traced already).
     #[inline]
-    pub(super) fn slot_index(&self, depth: u32, light: usize) -> usize {
+    pub(super) fn slot_index(&self, node: u32, light: usize) -> usize {
         debug_assert_eq!(self.entry_start, self.chain().start);
-        (self.entry_start + depth as usize) * self.lights + light
+        (self.entry_start + self.nodes[node as usize] as usize) * self.lights + light
+    }
+
+    /// The entry (in the chains read or rebuilt) of ray `at` of the current pixel's
+    /// tree, if the cache holds it. Rays are asked for in the order of their
+    /// [`RayAt::node`], each parent before its children.
+    #[inline]
+    pub(super) fn entry_for(&mut self, at: RayAt) -> Option<usize> {
+        debug_assert_eq!(self.nodes.len(), at.node as usize, "rays in tree order");
+        let pixel = self.chain();
+        let entry = match at.from {
+            None => (!pixel.is_empty()).then_some(0)?,
+            Some((parent, branch)) => {
+                let parent = self.nodes[parent as usize];
+                let chains = self.grown.as_ref().map_or(&*self.chains, |(c, _)| c);
+                chains.child(pixel.clone(), parent, ChildRay::of(branch))?
+            }
+        };
+        self.nodes.push(entry);
+        Some(pixel.start + entry as usize)
+    }
+
+    /// Adds the hit of ray `at` of the current pixel's tree, which the cache lacked
+    /// ([`Self::entry_for`] said so), with no light slot known.
+    pub(super) fn push_entry(&mut self, at: RayAt, hit: CachedHit) {
+        let from = at
+            .from
+            .map(|(parent, branch)| (self.nodes[parent as usize], ChildRay::of(branch)));
+        let lights = self.lights;
+        let (chains, slots) = self.grow();
+        let entry = chains.push(from, hit);
+        slots.resize(slots.len() + lights, LightSlot::NOTHING);
+        self.nodes.push(entry);
+    }
+
+    /// Entry `index` of the chains read or rebuilt.
+    #[inline]
+    pub(super) fn hit(&self, index: usize) -> &CachedHit {
+        match &self.grown {
+            Some((chains, _)) => chains.hit(index),
+            None => self.chains.hit(index),
+        }
     }
 
     /// The current pixel's cached colour, if `keep` keeps it (and so its rays and colour
     /// are what they were).
     pub fn unchanged_colour(&self, keep: &KeepRule) -> Option<PixelColour> {
         let old = self.old_colours.as_ref()?[self.pixel];
-        keep.keeps(self.pixel_chain().0, old.depends).then_some(old)
+        keep.keeps(self.pixel_entries().objects, old.depends)
+            .then_some(old)
     }
 
-    /// The objects the current pixel's cached chain met (`u32::MAX` for a miss), and
-    /// its entries' light slots (`lights` each).
-    pub fn pixel_chain(&self) -> (&[u32], &[LightSlot]) {
-        let chain = self.chain();
+    /// The current pixel's cached entries: the objects they met, their links and their
+    /// light slots.
+    pub fn pixel_entries(&self) -> PixelEntries<'_> {
         let (chains, slots) = match &self.grown {
             Some((chains, slots)) => (chains, slots),
             None => (&*self.chains, &*self.slots),
         };
-        let lights = self.lights;
-        (
-            chains.objects(chain.clone()),
-            &slots[chain.start * lights..chain.end * lights],
-        )
+        entries_of(chains, slots, self.chain(), self.lights)
     }
 
     /// The whole tile of a cache read, no ray traced: each pixel `keep` keeps keeps its
-    /// colour, the others come from `shade` (given its chain's objects and light slots,
-    /// as [`Self::pixel_chain`]: their colour and dependence). The colours and rays of
+    /// colour, the others come from `shade` (given its entries, as
+    /// [`Self::pixel_entries`]: their colour and dependence). The colours and rays of
     /// every pixel, row-major; `None`, with the tile as it was, where `shade` cannot
     /// answer for some pixel.
     pub fn whole_tile(
         &mut self,
         keep: Option<&KeepRule>,
-        shade: impl Fn(&[u32], &[LightSlot], &mut RayCounts) -> Option<(DVec3, TermDependence)>,
+        shade: impl Fn(&PixelEntries, &mut RayCounts) -> Option<(DVec3, TermDependence)>,
     ) -> Option<(Vec<DVec3>, RayCounts)> {
         let old = match (&self.grown, &self.old_colours) {
             (None, Some(old)) if self.pixel == 0 => Arc::clone(old),
@@ -210,11 +272,7 @@ impl TileRays {
                 continue;
             }
             let mut own = RayCounts::default();
-            let (colour, depends) = shade(
-                objects,
-                &slots[chain.start * lights..chain.end * lights],
-                &mut own,
-            )?;
+            let (colour, depends) = shade(&entries_of(chains, slots, chain, lights), &mut own)?;
             shaded += 1;
             depends_all = depends_all.union(depends);
             colours.push(colour);
@@ -234,11 +292,6 @@ impl TileRays {
         self.shaded += shaded;
         self.quick += shaded;
         Some((colours, rays))
-    }
-
-    /// Lights per entry.
-    pub fn lights(&self) -> usize {
-        self.lights
     }
 
     /// Ends the pixel, which came out `colour` (`kept`: its colour in the cache read,
@@ -261,7 +314,7 @@ impl TileRays {
         self.pixel += 1;
     }
 
-    /// Where the current pixel's chain is, in the chains read or rebuilt.
+    /// Where the current pixel's entries are, in the chains read or rebuilt.
     pub(super) fn chain(&self) -> std::ops::Range<usize> {
         match &self.grown {
             Some((chains, _)) => chains.building(),
@@ -269,7 +322,8 @@ impl TileRays {
         }
     }
 
-    /// Starts rebuilding, copying every chain up to and including the current pixel's.
+    /// Starts rebuilding, copying every pixel's entries up to and including the current
+    /// pixel's.
     pub(super) fn grow(&mut self) -> &mut (Chains, Vec<LightSlot>) {
         let (pixel, lights) = (self.pixel, self.lights);
         let (chains, slots) = (&self.chains, &self.slots);
@@ -321,5 +375,21 @@ impl TileRays {
             colours,
             summary,
         }
+    }
+}
+
+/// The entries `range` of `chains`, with their light slots (`lights` per entry in
+/// `slots`).
+#[inline]
+fn entries_of<'a>(
+    chains: &'a Chains,
+    slots: &'a [LightSlot],
+    range: std::ops::Range<usize>,
+    lights: usize,
+) -> PixelEntries<'a> {
+    PixelEntries {
+        objects: chains.objects(range.clone()),
+        children: chains.children(range.clone()),
+        slots: &slots[range.start * lights..range.end * lights],
     }
 }

@@ -92,17 +92,28 @@ fn ray_colour(colour: DVec3, conventions: &Conventions) -> DVec3 {
     }
 }
 
-/// Which ray of a camera ray's tree is shaded: its depth (0 = the camera ray; what the
-/// ray source and `max_depth` go by) and its index in the tree (what recorders go by).
+/// Which ray of a camera ray's tree is shaded: its depth (0 = the camera ray; what
+/// `max_depth` and the tile culling go by), its index in the tree (breadth first: what
+/// recorders go by) and its parent's index and which of the parent's rays it is (what
+/// the hit cache finds the ray's entry by: a tree's shape changes with the materials,
+/// its indices with it, but a ray's parent and branch do not).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) struct RayAt {
+pub struct RayAt {
+    /// 0 for the camera ray, 1 for the rays its hit starts, and so on.
     pub depth: u32,
+    /// The ray's index in its tree, in the order the rays are shaded.
     pub node: u32,
+    /// The parent's index and which of its rays this is; `None` for the camera ray.
+    pub from: Option<(u32, Branch)>,
 }
 
 impl RayAt {
     /// The camera ray.
-    pub const CAMERA: Self = Self { depth: 0, node: 0 };
+    pub const CAMERA: Self = Self {
+        depth: 0,
+        node: 0,
+        from: None,
+    };
 }
 
 /// The rays a shaded ray starts: a mirror ray and a transmitted one, each if cast.

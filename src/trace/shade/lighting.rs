@@ -48,13 +48,14 @@ impl Tracer<'_> {
     pub(crate) fn shade<R: Recorder>(
         &self,
         ray: &Ray,
-        RayAt { depth, node }: RayAt,
+        at: RayAt,
         terms: &ActiveTerms,
         rays: &mut impl RaySource,
         counts: &mut RayCounts,
         recorder: &mut R,
     ) -> (Bounce, Spawned) {
-        let Some(hit) = rays.closest_hit(self.world, depth, ray) else {
+        let RayAt { depth, node, .. } = at;
+        let Some(hit) = rays.closest_hit(self.world, at, ray) else {
             let background = if terms.background {
                 self.world.background
             } else {
@@ -169,7 +170,7 @@ impl Tracer<'_> {
             // A light of zero strength stays unknown: the factors of a light turned up
             // from zero were never worked out.
             if light.strength() != DVec3::ZERO {
-                rays.keep_light_factors(depth, index, || LitFactors::UNREACHABLE);
+                rays.keep_light_factors(node, index, || LitFactors::UNREACHABLE);
             }
             if R::ACTIVE {
                 let skipped = SkippedLight {
@@ -181,7 +182,7 @@ impl Tracer<'_> {
             return None;
         };
         let n_dot_l = hit.n.dot(sample.to_light);
-        rays.keep_light_factors(depth, index, || {
+        rays.keep_light_factors(node, index, || {
             self.light_factors(hit, &sample, at.view_dir, material, n_dot_l)
         });
         // Plain locals on the hot path; the record is built only for a recorder.

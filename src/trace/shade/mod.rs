@@ -16,7 +16,8 @@ mod refraction;
 mod shadows;
 mod tracer;
 
-pub(crate) use bounce_tree::{Bounce, BroughtBack, RayAt};
+pub use bounce_tree::RayAt;
+pub(crate) use bounce_tree::{Bounce, BroughtBack};
 pub use branch::Branch;
 pub use lit_factors::LitFactors;
 pub use object_id::object_id_colour;

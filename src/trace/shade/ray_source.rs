@@ -1,10 +1,11 @@
 //! Where the shader's rays get their answers. The shader ([`super::tracer::Tracer`]) asks
-//! a [`RaySource`] for the closest hit of each ray of a mirror chain and for the object
-//! blocking each shadow ray; [`LiveRays`] asks the world (the only place the shader's rays
+//! a [`RaySource`] for the closest hit of each ray of a camera ray's tree (each named by
+//! its [`RayAt`]) and for the object blocking each shadow ray; [`LiveRays`] asks the world (the only place the shader's rays
 //! meet [`World::intersect`] and [`World::occluder_except`]), and the hit cache of
 //! [`crate::trace::render::cached`] answers from rays it traced before. Both feed the one lighting model,
 //! so a re-shaded pixel is the same arithmetic as a traced one.
 
+use super::bounce_tree::RayAt;
 use super::lit_factors::LitFactors;
 use crate::trace::cull::Candidates;
 use crate::trace::ray::Ray;
@@ -19,13 +20,15 @@ pub struct ShadowQuery {
     pub t_max: f64,
 }
 
-/// Which shadow ray the shader asks about: from the hit at `depth` of the mirror chain to
-/// light `light` (an index into [`World::lights`]); the ray cannot meet object `except`
-/// (the one it leaves on its outer side).
+/// Which shadow ray the shader asks about: from the hit of ray `node` (at `depth`) of the
+/// tree to light `light` (an index into [`World::lights`]); the ray cannot meet object
+/// `except` (the one it leaves on its outer side).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct ShadowRequest {
-    /// Depth in the mirror chain of the hit the ray leaves.
+    /// Depth in the tree of the hit the ray leaves.
     pub depth: u32,
+    /// Index in the tree ([`RayAt::node`]) of the ray whose hit it leaves.
+    pub node: u32,
     /// The light it goes to.
     pub light: usize,
     /// The object it cannot meet.
@@ -42,23 +45,24 @@ pub trait MakeRay: FnOnce() -> ShadowQuery {}
 impl<F: FnOnce() -> ShadowQuery> MakeRay for F {}
 
 /// Answers the shader's ray queries for one pixel sample, in the order the shader asks:
-/// depth 0, then each mirror bounce, a hit's shadow rays before the next bounce.
+/// the camera ray, then each ray of its tree in the order of [`RayAt::node`], a hit's
+/// shadow rays before the next ray.
 pub trait RaySource {
-    /// The closest hit of `ray`, the ray at `depth` of the mirror chain.
-    fn closest_hit(&mut self, world: &World, depth: u32, ray: &Ray) -> Option<SurfacePoint>;
+    /// The closest hit of `ray`, the ray `at` of the tree.
+    fn closest_hit(&mut self, world: &World, at: RayAt, ray: &Ray) -> Option<SurfacePoint>;
 
     /// The world index of an object blocking the shadow ray `to`, if any; `ray` makes
     /// the ray, for a source that has to cast it.
     fn occluder(&mut self, world: &World, to: ShadowRequest, ray: impl MakeRay) -> Option<usize>;
 
-    /// How many of the shadow rays from the hit at `depth` to sphere light `light` reach
-    /// it, and the first blocker met: `cast` casts them through this source (each an
+    /// How many of the shadow rays from the hit of ray `node` to sphere light `light`
+    /// reach it, and the first blocker met: `cast` casts them through this source (each an
     /// `off_centre` request) and counts. A source that keeps the count may give it
     /// without casting, and then names no blocker.
     #[inline]
     fn sphere_rays_clear(
         &mut self,
-        _depth: u32,
+        _node: u32,
         _light: usize,
         cast: impl FnOnce(&mut Self) -> (u32, Option<usize>),
     ) -> (u32, Option<usize>)
@@ -68,14 +72,14 @@ pub trait RaySource {
         cast(self)
     }
 
-    /// Offers what light `light` gave the hit at `depth` (an index into
-    /// [`World::lights`]), for a source that keeps it: the one call through which the
+    /// Offers what light `light` (an index into [`World::lights`]) gave the hit of ray
+    /// `node`, for a source that keeps it: the one call through which the
     /// re-shade cache learns from the shader. `factors` is worked out only if the source
     /// wants it (it does not have it yet), whatever the switches.
     #[inline]
     fn keep_light_factors(
         &mut self,
-        _depth: u32,
+        _node: u32,
         _light: usize,
         _factors: impl FnOnce() -> LitFactors,
     ) {
@@ -110,8 +114,8 @@ impl<'c> LiveRays<'c> {
 
 impl RaySource for LiveRays<'_> {
     #[inline]
-    fn closest_hit(&mut self, world: &World, depth: u32, ray: &Ray) -> Option<SurfacePoint> {
-        if depth == 0 {
+    fn closest_hit(&mut self, world: &World, at: RayAt, ray: &Ray) -> Option<SurfacePoint> {
+        if at.depth == 0 {
             world.intersect_among(ray, f64::INFINITY, self.among.camera)
         } else {
             world.intersect(ray, f64::INFINITY)

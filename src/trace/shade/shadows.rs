@@ -67,6 +67,7 @@ impl Tracer<'_> {
         let except = self.shadow_except(hit, sample);
         let target = ShadowRequest {
             depth: to.depth,
+            node: to.node,
             light: to.index,
             except,
             off_centre,
@@ -117,7 +118,7 @@ impl Tracer<'_> {
     ) -> Visibility {
         let seed = shading_seed(hit.p, to.index);
         let mut cast = false;
-        let (clear, first_blocker) = rays.sphere_rays_clear(to.depth, to.index, |rays| {
+        let (clear, first_blocker) = rays.sphere_rays_clear(to.node, to.index, |rays| {
             cast = true;
             let mut clear = 0u32;
             let mut first_blocker = None;

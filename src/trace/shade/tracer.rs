@@ -93,7 +93,7 @@ impl<'w> Tracer<'w> {
         if self.view == View::Beauty {
             return self.radiance(ray, rays, counts, recorder);
         }
-        let Some(hit) = rays.closest_hit(self.world, 0, ray) else {
+        let Some(hit) = rays.closest_hit(self.world, RayAt::CAMERA, ray) else {
             return DVec3::ZERO;
         };
         match self.view {
@@ -141,6 +141,7 @@ impl<'w> Tracer<'w> {
             let at = RayAt {
                 depth: node.depth,
                 node: index as u32,
+                from: node.from,
             };
             recorder.started(at.node, at.depth, node.from);
             let (bounce, spawned) =
