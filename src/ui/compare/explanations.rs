@@ -6,6 +6,7 @@ use egui::{Color32, RichText};
 
 use crate::compare::{Comparison, Explanation, PSNR_IDENTICAL_DB};
 use crate::scene::Scene;
+use crate::scene::tree_path::path_name;
 use crate::ui::commands::{Command, Selection};
 use crate::ui::state::light_label;
 
@@ -42,10 +43,15 @@ pub fn explanation_label(index: usize, e: &Explanation, scene: &Scene) -> String
     text
 }
 
-/// What clicking an explanation selects in `scene`: its object, else its light; nothing
-/// when it names neither, or when the scene no longer has them where it had them.
+/// What clicking an explanation selects in `scene`: its node (a part of an object's
+/// tree, or the object), else its light; nothing when it names neither, or when the
+/// scene no longer has them where it had them.
 #[must_use]
 pub fn explanation_selection(e: &Explanation, scene: &Scene) -> Option<Selection> {
+    if e.node.len() > 1 {
+        let same = Some(path_name(&scene.objects, &e.node)) == e.object_name;
+        return same.then(|| Selection::Part(e.node.clone()));
+    }
     if let Some(object) = e.object {
         let same = scene.objects.get(object).map(|o| &o.name) == e.object_name.as_ref();
         return same.then_some(Selection::Object(object));
