@@ -91,7 +91,7 @@ fn a_pip_left_out_of_the_die_is_missing_by_its_path() {
     assert!(first.share > 0.9, "{report}");
     assert!(first.bbox.is_some(), "{report}");
     assert!(
-        first.summary.starts_with("'die/pip 1.1' is missing"),
+        first.summary.starts_with("'die/pip 1.1' is not cut"),
         "{report}"
     );
 }

@@ -141,3 +141,53 @@ fn summary_ui(ui: &mut egui::Ui, c: &Comparison) {
         );
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::compare::{Cause, ExplainedTerm};
+    use crate::scene::examples::EXAMPLE_SCENES;
+    use crate::scene::parse_scene;
+
+    #[test]
+    fn an_explanation_of_a_part_of_a_tree_selects_that_part_while_the_scene_has_it() {
+        let (_, ron) = EXAMPLE_SCENES
+            .iter()
+            .find(|(n, _)| *n == "csg.ron")
+            .unwrap();
+        let mut scene = parse_scene(ron).unwrap();
+        let e = Explanation {
+            term: ExplainedTerm::Diffuse,
+            light: None,
+            object: Some(2),
+            object_name: Some("die/pip 1.1".to_owned()),
+            node: vec![2, 1],
+            factor: 2.0,
+            share: 1.0,
+            pixels: Vec::new(),
+            cause: Cause::Factor,
+            bbox: None,
+            fits_as_well: Vec::new(),
+            confidence: 1.0,
+            summary: String::new(),
+        };
+        assert_eq!(
+            explanation_selection(&e, &scene),
+            Some(Selection::Part(vec![2, 1]))
+        );
+        let whole = Explanation {
+            object_name: Some("die".to_owned()),
+            node: vec![2],
+            ..e.clone()
+        };
+        assert_eq!(
+            explanation_selection(&whole, &scene),
+            Some(Selection::Object(2))
+        );
+        // Renamed since: the explanation no longer points at it.
+        crate::scene::tree_path::object_at_mut(&mut scene.objects, &[2, 1])
+            .unwrap()
+            .name = "pip one".to_owned();
+        assert_eq!(explanation_selection(&e, &scene), None);
+    }
+}
