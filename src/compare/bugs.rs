@@ -266,18 +266,15 @@ impl Part {
         }
     }
 
-    /// The parts of scene object `index` of `world`: its shape's when it is one world
-    /// object; a group (several, or none) is missing whole or not at all.
+    /// The parts of leaf `leaf` of `world`'s trees: a world object's own shape's; an
+    /// operand of a CSG object is missing whole.
     #[must_use]
-    pub fn of_scene_object(world: &World, index: usize) -> &'static [Part] {
-        let mut members = world
-            .object_scene_index
-            .iter()
-            .enumerate()
-            .filter(|&(_, &s)| s == index);
-        match (members.next(), members.next()) {
-            (Some((only, _)), None) => Part::of_shape(world.objects[only].shape),
-            _ => &[Part::Whole],
+    pub fn of_leaf(world: &World, leaf: &crate::compare::nodes::Leaf) -> &'static [Part] {
+        let object = &world.objects[leaf.world_object];
+        if object.csg.is_some() {
+            &[Part::Whole]
+        } else {
+            Part::of_shape(object.shape)
         }
     }
 

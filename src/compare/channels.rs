@@ -1,7 +1,9 @@
 //! The components raylab's picture is split into, and their numbering. A *channel* is
-//! one kind of contribution on one object: the ambient term of the floor, light 2's
-//! diffuse term on the ball, the ball's picture if its normals lacked their z part...
-//! Every channel is a per-pixel colour; the fit scales them.
+//! one kind of contribution on one leaf of the object trees ([`super::nodes`]; in a
+//! scene without trees, one object): the ambient term of the floor, light 2's diffuse
+//! term on the ball, the ball's picture if its normals lacked their z part... A tree's
+//! inner node tried as missing has two channels of its own. Every channel is a
+//! per-pixel colour; the fit scales them.
 
 use super::bugs::{ClampBug, NormalBug, Part, SpecularBug};
 use super::spot_bugs::SpotBug;
@@ -37,6 +39,11 @@ pub enum Kind {
     Spot(SpotBug, usize),
     /// Rays that hit nothing (object: none).
     Background,
+    /// The change of the pixels an inner node of a tree changes, if it were missing
+    /// (object: the node's slot, [`super::missing_nodes::Slot::Inner`]).
+    NodeMissing,
+    /// The light an inner node's shadows take away (object: its slot).
+    NodeShadowCast,
 }
 
 /// A family: the channels a group may combine (across lights and objects).
@@ -82,7 +89,9 @@ impl Kind {
             Kind::Normal(b) => Family::Normal(b),
             Kind::Highlight(b) => Family::Highlight(b),
             Kind::Clamp(b) => Family::Clamp(b),
-            Kind::Missing(_) | Kind::ShadowCast => Family::Missing,
+            Kind::Missing(_) | Kind::ShadowCast | Kind::NodeMissing | Kind::NodeShadowCast => {
+                Family::Missing
+            }
             Kind::Spot(b, _) => Family::Spot(b),
             Kind::Background => Family::Background,
         }
@@ -97,6 +106,12 @@ impl Kind {
         }
     }
 
+    /// Whether the kind's object is an inner node's slot rather than a leaf.
+    #[must_use]
+    pub fn is_of_node(self) -> bool {
+        matches!(self, Kind::NodeMissing | Kind::NodeShadowCast)
+    }
+
     /// Whether the kind is part of raylab's picture (the channels of these sum to it);
     /// the others are directions of change.
     #[must_use]
@@ -108,13 +123,17 @@ impl Kind {
     }
 }
 
-/// Numbers the channels of a world with `lights` non-ambient lights and `objects` objects.
+/// Numbers the channels of a world with `lights` non-ambient lights, `objects` leaves
+/// and `nodes` inner nodes tried as missing: each leaf's block, the background, then
+/// two per inner node (so a scene without trees is numbered as before trees).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct ChannelSpace {
     /// Non-ambient lights.
     pub lights: usize,
-    /// Objects.
+    /// Leaves (in a scene without trees, its objects).
     pub objects: usize,
+    /// Inner nodes tried as missing.
+    pub nodes: usize,
 }
 
 /// Kinds per object that do not depend on a light.
@@ -134,10 +153,11 @@ impl ChannelSpace {
     /// How many channels there are.
     #[must_use]
     pub fn count(&self) -> usize {
-        self.objects * self.per_object() + 1
+        self.objects * self.per_object() + 1 + 2 * self.nodes
     }
 
-    /// The channel of `kind` on `object` (`None` only for the background).
+    /// The channel of `kind` on `object` (`None` only for the background; an inner
+    /// node's slot for [`Kind::is_of_node`]).
     ///
     /// # Panics
     /// When the object or light index is out of range, or the background has an object.
@@ -153,6 +173,12 @@ impl ChannelSpace {
             Kind::Background => {
                 assert!(object.is_none(), "the background belongs to no object");
                 return (self.objects * self.per_object()) as u32;
+            }
+            Kind::NodeMissing | Kind::NodeShadowCast => {
+                let node = object.expect("a node's channel has its slot");
+                assert!(node < self.nodes, "node {node} of {}", self.nodes);
+                let second = u32::from(kind == Kind::NodeShadowCast);
+                return (self.objects * self.per_object() + 1 + 2 * node) as u32 + second;
             }
             Kind::Ambient => 0,
             Kind::Reflection => 1,
@@ -180,8 +206,13 @@ impl ChannelSpace {
     pub fn decode(&self, id: u32) -> (Kind, Option<usize>) {
         let id = id as usize;
         let per = self.per_object();
-        if id >= self.objects * per {
+        if id == self.objects * per {
             return (Kind::Background, None);
+        }
+        if id > self.objects * per {
+            let slot = id - self.objects * per - 1;
+            let kind = [Kind::NodeMissing, Kind::NodeShadowCast][slot % 2];
+            return (kind, Some(slot / 2));
         }
         let (object, slot) = (id / per, id % per);
         let l = self.lights;
@@ -226,6 +257,7 @@ mod tests {
         let space = ChannelSpace {
             lights: 3,
             objects: 4,
+            nodes: 2,
         };
         let mut seen = std::collections::HashSet::new();
         for id in 0..space.count() as u32 {

@@ -1,6 +1,6 @@
 //! raylab's picture split into channels, pixel by pixel: every camera sample traced once
 //! through the tracer with the [`SampleRecorder`] listening (which also traces each ray
-//! again without the object it hit, for the objects that might be missing).
+//! again without each tree node it may show, for the nodes that might be missing).
 //!
 //! Stored pixel-major (compressed rows): pixel `p`'s channels are
 //! `entries[offsets[p]..offsets[p + 1]]`, sorted by channel.
@@ -11,6 +11,8 @@ use glam::{DVec2, DVec3};
 use rayon::prelude::*;
 
 use super::channels::ChannelSpace;
+use super::missing_nodes::{MissingNodes, TriedNode};
+use super::nodes::Nodes;
 use super::record_context::Context;
 use super::recorder::{SampleRecorder, Tally};
 use crate::scene::Scene;
@@ -19,8 +21,7 @@ use crate::trace::{
     Image, PinholeCamera, RayCounts, RenderProgress, TermSwitches, Tracer, View, World,
 };
 
-/// Objects beyond this many are not tried as missing (each needs a world of its own).
-pub const MAX_MISSING_OBJECTS: usize = 32;
+pub use super::missing_nodes::MAX_MISSING_OBJECTS;
 
 /// Label of a pixel whose first sample hit nothing.
 pub const MISS: u32 = u32::MAX;
@@ -47,12 +48,12 @@ pub struct Components {
     pub space: ChannelSpace,
     /// raylab's picture, linear and unclamped, as `render` makes it.
     pub beauty: Vec<[f64; 3]>,
-    /// The object the first sample of each pixel hit, or [`MISS`].
+    /// The leaf ([`Nodes::leaves`]) the first sample of each pixel hit, or [`MISS`].
     pub labels: Vec<u32>,
     /// Whether a pixel's samples saw more than one object (or some missed).
     pub mixed: Vec<bool>,
-    /// The object the first sample of each pixel would hit were the object it hit
-    /// missing, or [`MISS`] (nothing behind, or that object not tried missing).
+    /// The scene object the first sample of each pixel would hit were the scene object
+    /// it hit missing, or [`MISS`] (nothing behind, or that object not tried missing).
     pub behind: Vec<u32>,
     /// Start of each pixel's entries; one more than there are pixels.
     pub offsets: Vec<u32>,
@@ -62,6 +63,10 @@ pub struct Components {
     pub split: Vec<[f64; 2]>,
     /// Rays cast.
     pub rays: RayCounts,
+    /// The nodes of the scene's trees, whose leaves the channels are per.
+    pub nodes: Nodes,
+    /// The nodes tried as missing.
+    pub tried: Vec<TriedNode>,
 }
 
 impl Components {
@@ -69,6 +74,16 @@ impl Components {
     #[must_use]
     pub fn pixel(&self, p: usize) -> &[Entry] {
         &self.entries[self.offsets[p] as usize..self.offsets[p + 1] as usize]
+    }
+
+    /// The scene object pixel `p`'s first sample hit (raylab's object-id view), or
+    /// [`MISS`].
+    #[must_use]
+    pub fn object_label(&self, p: usize) -> u32 {
+        match self.labels[p] {
+            MISS => MISS,
+            leaf => self.nodes.object_of_leaf(leaf as usize) as u32,
+        }
     }
 
     /// raylab's picture as the renderer's [`Image`].
@@ -98,14 +113,6 @@ struct Row {
     rays: RayCounts,
 }
 
-/// The scene with top-level object `index` taken out (a group with all its members),
-/// compiled (with `world`'s meshes).
-fn world_without(scene: &Scene, world: &World, index: usize) -> Option<World> {
-    let mut scene = scene.clone();
-    scene.objects.remove(index);
-    World::with_meshes(&scene, &world.meshes).ok()
-}
-
 /// Splits raylab's `width` x `height` picture of `scene` (compiled as `world`) at `spp`
 /// samples per pixel into channels; `None` if cancelled through `progress`.
 #[must_use]
@@ -116,17 +123,11 @@ pub fn render_components(
     spp: u32,
     progress: &RenderProgress,
 ) -> Option<Components> {
-    // Channels are per scene object: `hit.object` is the scene's index.
-    let without: Vec<Option<World>> = (0..scene.objects.len())
-        .into_par_iter()
-        .map(|i| {
-            (i < MAX_MISSING_OBJECTS)
-                .then(|| world_without(scene, world, i))
-                .flatten()
-        })
-        .collect();
+    let nodes = Nodes::new(scene, world);
+    let missing = MissingNodes::new(scene, world, &nodes);
+    let tried = missing.tried_nodes();
     let spot = super::spot_bugs::spot_worlds(scene, world);
-    let ctx = Context::new(world, scene.lights.len(), without, spot);
+    let ctx = Context::new(world, scene.lights.len(), &nodes, missing, spot);
     let space = ctx.space;
     let camera = PinholeCamera::new(&world.camera, width, height);
     let spp = spp.max(1);
@@ -161,6 +162,8 @@ pub fn render_components(
         entries: Vec::new(),
         split: vec![[0.0; 2]; space.count()],
         rays: RayCounts::default(),
+        nodes,
+        tried,
     };
     components.offsets.push(0);
     for row in rows {
@@ -213,11 +216,10 @@ fn render_row(ctx: &Context, camera: &PinholeCamera, width: u32, y: u32, spp: u3
                 continue; // the renderer's guard: a non-finite sample adds nothing
             }
             sum += colour;
-            let hit = recorder.primary_hit();
             if labels.is_empty() {
                 behind = recorder.behind;
             }
-            labels.push(hit.map_or(MISS, |h| h.object as u32));
+            labels.push(recorder.primary_leaf().map_or(MISS, |l| l as u32));
             pixel.absorb(&recorder.tally);
         }
         row.beauty.push((sum * scale).to_array());

@@ -60,6 +60,7 @@ pub fn different_scene(explanations: &[Explanation], unexplained: f64) -> Option
         light: None,
         object: None,
         object_name: None,
+        node: Vec::new(),
         factor: 1.0,
         share: share + unexplained,
         pixels: pixels.into_iter().collect(),

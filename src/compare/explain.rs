@@ -34,10 +34,13 @@ pub fn explain(
     start: &FitState,
     (total, floor): (f64, f64),
 ) -> Explained {
-    let parts: Vec<_> = (0..scene.objects.len())
-        .map(|o| Part::of_scene_object(world, o))
+    let nodes = &components.nodes;
+    let parts: Vec<_> = nodes
+        .leaves
+        .iter()
+        .map(|leaf| Part::of_leaf(world, leaf))
         .collect();
-    let groups = Groups::new(components.space, &parts);
+    let groups = Groups::new(components.space, nodes, &components.tried, &parts);
     let mut state = start.clone();
     let mut steps = search::search(components, &groups, target, &mut state, floor);
     let palette = Palette::new(world, scene.objects.len());
@@ -90,6 +93,7 @@ fn extra_verdict(extra: &ExtraObject, start: &FitState, scene: &Scene, total: f6
         light: None,
         object: extra.looks_like,
         object_name: extra.looks_like.map(|o| scene.objects[o].name.clone()),
+        node: extra.looks_like.map_or_else(Vec::new, |o| vec![o]),
         factor: 1.0,
         share: error / total,
         pixels,

@@ -5,6 +5,7 @@ use serde::Serialize;
 
 use super::bugs::{ClampBug, NormalBug, Part, SpecularBug};
 use super::encoding::Encoding;
+use super::nodes::{Node, Nodes};
 use super::regions::PixelBox;
 use super::shape_guess::ShapeGuess;
 use super::spot_bugs::SpotBug;
@@ -148,8 +149,12 @@ pub struct Explanation {
     pub light: Option<usize>,
     /// Index of the object in the scene, or `None` (every object, or none).
     pub object: Option<usize>,
-    /// The object's name.
+    /// The name of the node named: the object's, or a tree path (`"die/pip 1.1"`).
     pub object_name: Option<String>,
+    /// The tree path of the node named: the object's index, then child and operand
+    /// indices down to it (`[object]` for a whole object), as the editor selects it;
+    /// empty when no object is named.
+    pub node: Vec<usize>,
     /// The fitted scale of raylab's component in the other image: 1 as raylab, 0 missing.
     pub factor: f64,
     /// Share of the squared difference this explains (0 to 1).
@@ -181,6 +186,14 @@ impl Explanation {
         } else {
             "low"
         }
+    }
+
+    /// Names node `node` of `nodes` (or none): its object, its name and its path.
+    pub fn name_node(&mut self, nodes: &Nodes, node: Option<usize>) {
+        let node = node.map(|n| &nodes.nodes[n]);
+        self.object = node.map(Node::object);
+        self.object_name = node.map(|n| n.name.clone());
+        self.node = node.map_or_else(Vec::new, |n| n.path.clone());
     }
 
     /// Whether pixel `p` is among the explanation's pixels.

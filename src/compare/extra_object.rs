@@ -104,7 +104,7 @@ fn looks_like(
     let mut near: Vec<usize> = Vec::new();
     for y in i64::from(bbox.y0) - reach..=i64::from(bbox.y1) + reach {
         for x in i64::from(bbox.x0) - reach..=i64::from(bbox.x1) + reach {
-            let label = grid.at(x, y).map_or(MISS, |p| components.labels[p]);
+            let label = grid.at(x, y).map_or(MISS, |p| components.object_label(p));
             if label != MISS && !near.contains(&(label as usize)) {
                 near.push(label as usize);
             }
@@ -199,7 +199,7 @@ fn outline(components: &Components, target: &Target, grid: Grid, region: &[u32])
             }
             let theirs = levels(target.middle[p], target.middle[n]);
             let ours = levels(components.beauty[p], components.beauty[n]);
-            if components.labels[p] == components.labels[n] {
+            if components.object_label(p) == components.object_label(n) {
                 outline.one_surface += 1;
                 outline.new_edges += usize::from(theirs - ours >= EDGE_LEVELS);
             } else {
@@ -274,7 +274,7 @@ pub fn find(
             let xy: Vec<(i64, i64)> = own.iter().map(|&p| grid.xy(p as usize)).collect();
             let mut behind: Vec<Option<usize>> = own
                 .iter()
-                .map(|&p| components.labels[p as usize])
+                .map(|&p| components.object_label(p as usize))
                 .map(|l| (l != MISS).then_some(l as usize))
                 .collect();
             behind.sort_unstable();

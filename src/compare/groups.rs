@@ -1,13 +1,18 @@
 //! The groups of channels a single fitted number may scale: one term of one light on one
-//! object, or that term for every light, or on every object, or both; one bug on one
-//! object or on all; one part of an object, or all its parts, missing. A real bug
-//! changes one such group as a whole, which is what makes the groups readable verdicts.
+//! node of the object trees (an object, a group or CSG subtree, one leaf), or that term
+//! for every light, or on every object, or both; one bug on one node or on all; one part
+//! of a node, or all its parts, missing. A real bug changes one such group as a whole,
+//! which is what makes the groups readable verdicts.
+
+use std::ops::Range;
 
 use rayon::prelude::*;
 
 use super::bugs::{ClampBug, NormalBug, Part, SpecularBug};
 use super::channels::{ChannelSpace, Family, Kind};
-use super::components::{Components, MAX_MISSING_OBJECTS};
+use super::components::Components;
+use super::missing_nodes::{Slot, TriedNode};
+use super::nodes::Nodes;
 use super::spot_bugs::SpotBug;
 use super::target::{FitState, Target};
 
@@ -18,10 +23,15 @@ pub struct Group {
     pub family: Family,
     /// The light, or `None` for every light (or none concerned).
     pub light: Option<usize>,
-    /// The object, or `None` for every object.
+    /// The node ([`Nodes::nodes`]), or `None` for every object.
     pub object: Option<usize>,
-    /// For a missing object: the part, or `None` for all its parts.
+    /// For a missing node: the part, or `None` for all its parts.
     pub part: Option<Part>,
+    /// The leaves it covers: its node's (all of them for every object); groups whose
+    /// leaves nest tell one story at two depths.
+    pub leaves: Range<usize>,
+    /// Its node's depth in its tree (0 for an object, or every object).
+    pub depth: usize,
     /// The channels.
     pub members: Vec<u32>,
 }
@@ -35,6 +45,8 @@ impl Group {
             light: None,
             object: Some(0),
             part: None,
+            leaves: 0..1,
+            depth: 0,
             members: vec![0],
         }
     }
@@ -49,50 +61,63 @@ pub struct Groups {
     pub of_channel: Vec<Vec<u32>>,
 }
 
-/// The light and object choices of a family: every one, then each.
-fn choices(count: usize) -> impl Iterator<Item = Option<usize>> + Clone {
-    std::iter::once(None).chain((0..count).map(Some))
-}
+/// The families whose groups are per node and per light choice: each is scaled alone.
+const PER_NODE: [(Family, Kind); 3] = [
+    (Family::Ambient, Kind::Ambient),
+    (Family::Reflection, Kind::Reflection),
+    (Family::Transmission, Kind::Transmission),
+];
 
 impl Groups {
-    /// The groups of a world numbered by `space` whose objects are made of these parts
-    /// ([`Part::of_scene_object`]).
+    /// The groups of a world numbered by `space`, whose trees are `nodes`, with the
+    /// nodes `tried` as missing and each leaf made of `parts_of[leaf]`
+    /// ([`Part::of_leaf`]).
     #[must_use]
-    pub fn new(space: ChannelSpace, parts_of: &[&'static [Part]]) -> Self {
+    pub fn new(
+        space: ChannelSpace,
+        nodes: &Nodes,
+        tried: &[TriedNode],
+        parts_of: &[&'static [Part]],
+    ) -> Self {
         let mut list = Vec::new();
-        let objects = space.objects;
-        let mut add = |family, light, object: Option<usize>, part, kinds: Vec<Kind>| {
-            let objects_in: Vec<usize> = object.map_or((0..objects).collect(), |o| vec![o]);
-            let members = objects_in
-                .iter()
-                .flat_map(|&o| kinds.iter().map(move |&k| space.id(k, Some(o))))
-                .collect();
+        let every = 0..space.objects;
+        // `kinds` on each leaf of the node (every object's for `None`), or on an inner
+        // node's `slot`: its channels are its own.
+        let mut add = |family, light, object: Option<usize>, part, kinds: Vec<Kind>, slot| {
+            let (leaves, depth) = object.map_or((every.clone(), 0), |n| {
+                let node = &nodes.nodes[n];
+                (node.leaves.clone(), node.depth())
+            });
+            let members = match slot {
+                Some(slot) => kinds.iter().map(|&k| space.id(k, Some(slot))).collect(),
+                None => leaves
+                    .clone()
+                    .flat_map(|o| kinds.iter().map(move |&k| space.id(k, Some(o))))
+                    .collect(),
+            };
             list.push(Group {
                 family,
                 light,
                 object,
                 part,
+                leaves,
+                depth,
                 members,
             });
         };
         let lights: Vec<usize> = (0..space.lights).collect();
-        for object in choices(objects) {
-            add(Family::Ambient, None, object, None, vec![Kind::Ambient]);
-            add(
-                Family::Reflection,
-                None,
-                object,
-                None,
-                vec![Kind::Reflection],
-            );
-            add(
-                Family::Transmission,
-                None,
-                object,
-                None,
-                vec![Kind::Transmission],
-            );
-            for light in choices(space.lights) {
+        // Every object, then each node; a node holding the same leaves as its child is
+        // that child, better named by it.
+        let choices = std::iter::once(None).chain(
+            (0..nodes.nodes.len())
+                .filter(|&n| !nodes.has_same_child(n))
+                .map(Some),
+        );
+        for object in choices {
+            for (family, kind) in PER_NODE {
+                add(family, None, object, None, vec![kind], None);
+            }
+            for light in std::iter::once(None).chain(lights.iter().copied().map(Some)) {
                 let chosen: Vec<usize> = light.map_or(lights.clone(), |l| vec![l]);
                 for (family, kind) in [
                     (Family::Diffuse, Kind::Diffuse as fn(usize) -> Kind),
@@ -105,6 +130,7 @@ impl Groups {
                         object,
                         None,
                         chosen.iter().map(|&l| kind(l)).collect(),
+                        None,
                     );
                 }
             }
@@ -115,6 +141,7 @@ impl Groups {
                     object,
                     None,
                     vec![Kind::Normal(bug)],
+                    None,
                 );
             }
             for bug in SpecularBug::ALL {
@@ -124,6 +151,7 @@ impl Groups {
                     object,
                     None,
                     vec![Kind::Highlight(bug)],
+                    None,
                 );
             }
             for bug in ClampBug::ALL {
@@ -133,11 +161,22 @@ impl Groups {
                     object,
                     None,
                     vec![Kind::Clamp(bug)],
+                    None,
                 );
             }
         }
-        for (object, &parts) in parts_of.iter().enumerate().take(MAX_MISSING_OBJECTS) {
-            // The whole object missing takes its shadows with it; a part alone (a
+        for tried in tried {
+            let node = Some(tried.node);
+            let leaf = match tried.slot {
+                Slot::Leaf(leaf) => leaf,
+                Slot::Inner(slot) => {
+                    let kinds = vec![Kind::NodeMissing, Kind::NodeShadowCast];
+                    add(Family::Missing, None, node, None, kinds, Some(slot));
+                    continue;
+                }
+            };
+            let parts = parts_of[leaf];
+            // The whole node missing takes its shadows with it; a part alone (a
             // plane's back) still casts them.
             let whole = |mut kinds: Vec<Kind>| {
                 kinds.push(Kind::ShadowCast);
@@ -150,11 +189,11 @@ impl Groups {
                 } else {
                     kinds
                 };
-                add(Family::Missing, None, Some(object), Some(part), kinds);
+                add(Family::Missing, None, node, Some(part), kinds, None);
             }
             if parts.len() > 1 {
                 let kinds = parts.iter().map(|&p| Kind::Missing(p)).collect();
-                add(Family::Missing, None, Some(object), None, whole(kinds));
+                add(Family::Missing, None, node, None, whole(kinds), None);
             }
         }
         // A spot light's bug is the light's, wherever it shows.
@@ -166,6 +205,7 @@ impl Groups {
                     None,
                     None,
                     vec![Kind::Spot(bug, light)],
+                    None,
                 );
             }
         }
@@ -175,6 +215,8 @@ impl Groups {
             light: None,
             object: None,
             part: None,
+            leaves: every,
+            depth: 0,
             members: vec![background],
         });
         let mut of_channel = vec![Vec::new(); space.count()];

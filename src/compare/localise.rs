@@ -45,7 +45,8 @@ const SHADING_CONFIDENCE: f64 = 0.35;
 /// Whether each pixel lies within [`OUTLINE_REACH`] of a change of label.
 fn near_outline(components: &Components) -> Vec<bool> {
     let (w, h) = (i64::from(components.width), i64::from(components.height));
-    let label = |x: i64, y: i64| components.labels[(y * w + x) as usize];
+    // Outlines of objects, as raylab's object-id view shows them.
+    let label = |x: i64, y: i64| components.object_label((y * w + x) as usize);
     let mut edge = vec![false; components.labels.len()];
     for y in 0..h {
         for x in 0..w {
@@ -72,8 +73,8 @@ fn near_outline(components: &Components) -> Vec<bool> {
     near
 }
 
-/// The object a pixel near an outline belongs to: its own, or the nearest neighbour's.
-fn outline_object(components: &Components, p: usize) -> Option<usize> {
+/// The leaf a pixel near an outline belongs to: its own, or the nearest neighbour's.
+fn outline_leaf(components: &Components, p: usize) -> Option<usize> {
     if components.labels[p] != MISS {
         return Some(components.labels[p] as usize);
     }
@@ -119,7 +120,7 @@ fn object_differs(components: &Components, target: &Target, state: &FitState, p:
             .fold(0.0, f64::max)
             * 255.0
     };
-    let own = components.labels[p];
+    let own = components.object_label(p);
     // Nearest colours on p's own object and on others: the model's, the other
     // picture's, and the other picture's where it agrees with the model.
     let (mut model_own, mut model_other) = (levels(state.model[p]), f64::INFINITY);
@@ -133,7 +134,7 @@ fn object_differs(components: &Components, target: &Target, state: &FitState, p:
                 continue;
             }
             let (by_model, by_other) = (levels(state.model[q]), levels(target.middle[q]));
-            if components.labels[q] == own {
+            if components.object_label(q) == own {
                 model_own = model_own.min(by_model);
                 other_own = other_own.min(by_other);
                 if state.error[q] < off {
@@ -173,6 +174,21 @@ struct Pile {
     error: f64,
     pixels: Vec<u32>,
     terms: [f64; 5],
+    /// The first and last leaf seen among them: the node holding both is named.
+    leaves: Option<(usize, usize)>,
+}
+
+impl Pile {
+    fn add(&mut self, p: usize, error: f64, leaf: Option<usize>) {
+        self.error += error;
+        self.pixels.push(p as u32);
+        if let Some(leaf) = leaf {
+            self.leaves = Some(
+                self.leaves
+                    .map_or((leaf, leaf), |(a, b)| (a.min(leaf), b.max(leaf))),
+            );
+        }
+    }
 }
 
 /// The localised verdicts for what `state` leaves unexplained of `target`, as shares
@@ -194,52 +210,53 @@ pub fn localise(
         if error < off {
             continue;
         }
-        let pile = if near[p] && object_differs(components, target, state, p) {
-            &mut outline[outline_object(components, p).unwrap_or(objects)]
+        if near[p] && object_differs(components, target, state, p) {
+            let leaf = outline_leaf(components, p);
+            let object = leaf.map_or(objects, |l| components.nodes.object_of_leaf(l));
+            outline[object].add(p, error, leaf);
         } else if components.labels[p] != MISS {
-            let pile = &mut inside[components.labels[p] as usize];
+            let leaf = components.labels[p] as usize;
+            let pile = &mut inside[components.nodes.object_of_leaf(leaf)];
             term_weights(components, p, error.sqrt(), &mut pile.terms);
-            pile
-        } else {
-            continue;
-        };
-        pile.error += error;
-        pile.pixels.push(p as u32);
+            pile.add(p, error, Some(leaf));
+        }
     }
     let mut out = Vec::new();
-    let mut emit =
-        |pile: Pile, object: Option<usize>, term: ExplainedTerm, cause: Cause, confidence| {
-            if pile.error / total < MIN_SHARE {
-                return;
-            }
-            let mut e = Explanation {
-                term,
-                light: None,
-                object,
-                object_name: object.map(|o| scene.objects[o].name.clone()),
-                factor: 1.0,
-                share: pile.error / total,
-                pixels: pile.pixels,
-                cause,
-                confidence,
-                bbox: None,
-                fits_as_well: Vec::new(),
-                summary: String::new(),
-            };
-            e.summary = summary(&e, scene);
-            out.push(e);
+    let nodes = &components.nodes;
+    let mut emit = |pile: Pile, term: ExplainedTerm, cause: Cause, confidence| {
+        if pile.error / total < MIN_SHARE {
+            return;
+        }
+        let mut e = Explanation {
+            term,
+            light: None,
+            object: None,
+            object_name: None,
+            node: Vec::new(),
+            factor: 1.0,
+            share: pile.error / total,
+            pixels: pile.pixels,
+            cause,
+            confidence,
+            bbox: None,
+            fits_as_well: Vec::new(),
+            summary: String::new(),
         };
-    for (index, pile) in outline.into_iter().enumerate() {
-        let object = (index < objects).then_some(index);
+        // The deepest node holding every leaf the pixels show: an object, or one part.
+        let node = pile.leaves.and_then(|(a, b)| nodes.holding(a..b + 1));
+        e.name_node(nodes, node);
+        e.summary = summary(&e, scene);
+        out.push(e);
+    };
+    for pile in outline {
         emit(
             pile,
-            object,
             ExplainedTerm::Geometry,
             Cause::Silhouette,
             SILHOUETTE_CONFIDENCE,
         );
     }
-    for (index, pile) in inside.into_iter().enumerate() {
+    for pile in inside {
         let terms = pile.terms;
         let best = (0..5)
             .max_by(|&a, &b| terms[a].total_cmp(&terms[b]))
@@ -251,7 +268,7 @@ pub fn localise(
             ExplainedTerm::Reflection,
             ExplainedTerm::Transmission,
         ][best];
-        emit(pile, Some(index), term, Cause::Shading, SHADING_CONFIDENCE);
+        emit(pile, term, Cause::Shading, SHADING_CONFIDENCE);
     }
     out
 }

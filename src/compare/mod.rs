@@ -26,6 +26,8 @@ pub mod extra_object;
 pub mod extra_shadow;
 pub mod groups;
 pub mod localise;
+pub mod missing_nodes;
+pub mod nodes;
 pub mod other_image;
 pub mod record_context;
 pub mod recorder;
@@ -194,10 +196,9 @@ fn compare_scene(
         raylab_rgb,
         other: other.clone(),
         encoding,
-        objects: components
-            .labels
-            .iter()
-            .map(|&l| (l != MISS).then_some(l as usize))
+        objects: (0..components.labels.len())
+            .map(|p| components.object_label(p))
+            .map(|l| (l != MISS).then_some(l as usize))
             .collect(),
         object_names: scene.objects.iter().map(|o| o.name.clone()).collect(),
         explanations,
@@ -248,6 +249,7 @@ fn with_conventions(
         light: None,
         object: None,
         object_name: None,
+        node: Vec::new(),
         factor: 1.0,
         share: (before - after) / found.total,
         pixels: better.pixels.clone(),
@@ -285,6 +287,7 @@ fn encoding_explanation(
         light: None,
         object: None,
         object_name: None,
+        node: Vec::new(),
         factor: 1.0,
         share: (before.total - after.total) / total,
         pixels,

@@ -75,7 +75,7 @@ fn cone_colours(components: &Components, palette: &Palette, p: usize) -> (Vec<DV
     let lights = components.space.lights;
     let mut own = vec![DVec3::ZERO; 4 + 3 * lights];
     // What lies behind each object the pixel sees, as raylab would show it without.
-    let mut missing: Vec<(usize, DVec3)> = Vec::new();
+    let mut missing: Vec<((usize, bool), DVec3)> = Vec::new();
     for entry in components.pixel(p) {
         let value = DVec3::from_array(entry.value.map(f64::from));
         let slot = match components.space.decode(entry.channel) {
@@ -86,7 +86,9 @@ fn cone_colours(components: &Components, palette: &Palette, p: usize) -> (Vec<DV
             (Kind::Diffuse(l), _) => 4 + l,
             (Kind::Specular(l), _) => 4 + lights + l,
             (Kind::Shadow(l), _) => 4 + 2 * lights + l,
-            (Kind::Missing(_), Some(object)) => {
+            (kind @ (Kind::Missing(_) | Kind::NodeMissing), Some(object)) => {
+                // A leaf's and an inner node's slots are numbered apart.
+                let object = (object, kind == Kind::NodeMissing);
                 match missing.iter_mut().find(|(o, _)| *o == object) {
                     Some((_, sum)) => *sum += value,
                     None => missing.push((object, value)),
@@ -97,7 +99,7 @@ fn cone_colours(components: &Components, palette: &Palette, p: usize) -> (Vec<DV
         };
         own[slot] += value;
     }
-    let label = components.labels[p];
+    let label = components.object_label(p);
     if label != MISS {
         own.extend(&palette.per_object[label as usize]);
     }
@@ -117,7 +119,7 @@ fn cone_colours(components: &Components, palette: &Palette, p: usize) -> (Vec<DV
     let mut labels: Vec<u32> = vec![label];
     for ny in (y - NEIGHBOURS).max(0)..=(y + NEIGHBOURS).min(h - 1) {
         for nx in (x - NEIGHBOURS).max(0)..=(x + NEIGHBOURS).min(w - 1) {
-            let label = components.labels[(ny * w + nx) as usize];
+            let label = components.object_label((ny * w + nx) as usize);
             if label != MISS && !labels.contains(&label) {
                 labels.push(label);
                 more.extend(&palette.per_object[label as usize]);

@@ -67,7 +67,12 @@ pub struct PixelValues {
 struct ExplanationJson<'a> {
     term: &'static str,
     light: Option<usize>,
+    /// The node's name: an object's, or a tree path (`"die/pip 1.1"`).
     object: Option<&'a str>,
+    /// For a part of an object's tree: its path of indices (`[2, 1]`), as the editor
+    /// selects it.
+    #[serde(skip_serializing_if = "<[usize]>::is_empty")]
+    node: &'a [usize],
     factor: f64,
     share: f64,
     pixels: usize,
@@ -133,6 +138,7 @@ impl Comparison {
                     term: e.term.name(),
                     light: e.light,
                     object: e.object_name.as_deref(),
+                    node: if e.node.len() > 1 { &e.node } else { &[] },
                     factor: round4(e.factor),
                     share: round4(e.share),
                     pixels: e.pixels.len(),

@@ -13,17 +13,22 @@ const ALIKE: f64 = 0.01;
 /// not one light's even where the other adds little there).
 const SAME_FIT: f64 = 0.001;
 
-/// Whether two groups tell the same story (one may be more specific than the other).
+/// Whether two groups tell the same story (one may be more specific than the other):
+/// the same family, lights that agree, and nodes one inside the other (every object
+/// holds them all; an object holds its parts).
 #[must_use]
 pub fn compatible(a: &Group, b: &Group) -> bool {
     let agree = |x: Option<usize>, y: Option<usize>| x.is_none() || y.is_none() || x == y;
-    a.family == b.family && agree(a.light, b.light) && agree(a.object, b.object)
+    let within =
+        |x: &Group, y: &Group| x.leaves.start >= y.leaves.start && x.leaves.end <= y.leaves.end;
+    a.family == b.family && agree(a.light, b.light) && (within(a, b) || within(b, a))
 }
 
-/// How specific a group is: one for each of a light, an object and a part it names.
+/// How specific a group is: one for each of a light, an object and a part it names, and
+/// one for each level below its object the node lies.
 fn specificity(group: &Group) -> usize {
     usize::from(group.light.is_some())
-        + usize::from(group.object.is_some())
+        + group.object.map_or(0, |_| 1 + group.depth)
         + usize::from(group.part.is_some())
 }
 
@@ -129,5 +134,18 @@ mod tests {
         b.light = None;
         assert!(compatible(&a, &b));
         assert!(!compatible(&a, &group(Family::Specular)));
+    }
+
+    #[test]
+    fn a_node_and_its_parts_tell_one_story_and_the_deeper_is_more_specific() {
+        let mut object = group(Family::Diffuse);
+        object.leaves = 0..3;
+        let mut pip = group(Family::Diffuse);
+        (pip.object, pip.leaves, pip.depth) = (Some(2), 1..2, 1);
+        let mut other = group(Family::Diffuse);
+        (other.object, other.leaves) = (Some(4), 3..4);
+        assert!(compatible(&object, &pip) && compatible(&pip, &object));
+        assert!(!compatible(&pip, &other) && !compatible(&object, &other));
+        assert!(specificity(&pip) > specificity(&object));
     }
 }

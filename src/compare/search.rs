@@ -40,7 +40,8 @@ pub struct Step {
     pub margin: f64,
     /// Pixels the change moved by at least half an 8-bit level.
     pub pixels: Vec<u32>,
-    /// Squared size of the change on each object.
+    /// Squared size of the change on each leaf (an inner node's own channels count
+    /// on none).
     pub energy_by_object: Vec<f64>,
     /// Squared size of the change from each light (per-light families).
     pub energy_by_light: Vec<f64>,
@@ -142,7 +143,7 @@ fn change_of(components: &Components, group: &Group, c: f64) -> Change {
                     let v = entry.value.map(|x| c * f64::from(x));
                     let energy = v.iter().map(|x| x * x).sum::<f64>();
                     let (kind, object) = space.decode(entry.channel);
-                    if let Some(o) = object {
+                    if let Some(o) = object.filter(|_| !kind.is_of_node()) {
                         out.energy_by_object[o] += energy;
                     }
                     if let Some(l) = kind.light() {

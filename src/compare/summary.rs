@@ -4,7 +4,8 @@ use super::bugs::Part;
 use super::encoding::Encoding;
 use super::explanation::{Cause, ExplainedTerm, Explanation};
 use super::shape_guess::ShapeGuess;
-use crate::scene::{ClampConvention, Light, MirrorConvention, Quantise, Scene};
+use crate::scene::tree_path::object_at;
+use crate::scene::{ClampConvention, CsgOp, Light, MirrorConvention, Quantise, Scene, Shape};
 
 fn light_name(scene: &Scene, light: usize) -> String {
     let kind = scene.lights.get(light).map_or("?", Light::kind_name);
@@ -83,6 +84,13 @@ pub fn summary(e: &Explanation, scene: &Scene) -> String {
                 Some(Part::Back) => format!(
                     "'{o}' is invisible from behind in the other image: a one-sided plane (weight {weight:.2})."
                 ),
+                Some(Part::Whole) | None if is_cut(scene, &e.node) => format!(
+                    "'{o}' is not cut in the other image{}: the solid shows there whole, as if the operand were missing (weight {weight:.2}).",
+                    e.bbox.map_or_else(String::new, |b| format!(
+                        " (raylab cuts it at x {}..{}, y {}..{})",
+                        b.x0, b.x1, b.y0, b.y1
+                    ))
+                ),
                 Some(Part::Whole) | None => format!(
                     "'{o}' is missing in the other image{}: what lies behind it shows instead, and its shadows are gone (weight {weight:.2}).",
                     e.bbox.map_or_else(String::new, |b| format!(
@@ -148,6 +156,23 @@ pub fn summary(e: &Explanation, scene: &Scene) -> String {
             "The picture looks like another version of this scene: the outlines of {objects} objects differ and no factor or known bug explains most of the difference. Was it rendered from an older scene file (the camera or objects moved)? The verdicts below are weak until the two agree."
         ),
     }
+}
+
+/// Whether the node at `path` is a cut: a Difference's operand after the first.
+fn is_cut(scene: &Scene, path: &[usize]) -> bool {
+    let Some((&index, parent)) = path.split_last().filter(|(_, p)| !p.is_empty()) else {
+        return false;
+    };
+    index > 0
+        && object_at(&scene.objects, parent).is_some_and(|p| {
+            matches!(
+                p.shape,
+                Shape::Csg {
+                    op: CsgOp::Difference,
+                    ..
+                }
+            )
+        })
 }
 
 /// The sentence of an extra object: where, over what raylab sees there (`behind`:

@@ -1,6 +1,7 @@
 //! From the search's steps to explanations: each step's group read as a term, light and
-//! object (a group over every object whose change lies on one object names it; likewise
-//! for lights), steps that say the same merged, and each given its confidence:
+//! node (a group over every object whose change lies on one node names the deepest such
+//! node: an object, or a part of its tree), steps that say the same merged, and each
+//! given its confidence:
 //!
 //! ```text
 //! confidence = margin * (1 - |1 - weight|)   for bugs and missing parts
@@ -21,27 +22,17 @@ use super::search::Step;
 use crate::scene::Scene;
 use crate::trace::World;
 
-/// The share of a change on one object above which the object is named.
+/// The share of a change on one node above which the node is named.
 const NAMED: f64 = 0.995;
 
-/// The single index holding at least [`NAMED`] of the energy, if one does.
-fn concentrated(energy: &[f64]) -> Option<usize> {
-    let total: f64 = energy.iter().sum();
-    let (index, most) = energy
-        .iter()
-        .copied()
-        .enumerate()
-        .max_by(|a, b| a.1.total_cmp(&b.1))?;
-    (total > 0.0 && most >= NAMED * total).then_some(index)
-}
-
-/// Where raylab draws `object` among `pixels` (its first hits there; where it is only
-/// seen in mirrors, all of them).
-fn drawn_box(components: &Components, object: usize, pixels: &[u32]) -> Option<PixelBox> {
+/// Where raylab draws node `node` among `pixels` (its first hits there; where it is
+/// only seen in mirrors, all of them).
+fn drawn_box(components: &Components, node: usize, pixels: &[u32]) -> Option<PixelBox> {
+    let leaves = &components.nodes.nodes[node].leaves;
     let own: Vec<u32> = pixels
         .iter()
         .copied()
-        .filter(|&p| components.labels[p as usize] == object as u32)
+        .filter(|&p| leaves.contains(&(components.labels[p as usize] as usize)))
         .collect();
     PixelBox::of(if own.is_empty() { pixels } else { &own }, components.width)
 }
@@ -83,16 +74,16 @@ pub fn explain_steps(
     world: &World,
     total: f64,
 ) -> Vec<Explanation> {
-    let mut out: Vec<(Explanation, f64)> = Vec::new();
+    let mut out: Vec<(Explanation, f64, Option<usize>)> = Vec::new();
     for step in steps {
         let group = &groups.list[step.group];
         let (term, cause) = term_and_cause(group.family, split_of(group, components), group.part);
         // Lights are named only by the group: every light is every light, even where
         // one of them dominates.
         let light = group.light.map(|l| world.light_scene_index[l]);
-        let object = group
+        let node = group
             .object
-            .or_else(|| concentrated(&step.energy_by_object));
+            .or_else(|| components.nodes.concentrated(&step.energy_by_object, NAMED));
         let is_bug = !matches!(cause, Cause::Factor);
         let confidence = if is_bug {
             step.margin * (1.0 - (1.0 - step.coefficient).abs()).max(0.0)
@@ -102,13 +93,17 @@ pub fn explain_steps(
         let readings: Vec<String> = step
             .alike
             .iter()
-            .map(|&g| reading(&groups.list[g], components, world, scene))
+            .map(|&g| reading(&groups.list[g], components, world))
             .collect();
-        let found = out.iter_mut().find(|(e, _)| {
-            e.term == term && e.cause == cause && e.light == light && e.object == object
+        let path = node.map(|n| components.nodes.nodes[n].path.as_slice());
+        let found = out.iter_mut().find(|(e, ..)| {
+            e.term == term
+                && e.cause == cause
+                && e.light == light
+                && Some(e.node.as_slice()).filter(|p| !p.is_empty()) == path
         });
         match found {
-            Some((e, coefficient)) => {
+            Some((e, coefficient, _)) => {
                 e.fits_as_well.extend(readings);
                 *coefficient += step.coefficient;
                 let weight = e.share + step.gain / total;
@@ -118,12 +113,13 @@ pub fn explain_steps(
                 e.pixels.sort_unstable();
                 e.pixels.dedup();
             }
-            None => out.push((
-                Explanation {
+            None => {
+                let mut e = Explanation {
                     term,
                     light,
-                    object,
-                    object_name: object.map(|o| scene.objects[o].name.clone()),
+                    object: None,
+                    object_name: None,
+                    node: Vec::new(),
                     factor: 1.0,
                     share: step.gain / total,
                     pixels: step.pixels.clone(),
@@ -132,13 +128,14 @@ pub fn explain_steps(
                     bbox: None,
                     fits_as_well: readings,
                     summary: String::new(),
-                },
-                step.coefficient,
-            )),
+                };
+                e.name_node(&components.nodes, node);
+                out.push((e, step.coefficient, node));
+            }
         }
     }
     out.into_iter()
-        .map(|(mut e, coefficient)| {
+        .map(|(mut e, coefficient, node)| {
             // Terms scale from 1; shadows and bugs add a picture whose weight is 1 - factor.
             let factor = if e.cause == Cause::Factor && e.term != ExplainedTerm::Shadows {
                 1.0 + coefficient
@@ -147,8 +144,8 @@ pub fn explain_steps(
             };
             // Rounding noise around 0 reads as "-0.00" otherwise.
             e.factor = if factor.abs() < 1e-6 { 0.0 } else { factor };
-            if let (Cause::Missing(Some(Part::Whole) | None), Some(object)) = (e.cause, e.object) {
-                e.bbox = drawn_box(components, object, &e.pixels);
+            if let (Cause::Missing(Some(Part::Whole) | None), Some(node)) = (e.cause, node) {
+                e.bbox = drawn_box(components, node, &e.pixels);
             }
             e.fits_as_well.sort();
             e.fits_as_well.dedup();
@@ -171,8 +168,8 @@ fn split_of(group: &Group, components: &Components) -> [f64; 2] {
 }
 
 /// A group read as a short phrase ("the diffuse term of every light", "the ambient
-/// term on 'floor'", "the normal-without-z bug on 'cone'"), for what fits as well.
-fn reading(group: &Group, components: &Components, world: &World, scene: &Scene) -> String {
+/// term on 'floor'", "the normal-without-z bug on 'die/pip 1.1'"), for what fits as well.
+fn reading(group: &Group, components: &Components, world: &World) -> String {
     let (term, cause) = term_and_cause(group.family, split_of(group, components), group.part);
     let what = match cause {
         Cause::Factor => format!("the {} term", term.name()),
@@ -188,8 +185,8 @@ fn reading(group: &Group, components: &Components, world: &World, scene: &Scene)
         None if per_light => " of every light".to_owned(),
         None => String::new(),
     };
-    let object = group
-        .object
-        .map_or_else(String::new, |o| format!(" on '{}'", scene.objects[o].name));
+    let object = group.object.map_or_else(String::new, |n| {
+        format!(" on '{}'", components.nodes.nodes[n].name)
+    });
     format!("{what}{light}{object}")
 }

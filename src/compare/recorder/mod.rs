@@ -59,8 +59,8 @@ struct Bounce {
     /// Whether a transmitted ray is on the path from the camera to this ray: its own
     /// transmission is then part of that ray's, already counted.
     through_glass: bool,
-    /// The scene object hit (what the channels are per).
-    object: Option<usize>,
+    /// The leaf hit (what the channels are per).
+    leaf: Option<usize>,
     /// The world object hit (a group's member, a CSG node): what its material and shape
     /// are read from.
     world_object: Option<usize>,
@@ -111,10 +111,10 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
         self.behind = MISS;
     }
 
-    /// The camera ray's hit of the current sample, if it hit something.
+    /// The leaf the current sample's camera ray hit, if it hit something.
     #[must_use]
-    pub fn primary_hit(&self) -> Option<SurfacePoint> {
-        self.chain.first().and_then(|b| b.hit)
+    pub fn primary_leaf(&self) -> Option<usize> {
+        self.chain.first().and_then(|b| b.leaf)
     }
 
     /// Ray `node` starts, from the ray `from` names: its throughput is its parent's times
@@ -147,7 +147,7 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
         self.chain.push(Bounce {
             mirror_child: None,
             through_glass,
-            object: None,
+            leaf: None,
             world_object: None,
             hit: None,
             ray: Ray::new(DVec3::ZERO, DVec3::ZERO),
@@ -161,15 +161,20 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
     /// What ray `node` met.
     fn push(&mut self, node: u32, ray: &Ray, hit: Option<SurfacePoint>) {
         let bounce = &mut self.chain[node as usize];
-        bounce.object = hit.map(|h| h.object);
         bounce.world_object = hit.and_then(|h| self.ctx.world.world_object_of_hit(ray, &h));
+        // A group member the ray is not found on again counts as its object's first leaf.
+        let nodes = self.ctx.nodes;
+        bounce.leaf = hit.map(|h| match bounce.world_object {
+            Some(w) => nodes.leaf(w, h.part),
+            None => nodes.nodes[nodes.top(h.object)].leaves.start,
+        });
         bounce.hit = hit;
         bounce.ray = *ray;
         bounce.ray_dir = ray.dir;
     }
 
-    fn channel(&self, kind: Kind, object: usize) -> u32 {
-        self.ctx.space.id(kind, Some(object))
+    fn channel(&self, kind: Kind, leaf: usize) -> u32 {
+        self.ctx.space.id(kind, Some(leaf))
     }
 
     /// Whether a light behind the surface (for raylab's normal) reaches the point: a
@@ -204,8 +209,7 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
         record: &LightRecord,
         sample: &LightSample,
     ) {
-        let object = hit.object;
-        let Some(world_index) = bounce.world_object else {
+        let (Some(object), Some(world_index)) = (bounce.leaf, bounce.world_object) else {
             return;
         };
         let material = self.ctx.material(world_index);
@@ -270,7 +274,7 @@ impl Recorder for SampleRecorder<'_, '_> {
 
     fn ambient(&mut self, node: u32, colour: DVec3) {
         let bounce = self.chain[node as usize];
-        if let Some(object) = bounce.object {
+        if let Some(object) = bounce.leaf {
             let channel = self.channel(Kind::Ambient, object);
             self.tally.add(channel, bounce.throughput * colour);
         }
@@ -278,11 +282,13 @@ impl Recorder for SampleRecorder<'_, '_> {
 
     fn light(&mut self, node: u32, record: &LightRecord) {
         let bounce = self.chain[node as usize];
-        let (Some(hit), Some(index)) = (bounce.hit, self.ctx.world_light[record.scene_index])
-        else {
+        let (Some(hit), Some(object), Some(index)) = (
+            bounce.hit,
+            bounce.leaf,
+            self.ctx.world_light[record.scene_index],
+        ) else {
             return;
         };
-        let object = hit.object;
         let t = bounce.throughput;
         self.tally.add(
             self.channel(Kind::Diffuse(index), object),
@@ -322,9 +328,8 @@ impl Recorder for SampleRecorder<'_, '_> {
             );
             self.shadow_cast(
                 record,
-                &hit,
+                (&hit, world_object, object),
                 &sample,
-                world_object,
                 t * (diffuse + specular),
             );
         }
@@ -334,7 +339,7 @@ impl Recorder for SampleRecorder<'_, '_> {
     fn reflection(&mut self, node: u32, km: DVec3, reflected: DVec3) {
         let bounce = &mut self.chain[node as usize];
         bounce.mirror = Some((km, reflected));
-        let (t, object) = (bounce.throughput, bounce.object);
+        let (t, object) = (bounce.throughput, bounce.leaf);
         if let Some(object) = object {
             self.tally
                 .add(self.channel(Kind::Reflection, object), t * km * reflected);
@@ -343,7 +348,7 @@ impl Recorder for SampleRecorder<'_, '_> {
 
     fn transmission(&mut self, node: u32, kt: DVec3, transmitted: DVec3, _: Branch) {
         let bounce = &self.chain[node as usize];
-        let (t, object) = (bounce.throughput, bounce.object);
+        let (t, object) = (bounce.throughput, bounce.leaf);
         // The first transmission on each path holds all that glass adds below it: the
         // channel is then what a picture without transmission lacks, no part twice.
         if let Some(object) = object
@@ -370,7 +375,7 @@ impl Recorder for SampleRecorder<'_, '_> {
             self.chain[d].clamped[i] = bug.combine(local, mirror);
         }
         if d == 0
-            && let Some(object) = bounce.object
+            && let Some(object) = bounce.leaf
         {
             let clamp = |c: DVec3| c.clamp(DVec3::ZERO, DVec3::ONE);
             for (i, bug) in ClampBug::ALL.into_iter().enumerate() {

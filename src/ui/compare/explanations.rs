@@ -6,6 +6,7 @@ use egui::{Color32, RichText};
 
 use crate::compare::{Comparison, Explanation, PSNR_IDENTICAL_DB};
 use crate::scene::Scene;
+use crate::scene::tree_path::path_name;
 use crate::ui::commands::{Command, Selection};
 use crate::ui::state::light_label;
 
@@ -42,10 +43,15 @@ pub fn explanation_label(index: usize, e: &Explanation, scene: &Scene) -> String
     text
 }
 
-/// What clicking an explanation selects in `scene`: its object, else its light; nothing
-/// when it names neither, or when the scene no longer has them where it had them.
+/// What clicking an explanation selects in `scene`: its node (a part of an object's
+/// tree, or the object), else its light; nothing when it names neither, or when the
+/// scene no longer has them where it had them.
 #[must_use]
 pub fn explanation_selection(e: &Explanation, scene: &Scene) -> Option<Selection> {
+    if e.node.len() > 1 {
+        let same = Some(path_name(&scene.objects, &e.node)) == e.object_name;
+        return same.then(|| Selection::Part(e.node.clone()));
+    }
     if let Some(object) = e.object {
         let same = scene.objects.get(object).map(|o| &o.name) == e.object_name.as_ref();
         return same.then_some(Selection::Object(object));
@@ -133,5 +139,55 @@ fn summary_ui(ui: &mut egui::Ui, c: &Comparison) {
             })
             .color(Color32::from_rgb(140, 200, 140)),
         );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::compare::{Cause, ExplainedTerm};
+    use crate::scene::examples::EXAMPLE_SCENES;
+    use crate::scene::parse_scene;
+
+    #[test]
+    fn an_explanation_of_a_part_of_a_tree_selects_that_part_while_the_scene_has_it() {
+        let (_, ron) = EXAMPLE_SCENES
+            .iter()
+            .find(|(n, _)| *n == "csg.ron")
+            .unwrap();
+        let mut scene = parse_scene(ron).unwrap();
+        let e = Explanation {
+            term: ExplainedTerm::Diffuse,
+            light: None,
+            object: Some(2),
+            object_name: Some("die/pip 1.1".to_owned()),
+            node: vec![2, 1],
+            factor: 2.0,
+            share: 1.0,
+            pixels: Vec::new(),
+            cause: Cause::Factor,
+            bbox: None,
+            fits_as_well: Vec::new(),
+            confidence: 1.0,
+            summary: String::new(),
+        };
+        assert_eq!(
+            explanation_selection(&e, &scene),
+            Some(Selection::Part(vec![2, 1]))
+        );
+        let whole = Explanation {
+            object_name: Some("die".to_owned()),
+            node: vec![2],
+            ..e.clone()
+        };
+        assert_eq!(
+            explanation_selection(&whole, &scene),
+            Some(Selection::Object(2))
+        );
+        // Renamed since: the explanation no longer points at it.
+        crate::scene::tree_path::object_at_mut(&mut scene.objects, &[2, 1])
+            .unwrap()
+            .name = "pip one".to_owned();
+        assert_eq!(explanation_selection(&e, &scene), None);
     }
 }
