@@ -8,13 +8,16 @@
 //! blend, whose convention is then named before it). raylab's own picture, and pictures
 //! with only another bug, get no spot cause.
 
+#[path = "compare/own_render.rs"]
+mod own_render;
 #[path = "compare/shader.rs"]
 mod shader;
 
 use glam::DVec3;
+use own_render::own_render;
 use raylab::compare::{CompareOptions, Comparison, ExplainedTerm, OtherImage, compare};
 use raylab::scene::{Light, Scene, parse_scene};
-use raylab::trace::{RenderOptions, RenderProgress, World, render};
+use raylab::trace::RenderProgress;
 use shader::{Bugs, render as render_with};
 
 /// A floor, a ball, and two spot lights (scene indices 1 and 2) after an ambient light.
@@ -48,22 +51,6 @@ fn mirrored() -> Scene {
     let mut scene = scene();
     scene.materials.get_mut("ball").unwrap().mirror = DVec3::splat(0.4);
     scene
-}
-
-/// raylab's render of `scene`, written as raylab writes it.
-fn raylab_render(scene: &Scene) -> OtherImage {
-    let world = World::new(scene).unwrap();
-    let options = RenderOptions {
-        samples_per_pixel: 1,
-        ..RenderOptions::from_scene(scene)
-    };
-    let (image, _) = render(&world, &options, &RenderProgress::default()).unwrap();
-    let rgb = image
-        .to_rgba8()
-        .chunks(4)
-        .map(|p| [p[0], p[1], p[2]])
-        .collect();
-    OtherImage::new(scene.camera.width, scene.camera.height, rgb)
 }
 
 fn diff(other: &OtherImage) -> Comparison {
@@ -190,7 +177,7 @@ fn no_ambient() -> Bugs {
 #[test]
 fn a_spot_light_with_no_cone_is_named_with_its_index() {
     let student = with_spot(2, no_cone);
-    assert_first(&diff(&raylab_render(&student)), "spot-no-cone", 2);
+    assert_first(&diff(&own_render(&student)), "spot-no-cone", 2);
 }
 
 #[test]
@@ -209,15 +196,15 @@ fn a_spot_light_with_no_falloff_is_named_with_its_index() {
 fn a_spot_angle_used_as_radians_is_named_with_its_index() {
     // cos(50 radians) = cos(15.2 degrees): a narrower cone.
     let student = with_spot(1, angle_as_radians);
-    assert_first(&diff(&raylab_render(&student)), "spot-angle-radians", 1);
+    assert_first(&diff(&own_render(&student)), "spot-angle-radians", 1);
 }
 
 #[test]
 fn a_half_angle_taken_as_the_full_angle_is_named_with_its_index() {
     let student = with_spot(1, full_angle);
-    assert_first(&diff(&raylab_render(&student)), "spot-full-angle", 1);
+    assert_first(&diff(&own_render(&student)), "spot-full-angle", 1);
     let student = with_spot(2, full_angle);
-    assert_first(&diff(&raylab_render(&student)), "spot-full-angle", 2);
+    assert_first(&diff(&own_render(&student)), "spot-full-angle", 2);
 }
 
 #[test]
@@ -302,10 +289,10 @@ fn each_spot_bug_is_named_beside_the_courses_mirror_blend() {
 
 #[test]
 fn raylabs_own_picture_has_no_spot_cause() {
-    let c = diff(&raylab_render(&scene()));
+    let c = diff(&own_render(&scene()));
     assert!(c.psnr_db >= 60.0, "{}", c.psnr_db);
     assert_no_spot_cause(&c);
-    let c = diff_with(&mirrored(), &raylab_render(&mirrored()));
+    let c = diff_with(&mirrored(), &own_render(&mirrored()));
     assert!(c.psnr_db >= 60.0, "{}", c.psnr_db);
     assert_no_spot_cause(&c);
 }
