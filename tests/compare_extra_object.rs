@@ -14,7 +14,7 @@ mod shader;
 #[path = "compare/one_sample.rs"]
 mod one_sample;
 
-use one_sample::diff;
+use one_sample::{diff, first_beyond_conventions};
 use raylab::compare::shape_guess::ShapeGuess;
 use raylab::compare::{Cause, Comparison, ExplainedTerm};
 use raylab::scene::{Material, Object, Scene};
@@ -49,12 +49,7 @@ const CUBE: &str = r#"(name: "extra", shape: Cube, transform: (translate: (-0.3,
 /// shaped `shape`, where the extra object of `student` (its last) is drawn, explaining
 /// at least `share`.
 fn assert_extra_first(student: &Scene, c: &Comparison, shape: ShapeGuess, share: f64) {
-    let report = c.text_lines().join("\n");
-    let first = c
-        .explanations
-        .iter()
-        .find(|e| e.term != ExplainedTerm::Conventions)
-        .unwrap_or_else(|| panic!("{report}"));
+    let (first, report) = first_beyond_conventions(c);
     assert_eq!(first.cause, Cause::ExtraObject(shape), "{report}");
     assert_eq!(first.term, ExplainedTerm::Geometry, "{report}");
     assert!(first.share >= share, "{report}");

@@ -2,11 +2,17 @@
 //! named as the transmission term at factor 0, on a glass object; raylab's own render of
 //! the glass and the soft-spot examples is explained by nothing (no false alarm).
 
+#[path = "compare/one_sample.rs"]
+mod one_sample;
+#[path = "compare/own_render.rs"]
+mod own_render;
+
 use std::path::Path;
 
-use raylab::compare::{CompareOptions, Comparison, ExplainedTerm, OtherImage, compare};
+use own_render::own_render_with;
+use raylab::compare::{Comparison, ExplainedTerm};
 use raylab::scene::{Scene, load_scene};
-use raylab::trace::{RenderOptions, RenderProgress, Term, TermSwitches, World, render};
+use raylab::trace::{Term, TermSwitches};
 
 fn small(name: &str) -> Scene {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -21,23 +27,7 @@ fn small(name: &str) -> Scene {
 /// The comparison of raylab's picture of `scene` with raylab's own render of it under
 /// `switches` (one sample per pixel, as the comparison renders it).
 fn diff(scene: &Scene, switches: TermSwitches) -> Comparison {
-    let world = World::new(scene).unwrap();
-    let options = RenderOptions {
-        samples_per_pixel: 1,
-        switches,
-        ..RenderOptions::from_scene(scene)
-    };
-    let (image, _) = render(&world, &options, &RenderProgress::default()).unwrap();
-    let rgb = image
-        .to_rgba8()
-        .chunks(4)
-        .map(|p| [p[0], p[1], p[2]])
-        .collect();
-    let other = OtherImage::new(image.width, image.height, rgb);
-    let options = CompareOptions {
-        samples_per_pixel: Some(1),
-    };
-    compare(scene, &other, &options, &RenderProgress::default()).unwrap()
+    one_sample::diff(scene, &own_render_with(scene, switches))
 }
 
 #[test]

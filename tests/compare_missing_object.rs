@@ -14,7 +14,7 @@ mod shader;
 #[path = "compare/one_sample.rs"]
 mod one_sample;
 
-use one_sample::diff;
+use one_sample::{diff, first_beyond_conventions};
 use raylab::compare::{Comparison, ExplainedTerm};
 use raylab::scene::{Scene, parse_scene};
 use shader::{Bugs, lab_scene, render};
@@ -33,12 +33,7 @@ fn index_of(scene: &Scene, name: &str) -> usize {
 /// Asserts that the first explanation other than the conventions' is `name` missing,
 /// with raylab's box of it, and that it explains at least `share`.
 fn assert_missing_first(scene: &Scene, c: &Comparison, name: &str, share: f64) {
-    let report = c.text_lines().join("\n");
-    let first = c
-        .explanations
-        .iter()
-        .find(|e| e.term != ExplainedTerm::Conventions)
-        .unwrap_or_else(|| panic!("{report}"));
+    let (first, report) = first_beyond_conventions(c);
     assert_eq!(first.cause.name(), "missing-object", "{report}");
     assert_eq!(first.object_name.as_deref(), Some(name), "{report}");
     assert!(first.share >= share, "{report}");

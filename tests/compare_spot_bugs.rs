@@ -8,16 +8,18 @@
 //! blend, whose convention is then named before it). raylab's own picture, and pictures
 //! with only another bug, get no spot cause.
 
+#[path = "compare/one_sample.rs"]
+mod one_sample;
 #[path = "compare/own_render.rs"]
 mod own_render;
 #[path = "compare/shader.rs"]
 mod shader;
 
 use glam::DVec3;
+use one_sample::{diff as diff_with, first_beyond_conventions};
 use own_render::own_render;
-use raylab::compare::{CompareOptions, Comparison, ExplainedTerm, OtherImage, compare};
+use raylab::compare::{Comparison, OtherImage};
 use raylab::scene::{Light, Scene, parse_scene};
-use raylab::trace::RenderProgress;
 use shader::{Bugs, render as render_with};
 
 /// A floor, a ball, and two spot lights (scene indices 1 and 2) after an ambient light.
@@ -55,14 +57,6 @@ fn mirrored() -> Scene {
 
 fn diff(other: &OtherImage) -> Comparison {
     diff_with(&scene(), other)
-}
-
-/// `raylab diff` of `other` against `scene`.
-fn diff_with(scene: &Scene, other: &OtherImage) -> Comparison {
-    let options = CompareOptions {
-        samples_per_pixel: Some(1),
-    };
-    compare(scene, other, &options, &RenderProgress::default()).unwrap()
 }
 
 /// The scene with spot light `index` changed by `change`.
@@ -135,12 +129,7 @@ fn assert_first(c: &Comparison, cause: &str, light: usize) {
 /// Asserts that the first explanation after the conventions' (which, when another
 /// convention fits, comes first by design) is `cause` on `light`, in its summary too.
 fn assert_first_bug(c: &Comparison, cause: &str, light: usize) {
-    let report = c.text_lines().join("\n");
-    let first = c
-        .explanations
-        .iter()
-        .find(|e| e.term != ExplainedTerm::Conventions)
-        .unwrap_or_else(|| panic!("{report}"));
+    let (first, report) = first_beyond_conventions(c);
     let expected = format!("{cause} on light {light}:\n{report}");
     assert_eq!(first.cause.name(), cause, "{expected}");
     assert_eq!(first.light, Some(light), "{expected}");

@@ -4,13 +4,19 @@
 
 use raylab::compare::OtherImage;
 use raylab::scene::Scene;
-use raylab::trace::{RenderOptions, RenderProgress, World, render};
+use raylab::trace::{RenderOptions, RenderProgress, TermSwitches, World, render};
 
 /// raylab's render of `scene` at one sample per pixel, as 8-bit bytes.
 pub fn own_render(scene: &Scene) -> OtherImage {
+    own_render_with(scene, TermSwitches::ALL_ON)
+}
+
+/// As [`own_render`], with the terms `switches` leaves on.
+pub fn own_render_with(scene: &Scene, switches: TermSwitches) -> OtherImage {
     let world = World::new(scene).unwrap();
     let options = RenderOptions {
         samples_per_pixel: 1,
+        switches,
         ..RenderOptions::from_scene(scene)
     };
     let (image, _) = render(&world, &options, &RenderProgress::default()).unwrap();
