@@ -31,6 +31,7 @@ use super::dependence::TermDependence;
 use super::keep_rule::{KeepRule, TileSummary};
 use super::light_factors;
 use super::light_factors::LightSlot;
+use super::object_materials::object_materials;
 use super::pixel_colour::PixelColour;
 use super::ray_geometry::{RayGeometry, ShadowTarget, bent_objects};
 use crate::scene::Material;
@@ -122,15 +123,6 @@ fn mixes_materials(object: &crate::trace::WorldObject) -> bool {
             .iter()
             .any(|leaf| leaf.material != object.material)
     })
-}
-
-/// Each object's material, by world object index.
-fn object_materials(world: &World) -> Vec<Material> {
-    world
-        .objects
-        .iter()
-        .map(|o| world.materials[o.material].clone())
-        .collect()
 }
 
 /// Why a cache cannot serve a world.

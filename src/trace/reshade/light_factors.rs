@@ -5,6 +5,7 @@
 //! points ([`crate::trace::world::WorldLight::placement`]) and, for the lobe, on the shininess.
 
 use super::cached_hit::NOT_CAST;
+use super::object_materials::value_changed;
 use crate::scene::Material;
 use crate::trace::shade::LitFactors;
 use crate::trace::world::{World, WorldLight};
@@ -43,17 +44,7 @@ pub(crate) fn factor_columns(old: &[[u64; 8]], world: &World) -> Vec<Option<usiz
 /// Per object, whether the lobes cached for it are stale: its material's shininess is
 /// not, bit for bit, the one they were worked out with.
 pub(crate) fn stale_lobes(cached: &[Material], world: &World) -> Vec<bool> {
-    world
-        .objects
-        .iter()
-        .enumerate()
-        .map(|(i, o)| {
-            let now = world.materials[o.material].shininess;
-            cached
-                .get(i)
-                .is_none_or(|m| m.shininess.to_bits() != now.to_bits())
-        })
-        .collect()
+    value_changed(cached, world, |m| m.shininess).collect()
 }
 
 /// The placements of `world`'s lights, for [`factor_columns`].

@@ -8,6 +8,7 @@ mod dependence;
 mod hit_cache;
 mod keep_rule;
 mod light_factors;
+mod object_materials;
 mod pixel_colour;
 mod pixel_rays;
 mod quick_shade;

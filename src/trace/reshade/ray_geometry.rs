@@ -8,6 +8,7 @@ use std::sync::Arc;
 
 use glam::{DAffine3, DVec3};
 
+use super::object_materials::value_changed;
 use crate::scene::{Camera, Material};
 use crate::trace::shapes::Primitive;
 use crate::trace::world::{CsgTree, SphereLight, World, WorldLight};
@@ -92,17 +93,9 @@ impl ShadowTarget {
 /// of them is; the object's mirror ray, its own hit, shadow rays and light factors stay
 /// valid. A plane's transmitted ray goes straight on whatever its index.
 pub(super) fn bent_objects(cached: &[Material], world: &World) -> Vec<bool> {
-    world
-        .objects
-        .iter()
-        .enumerate()
-        .map(|(i, object)| {
-            let now = world.materials[object.material].ior;
-            object.shape != Primitive::Plane
-                && cached
-                    .get(i)
-                    .is_none_or(|m| m.ior.to_bits() != now.to_bits())
-        })
+    value_changed(cached, world, |m| m.ior)
+        .zip(&world.objects)
+        .map(|(changed, object)| changed && object.shape != Primitive::Plane)
         .collect()
 }
 
