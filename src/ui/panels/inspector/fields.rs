@@ -5,6 +5,10 @@
 //! when the widget reports a change from the user and [`Limits`] takes the new number.
 //! A value outside a field's drag range (a mirror's negative scale, a 720° rotation, an
 //! HDR colour) is shown as it is, never clamped.
+//!
+//! Typed text is the user's until the edit ends (Return, Tab, a click elsewhere): only
+//! then is it read, taken or refused, so a half-typed `0.` or `.` or an emptied field
+//! is never judged, rewritten or taken.
 
 use std::cell::Cell;
 use std::ops::RangeInclusive;
@@ -159,12 +163,20 @@ pub(super) fn whole_number_row_ui(
 ) {
     let label = ui.label(label);
     let mut shown = *value;
+    // As in `number_ui`: what was typed, to say what became of it.
+    let typed: Cell<Option<Result<f64, String>>> = Cell::new(None);
     let response = ui.add(
         DragValue::new(&mut shown)
             .speed(speed)
             .range(range.clone())
-            .clamp_existing_to_range(false),
+            .clamp_existing_to_range(false)
+            .update_while_editing(false)
+            .custom_parser(|text| parse_typed(text, &typed)),
     );
+    if let Some(typed) = typed.take() {
+        let limits = Limits::closed(f64::from(*range.start()), f64::from(*range.end()));
+        notice_typed(ui.ctx(), typed, f64::from(*value), limits);
+    }
     if response.changed() {
         *value = shown.clamp(*range.start(), *range.end());
     }
@@ -189,15 +201,9 @@ fn number_ui(
     let drag = DragValue::new(&mut shown)
         .range(limits.range())
         .clamp_existing_to_range(false)
+        .update_while_editing(false)
         .max_decimals(3)
-        .custom_parser(|text| {
-            let parsed = text
-                .trim()
-                .parse::<f64>()
-                .map_err(|_| text.trim().to_owned());
-            typed.set(Some(parsed.clone()));
-            parsed.ok().filter(|v| v.is_finite())
-        });
+        .custom_parser(|text| parse_typed(text, &typed));
     // A fixed-width field shows what fits: fewer decimals, then scientific notation, so a
     // huge or tiny value never widens it (the value itself is untouched).
     let drag = match width {
@@ -219,6 +225,17 @@ fn number_ui(
         *value = taken;
     }
     response
+}
+
+/// Reads typed text as a number, keeping what was typed in `typed` (to say what became
+/// of it); `None` for text that is not a finite number.
+fn parse_typed(text: &str, typed: &Cell<Option<Result<f64, String>>>) -> Option<f64> {
+    let parsed = text
+        .trim()
+        .parse::<f64>()
+        .map_err(|_| text.trim().to_owned());
+    typed.set(Some(parsed.clone()));
+    parsed.ok().filter(|v| v.is_finite())
 }
 
 /// Past this a value is taken with a warning: far beyond the scales and offsets the
