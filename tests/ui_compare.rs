@@ -267,3 +267,57 @@ fn a_wrong_size_picture_is_a_clear_error_and_a_dropped_png_compares() {
     let compared = harness.state().compare().compared().expect("shown");
     assert_eq!(compared.path, theirs);
 }
+
+#[test]
+fn every_explanation_reads_without_scrolling_the_list() {
+    // Many differences at once, so there are many explanations.
+    let dir = temp_dir("compare-many");
+    let mut scene = lab();
+    for (k, material) in scene.materials.values_mut().enumerate() {
+        material.diffuse *= 0.3 + 0.25 * k as f64;
+        material.specular *= 1.6 - 0.3 * k as f64;
+        material.ambient *= 2.0;
+        material.mirror *= 0.5;
+    }
+    if let raylab::scene::Light::Point { intensity, .. } = &mut scene.lights[1] {
+        *intensity *= 0.6;
+    }
+    if let raylab::scene::Light::Directional { intensity, .. } = &mut scene.lights[2] {
+        *intensity *= 1.8;
+    }
+    let world = World::new(&scene).unwrap();
+    let (image, _) = render(
+        &world,
+        &RenderOptions::from_scene(&scene),
+        &RenderProgress::default(),
+    )
+    .unwrap();
+    let theirs = dir.join("theirs.png");
+    std::fs::write(&theirs, image.png_bytes()).unwrap();
+
+    let mut harness = harness();
+    compare_through_the_window(&mut harness, &theirs);
+    let c = harness.state().compare().comparison().unwrap().clone();
+    assert!(
+        c.explanations.len() >= 5,
+        "{} explanations",
+        c.explanations.len()
+    );
+    let window = harness.ctx.content_rect();
+    let scene = harness.state().scene().clone();
+    let row_of = |i: usize| {
+        harness
+            .get_by_label(&explanation_label(i, &c.explanations[i], &scene))
+            .rect()
+    };
+    let span = row_of(c.explanations.len() - 1).max.y - row_of(0).min.y;
+    assert!(span > 150.0, "more than a 150 px box holds: {span}");
+    for i in 0..c.explanations.len() {
+        let row = row_of(i);
+        assert!(
+            window.contains_rect(row),
+            "explanation {i} of {} is at {row:?}, outside the window {window:?}: the list must be scrolled to read it",
+            c.explanations.len()
+        );
+    }
+}

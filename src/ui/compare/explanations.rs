@@ -61,20 +61,23 @@ pub fn explanation_selection(e: &Explanation, scene: &Scene) -> Option<Selection
         .map(Selection::Light)
 }
 
-/// The summary line and the rows; pushes a selection when a row is clicked.
+/// The summary line and the rows; pushes a selection when a row is clicked. Returns the
+/// height all of it needs (the rows scroll where they get less).
 pub fn explanations_ui(
     ui: &mut egui::Ui,
     session: &mut CompareSession,
     scene: &Scene,
     commands: &mut Vec<Command>,
-) {
+) -> f32 {
     let Some(compared) = session.compared() else {
-        return;
+        return 0.0;
     };
     let c = &compared.comparison;
+    let top = ui.cursor().top();
     summary_ui(ui, c);
+    let summary = ui.cursor().top() - top;
     let mut clicked = None;
-    egui::ScrollArea::vertical()
+    let rows = egui::ScrollArea::vertical()
         .auto_shrink([false, true])
         .show(ui, |ui| {
             for (i, e) in c.explanations.iter().enumerate() {
@@ -112,6 +115,7 @@ pub fn explanations_ui(
             }
         }
     }
+    summary + rows.content_size.y
 }
 
 /// PSNR, encoding and what is left unexplained.

@@ -46,14 +46,25 @@ pub fn compare_view_ui(
     egui::Panel::top("compare bar").show(ui, |ui| {
         compare_bar_ui(ui, session, scene, commands);
     });
-    egui::Panel::bottom("compare explanations")
-        .resizable(true)
-        .default_size(190.0)
-        .size_range(90.0..=480.0)
+    // As tall as its explanations need (measured last frame), so a dozen read without
+    // scrolling; past 60% of the view the list scrolls, leaving the pictures room.
+    let needed_id = egui::Id::unique("compare explanations height");
+    let needed = ui.data(|d| d.get_temp::<f32>(needed_id)).unwrap_or(190.0);
+    let height = needed.min(ui.available_height() * 0.6).max(90.0);
+    let measured = egui::Panel::bottom("compare explanations")
+        .resizable(false)
+        .exact_size(height)
         .show(ui, |ui| {
             ui.add_space(4.0);
-            explanations_ui(ui, session, scene, commands);
-        });
+            // The panel's margins and the space above, beside what the list measured.
+            let margins = height - ui.available_height() + 4.0;
+            margins + explanations_ui(ui, session, scene, commands)
+        })
+        .inner;
+    if (measured - needed).abs() > 0.5 {
+        ui.data_mut(|d| d.insert_temp(needed_id, measured));
+        ui.ctx().request_repaint();
+    }
     let outer = ui.available_rect_before_wrap();
     pictures_ui(ui, outer, session, commands);
 }

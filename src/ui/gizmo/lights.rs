@@ -16,6 +16,9 @@ use crate::ui::commands::{Command, Selection};
 use crate::ui::state::IsolationToggle;
 use crate::ui::state::light_label;
 
+/// How much of a directional light's arrow shows while the light is not selected.
+pub(super) const UNSELECTED_ARROW_OPACITY: f32 = 0.3;
+
 /// The marker of one light; a selected spotlight's cone (its handles come later, on top).
 pub(super) fn light_elements(
     out: &mut Vec<Element>,
@@ -64,7 +67,12 @@ pub(super) fn light_elements(
             if let (Some(from), Some(to)) = (view.project(tail), view.project(anchor)) {
                 out.push(Element {
                     part: Part::Arrow(from, to),
-                    colour: colour.gamma_multiply(if selected { 1.0 } else { 0.7 }),
+                    // Unselected, the arrow is faint: it sits over the objects it lights.
+                    colour: colour.gamma_multiply(if selected {
+                        1.0
+                    } else {
+                        UNSELECTED_ARROW_OPACITY
+                    }),
                     handle: Some(HandleId::Marker(index)),
                 });
                 if selected {

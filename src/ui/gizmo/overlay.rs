@@ -292,6 +292,32 @@ mod tests {
     }
 
     #[test]
+    fn a_directional_lights_arrow_is_faint_unless_the_light_is_selected() {
+        let (mut scene, view) = scene_and_view();
+        scene.lights.push(Light::Directional {
+            direction: glam::DVec3::new(0.3, -1.0, -0.2),
+            colour: glam::DVec3::ONE,
+            intensity: 1.0,
+        });
+        let sun = scene.lights.len() - 1;
+        let arrow_alpha = |selection: &Selection| {
+            gizmo_elements(&scene, selection, GizmoMode::Translate, &view)
+                .iter()
+                .find(|e| {
+                    e.handle == Some(HandleId::Marker(sun)) && matches!(e.part, Part::Arrow(..))
+                })
+                .map(|e| e.colour.a())
+                .expect("the sun's arrow is drawn")
+        };
+        assert_eq!(arrow_alpha(&Selection::Light(sun)), 255);
+        assert!(
+            arrow_alpha(&Selection::None) <= 80,
+            "over the objects it lights, the arrow is faint: {}",
+            arrow_alpha(&Selection::None)
+        );
+    }
+
+    #[test]
     fn each_mode_shows_its_handles_and_a_matrix_transform_none() {
         let (mut scene, view) = scene_and_view();
         let select = Selection::Object(1);

@@ -25,6 +25,13 @@ pub fn outliner_ui(
     isolation: &Isolation,
     commands: &mut Vec<Command>,
 ) {
+    // A selection made elsewhere (a pick in the viewport) scrolls its row into view.
+    let last = ui.data(|d| d.get_temp::<Selection>(last_selection_id()));
+    let reveal = last.as_ref() != Some(selection);
+    ui.data_mut(|d| {
+        d.insert_temp(last_selection_id(), selection.clone());
+        d.insert_temp(reveal_id(), reveal);
+    });
     egui::ScrollArea::vertical()
         .auto_shrink([false, false])
         .show(ui, |ui| {
@@ -198,6 +205,15 @@ pub(super) fn row_ui(
     });
 }
 
+fn last_selection_id() -> egui::Id {
+    egui::Id::unique("outliner last selection")
+}
+
+/// Where the outliner says, for this frame, that the selected row should scroll into view.
+fn reveal_id() -> egui::Id {
+    egui::Id::unique("outliner reveal selection")
+}
+
 /// A selectable row as wide as the space left; its accessible name is the item's name
 /// alone.
 pub(super) fn item_ui(
@@ -229,14 +245,23 @@ pub(super) fn item_button(
         RichText::new(text)
     };
     let width = ui.available_width().max(40.0);
-    ui
+    let response = ui
         // The growing atom after the text keeps the name at the left of the wide button.
         .add(
             egui::Button::selectable(selected, (text, egui::Atom::grow()))
                 .min_size(egui::vec2(width, 0.0))
                 .sense(sense),
         )
-        .accessible_name(row.name)
+        .accessible_name(row.name);
+    if selected
+        && ui
+            .data(|d| d.get_temp::<bool>(reveal_id()))
+            .unwrap_or(false)
+    {
+        // Only as far as needed: a row already in view does not move.
+        response.scroll_to_me(None);
+    }
+    response
 }
 
 /// An object's hide toggle, for a right-to-left layout.

@@ -125,23 +125,30 @@ pub fn status_bar_ui(ui: &mut Ui, info: &StatusInfo<'_>, commands: &mut Vec<Comm
         // a long one (an import's summary) never runs over the counts.
         ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
             let red = Color32::from_rgb(255, 120, 110);
-            let shown = |ui: &mut Ui, text: &str, colour: Color32| {
-                ui.add(egui::Label::new(RichText::new(text).color(colour)).truncate())
-                    .on_hover_text(text)
+            // One tooltip: the label's own tooltip for elided text is off, as this one
+            // says the whole text (and, for some, why it matters).
+            let shown = |ui: &mut Ui, text: &str, colour: Color32, hover: &str| {
+                ui.add(
+                    egui::Label::new(RichText::new(text).color(colour))
+                        .truncate()
+                        .show_tooltip_when_elided(false),
+                )
+                .on_hover_text(hover)
             };
             if let Some(error) = info.autosave_error {
-                shown(ui, error, red).on_hover_text(
-                    "Unsaved changes are not protected against a crash until autosave works",
+                let hover = format!(
+                    "{error}\nUnsaved changes are not protected against a crash until autosave works"
                 );
+                shown(ui, error, red, &hover);
             } else if let Some(error) = info.error {
-                shown(ui, error, red);
+                shown(ui, error, red, error);
             } else if let Some(message) = info.message {
                 let colour = if message.notice {
                     crate::ui::style::ACCENT
                 } else {
                     Color32::from_rgb(140, 200, 140)
                 };
-                shown(ui, &message.text, colour);
+                shown(ui, &message.text, colour, &message.text);
             }
         });
     });
