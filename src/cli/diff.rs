@@ -1,19 +1,17 @@
 //! `raylab diff`: compare a scene's raylab picture with another renderer's image of it,
 //! and say which light, object and term explain the difference (docs/COMPARE.md).
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use clap::Args;
 
 use crate::compare::{CompareOptions, OtherImage, compare_with_meshes, write_report_png};
-use crate::scene::legacy::import_legacy_file;
-use crate::scene::{Scene, load_scene};
 use crate::trace::RenderProgress;
 
 /// Arguments of `raylab diff`.
 #[derive(Debug, Args)]
 pub struct DiffArgs {
-    /// The scene: RON, or a legacy COSC342 `.txt` scene (imported on the fly).
+    /// The scene: RON, or a course `.txt` scene (told by its content, imported on the fly).
     pub scene: PathBuf,
     /// The other renderer's image of the scene: an 8-bit PNG or PPM at the scene's size.
     pub other: PathBuf,
@@ -32,32 +30,15 @@ pub struct DiffArgs {
     pub conventions: super::ConventionArgs,
 }
 
-/// Loads a RON scene, or imports a legacy `.txt` scene (warnings to stderr).
-///
-/// # Errors
-/// The loader's message, naming the file.
-pub fn load_any_scene(path: &Path) -> Result<Scene, String> {
-    if path
-        .extension()
-        .is_some_and(|x| x.eq_ignore_ascii_case("txt"))
-    {
-        let import = import_legacy_file(path).map_err(|e| e.to_string())?;
-        for warning in &import.warnings {
-            eprintln!("warning: {}: {warning}", path.display());
-        }
-        Ok(import.scene)
-    } else {
-        load_scene(path).map_err(|e| format!("{}: {e}", path.display()))
-    }
-}
-
 /// Runs `raylab diff`.
 ///
 /// # Errors
 /// A message naming what went wrong: the scene, the image (unreadable, not an image, not
 /// 8-bit, another size), or the report's write.
 pub fn run(args: &DiffArgs) -> Result<(), String> {
-    let scene = args.conventions.applied(load_any_scene(&args.scene)?);
+    let scene = args
+        .conventions
+        .applied(super::load_any_scene(&args.scene)?);
     let other = OtherImage::load(&args.other).map_err(|e| e.to_string())?;
     let options = CompareOptions {
         samples_per_pixel: args.spp,

@@ -11,7 +11,7 @@ use serde::Serialize;
 
 use super::inspect_tree::{lights_off, object_name, tree_text};
 use super::isolation::IsolationArgs;
-use crate::scene::{Scene, load_scene};
+use crate::scene::Scene;
 use crate::trace::{
     Isolation, PixelReport, RayKind, RenderOptions, Term, TermSwitches, View, World, traced_rays,
     try_inspect_pixel,
@@ -20,7 +20,7 @@ use crate::trace::{
 /// Arguments of `raylab inspect`.
 #[derive(Debug, Args)]
 pub struct InspectArgs {
-    /// The scene file (RON).
+    /// The scene file: RON, or a course `.txt` scene (told by its content, imported on the fly).
     pub scene: PathBuf,
     /// The pixel, as X,Y in the scene camera's image (0,0 is the top-left pixel).
     #[arg(long, value_parser = parse_pixel, value_name = "X,Y")]
@@ -77,7 +77,7 @@ fn parse_pixel(text: &str) -> Result<(u32, u32), String> {
 /// # Errors
 /// A message naming what went wrong: the file, the scene, or a pixel outside the image.
 pub fn run(args: &InspectArgs) -> Result<(), String> {
-    let scene = load_scene(&args.scene).map_err(|e| format!("{}: {e}", args.scene.display()))?;
+    let scene = super::load_any_scene(&args.scene)?;
     print!("{}", inspect_text(&scene, args)?);
     Ok(())
 }

@@ -84,6 +84,32 @@ fn start_editor(_scene: Option<PathBuf>) -> Result<(), String> {
     )
 }
 
+/// Reads the scene a command takes: RON, or a course text scene (told by its content, as
+/// the editor's File > Open does) imported on the fly, the import's summary and warnings
+/// to stderr.
+///
+/// # Errors
+/// The loader's or the importer's message, naming the file.
+pub(crate) fn load_any_scene(path: &std::path::Path) -> Result<crate::scene::Scene, String> {
+    use crate::scene::{SceneOrCourse, SceneOrCourseError, load_scene_or_course};
+    match load_scene_or_course(path) {
+        Ok(SceneOrCourse::Ron(scene)) => Ok(*scene),
+        Ok(SceneOrCourse::Course(import)) => {
+            eprintln!(
+                "note: {} is a course scene, imported: {}",
+                path.display(),
+                import.summary()
+            );
+            for warning in &import.warnings {
+                eprintln!("warning: {}: {warning}", path.display());
+            }
+            Ok(import.scene)
+        }
+        Err(SceneOrCourseError::Ron(e)) => Err(format!("{}: {e}", path.display())),
+        Err(error @ SceneOrCourseError::Course(_)) => Err(error.to_string()),
+    }
+}
+
 /// Reads and builds the meshes `scene` (read from `scene_path`) refers to, printing the
 /// loader's warnings.
 ///

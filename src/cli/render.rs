@@ -10,13 +10,13 @@ use super::conventions::ConventionArgs;
 use super::isolation::IsolationArgs;
 use crate::preview::BackgroundJob;
 use crate::scene::Scene;
-use crate::scene::{MAX_IMAGE_SIDE, load_scene, write_atomically};
+use crate::scene::{MAX_IMAGE_SIDE, write_atomically};
 use crate::trace::{RenderOptions, SampleSums, Term, TermSwitches, View, World, render_samples};
 
 /// Arguments of `raylab render`.
 #[derive(Debug, Args)]
 pub struct RenderArgs {
-    /// The scene file (RON).
+    /// The scene file: RON, or a course `.txt` scene (told by its content, imported on the fly).
     pub scene: PathBuf,
     /// The PNG to write.
     #[arg(short, long)]
@@ -84,7 +84,7 @@ impl RenderArgs {
 /// pixels had non-finite samples (the image is written all the same, those samples
 /// black, so it can be looked at).
 pub fn run(args: &RenderArgs) -> Result<(), String> {
-    let scene = load_scene(&args.scene).map_err(|e| format!("{}: {e}", args.scene.display()))?;
+    let scene = super::load_any_scene(&args.scene)?;
     let scene = args.conventions.applied(scene);
     let scene = args.isolation.without_hidden_children(&scene)?;
     let options = args.options(&scene)?;

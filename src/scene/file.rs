@@ -31,7 +31,15 @@ pub fn parse_scene(text: &str) -> Result<Scene, SceneError> {
     let syntax = |e: ron::error::SpannedError| SceneError::Syntax {
         line: e.span.start.line,
         column: e.span.start.col,
-        message: e.code.to_string(),
+        message: match e.code {
+            // The parser's advice (raise its limit) is for programmers; the scene's
+            // author nested objects too deep.
+            ron::Error::ExceededRecursionLimit => format!(
+                "objects nested more than {} levels deep (CSG operands or group children)",
+                super::MAX_TREE_DEPTH
+            ),
+            code => code.to_string(),
+        },
     };
     let mut deserializer =
         ron::Deserializer::from_str_with_options(text, &options).map_err(syntax)?;

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use glam::DVec3;
 
-use crate::scene::{Light, Scene, load_scene, save_scene, write_atomically};
+use crate::scene::{Light, Scene, save_scene, write_atomically};
 use crate::trace::Image;
 
 pub use crate::scene::examples::{DEFAULT_SCENE_RON, default_scene};
@@ -40,47 +40,46 @@ pub fn new_scene() -> Scene {
 pub enum Opened {
     /// A RON scene.
     Scene(Box<Scene>),
-    /// A course text scene (told by its content, whatever its name), to import.
-    Legacy,
+    /// A course text scene (told by its content, whatever its name), imported.
+    Legacy(Box<crate::scene::legacy::LegacyImport>),
 }
 
-/// Loads a scene file, or recognises a course text scene to import; the message names
+/// Loads a scene file, or imports a course text scene (told by its content, through
+/// [`crate::scene::load_scene_or_course`] as the command line does); the message names
 /// the file and, for syntax errors, the line and column, and says what raylab opens.
 ///
 /// # Errors
 /// The file cannot be read, is not a scene, or describes an impossible scene.
 pub fn open_scene(path: &Path) -> Result<Opened, String> {
+    use crate::scene::{SceneOrCourse, SceneOrCourseError, load_scene_or_course};
+    let e = match load_scene_or_course(path) {
+        Ok(SceneOrCourse::Ron(scene)) => return Ok(Opened::Scene(scene)),
+        Ok(SceneOrCourse::Course(import)) => return Ok(Opened::Legacy(import)),
+        Err(error @ SceneOrCourseError::Course(_)) => return Err(error.to_string()),
+        Err(SceneOrCourseError::Ron(e)) => e,
+    };
     let text = crate::scene::read_text_file(path);
-    if let Ok(text) = &text
-        && crate::scene::legacy::looks_like_legacy(text)
-    {
-        return Ok(Opened::Legacy);
+    let looks_like_ron = text
+        .as_ref()
+        .is_ok_and(|t| t.trim_start().starts_with("Scene(") || t.trim_start().starts_with("//"));
+    if looks_like_ron {
+        return Err(format!("{}: {e}", path.display()));
     }
-    load_scene(path)
-        .map(|s| Opened::Scene(Box::new(s)))
-        .map_err(|e| {
-            let looks_like_ron = text.as_ref().is_ok_and(|t| {
-                t.trim_start().starts_with("Scene(") || t.trim_start().starts_with("//")
-            });
-            if looks_like_ron {
-                return format!("{}: {e}", path.display());
-            }
-            // Not RON at all: the parser's words would only confuse; show what the file
-            // starts with instead, and what raylab opens.
-            let start = text.as_ref().ok().and_then(|t| {
-                t.lines().map(str::trim).find(|l| !l.is_empty()).map(|l| {
-                    let short: String = l.chars().take(40).collect();
-                    format!(" (it starts \u{201c}{short}\u{201d})")
-                })
-            });
-            format!(
-                "{} is neither a raylab scene nor a course text scene{}. File > Open takes \
-             raylab scenes (.ron) and the course's .txt scenes; File > Import Legacy \
-             takes the latter too",
-                path.display(),
-                start.unwrap_or_default()
-            )
+    // Not RON at all: the parser's words would only confuse; show what the file
+    // starts with instead, and what raylab opens.
+    let start = text.as_ref().ok().and_then(|t| {
+        t.lines().map(str::trim).find(|l| !l.is_empty()).map(|l| {
+            let short: String = l.chars().take(40).collect();
+            format!(" (it starts \u{201c}{short}\u{201d})")
         })
+    });
+    Err(format!(
+        "{} is neither a raylab scene nor a course text scene{}. File > Open takes \
+         raylab scenes (.ron) and the course's .txt scenes; File > Import Legacy \
+         takes the latter too",
+        path.display(),
+        start.unwrap_or_default()
+    ))
 }
 
 /// Saves a scene atomically (a temporary file renamed over the target).
