@@ -215,3 +215,71 @@ fn as_the_viewport_shows_it_exports_the_switches_view_and_hidden_objects_on_scre
         "what `raylab render --view depth --hide` gives"
     );
 }
+
+#[test]
+fn a_scene_with_meshes_exports_with_the_meshes_the_preview_reads() {
+    use raylab::trace::{MeshStore, RenderOptions, RenderProgress, World, render};
+    let dir = temp_dir("export-mesh");
+    let path = dir.join("mesh.png");
+    let mut harness = editor_harness::harness_on_example("mesh.ron");
+    export_window_at(&mut harness, 48, 36, &path);
+    harness.get_by_label("Render and save").click();
+    harness.run_ok();
+    step_until(&mut harness, "the export", |app| !app.export().is_running());
+    let status = harness.state().export().status.clone();
+    assert!(
+        status.as_ref().is_some_and(Result::is_ok),
+        "the export of a mesh scene succeeds: {status:?}"
+    );
+
+    // What `raylab render` gives: the meshes read from the scene's folder.
+    let scene = harness.state().scene().clone();
+    let folder = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let meshes = MeshStore::build(&raylab::scene::read_scene_meshes(&scene, &folder).unwrap());
+    let world = World::with_meshes(&scene, &meshes).unwrap();
+    let options = RenderOptions {
+        width: 48,
+        height: 36,
+        samples_per_pixel: 1,
+        ..RenderOptions::from_scene(&scene)
+    };
+    let (expected, _) = render(&world, &options, &RenderProgress::default()).unwrap();
+    let expected = image::load_from_memory(&expected.png_bytes()).unwrap();
+    let written = image::open(&path).expect("the export was written");
+    assert_eq!(
+        written.to_rgb8(),
+        expected.to_rgb8(),
+        "the knot and pyramid are in it"
+    );
+}
+
+#[test]
+fn the_export_proposes_the_last_export_folder_else_pictures_or_home_never_the_scenes() {
+    use raylab::ui::document::export::pictures_or_home;
+    let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let mut harness = editor_harness::harness_on_example("glass.ron");
+    harness.state_mut().push(Command::ShowExport);
+    harness.run();
+    let proposed = std::path::PathBuf::from(&harness.state().export().path);
+    assert_eq!(proposed.file_name().unwrap(), "glass.png");
+    assert_eq!(proposed.parent(), pictures_or_home().as_deref());
+    assert_ne!(
+        proposed.parent(),
+        Some(scenes.as_path()),
+        "not beside the example"
+    );
+
+    // Once a picture is written somewhere, the next scene's export is proposed there.
+    let dir = temp_dir("export-folder");
+    export_window_at(&mut harness, 16, 12, &dir.join("first.png"));
+    harness.get_by_label("Render and save").click();
+    harness.run_ok();
+    step_until(&mut harness, "the export", |app| !app.export().is_running());
+    editor_harness::open_example(&mut harness, "csg.ron");
+    harness.state_mut().push(Command::ShowExport);
+    harness.run();
+    assert_eq!(
+        std::path::PathBuf::from(&harness.state().export().path),
+        dir.join("csg.png")
+    );
+}

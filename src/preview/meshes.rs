@@ -4,11 +4,11 @@
 //! progress through a [`LoadWatch`] that the editor shows, with a cancel button.
 
 use std::collections::HashMap;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use super::PreviewRequest;
-use crate::scene::{LoadWatch, load_obj_watched, mesh_file::mesh_path, mesh_objects};
+use crate::scene::{LoadWatch, Scene, load_obj_watched, mesh_file::mesh_path, mesh_objects};
 use crate::trace::shapes::Aabb;
 use crate::trace::{MeshStore, TriangleMesh};
 
@@ -35,34 +35,57 @@ impl MeshFacts {
     }
 }
 
-/// Built meshes by file, kept across requests.
+/// Built meshes by file, kept across requests. The preview worker and the Export PNG
+/// job both read a scene's meshes through [`MeshCache::read`], so a scene that previews
+/// also exports.
 #[derive(Default)]
-pub(super) struct MeshCache {
+pub struct MeshCache {
     by_file: HashMap<PathBuf, Arc<TriangleMesh>>,
 }
 
 impl MeshCache {
     /// The meshes for `request`: those it carries, else read from its scene's folder
-    /// (or from the cache). Each file read is announced to `watch_read` (with the path
-    /// as the scene writes it), which hands back the watch to report to.
+    /// (or from the cache), as [`MeshCache::read`].
     ///
     /// # Errors
-    /// A file that cannot be read (or whose reading was cancelled), named with its
-    /// object; or a mesh object whose path is relative in a scene that has no folder
-    /// yet (never saved).
+    /// As [`MeshCache::read`].
     pub(super) fn for_request(
         &mut self,
         request: &PreviewRequest,
         watch_read: &mut dyn FnMut(&str) -> Arc<LoadWatch>,
     ) -> Result<MeshStore, String> {
-        let mut store = (*request.meshes).clone();
-        for (object, path) in mesh_objects(&request.scene) {
+        self.read(
+            &request.scene,
+            request.scene_folder.as_deref(),
+            &request.meshes,
+            watch_read,
+        )
+    }
+
+    /// The meshes `scene` refers to: those in `carried`, else read from `folder` (the
+    /// scene file's; a path in full needs none) or taken from the cache. Each file read
+    /// is announced to `watch_read` (with the path as the scene writes it), which hands
+    /// back the watch to report to.
+    ///
+    /// # Errors
+    /// A file that cannot be read (or whose reading was cancelled), named with its
+    /// object; or a mesh object whose path is relative in a scene that has no folder
+    /// yet (never saved).
+    pub fn read(
+        &mut self,
+        scene: &Scene,
+        folder: Option<&Path>,
+        carried: &MeshStore,
+        watch_read: &mut dyn FnMut(&str) -> Arc<LoadWatch>,
+    ) -> Result<MeshStore, String> {
+        let mut store = carried.clone();
+        for (object, path) in mesh_objects(scene) {
             if store.get(path).is_some() {
                 continue;
             }
             // A path in full (a mesh imported into a scene never saved) needs no folder.
-            let file = match &request.scene_folder {
-                _ if std::path::Path::new(path).is_absolute() => PathBuf::from(path),
+            let file = match folder {
+                _ if Path::new(path).is_absolute() => PathBuf::from(path),
                 Some(folder) => mesh_path(folder, path),
                 None => {
                     return Err(format!(

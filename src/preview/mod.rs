@@ -25,7 +25,7 @@ pub use convergence::{ConvergenceCurve, ConvergencePoint, estimated_rmse, rmse_n
 pub use frame::{Frame, Published};
 pub use job::{BackgroundJob, panic_message, run_caught};
 pub use latency::{PreviewLatency, measure_latency, measure_restart_latency, median};
-pub use meshes::MeshFacts;
+pub use meshes::{MeshCache, MeshFacts};
 pub use plan::{
     COARSE_MAX_DIVIDER, COARSE_MIN_LONG_SIDE, Pass, coarse_divider, coarse_dividers, plan_passes,
 };

@@ -1,16 +1,19 @@
-//! Export PNG: renders in the background at the scene's resolution and samples (editable
-//! in the window), either the full picture or as the viewport shows it, then encodes and
+//! Export PNG: reads the scene's mesh files the way the preview does
+//! ([`MeshCache::read`], from the scene file's folder) and renders in the background at
+//! the scene's resolution and samples (editable in the window), either the full picture
+//! or as the viewport shows it, then encodes and
 //! writes the file atomically on the same background thread, so the window never waits
 //! for the encoder or the disk. When the file cannot be written the render is kept, so it
 //! can be saved elsewhere. A size that cannot fit in memory is refused before anything is
 //! allocated.
 
 use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex, PoisonError};
 use std::time::{Duration, Instant};
 
-use crate::preview::BackgroundJob;
-use crate::scene::{MAX_IMAGE_SIDE, Scene};
-use crate::trace::{Image, Isolation, RenderOptions, World, render};
+use crate::preview::{BackgroundJob, MeshCache};
+use crate::scene::{LoadWatch, MAX_IMAGE_SIDE, Scene};
+use crate::trace::{Image, Isolation, MeshStore, RenderOptions, World, render};
 use crate::ui::document::files::write_png;
 use crate::ui::state::PreviewSettings;
 
@@ -34,13 +37,45 @@ struct Written {
     written: Result<(), String>,
 }
 
+/// What a running export is doing, shown on its progress bar.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ExportStage {
+    /// Reading a mesh file (the path as the scene writes it), as the preview reads it.
+    ReadingMesh {
+        /// The mesh's path as the scene writes it.
+        path: String,
+        /// Fraction of the file read.
+        fraction: f64,
+    },
+    /// Rendering (the job's own progress).
+    Rendering,
+}
+
+impl std::fmt::Display for ExportStage {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::ReadingMesh { path, fraction } => write!(
+                f,
+                "reading the mesh \"{path}\" as the preview does: {:.0}%",
+                fraction * 100.0
+            ),
+            Self::Rendering => f.write_str("rendering"),
+        }
+    }
+}
+
+/// The mesh file an export is reading (as the scene writes its path), and its progress.
+type MeshReading = Arc<Mutex<Option<(String, Arc<LoadWatch>)>>>;
+
 /// A render (or a write of the kept render) running on its own thread.
 struct ExportJob {
-    job: BackgroundJob<Written>,
+    job: BackgroundJob<Result<Written, String>>,
     path: PathBuf,
     started: Instant,
     /// Whether the job renders (false: it only writes the kept render).
     renders: bool,
+    /// The mesh file being read before the render starts, if any.
+    reading: MeshReading,
 }
 
 /// The Export window's state.
@@ -58,6 +93,11 @@ pub struct ExportState {
     pub aspect: f64,
     /// Where to write, as typed or picked.
     pub path: String,
+    /// The document the file field was last proposed for: another document gets a
+    /// fresh proposal; the same one keeps what the user typed or picked.
+    proposed_for: Option<Option<PathBuf>>,
+    /// The folder of the last file written: the next export is proposed there.
+    pub last_folder: Option<PathBuf>,
     job: Option<ExportJob>,
     kept: Option<Image>,
     /// How the kept render's pixels become bytes (its scene's conventions).
@@ -69,13 +109,25 @@ pub struct ExportState {
 }
 
 impl ExportState {
-    /// Opens the window with the scene's size and samples; `default_path` fills an empty
-    /// file field (e.g. the scene's file with `.png`).
-    pub fn show(&mut self, scene: &Scene, default_path: Option<PathBuf>) {
+    /// Opens the window with the scene's size and samples. For another `document` than
+    /// last time (its file, or the course file it was imported from), or an empty file
+    /// field, the field gets `NAME.png` (the document's name) in the last export's
+    /// folder, else the user's pictures or home folder; never beside the scene (a shipped
+    /// example's folder is nobody's output folder).
+    pub fn show(&mut self, scene: &Scene, document: Option<&Path>) {
         self.open = true;
-        if self.path.trim().is_empty() {
-            let path = default_path.unwrap_or_else(|| PathBuf::from("render.png"));
+        let document = document.map(Path::to_owned);
+        let fresh = self.proposed_for.as_ref() != Some(&document) || self.path.trim().is_empty();
+        if fresh && self.job.is_none() {
+            let name = document
+                .as_deref()
+                .and_then(Path::file_stem)
+                .map_or_else(|| "render".into(), |s| s.to_string_lossy());
+            let file = format!("{name}.png");
+            let folder = self.last_folder.clone().or_else(pictures_or_home);
+            let path = folder.map_or_else(|| PathBuf::from(&file), |f| f.join(&file));
             self.path = path.display().to_string();
+            self.proposed_for = Some(document);
         }
         if self.job.is_none() {
             self.settings = Some(RenderOptions::from_scene(scene));
@@ -126,15 +178,18 @@ impl ExportState {
         }
     }
 
-    /// Starts rendering `scene` with the window's settings, to be written to `path`.
+    /// Starts rendering `scene` with the window's settings, to be written to `path`. Its
+    /// mesh files are read first, on the job's thread, from `folder` (the scene file's)
+    /// exactly as the preview reads them.
     /// `ctx` is repainted when the job ends.
     ///
     /// # Errors
-    /// The scene cannot be rendered, the image would not fit in memory, or a job is
-    /// already running.
+    /// The image would not fit in memory, or a job is already running. (A scene that
+    /// cannot be rendered, or a mesh that cannot be read, ends the job with its error.)
     pub fn start(
         &mut self,
         scene: &Scene,
+        folder: Option<&Path>,
         shown: ViewportLook<'_>,
         path: &Path,
         ctx: &egui::Context,
@@ -145,39 +200,76 @@ impl ExportState {
         let options = self.options(scene, shown);
         let budget = self.memory_budget.or_else(available_memory_bytes);
         check_export_memory(options.width, options.height, budget)?;
-        let world = World::isolated(scene, &options.isolation)
-            .map_err(|e| format!("cannot render this scene: {e}"))?;
         let target = path.to_owned();
         let ctx = ctx.clone();
         let quantise = scene.render.conventions.quantise;
         self.kept_quantise = quantise;
+        let scene = scene.clone();
+        let folder = folder.map(Path::to_path_buf);
+        let reading = MeshReading::default();
+        let job_reading = Arc::clone(&reading);
         let job = BackgroundJob::spawn(
             "export",
             move |progress| {
+                let meshes = read_meshes(&scene, folder.as_deref(), &job_reading);
+                let world = meshes
+                    .and_then(|meshes| {
+                        World::isolated_with_meshes(&scene, &options.isolation, &meshes)
+                            .map_err(|e| e.to_string())
+                    })
+                    .map_err(|e| format!("cannot render this scene: {e}"));
+                let world = match world {
+                    Ok(world) => world,
+                    // A read cancelled with the export ends as the render's cancel does.
+                    Err(_) if progress.is_cancelled() => return None,
+                    Err(error) => return Some(Err(error)),
+                };
                 let (image, _) = render(&world, &options, progress)?;
                 let written = write_png(&image, &target, quantise);
-                Some(Written { image, written })
+                Some(Ok(Written { image, written }))
             },
             move || ctx.request_repaint(),
         )?;
         self.run(job, path, true);
+        if let Some(running) = &mut self.job {
+            running.reading = reading;
+        }
         Ok(())
     }
 
-    fn run(&mut self, job: BackgroundJob<Written>, path: &Path, renders: bool) {
+    fn run(&mut self, job: BackgroundJob<Result<Written, String>>, path: &Path, renders: bool) {
         self.job = Some(ExportJob {
             job,
             path: path.to_owned(),
             started: Instant::now(),
             renders,
+            reading: MeshReading::default(),
         });
         self.status = None;
     }
 
-    /// Stops the running render at its next tile boundary.
+    /// What the running export is doing: reading a mesh file or rendering.
+    #[must_use]
+    pub fn stage(&self) -> Option<ExportStage> {
+        let job = self.job.as_ref()?;
+        let reading = job.reading.lock().unwrap_or_else(PoisonError::into_inner);
+        Some(match &*reading {
+            Some((path, watch)) => ExportStage::ReadingMesh {
+                path: path.clone(),
+                fraction: watch.fraction(),
+            },
+            None => ExportStage::Rendering,
+        })
+    }
+
+    /// Stops the running render at its next tile boundary (or the mesh file being read).
     pub fn cancel(&self) {
         if let Some(job) = &self.job {
             job.job.cancel();
+            let reading = job.reading.lock().unwrap_or_else(PoisonError::into_inner);
+            if let Some((_, watch)) = &*reading {
+                watch.cancel();
+            }
         }
     }
 
@@ -193,8 +285,8 @@ impl ExportState {
         let path = job.path.clone();
         self.job = None;
         match outcome {
-            Ok(Written { image, written }) => self.finish(image, written, &path, elapsed),
-            Err(error) => self.status = Some(Err(error)),
+            Ok(Ok(Written { image, written })) => self.finish(image, written, &path, elapsed),
+            Ok(Err(error)) | Err(error) => self.status = Some(Err(error)),
         }
     }
 
@@ -216,7 +308,7 @@ impl ExportState {
             "export",
             move |_| {
                 let written = write_png(&image, &target, quantise);
-                Some(Written { image, written })
+                Some(Ok(Written { image, written }))
             },
             move || ctx.request_repaint(),
         )?;
@@ -233,6 +325,10 @@ impl ExportState {
     ) {
         match written {
             Ok(()) => {
+                self.last_folder = path
+                    .parent()
+                    .filter(|f| !f.as_os_str().is_empty())
+                    .map(Path::to_owned);
                 let time =
                     elapsed.map_or_else(String::new, |t| format!(" in {:.1} s", t.as_secs_f64()));
                 self.status = Some(Ok(format!(
@@ -273,6 +369,24 @@ impl ExportState {
     }
 }
 
+/// The meshes `scene` refers to, read from `folder` by the preview's [`MeshCache`], each
+/// file announced in `reading` while it is read.
+fn read_meshes(
+    scene: &Scene,
+    folder: Option<&Path>,
+    reading: &MeshReading,
+) -> Result<MeshStore, String> {
+    let mut announce = |path: &str| {
+        let watch = Arc::new(LoadWatch::default());
+        *reading.lock().unwrap_or_else(PoisonError::into_inner) =
+            Some((path.to_owned(), Arc::clone(&watch)));
+        watch
+    };
+    let meshes = MeshCache::default().read(scene, folder, &MeshStore::default(), &mut announce);
+    *reading.lock().unwrap_or_else(PoisonError::into_inner) = None;
+    meshes
+}
+
 /// Refuses a `width` x `height` export that needs more than `budget` bytes (none: no
 /// limit known), with the numbers in the message.
 ///
@@ -289,6 +403,17 @@ pub fn check_export_memory(width: u32, height: u32, budget: Option<u64>) -> Resu
         )),
         _ => Ok(()),
     }
+}
+
+/// The user's pictures folder (`$XDG_PICTURES_DIR`, else `~/Pictures` where it exists),
+/// else the home folder; `None` without a home.
+#[must_use]
+pub fn pictures_or_home() -> Option<PathBuf> {
+    let home = std::env::var_os("HOME").map(PathBuf::from);
+    let pictures = std::env::var_os("XDG_PICTURES_DIR")
+        .map(PathBuf::from)
+        .or_else(|| home.as_ref().map(|h| h.join("Pictures")));
+    pictures.filter(|p| p.is_dir()).or(home)
 }
 
 /// Memory the system can give now (Linux: `MemAvailable`); `None` where unknown.
@@ -333,7 +458,7 @@ mod tests {
         let ctx = egui::Context::default();
         let shown = PreviewSettings::default();
         let error = state
-            .start(&scene, look(&shown), Path::new("never.png"), &ctx)
+            .start(&scene, None, look(&shown), Path::new("never.png"), &ctx)
             .unwrap_err();
         assert!(error.contains("memory"), "{error}");
         assert!(!state.is_running(), "nothing started");

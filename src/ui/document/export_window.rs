@@ -3,14 +3,14 @@
 //! only (it is pinned by its top-left corner), so nothing moves under the cursor when
 //! the status line appears.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use egui::{DragValue, RichText, Ui};
 
 use crate::scene::{MAX_IMAGE_SIDE, Scene};
 use crate::ui::commands::Command;
-use crate::ui::document::export::{ExportState, ViewportLook};
+use crate::ui::document::export::{ExportStage, ExportState, ViewportLook};
 use crate::ui::document::files::with_png_extension;
 use crate::ui::state::isolation_note;
 
@@ -21,10 +21,12 @@ const WIDTH: f32 = 380.0;
 const MAX_EXPORT_SAMPLES: u32 = 65536;
 
 /// Shows the Export PNG window (when open). Browse pushes [`Command::BrowseExportPath`].
+/// `folder` is the scene file's, where its mesh files are read.
 pub fn export_window(
     ctx: &egui::Context,
     state: &mut ExportState,
     scene: &Scene,
+    folder: Option<&Path>,
     shown: ViewportLook<'_>,
     commands: &mut Vec<Command>,
 ) {
@@ -37,7 +39,9 @@ pub fn export_window(
         .default_width(WIDTH)
         .pivot(egui::Align2::LEFT_TOP)
         .default_pos(centre - egui::vec2(WIDTH / 2.0, 150.0))
-        .show(ctx, |ui| export_ui(ui, state, scene, shown, commands));
+        .show(ctx, |ui| {
+            export_ui(ui, state, scene, folder, shown, commands)
+        });
     state.open = open || state.is_running();
     state.poll();
     if state.is_running() {
@@ -49,6 +53,7 @@ fn export_ui(
     ui: &mut Ui,
     state: &mut ExportState,
     scene: &Scene,
+    folder: Option<&Path>,
     shown: ViewportLook<'_>,
     commands: &mut Vec<Command>,
 ) {
@@ -64,8 +69,7 @@ fn export_ui(
                 ui.end_row();
                 ui.label("File");
                 ui.horizontal(|ui| {
-                    ui.add(egui::TextEdit::singleline(&mut state.path).desired_width(220.0))
-                        .accessible_name("export path");
+                    path_field_ui(ui, &mut state.path);
                     if ui.button("Browse…").clicked() {
                         commands.push(Command::BrowseExportPath);
                     }
@@ -74,7 +78,7 @@ fn export_ui(
             });
     });
     ui.add_space(6.0);
-    actions_ui(ui, state, scene, shown);
+    actions_ui(ui, state, scene, folder, shown);
     // The status line always takes its room, so the window does not change size when
     // a message appears.
     let (text, colour) = match &state.status {
@@ -83,6 +87,43 @@ fn export_ui(
         None => (" ", egui::Color32::TRANSPARENT),
     };
     ui.add(egui::Label::new(RichText::new(text).color(colour)).wrap());
+}
+
+/// The file field. A path too long for it shows its end while the field is not being
+/// edited ("…/renders/glass.png"): the file's name matters more than the start of the
+/// folder. Editing shows the whole text, as typed.
+fn path_field_ui(ui: &mut Ui, path: &mut String) {
+    let id = ui.make_persistent_id("export path");
+    let editing = ui.memory(|m| m.has_focus(id));
+    let font = egui::TextStyle::Body.resolve(ui.style());
+    let colour = ui.visuals().text_color();
+    let width = 220.0;
+    let inner = width - 2.0 * ui.spacing().button_padding.x;
+    let text_width = |text: &str| {
+        ui.ctx()
+            .fonts_mut(|f| f.layout_no_wrap(text.to_owned(), font.clone(), colour))
+            .size()
+            .x
+    };
+    let elided = (!editing && text_width(path) > inner).then(|| {
+        let chars: Vec<char> = path.chars().collect();
+        (1..chars.len())
+            .map(|start| format!("…{}", chars[start..].iter().collect::<String>()))
+            .find(|text| text_width(text) <= inner)
+            .unwrap_or_default()
+    });
+    let mut edit = egui::TextEdit::singleline(path).id(id).desired_width(width);
+    if elided.is_some() {
+        // The field's own text is hidden; its end is painted over it below.
+        edit = edit.text_color(egui::Color32::TRANSPARENT);
+    }
+    let response = ui.add(edit).accessible_name("export path");
+    if let Some(text) = elided {
+        let at = response.rect.left_center() + egui::vec2(ui.spacing().button_padding.x, 0.0);
+        ui.painter()
+            .text(at, egui::Align2::LEFT_CENTER, text, font, colour);
+    }
+    response.on_hover_text(path.as_str());
 }
 
 /// Width, height (linked or not) and samples.
@@ -144,15 +185,24 @@ fn picture_choice_ui(ui: &mut Ui, state: &mut ExportState, scene: &Scene, shown:
 }
 
 /// Render and save / Save kept render, or the progress bar and Cancel.
-fn actions_ui(ui: &mut Ui, state: &mut ExportState, scene: &Scene, shown: ViewportLook<'_>) {
+fn actions_ui(
+    ui: &mut Ui,
+    state: &mut ExportState,
+    scene: &Scene,
+    folder: Option<&Path>,
+    shown: ViewportLook<'_>,
+) {
     if let Some(progress) = state.progress() {
         ui.horizontal(|ui| {
             if state.is_rendering() {
-                ui.add(
-                    egui::ProgressBar::new(progress as f32)
-                        .show_percentage()
-                        .desired_width(260.0),
-                );
+                // Reading a mesh file says so, with the file's own progress.
+                let bar = match state.stage() {
+                    Some(reading @ ExportStage::ReadingMesh { fraction, .. }) => {
+                        egui::ProgressBar::new(fraction as f32).text(reading.to_string())
+                    }
+                    _ => egui::ProgressBar::new(progress as f32).show_percentage(),
+                };
+                ui.add(bar.desired_width(260.0));
                 if ui.button("Cancel").clicked() {
                     state.cancel();
                 }
@@ -170,7 +220,7 @@ fn actions_ui(ui: &mut Ui, state: &mut ExportState, scene: &Scene, shown: Viewpo
             .add_enabled(has_path, egui::Button::new("Render and save"))
             .clicked()
         {
-            state.start(scene, shown, &path, ui.ctx())
+            state.start(scene, folder, shown, &path, ui.ctx())
         } else if state.kept_image().is_some()
             && ui
                 .add_enabled(has_path, egui::Button::new("Save kept render"))
