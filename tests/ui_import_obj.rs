@@ -177,3 +177,127 @@ fn harness_with_preview() -> egui_kittest::Harness<'static, raylab::ui::EditorAp
     harness.run_ok();
     harness
 }
+
+/// The object added last, as its translate/rotate/scale.
+fn last_trs(app: &raylab::ui::EditorApp) -> raylab::scene::Trs {
+    match app.scene().objects.last().unwrap().transform {
+        raylab::scene::Transform::Trs(trs) => trs,
+        raylab::scene::Transform::Matrix(_) => panic!("an import places by translate/rotate/scale"),
+    }
+}
+
+#[test]
+fn an_imported_obj_gets_a_material_of_its_own() {
+    let mut harness = harness_with_preview();
+    let before = harness.state().scene().clone();
+    harness
+        .state_mut()
+        .push(Command::ImportObj(scenes().join("pyramid.obj")));
+    harness.run();
+    let scene = harness.state().scene();
+    let added = scene.objects.last().unwrap();
+    assert!(
+        !before.materials.contains_key(&added.material),
+        "a new material, not the first in the list ({})",
+        added.material
+    );
+    let users = scene
+        .objects
+        .iter()
+        .filter(|o| o.material == added.material)
+        .count();
+    assert_eq!(users, 1, "recolouring the mesh recolours nothing else");
+}
+
+#[test]
+fn an_imported_obj_is_fitted_to_a_unit_box_as_its_own_undo_step() {
+    use egui_kittest::kittest::Queryable;
+    let mut harness = harness_with_preview();
+    harness
+        .state_mut()
+        .push(Command::ImportObj(scenes().join("pyramid.obj")));
+    harness.run_ok();
+    // The pyramid is 2 wide and deep, 1.4 tall: its largest side becomes 1.
+    let half = glam::DVec3::splat(0.5);
+    step_until(&mut harness, "the fit", |app| last_trs(app).scale == half);
+    let fitted = last_trs(harness.state());
+    harness.get_by_label_contains("2.00 × 1.40 × 2.00");
+    harness.get_by_label("2.000 × 1.400 × 2.000"); // the inspector's Size row
+    let objects = harness.state().scene().objects.len();
+    harness.state_mut().push(Command::Undo);
+    harness.run();
+    let placed = last_trs(harness.state());
+    assert_eq!(
+        harness.state().scene().objects.len(),
+        objects,
+        "the mesh stays"
+    );
+    assert_ne!(placed.scale, half, "Undo gives back the file's size");
+    assert_eq!(
+        fitted.translate, placed.translate,
+        "the fit keeps its place"
+    );
+    harness.state_mut().push(Command::Redo);
+    harness.run();
+    assert_eq!(last_trs(harness.state()), fitted);
+}
+
+#[test]
+fn with_the_fit_off_an_imported_obj_keeps_its_files_size() {
+    use egui_kittest::kittest::Queryable;
+    let mut harness = harness_with_preview();
+    harness.get_by_label("File").click();
+    harness.run();
+    harness
+        .get_by_label("Fit Imported Meshes to a Unit Box")
+        .click();
+    harness.run();
+    harness
+        .state_mut()
+        .push(Command::ImportObj(scenes().join("pyramid.obj")));
+    harness.run_ok();
+    let placed = last_trs(harness.state());
+    // Once the inspector shows the file's size, the preview has read it: no fit came.
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(60);
+    while harness.query_by_label("2.000 × 1.400 × 2.000").is_none() {
+        assert!(
+            std::time::Instant::now() < deadline,
+            "the facts never showed"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        harness.step();
+    }
+    harness.run_ok();
+    assert_eq!(last_trs(harness.state()), placed);
+}
+
+#[test]
+fn a_mesh_imported_before_the_first_save_is_saved_relative_to_the_scene() {
+    let dir = std::env::temp_dir().join(format!("raylab-ui-obj-relative-{}", std::process::id()));
+    std::fs::create_dir_all(dir.join("models")).unwrap();
+    let obj = dir.join("models").join("pyramid.obj");
+    std::fs::copy(scenes().join("pyramid.obj"), &obj).unwrap();
+    let (dialog, _) = dialog_picking(obj.clone());
+    let mut harness = harness_with_file_dialog(EditorOptions {
+        native_dialogs: NativeDialogs::Given(dialog),
+        ..EditorOptions::default()
+    });
+    harness.state_mut().push(Command::ImportObj(obj.clone()));
+    harness.run();
+    let Shape::Mesh { path } = &harness.state().scene().objects.last().unwrap().shape else {
+        panic!("a mesh");
+    };
+    assert_eq!(path, obj.to_str().unwrap(), "no folder yet: in full");
+    let saved = dir.join("scene.ron");
+    harness.state_mut().push(Command::SaveAs(saved.clone()));
+    harness.run();
+    let loaded = raylab::scene::load_scene(&saved).unwrap();
+    assert_eq!(
+        loaded.objects.last().unwrap().shape,
+        Shape::Mesh {
+            path: "models/pyramid.obj".to_owned()
+        }
+    );
+    assert!(!harness.state().is_dirty(), "the scene is what was saved");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -290,6 +290,26 @@ pub fn read_scene_meshes(
     Ok(meshes)
 }
 
+/// Writes every mesh path of `scene` that is absolute and lies under `folder` relative to
+/// it (with `/` separators), so a scene saved in `folder` keeps working when the folder
+/// moves. Other paths are left as they are.
+pub fn relative_mesh_paths(scene: &mut Scene, folder: &Path) {
+    // A work list, not recursion: trees may be deep.
+    let mut pending: Vec<&mut Object> = scene.objects.iter_mut().collect();
+    while let Some(object) = pending.pop() {
+        if let Shape::Mesh { path } = &mut object.shape
+            && let Ok(below) = Path::new(path.as_str()).strip_prefix(folder)
+            && Path::new(path.as_str()).is_absolute()
+            && let Some(text) = below.to_str()
+        {
+            *path = text.replace('\\', "/");
+        }
+        if let Some(children) = object.shape.children_mut() {
+            pending.extend(children.iter_mut());
+        }
+    }
+}
+
 /// Where a mesh path written in a scene points, for a scene in `folder`.
 #[must_use]
 pub fn mesh_path(folder: &Path, path: &str) -> PathBuf {

@@ -28,6 +28,7 @@ mod apply;
 mod document;
 mod frame;
 mod looking;
+mod mesh_fit;
 mod view_state;
 
 /// How to start the editor.
@@ -55,6 +56,12 @@ pub struct EditorApp {
     /// The scene as last loaded or saved: unsaved changes are a difference from it.
     saved: Scene,
     path: Option<PathBuf>,
+    /// The course text file the scene was imported from, while it has no file of its own.
+    imported_from: Option<PathBuf>,
+    /// Whether an imported OBJ is scaled to a unit box once its size is known.
+    fit_imported_meshes: bool,
+    /// The mesh imported last, until the preview knows its size.
+    pending_fit: Option<mesh_fit::PendingFit>,
     /// What stands for the file name when there is none ("default scene", "untitled").
     unnamed: &'static str,
     selection: Selection,
@@ -106,6 +113,9 @@ impl EditorApp {
             saved: scene.clone(),
             scene,
             path: None,
+            imported_from: None,
+            fit_imported_meshes: true,
+            pending_fit: None,
             unnamed: "default scene",
             selection: Selection::None,
             undoer: undoer(),
@@ -276,11 +286,28 @@ impl EditorApp {
         &self.recent
     }
 
+    /// The scene's file name; for an import not saved yet, the file it came from
+    /// ("snowman.txt (imported)").
     fn file_label(&self) -> String {
-        self.path.as_ref().and_then(|p| p.file_name()).map_or_else(
-            || self.unnamed.to_owned(),
-            |n| n.to_string_lossy().into_owned(),
-        )
+        let name = |p: &Path| p.file_name().map(|n| n.to_string_lossy().into_owned());
+        if let Some(name) = self.path.as_deref().and_then(name) {
+            return name;
+        }
+        match self.imported_from.as_deref().and_then(name) {
+            Some(name) => format!("{name} (imported)"),
+            None => self.unnamed.to_owned(),
+        }
+    }
+
+    /// The file the scene stands for: its own, else the course file it was imported from.
+    fn document_file(&self) -> Option<&Path> {
+        self.path.as_deref().or(self.imported_from.as_deref())
+    }
+
+    /// Where the scene's mesh files are found: its file's folder, or the folder of the
+    /// course file it was imported from (whose mesh paths are relative to it).
+    fn scene_folder(&self) -> Option<&Path> {
+        self.document_file().and_then(Path::parent)
     }
 
     /// The end of a clean session: nothing left to recover.

@@ -6,7 +6,7 @@ use crate::ui::commands::{Command, SceneEdit};
 
 /// A shortcut, what it does, and the command it sends. Order matters: a shortcut with
 /// Shift comes before the same one without, which would also match.
-const SHORTCUTS: [(Modifiers, Key, &str); 14] = [
+const SHORTCUTS: [(Modifiers, Key, &str); 16] = [
     (Modifiers::COMMAND, Key::N, "New scene"),
     (Modifiers::COMMAND, Key::O, "Open…"),
     (
@@ -29,6 +29,12 @@ const SHORTCUTS: [(Modifiers, Key, &str); 14] = [
     ),
     (Modifiers::NONE, Key::Num0, "Camera view / view camera"),
     (Modifiers::COMMAND, Key::G, "Group selection"),
+    (Modifiers::NONE, Key::PageDown, "Open next scene in folder"),
+    (
+        Modifiers::NONE,
+        Key::PageUp,
+        "Open previous scene in folder",
+    ),
 ];
 
 fn command_for(index: usize) -> Command {
@@ -45,7 +51,9 @@ fn command_for(index: usize) -> Command {
         10 => Command::ShowHelp,
         11 => Command::SetSceneCameraFromView,
         12 => Command::ToggleCameraView,
-        _ => Command::Edit(SceneEdit::GroupSelected),
+        13 => Command::Edit(SceneEdit::GroupSelected),
+        14 => Command::OpenInFolder { forward: true },
+        _ => Command::OpenInFolder { forward: false },
     }
 }
 
@@ -69,7 +77,14 @@ pub fn shortcut_commands(ctx: &egui::Context) -> Vec<Command> {
         for (index, (modifiers, key, _)) in SHORTCUTS.iter().enumerate() {
             let editing_key = matches!(
                 key,
-                Key::Z | Key::Y | Key::D | Key::G | Key::Delete | Key::Num0
+                Key::Z
+                    | Key::Y
+                    | Key::D
+                    | Key::G
+                    | Key::Delete
+                    | Key::Num0
+                    | Key::PageDown
+                    | Key::PageUp
             );
             if typing && editing_key {
                 continue;

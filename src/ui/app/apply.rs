@@ -77,6 +77,7 @@ impl EditorApp {
             Command::New => self.guard(DiscardAction::New, ctx),
             Command::OpenDialog => self.guard(DiscardAction::OpenDialog, ctx),
             Command::Open(path) => self.guard(DiscardAction::Open(path), ctx),
+            Command::OpenInFolder { forward } => self.open_in_folder(forward, ctx),
             Command::ImportLegacyDialog => self.guard(DiscardAction::ImportDialog, ctx),
             Command::ImportLegacy(path) => self.guard(DiscardAction::Import(path), ctx),
             Command::Quit => self.guard(DiscardAction::Quit, ctx),
@@ -91,8 +92,8 @@ impl EditorApp {
                 self.save_as(&path);
             }
             Command::ShowExport => {
-                let default = self.path.as_ref().map(|p| p.with_extension("png"));
-                self.export.show(&self.scene, default);
+                let document = self.document_file().map(std::path::Path::to_owned);
+                self.export.show(&self.scene, document.as_deref());
             }
             Command::ShowHelp => self.show_help = !self.show_help,
             Command::BrowseExportPath => self.request_dialog(DialogPurpose::ExportPng, ctx),
@@ -105,6 +106,7 @@ impl EditorApp {
             }
             Command::BrowseCompareImage => self.request_dialog(DialogPurpose::CompareImage, ctx),
             Command::SetPreferInAppFileDialog(prefer) => self.file_dialogs.prefer_in_app = prefer,
+            Command::SetFitImportedMeshes(fit) => self.fit_imported_meshes = fit,
             Command::DismissError => self.error = None,
             Command::DismissWarning => self.warning = None,
             Command::FocusName => self.focus_name = true,

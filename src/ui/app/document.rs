@@ -90,7 +90,10 @@ impl EditorApp {
                     || "render.png".to_owned(),
                     |n| n.to_string_lossy().into_owned(),
                 ),
-            _ => format!("{}.ron", self.file_label().trim_end_matches(".ron")),
+            _ => match self.document_file().and_then(Path::file_stem) {
+                Some(stem) => format!("{}.ron", stem.to_string_lossy()),
+                None => format!("{}.ron", self.unnamed),
+            },
         };
         if let Err(error) = self
             .file_dialogs
@@ -147,7 +150,10 @@ impl EditorApp {
     /// Opens a scene file; on failure the error is shown and the scene stays as it was.
     pub(super) fn open(&mut self, path: &Path) {
         match files::open_scene(path) {
-            Ok(files::Opened::Legacy) => self.import(path),
+            Ok(files::Opened::Legacy(import)) => {
+                let summary = import.summary();
+                self.take_import(path, import.scene, &summary, &import.warnings);
+            }
             Ok(files::Opened::Scene(scene)) => {
                 self.replace_scene(*scene, Some(path.to_owned()));
                 self.recent.push(path);
@@ -164,21 +170,43 @@ impl EditorApp {
 
     fn import(&mut self, path: &Path) {
         match files::import_legacy(path) {
-            Ok((scene, summary, warnings)) => {
-                self.replace_scene(scene, None);
-                self.unnamed = "imported scene";
-                // An imported scene has no file yet: everything is unsaved.
-                self.saved = files::new_scene();
-                // Not the last file saved or opened: this one, which has no file yet.
-                self.message = Some(StatusMessage::done(format!(
-                    "Imported {} (not saved yet), {summary}",
-                    path.display()
-                )));
-                if !warnings.is_empty() {
-                    self.warning = Some(format!("Imported with warnings: {}", warnings.join("; ")));
-                }
-            }
+            Ok((scene, summary, warnings)) => self.take_import(path, scene, &summary, &warnings),
             Err(error) => self.error = Some(format!("{}: {error}", path.display())),
+        }
+    }
+
+    /// Makes an imported course scene the document. It has no file of its own yet, but
+    /// an untouched import is no change: the course file still holds it, so opening
+    /// another asks nothing; the title names the file it came from.
+    fn take_import(&mut self, path: &Path, scene: Scene, summary: &str, warnings: &[String]) {
+        self.replace_scene(scene, None);
+        self.imported_from = Some(path.to_owned());
+        self.unnamed = "imported scene";
+        self.message = Some(StatusMessage::done(format!(
+            "Imported {} (not saved yet), {summary}",
+            path.display()
+        )));
+        if !warnings.is_empty() {
+            self.warning = Some(format!("Imported with warnings: {}", warnings.join("; ")));
+        }
+    }
+
+    /// Opens the scene file after (or before) the current one in its folder, asking
+    /// first about unsaved changes; says so when there is none.
+    pub(super) fn open_in_folder(&mut self, forward: bool, ctx: &egui::Context) {
+        let Some(current) = self.document_file().map(Path::to_owned) else {
+            self.error = Some("this scene has no file, so no folder to go through".to_owned());
+            return;
+        };
+        match crate::ui::document::folder_scenes::neighbour_scene(&current, forward) {
+            Some(next) => self.guard(DiscardAction::Open(next), ctx),
+            None => {
+                let which = if forward { "last" } else { "first" };
+                self.message = Some(StatusMessage::done(format!(
+                    "{} is the {which} scene in its folder",
+                    current.display()
+                )));
+            }
         }
     }
 
@@ -187,7 +215,7 @@ impl EditorApp {
     /// under it, else in full) and never rewrites it; the preview reads it off this
     /// thread and names any problem with it.
     pub(super) fn import_obj(&mut self, path: &Path) {
-        let folder = self.path.as_deref().and_then(Path::parent);
+        let folder = self.scene_folder();
         let written = folder
             .and_then(|folder| path.strip_prefix(folder).ok())
             .unwrap_or(path);
@@ -199,6 +227,14 @@ impl EditorApp {
             return;
         };
         self.edit(SceneEdit::AddMesh(text.replace('\\', "/")));
+        self.pending_fit = self
+            .fit_imported_meshes
+            .then(|| {
+                let index = self.scene.objects.len().checked_sub(1)?;
+                let added = self.scene.objects[index].clone();
+                Some(super::mesh_fit::PendingFit { index, added })
+            })
+            .flatten();
         self.message = Some(StatusMessage::done(format!(
             "Added the mesh {}",
             path.display()
@@ -208,8 +244,15 @@ impl EditorApp {
     /// Saves to `path`, which becomes the scene's file; errors are shown. Returns
     /// whether the scene was saved.
     pub(super) fn save_as(&mut self, path: &Path) -> bool {
-        match files::save_scene_to(&self.scene, path) {
+        // A mesh added by its full path before the scene had a file is stored relative to
+        // the scene when it lies below it, so the folder can move as a whole.
+        let mut scene = self.scene.clone();
+        if let Some(folder) = path.parent().and_then(|f| std::path::absolute(f).ok()) {
+            crate::scene::mesh_file::relative_mesh_paths(&mut scene, &folder);
+        }
+        match files::save_scene_to(&scene, path) {
             Ok(()) => {
+                self.scene = scene;
                 self.saved = self.scene.clone();
                 // The switches stay with the scene, now under its new name.
                 self.isolation_memory = self.isolation_memory();
@@ -244,6 +287,7 @@ impl EditorApp {
         self.saved = scene.clone();
         self.scene = scene;
         self.path = path;
+        self.imported_from = None;
         self.looking.reset(&self.scene, self.path.as_deref());
         self.undoer = undoer();
         self.undoer.add_undo(&self.scene);

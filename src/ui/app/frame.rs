@@ -49,6 +49,7 @@ impl EditorApp {
         self.input(&ctx);
         self.panels_ui(ui);
         self.dialogs(&ctx);
+        self.fit_imported_mesh();
         self.apply_commands(&ctx);
         let dirty = self.is_dirty();
         let now = std::time::Instant::now();
@@ -58,10 +59,11 @@ impl EditorApp {
         {
             ctx.request_repaint_after(wait);
         }
+        let folder = self.scene_folder().map(std::path::Path::to_owned);
         if let Some(preview) = &mut self.preview {
             preview.sync(
                 self.looking.shown_scene(&self.scene),
-                self.path.as_deref().and_then(std::path::Path::parent),
+                folder.as_deref(),
                 &self.preview_settings,
                 &self.isolation,
             );
@@ -134,6 +136,7 @@ impl EditorApp {
             let state = MenuState {
                 recent: &self.recent,
                 in_app_dialogs: self.file_dialogs.uses_in_app(),
+                fit_imported_meshes: self.fit_imported_meshes,
                 native_dialogs: self.file_dialogs.native_available(),
                 can_undo: self.undoer.has_undo(&self.scene),
                 can_redo: self.undoer.has_redo(&self.scene),
@@ -257,10 +260,12 @@ impl EditorApp {
             self.restore(answer);
         }
         help_window(ctx, &mut self.show_help);
+        let folder = self.scene_folder().map(std::path::Path::to_owned);
         export_window(
             ctx,
             &mut self.export,
             &self.scene,
+            folder.as_deref(),
             ViewportLook {
                 settings: &self.preview_settings,
                 isolation: &self.isolation,

@@ -130,6 +130,11 @@ pub enum Command {
     OpenDialog,
     /// Open a scene file (asks first if there are unsaved changes).
     Open(PathBuf),
+    /// Open the next scene file in the current one's folder (`false`: the previous one).
+    OpenInFolder {
+        /// Whether to step to the next file by name (else the previous).
+        forward: bool,
+    },
     /// Save to the current file, or ask for one.
     Save,
     /// Show the Save As dialog.
@@ -158,6 +163,8 @@ pub enum Command {
     BrowseCompareImage,
     /// Use the in-app file dialog even where a native one can be shown (editor setting).
     SetPreferInAppFileDialog(bool),
+    /// Scale an imported OBJ to a unit box once its size is known (editor setting).
+    SetFitImportedMeshes(bool),
     /// Hide the error area.
     DismissError,
     /// Hide the warning area.

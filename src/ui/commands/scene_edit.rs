@@ -26,6 +26,13 @@ impl SceneEdit {
                     .unwrap_or("mesh")
                     .to_owned();
                 add_object(scene, selection, Shape::Mesh { path }, &stem);
+                // A material of its own: recolouring the mesh must not recolour whatever
+                // shares the first material (a floor of many tiles).
+                let material = unique_name(&stem, scene.materials.keys());
+                scene.materials.insert(material.clone(), Material::grey());
+                if let Some(mesh) = scene.objects.last_mut() {
+                    mesh.material = material;
+                }
             }
             SceneEdit::AddLight(kind) => {
                 scene.lights.push(new_light(kind));

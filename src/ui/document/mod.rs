@@ -7,5 +7,6 @@ pub mod export;
 pub mod export_window;
 pub mod file_dialog;
 pub mod files;
+pub mod folder_scenes;
 pub mod native_dialogs;
 pub mod recent;

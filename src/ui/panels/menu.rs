@@ -12,6 +12,8 @@ pub struct MenuState<'a> {
     pub recent: &'a RecentFiles,
     /// Whether file dialogs are the in-app ones.
     pub in_app_dialogs: bool,
+    /// Whether an imported OBJ is scaled to a unit box.
+    pub fit_imported_meshes: bool,
     /// Whether this desktop can show native file dialogs at all.
     pub native_dialogs: bool,
     /// Whether Undo would do something.
@@ -72,6 +74,22 @@ fn file_menu_ui(ui: &mut Ui, state: &MenuState<'_>, commands: &mut Vec<Command>)
     ui.menu_button("Open Recent", |ui| {
         recent_ui(ui, state.recent, commands);
     });
+    entry_ui(
+        ui,
+        "Open Next in Folder",
+        "Open next scene in folder",
+        true,
+        Command::OpenInFolder { forward: true },
+        commands,
+    );
+    entry_ui(
+        ui,
+        "Open Previous in Folder",
+        "Open previous scene in folder",
+        true,
+        Command::OpenInFolder { forward: false },
+        commands,
+    );
     ui.separator();
     entry_ui(ui, "Save", "Save", true, Command::Save, commands);
     entry_ui(
@@ -99,6 +117,17 @@ fn file_menu_ui(ui: &mut Ui, state: &MenuState<'_>, commands: &mut Vec<Command>)
         Command::ImportObjDialog,
         commands,
     );
+    let mut fit = state.fit_imported_meshes;
+    if ui
+        .checkbox(&mut fit, "Fit Imported Meshes to a Unit Box")
+        .on_hover_text(
+            "Scale an imported OBJ so that its largest side is 1, once it is read \
+             (its own undo step: Undo gives back the file's size)",
+        )
+        .changed()
+    {
+        commands.push(Command::SetFitImportedMeshes(fit));
+    }
     entry_ui(
         ui,
         "Export PNG…",

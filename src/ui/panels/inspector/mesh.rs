@@ -29,6 +29,11 @@ pub(super) fn mesh_rows_ui(ui: &mut Ui, path: &str, facts: Option<&MeshFacts>) {
                     "Some edge has one triangle only: it draws, but cannot be a CSG operand"
                 });
             ui.end_row();
+            ui.label("Size");
+            let size = facts.bounds.max - facts.bounds.min;
+            ui.label(format!("{:.3} × {:.3} × {:.3}", size.x, size.y, size.z))
+                .on_hover_text("The mesh's size in its file's units, before the transform below");
+            ui.end_row();
             ui.label("Bounds");
             let (min, max) = (facts.bounds.min, facts.bounds.max);
             ui.label(format!(
