@@ -46,9 +46,11 @@ pub fn camera_steps(camera: &Camera) -> Vec<Step> {
         translate: camera.position,
         ..Trs::default()
     });
-    // The scale is 1 to float noise: the course camera is a rotation and a translation.
+    // The scale is 1 to float noise: the course camera is a rotation and a translation;
+    // the position goes out as it is (the decomposition may round it to a short decimal).
     trs_steps(&Trs {
         scale: glam::DVec3::ONE,
+        translate: camera.position,
         ..trs
     })
 }
