@@ -176,3 +176,37 @@ fn every_example_the_2016_dialect_holds_comes_back_rendering_the_same_png() {
         ],
     );
 }
+
+#[test]
+fn the_grammar_checker_refuses_what_the_course_grammar_refuses() {
+    let good = "Scene renderSize 8 6 End\nMaterial m Colour 1 .5 1. End\nObject Sphere Material m \
+                Scale 2 Rotate Y -3e1 End";
+    assert_eq!(check(good, Framework::Y2020), Ok(()));
+    assert_eq!(check(good, Framework::Y2016), Ok(()));
+    for (bad, framework) in [
+        ("Object Sphere Translate 1,0 0 0 End", Framework::Y2020),
+        ("Object Sphere End End", Framework::Y2020),
+        ("Object Sphere Material m End", Framework::Y2020),
+        ("Object Sphere", Framework::Y2020),
+        ("Light SpotLight Colour 1 1 1 End", Framework::Y2016),
+        ("Object Torus 1 End", Framework::Y2016),
+        ("Object Mesh a.obj End", Framework::Y2020),
+        ("CSG Union Object Sphere End End", Framework::Y2020),
+        (
+            "Object CSG Union Object Sphere End Object Cube End End",
+            Framework::Y2020,
+        ),
+        ("Scene FSAA 2 End", Framework::Y2016),
+        ("Object Sphere Rotate W 3 End", Framework::Y2020),
+    ] {
+        assert!(check(bad, framework).is_err(), "{bad}");
+    }
+    assert_eq!(
+        check(
+            "Object CSG Union Object Sphere End Object CSG Difference Object Cube End \
+             Object Cone End End Translate 0 1 0 End",
+            Framework::Y2016
+        ),
+        Ok(())
+    );
+}
