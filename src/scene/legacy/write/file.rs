@@ -5,8 +5,9 @@ use std::path::{Path, PathBuf};
 
 use super::super::convert::Dialect;
 use super::super::mesh_paths::rebase_mesh_paths;
+use super::objects::year;
 use super::problem::{CourseExportError, Problem};
-use super::write_course_scene;
+use super::scene_text::write_course_scene;
 use crate::scene::{Scene, write_atomically};
 
 /// Why an export to a file did not happen.
@@ -50,7 +51,7 @@ pub fn export_course_file(
     let written =
         write_course_scene(&scene, dialect).map_err(|error| CourseExportFileError::Refused {
             path: output.to_owned(),
-            dialect: super::year(dialect),
+            dialect: year(dialect),
             error,
         })?;
     write_atomically(output, written.text.as_bytes()).map_err(|source| {
