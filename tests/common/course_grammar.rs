@@ -86,10 +86,6 @@ impl Reader {
         Ok(token)
     }
 
-    fn peek(&self) -> Option<&str> {
-        self.tokens.get(self.at).map(|(t, _)| t.as_str())
-    }
-
     fn fail<T>(&self, message: &str) -> Result<T, String> {
         let (token, line) = self
             .tokens
