@@ -1,10 +1,12 @@
 //! The command line: `raylab [SCENE.ron]` starts the editor, `raylab render` renders
-//! headless, `raylab inspect` prints a pixel's rays, `raylab diff` compares with another
-//! renderer. `main.rs` only calls [`run`].
+//! headless, `raylab import` and `raylab export` convert from and to the course format,
+//! `raylab inspect` prints a pixel's rays, `raylab diff` compares with another renderer.
+//! `main.rs` only calls [`run`].
 
 mod bench;
 mod conventions;
 mod diff;
+mod export;
 mod import;
 mod inspect;
 mod inspect_tree;
@@ -19,6 +21,7 @@ use clap::{Parser, Subcommand};
 pub use bench::BenchArgs;
 pub use conventions::ConventionArgs;
 pub use diff::DiffArgs;
+pub use export::{DialectArg, ExportArgs};
 pub use import::ImportArgs;
 pub use inspect::{InspectArgs, TermArgs, inspect_text};
 pub use isolation::IsolationArgs;
@@ -42,6 +45,8 @@ pub enum Command {
     Render(RenderArgs),
     /// Import a legacy COSC342 text scene as a RON scene.
     Import(ImportArgs),
+    /// Export a scene in the COSC342 course's text format (2020 or 2016 dialect).
+    Export(ExportArgs),
     /// Measure throughput, preview latency and speed against error.
     Bench(BenchArgs),
     /// Print every ray behind one pixel: the camera ray, shadow rays, mirror bounces.
@@ -57,6 +62,7 @@ pub fn run() -> ExitCode {
     let result = match cli.command {
         Some(Command::Render(args)) => render::run(&args),
         Some(Command::Import(args)) => import::run(&args),
+        Some(Command::Export(args)) => export::run(&args),
         Some(Command::Bench(args)) => bench::run(&args),
         Some(Command::Inspect(args)) => inspect::run(&args),
         Some(Command::Diff(args)) => diff::run(&args),

@@ -1,5 +1,6 @@
 //! Import of the legacy COSC342 text scene format (`shared/COSC342_FORMAT.md`) into a
-//! [`Scene`].
+//! [`Scene`], and export back to it (`write`, in either framework's dialect, refusing or
+//! warning by name about what a dialect cannot say).
 //!
 //! The text goes through three stages: `lexer` (tokens with line numbers, comments
 //! dropped), `parser` (blocks of typed keywords, numbers checked) and `convert`
@@ -23,6 +24,7 @@ mod lexer;
 mod mesh_paths;
 mod parser;
 mod syntax;
+mod write;
 
 use std::path::{Path, PathBuf};
 
@@ -30,6 +32,10 @@ pub use convert::{Detected, Dialect};
 pub use error::{LegacyError, LegacyErrors, LegacyImportFileError, Warning};
 pub use mesh_paths::rebase_mesh_paths;
 pub use parser::MAX_NESTING;
+pub use write::{
+    CourseExportError, CourseExportFileError, CourseScene, Problem, Subject, export_course_file,
+    write_course_scene, year,
+};
 
 use crate::scene::{Scene, TextFileError, read_text_file};
 

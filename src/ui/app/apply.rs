@@ -97,6 +97,10 @@ impl EditorApp {
             }
             Command::ShowHelp => self.show_help = !self.show_help,
             Command::BrowseExportPath => self.request_dialog(DialogPurpose::ExportPng, ctx),
+            Command::ExportCourseDialog(dialect) => {
+                self.request_dialog(DialogPurpose::ExportCourse(dialect), ctx);
+            }
+            Command::ExportCourse(path, dialect) => self.export_course(&path, dialect),
             Command::ImportObjDialog => self.request_dialog(DialogPurpose::ImportObj, ctx),
             Command::ImportObj(path) => self.import_obj(&path),
             Command::CancelMeshLoading => {

@@ -8,6 +8,7 @@ use egui::ViewportCommand;
 
 use super::{EditorApp, undoer};
 use crate::scene::Scene;
+use crate::scene::legacy::{Dialect, export_course_file, year};
 use crate::ui::commands::{SceneEdit, Selection};
 use crate::ui::document::autosave::RestoreAnswer;
 use crate::ui::document::confirm::{DiscardAction, DiscardAnswer};
@@ -90,6 +91,10 @@ impl EditorApp {
                     || "render.png".to_owned(),
                     |n| n.to_string_lossy().into_owned(),
                 ),
+            DialogPurpose::ExportCourse(_) => match self.document_file().and_then(Path::file_stem) {
+                Some(stem) => format!("{}.txt", stem.to_string_lossy()),
+                None => format!("{}.txt", self.unnamed),
+            },
             _ => match self.document_file().and_then(Path::file_stem) {
                 Some(stem) => format!("{}.ron", stem.to_string_lossy()),
                 None => format!("{}.ron", self.unnamed),
@@ -144,6 +149,41 @@ impl EditorApp {
                 self.export.path = files::with_png_extension(path).display().to_string();
             }
             DialogPurpose::CompareImage => self.compare.path_text = path.display().to_string(),
+            DialogPurpose::ExportCourse(dialect) => {
+                let path = if path.extension().is_some() {
+                    path
+                } else {
+                    path.with_extension("txt")
+                };
+                self.export_course(&path, dialect);
+            }
+        }
+    }
+
+    /// Writes the scene in the course's text format, in `dialect`, to `path` (mesh paths
+    /// made relative to it). What the dialect loses is shown as a warning naming each
+    /// object, light or material; a scene it cannot say writes nothing and shows every
+    /// refusal as the error.
+    pub(super) fn export_course(&mut self, path: &Path, dialect: Dialect) {
+        // An untitled scene's mesh paths are relative to the working directory.
+        let folder = self
+            .path
+            .as_deref()
+            .and_then(Path::parent)
+            .unwrap_or(Path::new(""));
+        match export_course_file(&self.scene, folder, path, dialect) {
+            Ok(warnings) => {
+                self.message = Some(StatusMessage::done(format!(
+                    "Exported {} ({} framework's dialect)",
+                    path.display(),
+                    year(dialect)
+                )));
+                self.warning = (!warnings.is_empty()).then(|| {
+                    let lines: Vec<String> = warnings.iter().map(ToString::to_string).collect();
+                    format!("Exported with warnings: {}", lines.join("; "))
+                });
+            }
+            Err(error) => self.error = Some(error.to_string()),
         }
     }
 

@@ -153,6 +153,10 @@ pub enum Command {
     CancelMeshLoading,
     /// Show the Export PNG window.
     ShowExport,
+    /// Show the Export Course Scene dialog for a framework's dialect.
+    ExportCourseDialog(crate::scene::legacy::Dialect),
+    /// Write the scene in the course's text format, in a dialect, to a file.
+    ExportCourse(PathBuf, crate::scene::legacy::Dialect),
     /// Show the keyboard shortcuts.
     ShowHelp,
     /// Close the window (asks first if there are unsaved changes).

@@ -29,6 +29,8 @@ pub enum DialogPurpose {
     CompareImage,
     /// File > Import OBJ Mesh…
     ImportObj,
+    /// File > Export Course Scene… (the course's text format, in a dialect).
+    ExportCourse(crate::scene::legacy::Dialect),
 }
 
 impl DialogPurpose {
@@ -43,13 +45,22 @@ impl DialogPurpose {
             DialogPurpose::ExportPng => "Export PNG to (.png)",
             DialogPurpose::CompareImage => "Compare with image",
             DialogPurpose::ImportObj => "Import OBJ mesh (.obj)",
+            DialogPurpose::ExportCourse(crate::scene::legacy::Dialect::Framework2020) => {
+                "Export course scene, 2020 dialect (.txt)"
+            }
+            DialogPurpose::ExportCourse(crate::scene::legacy::Dialect::Framework2016) => {
+                "Export course scene, 2016 dialect (.txt)"
+            }
         }
     }
 
     /// Whether it asks for a file to write.
     #[must_use]
     pub fn is_save(self) -> bool {
-        matches!(self, DialogPurpose::SaveSceneAs | DialogPurpose::ExportPng)
+        matches!(
+            self,
+            DialogPurpose::SaveSceneAs | DialogPurpose::ExportPng | DialogPurpose::ExportCourse(_)
+        )
     }
 
     /// The filter's name and extensions, if the dialog shows some kinds of file only.
@@ -59,6 +70,7 @@ impl DialogPurpose {
             DialogPurpose::SaveSceneAs => Some(("raylab scene", &["ron"])),
             DialogPurpose::ExportPng => Some(("PNG image", &["png"])),
             DialogPurpose::ImportObj => Some(("Wavefront OBJ mesh", &["obj"])),
+            DialogPurpose::ExportCourse(_) => Some(("course text scene", &["txt"])),
             DialogPurpose::ImportLegacy | DialogPurpose::CompareImage => None,
         }
     }

@@ -2,6 +2,7 @@
 
 use egui::{Button, RichText, Ui};
 
+use crate::scene::legacy::Dialect;
 use crate::ui::commands::{Command, SceneEdit};
 use crate::ui::document::recent::RecentFiles;
 use crate::ui::shortcuts::shortcut_text;
@@ -134,6 +135,22 @@ fn file_menu_ui(ui: &mut Ui, state: &MenuState<'_>, commands: &mut Vec<Command>)
         "Export PNG…",
         true,
         Command::ShowExport,
+        commands,
+    );
+    entry_ui(
+        ui,
+        "Export Course Scene…",
+        "",
+        true,
+        Command::ExportCourseDialog(Dialect::Framework2020),
+        commands,
+    );
+    entry_ui(
+        ui,
+        "Export Course Scene (2016)…",
+        "",
+        true,
+        Command::ExportCourseDialog(Dialect::Framework2016),
         commands,
     );
     entry_ui(

@@ -29,7 +29,9 @@ use crate::scene::{
 };
 pub use dialect::{Detected, Dialect};
 use materials::Definition;
+pub(super) use objects::LEGACY_TORUS_MINOR;
 use objects::PendingObject;
+pub(super) use transform::as_trs;
 
 /// Legacy default image size.
 pub const DEFAULT_RENDER_SIZE: (u32, u32) = (800, 600);
