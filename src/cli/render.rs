@@ -11,7 +11,10 @@ use super::isolation::IsolationArgs;
 use crate::preview::BackgroundJob;
 use crate::scene::Scene;
 use crate::scene::{MAX_IMAGE_SIDE, load_scene, write_atomically};
-use crate::trace::{RenderOptions, SampleSums, Term, TermSwitches, View, World, render_samples};
+use crate::trace::{
+    PRUNE_BUDGET, PrunedRender, RenderOptions, SampleSums, Term, TermSwitches, View, World,
+    render_pruned, render_samples,
+};
 
 /// Arguments of `raylab render`.
 #[derive(Debug, Args)]
@@ -46,6 +49,11 @@ pub struct RenderArgs {
     /// The course's conventions, over the scene's.
     #[command(flatten)]
     pub conventions: ConventionArgs,
+    /// Trace every ray to max_depth. The PNG is the same byte for byte either way: by
+    /// default, rays that cannot change a byte are left out, and the pixels they might
+    /// have changed are traced again in full.
+    #[arg(long)]
+    pub no_prune: bool,
 }
 
 impl RenderArgs {
@@ -92,8 +100,9 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     let world = World::isolated_with_meshes(&scene, &options.isolation, &meshes)
         .map_err(|e| format!("{}: {e}", args.scene.display()))?;
     let started = Instant::now();
-    let sums = render_with_progress_bar(world, options.clone())?;
+    let rendered = render_with_progress_bar(world, options.clone(), !args.no_prune)?;
     let elapsed = started.elapsed();
+    let sums = rendered.sums;
     let image = sums.average(options.samples_per_pixel);
     let rays = sums.rays;
     let quantise = scene.render.conventions.quantise;
@@ -113,6 +122,12 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         rays.reflection,
         rays.transmission,
     );
+    if rendered.pruned_pixels > 0 {
+        eprintln!(
+            "pruned: rays left out in {} pixels, {} of them traced again in full",
+            rendered.pruned_pixels, rendered.retraced_pixels
+        );
+    }
     non_finite_report(&sums)
 }
 
@@ -140,19 +155,31 @@ pub fn non_finite_report(sums: &SampleSums) -> Result<(), String> {
 /// appears only if the render takes longer than a moment, and the wait ends the moment
 /// the render does (a tiny render pays no polling delay).
 ///
-/// Returns the sums of all `options.samples_per_pixel` samples, exactly as
-/// [`crate::trace::render`] adds them, with the guard's counts.
+/// Returns the sums of all `options.samples_per_pixel` samples: exactly as
+/// [`crate::trace::render`] adds them, with the guard's counts, or with `prune` as
+/// [`render_pruned`] makes them (the same bytes, not the same floats).
 ///
 /// # Errors
 /// The render panicked.
 pub fn render_with_progress_bar(
     world: World,
     options: RenderOptions,
-) -> Result<SampleSums, String> {
+    prune: bool,
+) -> Result<PrunedRender, String> {
     const SHOW_AFTER: Duration = Duration::from_millis(300);
     const TICK: Duration = Duration::from_millis(50);
-    let samples = 0..options.samples_per_pixel;
-    let work = move |p: &_| render_samples(&world, &options, samples, p);
+    let work = move |p: &_| {
+        if prune {
+            render_pruned(&world, &options, PRUNE_BUDGET, p)
+        } else {
+            let samples = 0..options.samples_per_pixel;
+            render_samples(&world, &options, samples, p).map(|sums| PrunedRender {
+                sums,
+                pruned_pixels: 0,
+                retraced_pixels: 0,
+            })
+        }
+    };
     let job = BackgroundJob::spawn("render", work, || {})?;
     let started = Instant::now();
     let mut bar: Option<indicatif::ProgressBar> = None;
