@@ -134,7 +134,7 @@ fn random_scene(seed: u64) -> Scene {
         mirror: colour(&mut range, 0.0, 0.2),
         ..Material::default()
     };
-    let mut scene = bare_scene(matte);
+    let mut scene = bare_scene(matte.clone());
     scene.materials = BTreeMap::from([
         ("m".to_owned(), matte),
         ("glass".to_owned(), glass),
@@ -268,7 +268,7 @@ fn the_inspector_shows_the_rays_a_pruned_render_leaves_out() {
             .bounces
             .iter()
             .zip(&weights)
-            .filter(|(b, &w)| b.depth > 0 && bound.of(w, b.depth).cmple(DVec3::splat(PRUNE_BUDGET)).all())
+            .filter(|&(b, &w)| b.depth > 0 && bound.of(w, b.depth).cmple(DVec3::splat(PRUNE_BUDGET)).all())
             .count();
     }
     assert!(prunable_shown > 0, "no ray the pruning would leave out was found");

@@ -54,6 +54,10 @@ pub struct RenderArgs {
     /// have changed are traced again in full.
     #[arg(long)]
     pub no_prune: bool,
+    /// What each sample may leave out when pruning, in steps of a byte (1/255): more
+    /// leaves out more rays and traces more pixels again. The PNG is the same.
+    #[arg(long, default_value_t = PRUNE_BUDGET * 255.0)]
+    pub prune_budget: f64,
 }
 
 impl RenderArgs {
@@ -100,7 +104,8 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     let world = World::isolated_with_meshes(&scene, &options.isolation, &meshes)
         .map_err(|e| format!("{}: {e}", args.scene.display()))?;
     let started = Instant::now();
-    let rendered = render_with_progress_bar(world, options.clone(), !args.no_prune)?;
+    let budget = (!args.no_prune).then_some(args.prune_budget / 255.0);
+    let rendered = render_with_progress_bar(world, options.clone(), budget)?;
     let elapsed = started.elapsed();
     let sums = rendered.sums;
     let image = sums.average(options.samples_per_pixel);
@@ -156,21 +161,21 @@ pub fn non_finite_report(sums: &SampleSums) -> Result<(), String> {
 /// the render does (a tiny render pays no polling delay).
 ///
 /// Returns the sums of all `options.samples_per_pixel` samples: exactly as
-/// [`crate::trace::render`] adds them, with the guard's counts, or with `prune` as
-/// [`render_pruned`] makes them (the same bytes, not the same floats).
+/// [`crate::trace::render`] adds them, with the guard's counts, or with a pruning
+/// budget as [`render_pruned`] makes them (the same bytes, not the same floats).
 ///
 /// # Errors
 /// The render panicked.
 pub fn render_with_progress_bar(
     world: World,
     options: RenderOptions,
-    prune: bool,
+    prune_budget: Option<f64>,
 ) -> Result<PrunedRender, String> {
     const SHOW_AFTER: Duration = Duration::from_millis(300);
     const TICK: Duration = Duration::from_millis(50);
     let work = move |p: &_| {
-        if prune {
-            render_pruned(&world, &options, PRUNE_BUDGET, p)
+        if let Some(budget) = prune_budget {
+            render_pruned(&world, &options, budget, p)
         } else {
             let samples = 0..options.samples_per_pixel;
             render_samples(&world, &options, samples, p).map(|sums| PrunedRender {
