@@ -33,7 +33,14 @@ struct Seen {
 
 /// Renders `scene` in full and pruned with `budget` at `width` x `height` and `spp`,
 /// asserts the PNGs are identical, and adds what the pruning did to `seen`.
-fn assert_same_png(name: &str, scene: &Scene, size: (u32, u32), spp: u32, budget: f64, seen: &mut Seen) {
+fn assert_same_png(
+    name: &str,
+    scene: &Scene,
+    size: (u32, u32),
+    spp: u32,
+    budget: f64,
+    seen: &mut Seen,
+) {
     let world = World::new(scene).unwrap();
     let options = RenderOptions {
         width: size.0,
@@ -49,7 +56,8 @@ fn assert_same_png(name: &str, scene: &Scene, size: (u32, u32), spp: u32, budget
     if image.png_bytes_as(quantise) != full.png_bytes_as(quantise) {
         let differing = (0..full.pixels.len())
             .filter(|&i| {
-                let bytes = |p: glam::Vec3| p.to_array().map(|c| raylab::trace::encode(c, quantise));
+                let bytes =
+                    |p: glam::Vec3| p.to_array().map(|c| raylab::trace::encode(c, quantise));
                 bytes(image.pixels[i]) != bytes(full.pixels[i])
             })
             .count();
@@ -99,7 +107,12 @@ fn every_example_scene_writes_the_full_traces_png_pruned() {
             }
         }
     }
-    assert!(seen.pruned > 0 && seen.retraced > 0, "pruned {}, retraced {}", seen.pruned, seen.retraced);
+    assert!(
+        seen.pruned > 0 && seen.retraced > 0,
+        "pruned {}, retraced {}",
+        seen.pruned,
+        seen.retraced
+    );
 }
 
 /// A random scene of glass, mirrors and matte objects on a floor, lit from above.
@@ -160,7 +173,10 @@ fn random_scene(seed: u64) -> Scene {
             colour: DVec3::splat(range(0.05, 0.4)),
             intensity: 1.0,
         },
-        point_light(DVec3::new(range(-4.0, 4.0), range(5.0, 8.0), range(-2.0, 6.0)), range(10.0, 60.0)),
+        point_light(
+            DVec3::new(range(-4.0, 4.0), range(5.0, 8.0), range(-2.0, 6.0)),
+            range(10.0, 60.0),
+        ),
         Light::Directional {
             direction: DVec3::new(range(-0.5, 0.5), -1.0, range(-0.5, 0.5)),
             colour: colour(&mut range, 0.1, 0.6),
@@ -188,7 +204,10 @@ fn random_glass_and_mirror_scenes_write_the_full_traces_png_pruned() {
     for (seen, budget) in seen.iter().zip(["the render's", "the large"]) {
         assert!(seen.pruned > 0, "{budget} budget pruned nothing");
     }
-    assert!(seen[1].retraced > 0, "the large budget traced nothing again");
+    assert!(
+        seen[1].retraced > 0,
+        "the large budget traced nothing again"
+    );
 }
 
 #[test]
@@ -210,7 +229,11 @@ fn pruning_traces_fewer_rays_on_glass() {
         "pruned {rays:?} against full {full_rays:?}"
     );
     assert!(rays.reflection + rays.transmission < full_rays.reflection + full_rays.transmission);
-    assert_eq!(rays.primary, full_rays.primary + pruned.retraced_pixels, "one sample each");
+    assert_eq!(
+        rays.primary,
+        full_rays.primary + pruned.retraced_pixels,
+        "one sample each"
+    );
     let quantise = scene.render.conventions.quantise;
     assert_eq!(
         pruned.sums.average(1).png_bytes_as(quantise),
@@ -262,14 +285,22 @@ fn the_inspector_shows_the_rays_a_pruned_render_leaves_out() {
         let mut rays = RayCounts::default();
         let ray = camera.ray(DVec2::new(f64::from(px) + 0.5, f64::from(py) + 0.5));
         tracer.trace_primary(&ray, &mut rays, &mut NoRecorder);
-        assert_eq!(report.bounces.len() as u64, rays.primary + rays.reflection + rays.transmission);
+        assert_eq!(
+            report.bounces.len() as u64,
+            rays.primary + rays.reflection + rays.transmission
+        );
         let weights = path_weights(&report);
         prunable_shown += report
             .bounces
             .iter()
             .zip(&weights)
-            .filter(|&(b, &w)| b.depth > 0 && bound.of(w, b.depth).cmple(DVec3::splat(PRUNE_BUDGET)).all())
+            .filter(|&(b, &w)| {
+                b.depth > 0 && bound.of(w, b.depth).cmple(DVec3::splat(PRUNE_BUDGET)).all()
+            })
             .count();
     }
-    assert!(prunable_shown > 0, "no ray the pruning would leave out was found");
+    assert!(
+        prunable_shown > 0,
+        "no ray the pruning would leave out was found"
+    );
 }

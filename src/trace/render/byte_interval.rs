@@ -24,7 +24,12 @@ pub fn same_bytes(sum: DVec3, left_out: DVec3, count: u32, quantise: Quantise) -
     let low = sum - slack;
     let high = sum + left_out + slack;
     let scale = 1.0 / f64::from(count.max(1));
-    let bytes = |sum: DVec3| (sum * scale).as_vec3().to_array().map(|c| encode(c, quantise));
+    let bytes = |sum: DVec3| {
+        (sum * scale)
+            .as_vec3()
+            .to_array()
+            .map(|c| encode(c, quantise))
+    };
     bytes(low) == bytes(high)
 }
 
@@ -43,7 +48,12 @@ mod tests {
         assert!(same_bytes(inside, small, 1, Quantise::Truncate));
         // Four samples: the sum is four times the pixel, and so is what was left out.
         assert!(same_bytes(inside * 4.0, small * 4.0, 4, Quantise::Truncate));
-        assert!(!same_bytes(inside * 4.0, small * 4.5, 4, Quantise::Truncate));
+        assert!(!same_bytes(
+            inside * 4.0,
+            small * 4.5,
+            4,
+            Quantise::Truncate
+        ));
         // One channel is enough to retrace.
         let one = DVec3::new(0.0, 0.0, 0.6 * step);
         assert!(!same_bytes(inside, one, 1, Quantise::Round));
@@ -54,7 +64,17 @@ mod tests {
         // Above 1 every value writes 255; below 0 every value writes 0.
         let over = DVec3::splat(1.2);
         assert!(same_bytes(over, DVec3::splat(5.0), 1, Quantise::Round));
-        assert!(!same_bytes(DVec3::splat(0.999), DVec3::splat(0.1), 1, Quantise::Round));
-        assert!(same_bytes(DVec3::splat(-0.5), DVec3::splat(0.4), 1, Quantise::Truncate));
+        assert!(!same_bytes(
+            DVec3::splat(0.999),
+            DVec3::splat(0.1),
+            1,
+            Quantise::Round
+        ));
+        assert!(same_bytes(
+            DVec3::splat(-0.5),
+            DVec3::splat(0.4),
+            1,
+            Quantise::Truncate
+        ));
     }
 }

@@ -113,7 +113,9 @@ impl SubtreeBound {
                 // A light without a bound lights nothing with kd = ks = 0 (no inf * 0).
                 let lit: DVec3 = lights
                     .iter()
-                    .map(|&l| DVec3::select(per_light.cmpeq(DVec3::ZERO), DVec3::ZERO, l * per_light))
+                    .map(|&l| {
+                        DVec3::select(per_light.cmpeq(DVec3::ZERO), DVec3::ZERO, l * per_light)
+                    })
                     .sum();
                 let own = m.ambient * world.ambient + lit;
                 let own = if blend {
@@ -224,12 +226,22 @@ mod tests {
         // The sphere's box reaches y = 1 (padded a hair): the light is 4 away, so it
         // delivers at most 16 / 16 = 1. Own colour: red 0.5 + 0.75, green and blue 0.5.
         let r0 = bound.of(DVec3::ONE, 3);
-        assert!((r0 - DVec3::new(1.25, 0.5, 0.5)).abs().max_element() < 1e-3, "{r0}");
+        assert!(
+            (r0 - DVec3::new(1.25, 0.5, 0.5)).abs().max_element() < 1e-3,
+            "{r0}"
+        );
         // One generation more: red 1.25 + 0.75 * 1.25, green 0.5 + 0.5 * 0.5.
         let r1 = bound.of(DVec3::ONE, 2);
-        assert!((r1 - DVec3::new(2.1875, 0.75, 0.75)).abs().max_element() < 1e-3, "{r1}");
+        assert!(
+            (r1 - DVec3::new(2.1875, 0.75, 0.75)).abs().max_element() < 1e-3,
+            "{r1}"
+        );
         assert!(r1.cmpge(r0).all(), "deeper rays can return no less");
-        assert_eq!(bound.of(DVec3::splat(0.5), 2), r1 * 0.5, "scaled by the weight");
+        assert_eq!(
+            bound.of(DVec3::splat(0.5), 2),
+            r1 * 0.5,
+            "scaled by the weight"
+        );
         let mut clamped = w.clone();
         clamped.conventions = Conventions::COURSE;
         let capped = SubtreeBound::new(&clamped).unwrap();
@@ -253,6 +265,10 @@ mod tests {
         assert!(SubtreeBound::new(&on_the_box).is_none(), "unbounded 1/d^2");
         on_the_box.conventions.clamp = ClampConvention::EachRay;
         let clamped = SubtreeBound::new(&on_the_box).expect("each ray returns at most 1");
-        assert_eq!(clamped.of(DVec3::splat(0.5), 1).x, 0.5, "red: lit without bound");
+        assert_eq!(
+            clamped.of(DVec3::splat(0.5), 1).x,
+            0.5,
+            "red: lit without bound"
+        );
     }
 }
