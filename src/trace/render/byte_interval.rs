@@ -46,11 +46,12 @@ mod tests {
         // 100.25 to 100.75 crosses round's step at 100.5, not truncate's at 101.
         assert!(!same_bytes(inside, small, 1, Quantise::Round));
         assert!(same_bytes(inside, small, 1, Quantise::Truncate));
-        // Four samples: the sum is four times the pixel, and so is what was left out.
+        // Four samples: the sum is four times the pixel, and so is what was left out
+        // (100.25 to 100.75, then to 101.25).
         assert!(same_bytes(inside * 4.0, small * 4.0, 4, Quantise::Truncate));
         assert!(!same_bytes(
             inside * 4.0,
-            small * 4.5,
+            small * 8.0,
             4,
             Quantise::Truncate
         ));
@@ -65,7 +66,7 @@ mod tests {
         let over = DVec3::splat(1.2);
         assert!(same_bytes(over, DVec3::splat(5.0), 1, Quantise::Round));
         assert!(!same_bytes(
-            DVec3::splat(0.999),
+            DVec3::splat(0.99),
             DVec3::splat(0.1),
             1,
             Quantise::Round
