@@ -4,7 +4,7 @@
 # runs of each at 800x600 and one sample, the ratio, and both pictures side by side.
 # Installs povray with apt-get only when it is missing (never run by the tests or CI).
 #
-# usage: scripts/bench_povray.sh NAME [RUNS] [OUT_DIR]   (defaults: 7, /tmp/bench_povray_NAME)
+# usage: [RAYLAB_BIN=path] scripts/bench_povray.sh NAME [RUNS] [OUT_DIR]   (defaults: 7, /tmp/bench_povray_NAME)
 set -euo pipefail
 name=${1:?usage: scripts/bench_povray.sh NAME [RUNS] [OUT_DIR]}
 runs=${2:-7}
@@ -16,8 +16,14 @@ if ! command -v povray >/dev/null; then
     $sudo apt-get update -qq && $sudo apt-get install -y -qq povray
 fi
 target=${CARGO_TARGET_DIR:-$here/target}
-(cd "$here" && cargo build --release --bin raylab -q)
-raylab=$target/release/raylab
+# RAYLAB_BIN times a binary built before (another build holding cargo's lock need not
+# be waited for); otherwise the release build of this checkout.
+if [ -n "${RAYLAB_BIN:-}" ]; then
+    raylab=$RAYLAB_BIN
+else
+    (cd "$here" && cargo build --release --bin raylab -q)
+    raylab=$target/release/raylab
+fi
 # POV-Ray reads only below its working folder by default: run it in the output folder.
 cp "$here/scripts/bench/$name.pov" "$out/scene.pov"
 

@@ -11,7 +11,10 @@ use super::isolation::IsolationArgs;
 use crate::preview::BackgroundJob;
 use crate::scene::Scene;
 use crate::scene::{MAX_IMAGE_SIDE, write_atomically};
-use crate::trace::{RenderOptions, SampleSums, Term, TermSwitches, View, World, render_samples};
+use crate::trace::{
+    PRUNE_BUDGET, PrunedRender, RenderOptions, SampleSums, Term, TermSwitches, View, World,
+    render_pruned, render_samples,
+};
 
 /// Arguments of `raylab render`.
 #[derive(Debug, Args)]
@@ -46,6 +49,16 @@ pub struct RenderArgs {
     /// The course's conventions, over the scene's.
     #[command(flatten)]
     pub conventions: ConventionArgs,
+    /// Trace every ray to max_depth. The PNG is the same byte for byte either way: by
+    /// default, in scenes with glass (whose ray trees split at every surface), rays that
+    /// cannot change a byte are left out, and the pixels they might have changed are
+    /// traced again in full. Elsewhere the bookkeeping costs more than it saves.
+    #[arg(long)]
+    pub no_prune: bool,
+    /// What each sample may leave out when pruning, in steps of a byte (1/255): more
+    /// leaves out more rays and traces more pixels again. The PNG is the same.
+    #[arg(long, default_value_t = PRUNE_BUDGET * 255.0)]
+    pub prune_budget: f64,
 }
 
 impl RenderArgs {
@@ -92,8 +105,14 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
     let world = World::isolated_with_meshes(&scene, &options.isolation, &meshes)
         .map_err(|e| format!("{}: {e}", args.scene.display()))?;
     let started = Instant::now();
-    let sums = render_with_progress_bar(world, options.clone())?;
+    let glass = scene
+        .materials
+        .values()
+        .any(|m| m.transmission != glam::DVec3::ZERO);
+    let budget = (!args.no_prune && glass).then_some(args.prune_budget / 255.0);
+    let rendered = render_with_progress_bar(world, options.clone(), budget)?;
     let elapsed = started.elapsed();
+    let sums = rendered.sums;
     let image = sums.average(options.samples_per_pixel);
     let rays = sums.rays;
     let quantise = scene.render.conventions.quantise;
@@ -113,6 +132,12 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         rays.reflection,
         rays.transmission,
     );
+    if rendered.pruned_pixels > 0 {
+        eprintln!(
+            "pruned: rays left out in {} pixels, {} of them traced again in full",
+            rendered.pruned_pixels, rendered.retraced_pixels
+        );
+    }
     non_finite_report(&sums)
 }
 
@@ -140,19 +165,31 @@ pub fn non_finite_report(sums: &SampleSums) -> Result<(), String> {
 /// appears only if the render takes longer than a moment, and the wait ends the moment
 /// the render does (a tiny render pays no polling delay).
 ///
-/// Returns the sums of all `options.samples_per_pixel` samples, exactly as
-/// [`crate::trace::render`] adds them, with the guard's counts.
+/// Returns the sums of all `options.samples_per_pixel` samples: exactly as
+/// [`crate::trace::render`] adds them, with the guard's counts, or with a pruning
+/// budget as [`render_pruned`] makes them (the same bytes, not the same floats).
 ///
 /// # Errors
 /// The render panicked.
 pub fn render_with_progress_bar(
     world: World,
     options: RenderOptions,
-) -> Result<SampleSums, String> {
+    prune_budget: Option<f64>,
+) -> Result<PrunedRender, String> {
     const SHOW_AFTER: Duration = Duration::from_millis(300);
     const TICK: Duration = Duration::from_millis(50);
-    let samples = 0..options.samples_per_pixel;
-    let work = move |p: &_| render_samples(&world, &options, samples, p);
+    let work = move |p: &_| {
+        if let Some(budget) = prune_budget {
+            render_pruned(&world, &options, budget, p)
+        } else {
+            let samples = 0..options.samples_per_pixel;
+            render_samples(&world, &options, samples, p).map(|sums| PrunedRender {
+                sums,
+                pruned_pixels: 0,
+                retraced_pixels: 0,
+            })
+        }
+    };
     let job = BackgroundJob::spawn("render", work, || {})?;
     let started = Instant::now();
     let mut bar: Option<indicatif::ProgressBar> = None;

@@ -12,7 +12,7 @@
 //! | `cull` | what each tile's camera and shadow rays can meet |
 //! | `shade` | the lighting model, the ray source it asks, the recorder |
 //! | `reshade` | the cache that re-shades an edit without tracing |
-//! | `render` | the drivers: tiles, the tile pass, adaptive, cached passes |
+//! | `render` | the drivers: tiles, the tile pass, adaptive, cached and pruned passes |
 //! | `inspect` | one pixel taken apart, and its tree of rays |
 
 mod cull;
@@ -28,8 +28,8 @@ mod terms;
 mod world;
 
 pub use film::{
-    Image, PinholeCamera, RenderOptions, RenderProgress, SampleSums, TILE_SIZE, encode_linear,
-    sample_in_pixel,
+    Image, PinholeCamera, RenderOptions, RenderProgress, SampleSums, TILE_SIZE, encode,
+    encode_linear, sample_in_pixel,
 };
 pub use inspect::{
     BounceReport, HitSurface, PixelOutside, PixelReport, RayHit, RayKind, TracedRay, inspect_pixel,
@@ -38,13 +38,13 @@ pub use inspect::{
 pub use ray::Ray;
 pub use ray_counts::RayCounts;
 pub use render::{
-    AdaptiveOptions, AdaptiveRender, CachedPass, render, render_adaptive, render_one_sample_cached,
-    render_samples, render_samples_into,
+    AdaptiveOptions, AdaptiveRender, CachedPass, PRUNE_BUDGET, PrunedRender, render,
+    render_adaptive, render_one_sample_cached, render_pruned, render_samples, render_samples_into,
 };
 pub use reshade::{HitCache, MAX_CACHE_BYTES, RetraceReason, Reuse, cache_fits};
 pub use shade::{
     Branch, LightOutcome, LightRecord, LightSkip, LocalLight, NoRecorder, Recorder, ShadowRay,
-    SkippedLight, Tracer, object_id_colour, phong_power,
+    SkippedLight, SubtreeBound, Tracer, object_id_colour, phong_power,
 };
 pub use shapes::{MeshStore, TriangleHit, TriangleMesh};
 pub use terms::{Isolation, Term, TermSwitches, View};

@@ -37,6 +37,8 @@ pub fn cli_options(scene: &Scene, off: &[Term], solo: Option<Term>, view: View) 
         view,
         isolation: Default::default(),
         conventions: Default::default(),
+        no_prune: false,
+        prune_budget: 0.1,
     };
     args.options(scene).unwrap()
 }

@@ -14,6 +14,7 @@
 use glam::{DVec2, DVec3};
 
 use super::samples::{camera_sample, sample_point};
+use super::spawn_filter::{SpawnFilter, TraceAll};
 use crate::trace::cull::{Candidates, TileCull};
 use crate::trace::film::{PinholeCamera, TileRect};
 use crate::trace::ray::Ray;
@@ -32,6 +33,9 @@ struct Level {
     parents: Vec<(usize, Branch)>,
     /// What each ray adds.
     bounces: Vec<Bounce>,
+    /// The rays of this level whose mirror or transmitted ray was left out
+    /// ([`SpawnFilter`]): they fold back as if it had returned black.
+    left_out: Vec<(usize, Branch)>,
 }
 
 /// Answers the closest hit of the ray at `depth` from the batch that found it, every
@@ -86,6 +90,17 @@ impl TilePass<'_> {
     /// Sample `index` of every pixel of `rect` (row-major) and the rays traced, or `None`
     /// where the samples do not share one culled set (then they go pixel by pixel).
     pub fn tile(&self, rect: TileRect, index: u32) -> Option<(Vec<DVec3>, RayCounts)> {
+        self.tile_with(rect, index, &mut TraceAll)
+    }
+
+    /// As [`Self::tile`], the rays below the camera rays traced only where `filter`
+    /// keeps them.
+    pub fn tile_with(
+        &self,
+        rect: TileRect,
+        index: u32,
+        filter: &mut impl SpawnFilter,
+    ) -> Option<(Vec<DVec3>, RayCounts)> {
         let points: Vec<DVec2> = (rect.y0..rect.y0 + rect.h)
             .flat_map(|py| (rect.x0..rect.x0 + rect.w).map(move |px| (px, py)))
             .map(|(px, py)| sample_point(px, py, index, self.count))
@@ -104,7 +119,7 @@ impl TilePass<'_> {
         let rays: Vec<Ray> = points.iter().map(|&point| self.camera.ray(point)).collect();
         let mut counts = RayCounts::default();
         let colours = match self.tracer.beauty_terms() {
-            Some(terms) => self.lit(rays, among, terms, &mut counts),
+            Some(terms) => self.lit(rays, among, terms, filter, &mut counts),
             None => self.view(&points, rays, among, &mut counts),
         };
         Some((colours, counts))
@@ -117,11 +132,13 @@ impl TilePass<'_> {
         rays: Vec<Ray>,
         among: Candidates,
         (primary, secondary): (ActiveTerms, ActiveTerms),
+        filter: &mut impl SpawnFilter,
         counts: &mut RayCounts,
     ) -> Vec<DVec3> {
         let world = self.tracer.world();
         let count = rays.len();
         counts.primary += count as u64;
+        filter.camera_rays(count);
         // Per depth, what each ray adds and (below the camera rays, which are the pixels
         // in order) its parent's slot in the level before and which of its rays it is.
         let mut levels: Vec<Level> = Vec::new();
@@ -138,6 +155,7 @@ impl TilePass<'_> {
             let hits = world.intersect_batch(&rays, objects);
             let mut bounces = Vec::with_capacity(rays.len());
             let (mut next_parents, mut next_rays) = (Vec::new(), Vec::new());
+            let mut left_out = Vec::new();
             for (slot, (ray, hit)) in rays.iter().zip(hits).enumerate() {
                 let mut source = KnownHit::new(depth, *ray, hit, among);
                 // No recorder and no cache here: only the depth is needed, not the
@@ -150,17 +168,33 @@ impl TilePass<'_> {
                 let (bounce, spawned) =
                     self.tracer
                         .shade(ray, at, terms, &mut source, counts, &mut NoRecorder);
-                bounces.push(bounce);
+                // `shade` counted the rays it started; one left out is never cast.
                 if let Some(mirror) = spawned.mirror {
-                    next_parents.push((slot, Branch::Mirror));
-                    next_rays.push(mirror);
+                    if filter.keep(slot, depth + 1, bounce.km) {
+                        next_parents.push((slot, Branch::Mirror));
+                        next_rays.push(mirror);
+                    } else {
+                        counts.reflection -= 1;
+                        left_out.push((slot, Branch::Mirror));
+                    }
                 }
                 if let Some((transmitted, branch)) = spawned.transmitted {
-                    next_parents.push((slot, branch));
-                    next_rays.push(transmitted);
+                    if filter.keep(slot, depth + 1, bounce.kt) {
+                        next_parents.push((slot, branch));
+                        next_rays.push(transmitted);
+                    } else {
+                        counts.transmission -= 1;
+                        left_out.push((slot, branch));
+                    }
                 }
+                bounces.push(bounce);
             }
-            levels.push(Level { parents, bounces });
+            levels.push(Level {
+                parents,
+                bounces,
+                left_out,
+            });
+            filter.next_level();
             (parents, rays) = (next_parents, next_rays);
             depth += 1;
         }
@@ -172,7 +206,22 @@ impl TilePass<'_> {
             let own = brought_back.get(slot).copied().unwrap_or_default();
             bounce.returns(own, conventions)
         };
-        for (index, level) in levels.iter().enumerate().skip(1).rev() {
+        for (index, level) in levels.iter().enumerate().rev() {
+            // A ray left out returned black: its parent still blends with it.
+            if !level.left_out.is_empty() {
+                brought_back.resize(level.bounces.len(), BroughtBack::default());
+                for &(slot, branch) in &level.left_out {
+                    let black = Some(DVec3::ZERO);
+                    if branch.is_transmitted() {
+                        brought_back[slot].transmitted = black;
+                    } else {
+                        brought_back[slot].reflected = black;
+                    }
+                }
+            }
+            if index == 0 {
+                break;
+            }
             let mut up = vec![BroughtBack::default(); levels[index - 1].bounces.len()];
             for (slot, (bounce, &(parent, branch))) in
                 level.bounces.iter().zip(&level.parents).enumerate()

@@ -14,6 +14,7 @@ mod ray_source;
 mod record;
 mod refraction;
 mod shadows;
+mod subtree_bound;
 mod tracer;
 
 pub use bounce_tree::RayAt;
@@ -28,4 +29,5 @@ pub use ray_source::{LiveRays, MakeRay, RaySource, ShadowRequest};
 pub use record::{
     LightOutcome, LightRecord, LightSkip, NoRecorder, Recorder, ShadowRay, SkippedLight,
 };
+pub use subtree_bound::SubtreeBound;
 pub use tracer::Tracer;
