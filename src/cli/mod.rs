@@ -3,6 +3,7 @@
 //! renderer. `main.rs` only calls [`run`].
 
 mod bench;
+mod bugs;
 mod conventions;
 mod diff;
 mod import;
@@ -17,6 +18,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 pub use bench::BenchArgs;
+pub use bugs::BugsArgs;
 pub use conventions::ConventionArgs;
 pub use diff::DiffArgs;
 pub use import::ImportArgs;
@@ -48,6 +50,8 @@ pub enum Command {
     Inspect(InspectArgs),
     /// Compare with another renderer's image: which light, object and term differ.
     Diff(DiffArgs),
+    /// The bug gallery: the scene under each known bug, one PNG each and a contact sheet.
+    Bugs(BugsArgs),
 }
 
 /// Parses the command line and runs it. Errors are printed to stderr with a non-zero exit.
@@ -60,6 +64,7 @@ pub fn run() -> ExitCode {
         Some(Command::Bench(args)) => bench::run(&args),
         Some(Command::Inspect(args)) => inspect::run(&args),
         Some(Command::Diff(args)) => diff::run(&args),
+        Some(Command::Bugs(args)) => bugs::run(&args),
         None => start_editor(cli.scene),
     };
     match result {

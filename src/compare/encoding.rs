@@ -5,6 +5,8 @@
 
 use serde::Serialize;
 
+use crate::scene::Quantise;
+
 /// Slack added to each interval, in linear units, for the rounding of float sums.
 const SLACK: f64 = 1e-6;
 
@@ -55,6 +57,30 @@ impl Encoding {
         let lo = if k == 0.0 { f64::NEG_INFINITY } else { lo };
         let hi = if k == 255.0 { f64::INFINITY } else { hi };
         (lo - SLACK, hi + SLACK)
+    }
+
+    /// The byte this encoding writes for the linear value `c` (clamped to [0, 1]; a
+    /// non-finite value is written as 0): the value each [`Encoding::interval`] holds.
+    #[must_use]
+    pub fn encode(self, c: f64) -> u8 {
+        if !c.is_finite() {
+            return 0;
+        }
+        // The linear encodings are the renderer's own, on its f32 pixels, so a picture
+        // written here has raylab's bytes wherever its values are raylab's.
+        match self {
+            Encoding::LinearRound => crate::trace::encode(c as f32, Quantise::Round),
+            Encoding::LinearTruncate => crate::trace::encode(c as f32, Quantise::Truncate),
+            Encoding::Srgb => {
+                let c = c.clamp(0.0, 1.0);
+                let x = if c <= 0.003_130_8 {
+                    12.92 * c
+                } else {
+                    1.055 * c.powf(1.0 / 2.4) - 0.055
+                };
+                (x * 255.0 + 0.5) as u8
+            }
+        }
     }
 
     /// The linear value that best stands for `k`: the middle of its interval (the ends of
@@ -141,6 +167,23 @@ mod tests {
             );
         }
         assert!(distance_outside(0.5, Encoding::LinearRound.interval(120)) > 0.0);
+    }
+
+    #[test]
+    fn each_encoding_writes_a_byte_whose_interval_holds_the_value() {
+        for encoding in Encoding::ALL {
+            for i in 0..=1000 {
+                let c = f64::from(i) / 1000.0;
+                let k = encoding.encode(c);
+                assert_eq!(
+                    distance_outside(c, encoding.interval(k)),
+                    0.0,
+                    "{encoding:?} {c}"
+                );
+            }
+        }
+        assert_eq!(Encoding::Srgb.encode(0.5), 188);
+        assert_eq!(Encoding::LinearTruncate.encode(0.999), 254);
     }
 
     #[test]

@@ -29,6 +29,8 @@ pub mod localise;
 pub mod missing_nodes;
 pub mod nodes;
 pub mod other_image;
+pub mod panel_grid;
+pub mod plant;
 pub mod record_context;
 pub mod recorder;
 pub mod regions;

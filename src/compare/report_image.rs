@@ -1,31 +1,18 @@
 //! REPORT.png: raylab's picture, the other one, the difference heatmap and the pixels
-//! of the top explanations, each panel labelled. Panels are scaled with nearest-pixel
-//! sampling so single pixels stay visible in small renders.
+//! of the top explanations, each panel labelled ([`super::panel_grid`]).
 
 use std::path::Path;
 
-use plotters::prelude::*;
-
 use super::explanation::Explanation;
+use super::panel_grid::{Panel, panel_grid_png};
 use super::report::Comparison;
 
 /// Panels are scaled to about this width.
 const PANEL_WIDTH: f64 = 360.0;
 /// Explanations shown as mask panels.
 const MASK_PANELS: usize = 3;
-/// Height of the label above each panel.
-const LABEL_HEIGHT: u32 = 58;
-/// Space around panels.
-const MARGIN: u32 = 12;
 /// Mask pixels are painted in this colour over a dimmed raylab picture.
 const MASK_COLOUR: [f64; 3] = [255.0, 150.0, 0.0];
-
-/// One panel: its pixels at the comparison's size and two lines of label.
-struct Panel {
-    pixels: Vec<[u8; 3]>,
-    title: String,
-    lines: Vec<String>,
-}
 
 /// The difference heatmap, one colour per pixel, and the number of levels shown as
 /// white (the largest difference, at least 1). The report and the editor show this.
@@ -134,69 +121,9 @@ fn panels(comparison: &Comparison) -> Vec<Panel> {
 /// # Errors
 /// A message when text cannot be drawn or the PNG not encoded.
 pub fn report_png(comparison: &Comparison) -> Result<Vec<u8>, String> {
-    // ab_glyph draws text from font bytes; egui's own font ships with the project.
-    let _ = plotters::style::register_font(
-        "sans-serif",
-        FontStyle::Normal,
-        epaint_default_fonts::UBUNTU_LIGHT,
-    );
-    let (w, h) = (comparison.width, comparison.height);
-    let scale = PANEL_WIDTH / f64::from(w);
-    let (pw, ph) = (
-        ((f64::from(w) * scale).round() as u32).max(1),
-        ((f64::from(h) * scale).round() as u32).max(1),
-    );
-    let panels = panels(comparison);
-    let columns = 3u32;
-    let rows = (panels.len() as u32).div_ceil(columns);
-    let cell = (pw + MARGIN, ph + LABEL_HEIGHT + MARGIN);
-    let size = (MARGIN + columns * cell.0, MARGIN + rows * cell.1);
-    let mut buffer = vec![255u8; (size.0 * size.1 * 3) as usize];
-    for (i, panel) in panels.iter().enumerate() {
-        let x0 = MARGIN + (i as u32 % columns) * cell.0;
-        let y0 = MARGIN + (i as u32 / columns) * cell.1 + LABEL_HEIGHT;
-        for y in 0..ph {
-            let sy = ((f64::from(y) + 0.5) / scale) as u32;
-            for x in 0..pw {
-                let sx = ((f64::from(x) + 0.5) / scale) as u32;
-                let source = panel.pixels[(sy.min(h - 1) * w + sx.min(w - 1)) as usize];
-                let at = (((y0 + y) * size.0 + x0 + x) * 3) as usize;
-                buffer[at..at + 3].copy_from_slice(&source);
-            }
-        }
-    }
-    {
-        let error = |e: &dyn std::fmt::Display| format!("report image: {e}");
-        let root = BitMapBackend::with_buffer(&mut buffer, size).into_drawing_area();
-        for (i, panel) in panels.iter().enumerate() {
-            let x = (MARGIN + (i as u32 % columns) * cell.0) as i32;
-            let y = (MARGIN + (i as u32 / columns) * cell.1) as i32;
-            root.draw(&Text::new(
-                panel.title.clone(),
-                (x, y),
-                ("sans-serif", 19).into_font().color(&BLACK),
-            ))
-            .map_err(|e| error(&e))?;
-            for (k, line) in panel.lines.iter().enumerate() {
-                root.draw(&Text::new(
-                    line.clone(),
-                    (x, y + 22 + 16 * k as i32),
-                    ("sans-serif", 14).into_font().color(&RGBColor(60, 60, 60)),
-                ))
-                .map_err(|e| error(&e))?;
-            }
-        }
-        root.present().map_err(|e| error(&e))?;
-    }
-    let image = image::RgbImage::from_raw(size.0, size.1, buffer).ok_or("report buffer size")?;
-    let mut bytes = Vec::new();
-    image
-        .write_to(
-            &mut std::io::Cursor::new(&mut bytes),
-            image::ImageFormat::Png,
-        )
-        .map_err(|e| format!("report image: {e}"))?;
-    Ok(bytes)
+    let size = (comparison.width, comparison.height);
+    panel_grid_png(size, &panels(comparison), 3, PANEL_WIDTH)
+        .map_err(|e| format!("report image: {e}"))
 }
 
 /// Writes the report PNG atomically.

@@ -28,8 +28,8 @@ mod terms;
 mod world;
 
 pub use film::{
-    Image, PinholeCamera, RenderOptions, RenderProgress, SampleSums, TILE_SIZE, encode_linear,
-    sample_in_pixel,
+    Image, PinholeCamera, RenderOptions, RenderProgress, SampleSums, TILE_SIZE, encode,
+    encode_linear, sample_in_pixel,
 };
 pub use inspect::{
     BounceReport, HitSurface, PixelOutside, PixelReport, RayHit, RayKind, TracedRay, inspect_pixel,
