@@ -7,9 +7,9 @@ use std::path::{Path, PathBuf};
 use clap::Args;
 
 use crate::compare::OtherImage;
+use crate::compare::gallery::{GalleryPicture, gallery, gallery_scene};
 use crate::compare::panel_grid::{Panel, panel_grid_png};
-use crate::compare::plant::{PlantedBug, gallery_bugs, plant, plant_each};
-use crate::scene::{MAX_IMAGE_SIDE, Scene, write_atomically};
+use crate::scene::{MAX_IMAGE_SIDE, write_atomically};
 use crate::trace::RenderProgress;
 
 /// Arguments of `raylab bugs`.
@@ -26,76 +26,6 @@ pub struct BugsArgs {
     /// Samples per pixel (default: 1, as the course's tracers render).
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=256))]
     pub spp: u32,
-}
-
-/// Widest default picture: a gallery of 30 pictures stays quick and the sheet readable.
-const DEFAULT_MAX_WIDTH: u32 = 480;
-
-/// One picture of the gallery.
-pub struct GalleryPicture {
-    /// The bug, as `raylab render --bug` takes it.
-    pub label: String,
-    /// What it is in a tracer's code.
-    pub in_code: &'static str,
-    /// The picture.
-    pub picture: OtherImage,
-    /// The share of pixels it changes.
-    pub changed_share: f64,
-}
-
-/// The scene resized to `width` (keeping its aspect), or at most [`DEFAULT_MAX_WIDTH`].
-#[must_use]
-pub fn gallery_scene(mut scene: Scene, width: Option<u32>) -> Scene {
-    let (w, h) = (scene.camera.width, scene.camera.height);
-    let width = width.unwrap_or(w.min(DEFAULT_MAX_WIDTH));
-    if width != w {
-        let height = (f64::from(h) * f64::from(width) / f64::from(w)).round() as u32;
-        scene.camera.width = width;
-        scene.camera.height = height.clamp(1, MAX_IMAGE_SIDE);
-    }
-    scene
-}
-
-/// raylab's own picture of `scene` and the gallery: each bug of [`gallery_bugs`] that
-/// changes at least one byte of it.
-///
-/// # Errors
-/// The scene does not compile.
-pub fn gallery(
-    scene: &Scene,
-    meshes: &crate::trace::MeshStore,
-    spp: u32,
-    progress: &RenderProgress,
-) -> Result<(OtherImage, Vec<GalleryPicture>), String> {
-    let own = plant(scene, meshes, &[], spp, progress).map_err(|e| e.to_string())?;
-    let bugs: Vec<PlantedBug> = gallery_bugs(scene);
-    let pictures = plant_each(scene, meshes, &bugs, spp, progress).map_err(|e| e.to_string())?;
-    let mut shown = Vec::new();
-    for (bug, picture) in bugs.iter().zip(pictures) {
-        let picture = match picture {
-            Ok(p) => p,
-            Err(e) => {
-                eprintln!("note: {} is not in the gallery: {e}", bug.label(scene));
-                continue;
-            }
-        };
-        let changed = own
-            .rgb
-            .iter()
-            .zip(&picture.rgb)
-            .filter(|(a, b)| a != b)
-            .count();
-        if changed == 0 {
-            continue; // the bug has nothing to act on in this scene
-        }
-        shown.push(GalleryPicture {
-            label: bug.label(scene),
-            in_code: bug.plant.in_code(),
-            picture,
-            changed_share: changed as f64 / own.rgb.len() as f64,
-        });
-    }
-    Ok((own, shown))
 }
 
 /// A file name for a bug's picture: its position and label, with only safe characters.
@@ -159,8 +89,12 @@ pub fn run(args: &BugsArgs) -> Result<(), String> {
     let scene = super::diff::load_any_scene(&args.scene)?;
     let meshes = crate::cli::load_meshes(&scene, &args.scene)?;
     let scene = gallery_scene(scene, args.width);
-    let (own, pictures) = gallery(&scene, &meshes, args.spp, &RenderProgress::default())?;
-    let written = write_gallery(&args.output, &own, &pictures)?;
+    let found = gallery(&scene, &meshes, args.spp, &RenderProgress::default())?;
+    for note in &found.left_out {
+        eprintln!("note: not in the gallery: {note}");
+    }
+    let (own, pictures) = (&found.own, &found.pictures);
+    let written = write_gallery(&args.output, own, pictures)?;
     eprintln!(
         "{}: {} bugs show in this scene; {} files, the contact sheet {}",
         args.scene.display(),

@@ -24,6 +24,7 @@ pub mod explain;
 pub mod explanation;
 pub mod extra_object;
 pub mod extra_shadow;
+pub mod gallery;
 pub mod groups;
 pub mod localise;
 pub mod missing_nodes;

@@ -21,6 +21,7 @@ use super::components::{Components, render_components};
 use super::conventions_fit::NO_LIMIT_DEPTH;
 use super::encoding::Encoding;
 use super::error::CompareError;
+use super::explanation::{Cause, ExplainedTerm, Explanation};
 use super::missing_nodes::Slot;
 use super::other_image::OtherImage;
 use super::spot_bugs::SpotBug;
@@ -284,6 +285,51 @@ impl PlantedBug {
     }
 }
 
+impl PlantedBug {
+    /// Whether explanation `e` names this bug: its cause (a term factor: its term and
+    /// which side of 1), and its light or object where the bug was planted on one (the
+    /// node itself, a part of it, or the node holding it).
+    #[must_use]
+    pub fn is_named_by(&self, e: &Explanation) -> bool {
+        let cause_fits = match self.plant {
+            Plant::Factor(term, factor) => {
+                e.cause == Cause::Factor
+                    && e.term.name() == term.name()
+                    && (e.factor < 1.0) == (factor < 1.0)
+            }
+            Plant::LightOff => {
+                e.cause == Cause::Factor
+                    && matches!(e.term, ExplainedTerm::Diffuse | ExplainedTerm::Specular)
+                    && e.factor < 0.5
+            }
+            Plant::Normal(b) => e.cause == Cause::Normal(b),
+            Plant::Highlight(b) => e.cause == Cause::Highlight(b),
+            Plant::Clamp(b) => e.cause == Cause::Clamp(b),
+            Plant::Spot(b) => e.cause == Cause::Spot(b),
+            Plant::OneSided | Plant::MissingPart(Part::Back) => e.cause.name() == "one-sided",
+            Plant::MissingPart(part) => e.cause == Cause::Missing(Some(part)),
+            Plant::MissingObject => e.cause.name() == "missing-object",
+            Plant::ExtraObject => e.cause.name() == "extra-object",
+            Plant::DifferentScene => e.cause.name() == "different-scene",
+            Plant::Mirror(_) | Plant::ClampAt(_) | Plant::NoDepthLimit => {
+                matches!(e.cause, Cause::Conventions { .. })
+                    && e.cause.name().contains(self.plant.name().as_str())
+            }
+            Plant::Encoding(encoding) => e.cause == Cause::Encoding(encoding),
+        };
+        cause_fits
+            && match &self.site {
+                Site::Everywhere => true,
+                Site::Light(l) => e.light == Some(*l),
+                // The node, a deeper part of it, or the node holding it.
+                Site::Node(path) => {
+                    let n = e.node.len().min(path.len());
+                    n > 0 && e.node[..n] == path[..n]
+                }
+            }
+    }
+}
+
 /// Reads a comma-separated list of bugs, `CAUSE[@LIGHT|@OBJECT]` each, for `scene`
 /// (light indices, object names and tree paths are looked up in it).
 ///
@@ -381,6 +427,14 @@ pub fn plant(
     spp: u32,
     progress: &RenderProgress,
 ) -> Result<OtherImage, CompareError> {
+    if bugs.iter().any(|b| b.plant == Plant::NoDepthLimit) && has_glass(scene) {
+        // Every glass hit splits a ray in two: 2^48 rays a pixel.
+        return Err(CompareError::Scene(
+            "no-depth-limit is not planted in a scene with glass: its ray trees would grow \
+             as 2^depth"
+                .to_owned(),
+        ));
+    }
     let changed = changed_scene(scene, bugs);
     let world =
         World::with_meshes(&changed, meshes).map_err(|e| CompareError::Scene(e.to_string()))?;
@@ -412,6 +466,15 @@ pub fn plant(
         })
         .unwrap_or_else(|| own_encoding(scene));
     Ok(encoded(&changed, &picture, encoding))
+}
+
+/// Whether any material of `scene` transmits.
+#[must_use]
+pub fn has_glass(scene: &Scene) -> bool {
+    scene
+        .materials
+        .values()
+        .any(|m| m.transmission != DVec3::ZERO)
 }
 
 /// Whether the bug is a channel of the split, added to raylab's picture.
@@ -733,6 +796,9 @@ pub fn gallery_bugs(scene: &Scene) -> Vec<PlantedBug> {
             site: Site::Node(vec![scene.objects.len() - 1]),
         });
     }
+    if !has_glass(scene) {
+        bugs.push(everywhere(Plant::NoDepthLimit));
+    }
     bugs.extend(
         [
             Plant::ExtraObject,
@@ -745,7 +811,6 @@ pub fn gallery_bugs(scene: &Scene) -> Vec<PlantedBug> {
                 ClampConvention::Pixel => ClampConvention::EachRay,
                 ClampConvention::EachRay => ClampConvention::Pixel,
             }),
-            Plant::NoDepthLimit,
             Plant::Encoding(match scene.render.conventions.quantise {
                 Quantise::Round => Encoding::LinearTruncate,
                 Quantise::Truncate => Encoding::LinearRound,
