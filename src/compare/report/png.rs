@@ -6,8 +6,8 @@ use std::path::Path;
 
 use plotters::prelude::*;
 
-use super::explanation::Explanation;
-use super::report::Comparison;
+use super::comparison::Comparison;
+use crate::compare::verdict::Explanation;
 
 /// Panels are scaled to about this width.
 const PANEL_WIDTH: f64 = 360.0;
