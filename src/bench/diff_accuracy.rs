@@ -14,10 +14,11 @@ use std::ops::Range;
 
 use serde::Serialize;
 
-use crate::compare::bugs::{ClampBug, NormalBug, Part, SpecularBug};
 use crate::compare::plant::{Plant, PlantedBug, Site, plant};
-use crate::compare::spot_bugs::SpotBug;
-use crate::compare::{CompareOptions, Encoding, Explanation, OtherImage, compare_with_meshes};
+use crate::compare::{
+    ClampBug, CompareOptions, Encoding, Explanation, NormalBug, OtherImage, Part, SpecularBug,
+    SpotBug, compare_with_meshes,
+};
 use crate::scene::{ClampConvention, Light, MirrorConvention, Scene};
 use crate::trace::{MeshStore, RenderProgress, Term};
 

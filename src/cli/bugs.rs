@@ -7,8 +7,8 @@ use std::path::{Path, PathBuf};
 use clap::Args;
 
 use crate::compare::OtherImage;
-use crate::compare::gallery::{GalleryPicture, gallery, gallery_scene};
-use crate::compare::panel_grid::{Panel, panel_grid_png};
+use crate::compare::plant::{GalleryPicture, gallery, gallery_scene};
+use crate::compare::report::{Panel, panel_grid_png};
 use crate::scene::{MAX_IMAGE_SIDE, write_atomically};
 use crate::trace::RenderProgress;
 

@@ -4,9 +4,9 @@
 
 use serde::Serialize;
 
-use super::encoding::Encoding;
-use super::explanation::{Cause, Explanation};
-use super::other_image::OtherImage;
+use crate::compare::fit::Encoding;
+use crate::compare::other_image::OtherImage;
+use crate::compare::verdict::{Cause, Explanation};
 use crate::trace::Image;
 use crate::trace::encode_linear;
 

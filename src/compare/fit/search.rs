@@ -10,11 +10,18 @@
 
 use rayon::prelude::*;
 
-use super::channels::{Family, Kind};
-use super::components::Components;
 use super::groups::{Group, Groups};
 use super::rivals::{alike, margin, prefer_specific};
 use super::target::{FitState, Target};
+use crate::compare::catalogue::{Family, Kind};
+use crate::compare::split::Components;
+
+/// A step must lower the error by at least this share of the whole difference...
+pub const MIN_STEP_SHARE: f64 = 0.005;
+
+/// ...and by at least this much: four channels a full 8-bit level outside their bytes.
+/// A difference smaller than this is no difference.
+pub const MIN_ERROR: f64 = 4.0 / (255.0 * 255.0);
 
 /// Rounds of the search at most.
 pub const MAX_STEPS: usize = 16;
@@ -263,7 +270,7 @@ pub fn search(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::compare::bugs::NormalBug;
+    use crate::compare::catalogue::NormalBug;
 
     fn group(family: Family) -> Group {
         Group::of_one_channel(family)

@@ -1,9 +1,9 @@
 //! The bug gallery: raylab's picture of a scene and the same scene under each bug of the
-//! catalogue that shows in it ([`super::plant::gallery_bugs`]), for `raylab bugs` and the
+//! catalogue that shows in it ([`super::gallery_bugs`]), for `raylab bugs` and the
 //! editor's Bug gallery window.
 
-use super::other_image::OtherImage;
-use super::plant::{PlantedBug, gallery_bugs, plant, plant_each};
+use super::models::{PlantedBug, gallery_bugs, plant, plant_each};
+use crate::compare::other_image::OtherImage;
 use crate::scene::{MAX_IMAGE_SIDE, Scene};
 use crate::trace::{MeshStore, RenderProgress};
 

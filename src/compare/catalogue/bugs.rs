@@ -9,7 +9,7 @@ use glam::DVec3;
 use crate::scene::Material;
 use crate::trace::SurfacePoint;
 use crate::trace::shapes::Primitive;
-pub use crate::trace::{LocalLight, phong_power};
+use crate::trace::{LocalLight, phong_power};
 use crate::trace::{World, WorldObject};
 
 /// A wrong shading normal.
@@ -269,7 +269,7 @@ impl Part {
     /// The parts of leaf `leaf` of `world`'s trees: a world object's own shape's; an
     /// operand of a CSG object is missing whole.
     #[must_use]
-    pub fn of_leaf(world: &World, leaf: &crate::compare::nodes::Leaf) -> &'static [Part] {
+    pub fn of_leaf(world: &World, leaf: &super::nodes::Leaf) -> &'static [Part] {
         let object = &world.objects[leaf.world_object];
         if object.csg.is_some() {
             &[Part::Whole]

@@ -1,6 +1,6 @@
 //! Planting bugs: raylab's picture of a scene as a tracer with some of the catalogue's
 //! bugs would make it. The pictures come from the same models the diff fits: a bug that
-//! is a channel of the split ([`super::components`]) is added at weight 1 (a term factor
+//! is a channel of the split ([`crate::compare::split`]) is added at weight 1 (a term factor
 //! scales its term), a convention or depth limit renders the scene under it, an encoding
 //! writes the bytes its way, and the scene-level causes change the scene (an extra ball,
 //! a moved camera). Several bugs at once add their changes, as the fit assumes.
@@ -15,16 +15,12 @@ use std::fmt;
 
 use glam::DVec3;
 
-use super::bugs::{ClampBug, NormalBug, Part, SpecularBug};
-use super::channels::Kind;
-use super::components::{Components, render_components};
-use super::conventions_fit::NO_LIMIT_DEPTH;
-use super::encoding::Encoding;
-use super::error::CompareError;
-use super::explanation::{Cause, ExplainedTerm, Explanation};
-use super::missing_nodes::Slot;
-use super::other_image::OtherImage;
-use super::spot_bugs::SpotBug;
+use crate::compare::catalogue::{ClampBug, Kind, NormalBug, Part, Slot, SpecularBug, SpotBug};
+use crate::compare::error::CompareError;
+use crate::compare::fit::{Encoding, NO_LIMIT_DEPTH};
+use crate::compare::other_image::OtherImage;
+use crate::compare::split::{Components, render_components};
+use crate::compare::verdict::{Cause, ExplainedTerm, Explanation};
 use crate::scene::{
     ClampConvention, Light, MirrorConvention, Object, Quantise, Scene, Shape, Transform, Trs,
 };
@@ -299,7 +295,7 @@ impl PlantedBug {
             }
             Plant::LightOff => {
                 e.cause == Cause::Factor
-                    && matches!(e.term, ExplainedTerm::Diffuse | ExplainedTerm::Specular)
+                    && matches!(e.term, ExplainedTerm::Term(Term::Diffuse | Term::Specular))
                     && e.factor < 0.5
             }
             Plant::Normal(b) => e.cause == Cause::Normal(b),

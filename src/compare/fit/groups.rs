@@ -8,13 +8,13 @@ use std::ops::Range;
 
 use rayon::prelude::*;
 
-use super::bugs::{ClampBug, NormalBug, Part, SpecularBug};
-use super::channels::{ChannelSpace, Family, Kind};
-use super::components::Components;
-use super::missing_nodes::{Slot, TriedNode};
-use super::nodes::Nodes;
-use super::spot_bugs::SpotBug;
 use super::target::{FitState, Target};
+use crate::compare::catalogue::Nodes;
+use crate::compare::catalogue::SpotBug;
+use crate::compare::catalogue::{ChannelSpace, Family, Kind};
+use crate::compare::catalogue::{ClampBug, NormalBug, Part, SpecularBug};
+use crate::compare::catalogue::{Slot, TriedNode};
+use crate::compare::split::Components;
 
 /// A set of channels scaled by one number.
 #[derive(Clone, Debug, PartialEq)]

@@ -1,11 +1,12 @@
 //! The sentence of each explanation: what its numbers say, for a reader.
 
-use super::bugs::Part;
-use super::encoding::Encoding;
 use super::explanation::{Cause, ExplainedTerm, Explanation};
-use super::shape_guess::ShapeGuess;
+use crate::compare::catalogue::Part;
+use crate::compare::extras::ShapeGuess;
+use crate::compare::fit::Encoding;
 use crate::scene::tree_path::object_at;
 use crate::scene::{ClampConvention, CsgOp, Light, MirrorConvention, Quantise, Scene, Shape};
+use crate::trace::Term;
 
 fn light_name(scene: &Scene, light: usize) -> String {
     let kind = scene.lights.get(light).map_or("?", Light::kind_name);
@@ -25,7 +26,7 @@ pub fn summary(e: &Explanation, scene: &Scene) -> String {
     let weight = 1.0 - f;
     let term = e.term.name();
     match e.cause {
-        Cause::Factor if e.term == ExplainedTerm::Shadows => {
+        Cause::Factor if e.term == ExplainedTerm::Term(Term::Shadows) => {
             let whose = light.map_or("Shadows".to_owned(), |l| format!("Shadows of {l}"));
             if f < 0.1 {
                 format!(
@@ -104,7 +105,7 @@ pub fn summary(e: &Explanation, scene: &Scene) -> String {
                 ),
             }
         }
-        Cause::ExtraObject(shape) => extra_object(e, shape, &[], scene),
+        Cause::ExtraObject(shape) => extra_object_summary(e, shape, &[], scene),
         Cause::Conventions {
             depth: Some(depth), ..
         } => format!(
@@ -178,7 +179,7 @@ fn is_cut(scene: &Scene, path: &[usize]) -> bool {
 /// The sentence of an extra object: where, over what raylab sees there (`behind`:
 /// scene objects, `None` the background), and what it looks like.
 #[must_use]
-pub fn extra_object(
+pub fn extra_object_summary(
     e: &Explanation,
     shape: ShapeGuess,
     behind: &[Option<usize>],

@@ -3,32 +3,21 @@
 
 use serde::Serialize;
 
-use super::bugs::{ClampBug, NormalBug, Part, SpecularBug};
-use super::encoding::Encoding;
-use super::nodes::{Node, Nodes};
-use super::regions::PixelBox;
-use super::shape_guess::ShapeGuess;
-use super::spot_bugs::SpotBug;
+use crate::compare::catalogue::SpotBug;
+use crate::compare::catalogue::{ClampBug, NormalBug, Part, SpecularBug};
+use crate::compare::catalogue::{Node, Nodes};
+use crate::compare::extras::PixelBox;
+use crate::compare::extras::ShapeGuess;
+use crate::compare::fit::Encoding;
 use crate::scene::Conventions;
+use crate::trace::Term;
 
-pub use super::summary::summary;
-
-/// The term an explanation names.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
-#[serde(rename_all = "lowercase")]
+/// The term an explanation names: one of the lighting model's, or what lies outside it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum ExplainedTerm {
-    /// `ka * ambient`.
-    Ambient,
-    /// A light's diffuse term.
-    Diffuse,
-    /// A light's specular term.
-    Specular,
-    /// Shadowing of a light.
-    Shadows,
-    /// The mirror term.
-    Reflection,
-    /// The transmission (refraction) term.
-    Transmission,
+    /// A term of the lighting model (ambient, a light's diffuse or specular, shadows,
+    /// reflection, transmission).
+    Term(Term),
     /// Which surface a pixel sees.
     Geometry,
     /// The colour of rays that hit nothing.
@@ -46,18 +35,20 @@ impl ExplainedTerm {
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {
-            ExplainedTerm::Ambient => "ambient",
-            ExplainedTerm::Diffuse => "diffuse",
-            ExplainedTerm::Specular => "specular",
-            ExplainedTerm::Shadows => "shadows",
-            ExplainedTerm::Reflection => "reflection",
-            ExplainedTerm::Transmission => "transmission",
+            ExplainedTerm::Term(term) => term.name(),
             ExplainedTerm::Geometry => "geometry",
             ExplainedTerm::Background => "background",
             ExplainedTerm::Encoding => "encoding",
             ExplainedTerm::Conventions => "conventions",
             ExplainedTerm::Scene => "scene",
         }
+    }
+}
+
+/// As its [`ExplainedTerm::name`].
+impl Serialize for ExplainedTerm {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_str(self.name())
     }
 }
 
@@ -123,7 +114,7 @@ impl Cause {
             Cause::Encoding(e) => e.name(),
             Cause::Conventions { depth: Some(_), .. } => "no-depth-limit",
             Cause::Conventions { scene, other, .. } => {
-                let names = super::conventions_fit::convention_names(scene, other);
+                let names = crate::compare::fit::convention_names(scene, other);
                 match names.as_slice() {
                     [one] => one,
                     ["mirror-blend", "clamp-each-ray"] => "mirror-blend-clamp-each-ray",

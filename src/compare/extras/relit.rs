@@ -16,9 +16,10 @@
 
 use glam::{DMat3, DVec3};
 
-use super::channels::Kind;
-use super::components::{Components, MISS};
-use super::target::Target;
+use crate::compare::catalogue::Kind;
+use crate::compare::catalogue::MISS;
+use crate::compare::fit::Target;
+use crate::compare::split::Components;
 use crate::scene::Material;
 use crate::trace::World;
 

@@ -8,8 +8,8 @@
 //! a depth limit is tried the same way: raylab's picture with rays bouncing to
 //! [`NO_LIMIT_DEPTH`] (`no-depth-limit`; in scenes with mirrors and no glass).
 
+use super::search::{MIN_ERROR, MIN_STEP_SHARE};
 use super::target::{FitState, Target};
-use super::{MIN_ERROR, MIN_STEP_SHARE};
 use crate::scene::{ClampConvention, Conventions, MirrorConvention, Scene};
 use crate::trace::{MeshStore, RenderOptions, RenderProgress, World, render};
 

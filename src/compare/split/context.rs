@@ -1,16 +1,11 @@
-//! What the recorder ([`super::recorder`]) needs to know about the world, prepared once
+//! What the recorder ([`super::recorder::SampleRecorder`]) needs to know about the world, prepared once
 //! per comparison: the channel numbering, where each scene light is among the world's,
 //! and the changed worlds it traces again (without a tree node, with a spot light's
 //! cone bug).
 
-use super::channels::ChannelSpace;
-use super::missing_nodes::MissingNodes;
-use super::nodes::Nodes;
-use super::spot_bugs::SpotWorld;
+use crate::compare::catalogue::{ChannelSpace, MissingNodes, Nodes, SpotWorld};
 use crate::scene::Material;
-use glam::DVec3;
-
-use crate::trace::{NoRecorder, Ray, RayCounts, TermSwitches, Tracer, View, World};
+use crate::trace::World;
 
 /// What the recorder needs to know about the world, prepared once.
 pub struct Context<'w> {
@@ -63,12 +58,4 @@ impl<'w> Context<'w> {
     pub(super) fn material(&self, object: usize) -> &'w Material {
         &self.world.materials[self.world.objects[object].material]
     }
-}
-
-/// The colour a camera ray `ray` brings back in `world` (one of the changed worlds), as
-/// raylab's picture of it would show.
-#[must_use]
-pub fn trace_again(world: &World, ray: &Ray) -> DVec3 {
-    let tracer = Tracer::new(world, TermSwitches::ALL_ON, View::Beauty);
-    tracer.trace_primary(ray, &mut RayCounts::default(), &mut NoRecorder)
 }

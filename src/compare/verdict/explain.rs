@@ -3,15 +3,15 @@
 //! which runs again without their pixels), the verdicts, what is left localised, and
 //! whether the picture is of another scene.
 
-use super::bugs::Part;
-use super::components::Components;
+use super::different_scene::different_scene;
 use super::explanation::{Cause, ExplainedTerm, Explanation};
-use super::extra_object::{self, ExtraObject};
-use super::groups::Groups;
-use super::relit::Palette;
-use super::summary;
-use super::target::{FitState, Target};
-use super::{different_scene, extra_shadow, localise, search, verdicts};
+use super::localise::localise;
+use super::summary::{extra_object_summary, summary};
+use super::verdicts::explain_steps;
+use crate::compare::catalogue::Part;
+use crate::compare::extras::{ExtraObject, Palette, confirm_shadows, find_extra_objects};
+use crate::compare::fit::{FitState, Groups, Target, search};
+use crate::compare::split::Components;
 use crate::scene::Scene;
 use crate::trace::World;
 
@@ -42,9 +42,9 @@ pub fn explain(
         .collect();
     let groups = Groups::new(components.space, nodes, &components.tried, &parts);
     let mut state = start.clone();
-    let mut steps = search::search(components, &groups, target, &mut state, floor);
+    let mut steps = search(components, &groups, target, &mut state, floor);
     let palette = Palette::new(world, scene.objects.len());
-    let mut extras = extra_object::find(components, &palette, target, &state);
+    let mut extras = find_extra_objects(components, &palette, target, &state);
     // Their pixels out of the fit, which runs again: no factor of what lies behind them
     // bends to them. Then their shadows, against the model fitted without them (which
     // holds any second bug).
@@ -55,8 +55,8 @@ pub fn explain(
         };
         let without = target.without(&claimed(&extras));
         let mut refit = FitState::new(start.model.clone(), &without);
-        steps = search::search(components, &groups, &without, &mut refit, floor);
-        extra_shadow::confirm_shadows(&mut extras, components, &palette, target, &refit.model);
+        steps = search(components, &groups, &without, &mut refit, floor);
+        confirm_shadows(&mut extras, components, &palette, target, &refit.model);
         let without = target.without(&claimed(&extras));
         state = FitState::new(refit.model, &without);
         masked = Some(without);
@@ -66,16 +66,16 @@ pub fn explain(
         .iter()
         .map(|extra| extra_verdict(extra, start, scene, total))
         .collect();
-    explanations.extend(verdicts::explain_steps(
+    explanations.extend(explain_steps(
         &steps, &groups, components, scene, world, total,
     ));
-    let localised = localise::localise(components, target, &state, scene, total);
+    let localised = localise(components, target, &state, scene, total);
     let localised_share: f64 = localised.iter().map(|e| e.share).sum();
     explanations.extend(localised);
     explanations.sort_by(|a, b| b.share.total_cmp(&a.share));
     let unexplained_share = (state.total / total - localised_share).max(0.0);
-    if let Some(mut verdict) = different_scene::different_scene(&explanations, unexplained_share) {
-        verdict.summary = summary::summary(&verdict, scene);
+    if let Some(mut verdict) = different_scene(&explanations, unexplained_share) {
+        verdict.summary = summary(&verdict, scene);
         explanations.insert(0, verdict);
     }
     Explained {
@@ -103,6 +103,6 @@ fn extra_verdict(extra: &ExtraObject, start: &FitState, scene: &Scene, total: f6
         fits_as_well: Vec::new(),
         summary: String::new(),
     };
-    e.summary = summary::extra_object(&e, extra.shape, &extra.behind, scene);
+    e.summary = extra_object_summary(&e, extra.shape, &extra.behind, scene);
     e
 }

@@ -9,18 +9,19 @@
 //! ```
 //!
 //! where `margin` is how much better the step explains the difference than its best
-//! competitor ([`super::search::Step::margin`]: 1 when nothing else explains those
+//! competitor ([`crate::compare::fit::Step::margin`]: 1 when nothing else explains those
 //! pixels, 0 when a competitor explains them as well).
 
-use super::bugs::Part;
-use super::channels::Family;
-use super::components::Components;
-use super::explanation::{Cause, ExplainedTerm, Explanation, summary};
-use super::groups::{Group, Groups};
-use super::regions::PixelBox;
-use super::search::Step;
+use super::explanation::{Cause, ExplainedTerm, Explanation};
+use super::summary::summary;
+use crate::compare::catalogue::Family;
+use crate::compare::catalogue::Part;
+use crate::compare::extras::PixelBox;
+use crate::compare::fit::Step;
+use crate::compare::fit::{Group, Groups};
+use crate::compare::split::Components;
 use crate::scene::Scene;
-use crate::trace::World;
+use crate::trace::{Term, World};
 
 /// The share of a change on one node above which the node is named.
 const NAMED: f64 = 0.995;
@@ -41,25 +42,25 @@ fn drawn_box(components: &Components, node: usize, pixels: &[u32]) -> Option<Pix
 /// its specular share.
 fn term_and_cause(family: Family, split: [f64; 2], part: Option<Part>) -> (ExplainedTerm, Cause) {
     match family {
-        Family::Ambient => (ExplainedTerm::Ambient, Cause::Factor),
-        Family::Reflection => (ExplainedTerm::Reflection, Cause::Factor),
-        Family::Transmission => (ExplainedTerm::Transmission, Cause::Factor),
-        Family::Diffuse => (ExplainedTerm::Diffuse, Cause::Factor),
-        Family::Specular => (ExplainedTerm::Specular, Cause::Factor),
-        Family::Shadow => (ExplainedTerm::Shadows, Cause::Factor),
+        Family::Ambient => (ExplainedTerm::Term(Term::Ambient), Cause::Factor),
+        Family::Reflection => (ExplainedTerm::Term(Term::Reflection), Cause::Factor),
+        Family::Transmission => (ExplainedTerm::Term(Term::Transmission), Cause::Factor),
+        Family::Diffuse => (ExplainedTerm::Term(Term::Diffuse), Cause::Factor),
+        Family::Specular => (ExplainedTerm::Term(Term::Specular), Cause::Factor),
+        Family::Shadow => (ExplainedTerm::Term(Term::Shadows), Cause::Factor),
         Family::Background => (ExplainedTerm::Background, Cause::Factor),
         Family::Normal(bug) => {
             let term = if split[1] > split[0] {
-                ExplainedTerm::Specular
+                ExplainedTerm::Term(Term::Specular)
             } else {
-                ExplainedTerm::Diffuse
+                ExplainedTerm::Term(Term::Diffuse)
             };
             (term, Cause::Normal(bug))
         }
-        Family::Highlight(bug) => (ExplainedTerm::Specular, Cause::Highlight(bug)),
-        Family::Clamp(bug) => (ExplainedTerm::Reflection, Cause::Clamp(bug)),
+        Family::Highlight(bug) => (ExplainedTerm::Term(Term::Specular), Cause::Highlight(bug)),
+        Family::Clamp(bug) => (ExplainedTerm::Term(Term::Reflection), Cause::Clamp(bug)),
         Family::Missing => (ExplainedTerm::Geometry, Cause::Missing(part)),
-        Family::Spot(bug) => (ExplainedTerm::Diffuse, Cause::Spot(bug)),
+        Family::Spot(bug) => (ExplainedTerm::Term(Term::Diffuse), Cause::Spot(bug)),
     }
 }
 
@@ -137,7 +138,8 @@ pub fn explain_steps(
     out.into_iter()
         .map(|(mut e, coefficient, node)| {
             // Terms scale from 1; shadows and bugs add a picture whose weight is 1 - factor.
-            let factor = if e.cause == Cause::Factor && e.term != ExplainedTerm::Shadows {
+            let factor = if e.cause == Cause::Factor && e.term != ExplainedTerm::Term(Term::Shadows)
+            {
                 1.0 + coefficient
             } else {
                 1.0 - coefficient

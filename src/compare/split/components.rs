@@ -10,21 +10,14 @@ use std::sync::atomic::Ordering;
 use glam::{DVec2, DVec3};
 use rayon::prelude::*;
 
-use super::channels::ChannelSpace;
-use super::missing_nodes::{MissingNodes, TriedNode};
-use super::nodes::Nodes;
-use super::record_context::Context;
+use super::context::Context;
 use super::recorder::{SampleRecorder, Tally};
+use crate::compare::catalogue::{ChannelSpace, MISS, MissingNodes, Nodes, TriedNode, spot_worlds};
 use crate::scene::Scene;
 use crate::trace::sample_in_pixel;
 use crate::trace::{
     Image, PinholeCamera, RayCounts, RenderProgress, TermSwitches, Tracer, View, World,
 };
-
-pub use super::missing_nodes::MAX_MISSING_OBJECTS;
-
-/// Label of a pixel whose first sample hit nothing.
-pub const MISS: u32 = u32::MAX;
 
 /// One channel's colour at one pixel.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -126,7 +119,7 @@ pub fn render_components(
     let nodes = Nodes::new(scene, world);
     let missing = MissingNodes::new(scene, world, &nodes);
     let tried = missing.tried_nodes();
-    let spot = super::spot_bugs::spot_worlds(scene, world);
+    let spot = spot_worlds(scene, world);
     let ctx = Context::new(world, scene.lights.len(), &nodes, missing, spot);
     let space = ctx.space;
     let camera = PinholeCamera::new(&world.camera, width, height);

@@ -12,6 +12,9 @@ use crate::scene::tree_path::{object_at, path_name};
 use crate::scene::{CsgOp, Scene, Shape};
 use crate::trace::World;
 
+/// Label of a pixel (or a ray) that meets no leaf: its first sample hit nothing.
+pub const MISS: u32 = u32::MAX;
+
 /// Where a node sits in its parent, which says what taking it out does.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Place {

@@ -1,11 +1,11 @@
 //! REPORT.png: raylab's picture, the other one, the difference heatmap and the pixels
-//! of the top explanations, each panel labelled ([`super::panel_grid`]).
+//! of the top explanations, each panel labelled ([`super::panel_grid_png`]).
 
 use std::path::Path;
 
-use super::explanation::Explanation;
+use super::comparison::Comparison;
 use super::panel_grid::{Panel, panel_grid_png};
-use super::report::Comparison;
+use crate::compare::verdict::Explanation;
 
 /// Panels are scaled to about this width.
 const PANEL_WIDTH: f64 = 360.0;

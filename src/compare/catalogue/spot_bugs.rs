@@ -15,7 +15,7 @@
 use glam::DVec3;
 use rayon::prelude::*;
 
-use super::record_context::trace_again;
+use super::retrace::trace_again;
 use crate::scene::{Light, Scene};
 use crate::trace::{Ray, World};
 

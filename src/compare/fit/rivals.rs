@@ -118,7 +118,7 @@ pub(super) fn margin(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::compare::channels::Family;
+    use crate::compare::catalogue::Family;
 
     fn group(family: Family) -> Group {
         Group::of_one_channel(family)

@@ -10,15 +10,14 @@
 //!   across it, labelled with the term whose picture the left-over difference follows
 //!   most (its magnitude-weighted overlap).
 
-use super::channels::Kind;
-use super::components::{Components, MISS};
-use super::explanation::{Cause, ExplainedTerm, Explanation, summary};
-use super::target::{FitState, Target};
+use super::explanation::{Cause, ExplainedTerm, Explanation};
+use super::summary::summary;
+use crate::compare::catalogue::Kind;
+use crate::compare::catalogue::MISS;
+use crate::compare::fit::{FitState, OFF_LEVELS, Target};
+use crate::compare::split::Components;
 use crate::scene::Scene;
-
-/// A pixel counts as still different when some channel is this many 8-bit levels outside
-/// what its byte stands for.
-pub const OFF_LEVELS: f64 = 2.0;
+use crate::trace::Term;
 
 /// Pixels this close to an outline count as geometry.
 pub const OUTLINE_REACH: i64 = 2;
@@ -262,11 +261,11 @@ pub fn localise(
             .max_by(|&a, &b| terms[a].total_cmp(&terms[b]))
             .unwrap_or(1);
         let term = [
-            ExplainedTerm::Ambient,
-            ExplainedTerm::Diffuse,
-            ExplainedTerm::Specular,
-            ExplainedTerm::Reflection,
-            ExplainedTerm::Transmission,
+            ExplainedTerm::Term(Term::Ambient),
+            ExplainedTerm::Term(Term::Diffuse),
+            ExplainedTerm::Term(Term::Specular),
+            ExplainedTerm::Term(Term::Reflection),
+            ExplainedTerm::Term(Term::Transmission),
         ][best];
         emit(pile, term, Cause::Shading, SHADING_CONFIDENCE);
     }

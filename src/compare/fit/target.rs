@@ -7,13 +7,15 @@
 //! bytes, so rounding is never a difference.
 
 use super::encoding::{Encoding, distance_outside};
-use super::other_image::OtherImage;
+use crate::compare::other_image::OtherImage;
+
+/// A pixel counts as still different when some channel is this many 8-bit levels outside
+/// what its byte stands for.
+pub const OFF_LEVELS: f64 = 2.0;
 
 /// The other picture decoded with one encoding.
 #[derive(Clone, Debug)]
 pub struct Target {
-    /// The encoding used.
-    pub encoding: Encoding,
     /// Per pixel and channel, the interval of linear values the byte stands for.
     pub intervals: Vec<[(f64, f64); 3]>,
     /// Per pixel and channel, the value the linear fit aims at (the interval's middle).
@@ -45,7 +47,6 @@ impl Target {
             .map(|p| p.map(|k| if k == 255 { 0.0 } else { 1.0 }))
             .collect();
         Self {
-            encoding,
             intervals,
             middle,
             weight,

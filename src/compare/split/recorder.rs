@@ -2,25 +2,29 @@
 //! own shading code (through [`Recorder`]), so every number is the one the picture
 //! used; what the tracer does not report (the light a shadow took away, the terms under
 //! each known bug) is computed here from the same inputs, and what a changed spot light
-//! would show is traced again ([`super::spot_bugs`]).
+//! would show is traced again (the catalogue's spot bugs).
 //!
 //! A mirror bounce at depth d is weighted by the product of the mirror colours before it
 //! (`throughput`), so a term seen in a mirror lands in the channel of the object it lies
 //! on, scaled as the pixel sees it.
+//!
+//! For the tree nodes that might be missing, each ray is traced again in the world
+//! without each tried node it may show (the nodes on the way down to the leaf it hit,
+//! and nodes inside CSG objects whose solid it passes: a cut filled), and the light a
+//! node's shadows take away where no other object blocks it is the shadow ray cast
+//! again without it.
 
 use glam::DVec3;
 
-use super::bugs::{ClampBug, LocalLight, NormalBug, SpecularBug, local_terms};
-use super::channels::Kind;
-use super::components::MISS;
-mod missing;
-
-use super::record_context::Context;
-use super::spot_bugs::{SpotBug, cone_changes, no_falloff_change};
+use super::context::Context;
+use crate::compare::catalogue::{
+    ClampBug, Kind, MISS, NormalBug, Part, Slot, SpecularBug, SpotBug, cone_changes, local_terms,
+    no_falloff_change, trace_again,
+};
 use crate::trace::shapes::Primitive;
 use crate::trace::{
-    Branch, LightRecord, LightSample, Ray, Recorder, SurfacePoint, WorldLight, spawn_ray,
-    spawn_ray_to,
+    Branch, LightRecord, LightSample, LocalLight, Ray, Recorder, SurfacePoint, WorldLight,
+    spawn_ray, spawn_ray_to,
 };
 
 /// Per-channel colour sums of one sample or one pixel: a short list, channels unique.
@@ -394,5 +398,117 @@ impl Recorder for SampleRecorder<'_, '_> {
             }
         }
         self.missing(&bounce, colour, d == 0);
+    }
+}
+
+impl SampleRecorder<'_, '_> {
+    /// What the ray of `bounce` would return without each tried node it may show (traced
+    /// again in the world without it), as changes of the pixel; for the camera ray
+    /// (`primary`), also the scene object it would meet without the one it hit
+    /// ([`Self::behind`]).
+    fn missing(&mut self, bounce: &Bounce, colour: DVec3, primary: bool) {
+        let ctx = self.ctx;
+        let missing = &ctx.missing;
+        let chain: &[usize] = bounce.leaf.map_or(&[], |leaf| &missing.on_chain[leaf]);
+        let t_hit = bounce.hit.map_or(f64::INFINITY, |h| h.t);
+        let near = missing
+            .in_csg
+            .iter()
+            .copied()
+            .filter(|t| !chain.contains(t) && missing.may_change(*t, &bounce.ray, t_hit));
+        for t in chain.iter().copied().chain(near) {
+            let tried = &missing.tried[t];
+            if primary
+                && let Some(hit) = bounce.hit
+                && ctx.nodes.nodes[tried.tried.node].depth() == 0
+                && chain.contains(&t)
+            {
+                // The world without scene object o numbers the later objects one less.
+                let removed = hit.object;
+                self.behind = tried
+                    .world
+                    .intersect(&bounce.ray, f64::INFINITY)
+                    .map_or(MISS, |h| {
+                        let s = tried.world.scene_object(h.object);
+                        (if s >= removed { s + 1 } else { s }) as u32
+                    });
+            }
+            let seen = trace_again(&tried.world, &bounce.ray);
+            if !seen.is_finite() {
+                continue;
+            }
+            let channel = match tried.tried.slot {
+                Slot::Leaf(leaf) => {
+                    let part = self.part_hit(bounce, leaf);
+                    self.channel(Kind::Missing(part), leaf)
+                }
+                Slot::Inner(slot) => ctx.space.id(Kind::NodeMissing, Some(slot)),
+            };
+            self.tally.add(channel, bounce.throughput * (seen - colour));
+        }
+    }
+
+    /// The part of leaf `leaf` the ray of `bounce` hit: a world object of its own has
+    /// parts (a plane's back, a cylinder's caps); an operand of a CSG object, or a leaf
+    /// the ray did not hit, is whole.
+    fn part_hit(&self, bounce: &Bounce, leaf: usize) -> Part {
+        match (bounce.hit, bounce.world_object) {
+            (Some(hit), Some(world_object))
+                if bounce.leaf == Some(leaf)
+                    && self.ctx.world.objects[world_object].csg.is_none() =>
+            {
+                Part::at(&self.ctx.world.objects[world_object], &hit, bounce.ray_dir)
+            }
+            _ => Part::Whole,
+        }
+    }
+
+    /// Where a node's shadow hides a light from the point `hit` (of world object
+    /// `world_object`, leaf `leaf`), the light `unshadowed` it would add were that node
+    /// missing: when the shadow ray, cast again in the world without it, is clear.
+    fn shadow_cast(
+        &mut self,
+        record: &LightRecord,
+        (hit, world_object, leaf): (&SurfacePoint, usize, usize),
+        sample: &LightSample,
+        unshadowed: DVec3,
+    ) {
+        let (Some(blocker), Some(shadow)) = (record.blocked_by, record.shadow_ray) else {
+            return;
+        };
+        let ctx = self.ctx;
+        // The shader's rule: a ray leaving a convex solid or a plane outward cannot meet
+        // the surface it starts on.
+        let object = &ctx.world.objects[world_object];
+        let leaves_outward = !object.can_meet_itself()
+            && (object.shape == Primitive::Plane || hit.n_outward.dot(sample.to_light) > 0.0);
+        for &t in &ctx.missing.of_object[blocker] {
+            let tried = &ctx.missing.tried[t];
+            let node = &ctx.nodes.nodes[tried.tried.node];
+            // A node shadowing itself: its own pixels are its missing picture already.
+            // A cut filled only adds solid: it clears no shadow. Below the top level,
+            // only a shadow ray through the node's box can clear without it.
+            if node.leaves.contains(&leaf)
+                || !tried.shrinks
+                || (node.depth() > 0 && !ctx.missing.may_change(t, &shadow.ray, shadow.t_max))
+            {
+                continue;
+            }
+            let except = ctx
+                .missing
+                .index_without(t, world_object)
+                .filter(|_| leaves_outward);
+            if tried
+                .world
+                .occluder_except(&shadow.ray, shadow.t_max, except)
+                .is_none()
+            {
+                let channel = match tried.tried.slot {
+                    Slot::Leaf(leaf) => self.channel(Kind::ShadowCast, leaf),
+                    Slot::Inner(slot) => ctx.space.id(Kind::NodeShadowCast, Some(slot)),
+                };
+                self.tally.add(channel, unshadowed);
+            }
+        }
     }
 }
