@@ -16,8 +16,8 @@ use serde::Serialize;
 
 use crate::compare::plant::{Plant, PlantedBug, Site, plant};
 use crate::compare::{
-    ClampBug, CompareOptions, Encoding, Explanation, NormalBug, OtherImage, Part, SpecularBug,
-    SpotBug, compare_with_meshes,
+    ClampBug, CompareOptions, Encoding, Explanation, NormalBug, OtherImage, Part, ShadowBug,
+    SpecularBug, SpotBug, compare_with_meshes,
 };
 use crate::scene::{ClampConvention, Light, MirrorConvention, Scene};
 use crate::trace::{MeshStore, RenderProgress, Term};
@@ -217,6 +217,9 @@ pub fn candidate_bugs(scene: &Scene, rng: &mut fastrand::Rng) -> Vec<PlantedBug>
     }
     for b in ClampBug::ALL {
         add(Plant::Clamp(b), Site::Everywhere);
+    }
+    for b in ShadowBug::ALL {
+        add(Plant::ShadowTest(b), object_site(rng));
     }
     if !spots.is_empty() {
         for b in SpotBug::ALL {

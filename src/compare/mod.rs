@@ -30,7 +30,7 @@ pub mod report;
 mod split;
 mod verdict;
 
-pub use catalogue::{ClampBug, Kind, NormalBug, Part, SpecularBug, SpotBug};
+pub use catalogue::{ClampBug, Kind, NormalBug, Part, ShadowBug, SpecularBug, SpotBug};
 pub use error::CompareError;
 pub use extras::{PixelBox, ShapeGuess};
 pub use fit::{Encoding, MIN_ERROR, MIN_STEP_SHARE};
@@ -139,16 +139,15 @@ fn compare_scene(
         state = decoded;
         target
     };
-    if try_conventions
-        && total >= MIN_ERROR
-        && let Some(better) = better_conventions(scene, meshes, &target, spp, progress)
-    {
-        let found = Found {
-            total,
-            explanations,
-        };
-        return with_conventions(scene, meshes, other, spp, progress, &better, found);
-    }
+    let better = if try_conventions && total >= MIN_ERROR {
+        better_conventions(scene, meshes, &target, spp, progress)
+    } else {
+        None
+    };
+    let found = better.as_ref().map(|_| Found {
+        total,
+        explanations: explanations.clone(),
+    });
     let explained = if total >= MIN_ERROR {
         explain(&components, scene, &world, &target, &state, (total, floor))
     } else {
@@ -169,7 +168,7 @@ fn compare_scene(
 
     let raylab = components.image();
     let raylab_rgb = report::rgb_of(&raylab);
-    Ok(Comparison {
+    let own = Comparison {
         width,
         height,
         samples_per_pixel: spp,
@@ -186,7 +185,37 @@ fn compare_scene(
         object_names: scene.objects.iter().map(|o| o.name.clone()).collect(),
         explanations,
         unexplained_share,
-    })
+    };
+    // The conventions and everything else are chosen together: a convention is the
+    // reading only where, with the rest fitted under it too, it leaves less unexplained
+    // than the scene's own conventions do with their fit (a missing light is a missing
+    // light, whatever mirrors the scene holds).
+    if let (Some(better), Some(found)) = (better, found) {
+        let adopted = with_conventions(scene, meshes, other, spp, progress, &better, found)?;
+        if unexplained_cost(&adopted, floor / total) < unexplained_cost(&own, floor / total) {
+            return Ok(adopted);
+        }
+    }
+    Ok(own)
+}
+
+/// What a reading leaves unexplained, as a share of the whole difference: what no
+/// cause explains (the rest, and the places: silhouettes and shading), plus `per_step`
+/// for each cause it names, so that of two readings leaving the same, the one with
+/// fewer causes wins.
+fn unexplained_cost(comparison: &Comparison, per_step: f64) -> f64 {
+    let places: f64 = comparison
+        .explanations
+        .iter()
+        .filter(|e| matches!(e.cause, Cause::Silhouette | Cause::Shading))
+        .map(|e| e.share)
+        .sum();
+    let causes = comparison
+        .explanations
+        .iter()
+        .filter(|e| !matches!(e.cause, Cause::Silhouette | Cause::Shading))
+        .count();
+    comparison.unexplained_share + places + per_step * causes as f64
 }
 
 /// What the comparison under the scene's conventions found before trying others: the

@@ -231,6 +231,52 @@ impl ClampBug {
     }
 }
 
+/// A wrong shadow test.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ShadowBug {
+    /// The shadow ray skips the object it leaves: no object shadows itself (a hollow
+    /// solid, a torus, a CSG object lit inside).
+    NoSelfShadow,
+    /// The shadow ray starts at the hit point itself, with no offset: it meets the
+    /// surface it leaves at random (speckled self-shadowing, acne).
+    Acne,
+    /// The shadow ray is blocked by any hit along it, even beyond the light.
+    BeyondLight,
+}
+
+impl ShadowBug {
+    /// Every shadow bug.
+    pub const ALL: [ShadowBug; 3] = [
+        ShadowBug::NoSelfShadow,
+        ShadowBug::Acne,
+        ShadowBug::BeyondLight,
+    ];
+
+    /// A short name for reports.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            ShadowBug::NoSelfShadow => "no-self-shadow",
+            ShadowBug::Acne => "shadow-acne",
+            ShadowBug::BeyondLight => "shadow-beyond-light",
+        }
+    }
+
+    /// What the bug is, as the end of a sentence.
+    #[must_use]
+    pub fn describe(self) -> &'static str {
+        match self {
+            ShadowBug::NoSelfShadow => {
+                "its shadow rays skipped the object they left, so it never shadowed itself"
+            }
+            ShadowBug::Acne => {
+                "its shadow rays started on the surface with no offset (shadow acne)"
+            }
+            ShadowBug::BeyondLight => "its shadow rays counted hits beyond the light",
+        }
+    }
+}
+
 /// A part of a shape, which a renderer may fail to hit on its own.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Part {

@@ -5,7 +5,7 @@
 //! inner node tried as missing has two channels of its own. Every channel is a
 //! per-pixel colour; the fit scales them.
 
-use super::bugs::{ClampBug, NormalBug, Part, SpecularBug};
+use super::bugs::{ClampBug, NormalBug, Part, ShadowBug, SpecularBug};
 use super::spot_bugs::SpotBug;
 
 /// What a channel holds. Light indices are positions in the world's list of
@@ -33,6 +33,8 @@ pub enum Kind {
     Highlight(SpecularBug),
     /// The change of a pixel seeing the object under a clamping bug.
     Clamp(ClampBug),
+    /// The change of the object's lit terms under a shadow bug.
+    ShadowTest(ShadowBug),
     /// The change of the pixels where a part of the object is seen, if it were missing.
     Missing(Part),
     /// The change of the pixels seeing the object under a bug of spot light `l`.
@@ -67,6 +69,8 @@ pub enum Family {
     Highlight(SpecularBug),
     /// [`Kind::Clamp`] of one bug.
     Clamp(ClampBug),
+    /// [`Kind::ShadowTest`] of one bug.
+    ShadowTest(ShadowBug),
     /// [`Kind::Missing`], any part, and [`Kind::ShadowCast`].
     Missing,
     /// [`Kind::Spot`] of one bug.
@@ -89,6 +93,7 @@ impl Kind {
             Kind::Normal(b) => Family::Normal(b),
             Kind::Highlight(b) => Family::Highlight(b),
             Kind::Clamp(b) => Family::Clamp(b),
+            Kind::ShadowTest(b) => Family::ShadowTest(b),
             Kind::Missing(_) | Kind::ShadowCast | Kind::NodeMissing | Kind::NodeShadowCast => {
                 Family::Missing
             }
@@ -148,6 +153,7 @@ impl ChannelSpace {
             + ClampBug::ALL.len()
             + Part::ALL.len()
             + SpotBug::ALL.len() * self.lights
+            + ShadowBug::ALL.len()
     }
 
     /// How many channels there are.
@@ -192,6 +198,9 @@ impl ChannelSpace {
             Kind::Clamp(b) => FIXED + 3 * l + nb + sb + b as usize,
             Kind::Missing(p) => FIXED + 3 * l + nb + sb + cb + p as usize,
             Kind::Spot(b, i) => FIXED + 3 * l + nb + sb + cb + Part::ALL.len() + b as usize * l + i,
+            Kind::ShadowTest(b) => {
+                FIXED + 3 * l + nb + sb + cb + Part::ALL.len() + SpotBug::ALL.len() * l + b as usize
+            }
         };
         if let Some(i) = kind.light() {
             assert!(i < l, "light {i} of {l}");
@@ -239,10 +248,14 @@ impl ChannelSpace {
             s if s < FIXED + 3 * l + nb + sb + cb + Part::ALL.len() => {
                 Kind::Missing(Part::ALL[s - FIXED - 3 * l - nb - sb - cb])
             }
-            s => {
+            s if s < FIXED + 3 * l + nb + sb + cb + Part::ALL.len() + SpotBug::ALL.len() * l => {
                 let spot = s - FIXED - 3 * l - nb - sb - cb - Part::ALL.len();
                 Kind::Spot(SpotBug::ALL[spot / l], spot % l)
             }
+            s => Kind::ShadowTest(
+                ShadowBug::ALL
+                    [s - FIXED - 3 * l - nb - sb - cb - Part::ALL.len() - SpotBug::ALL.len() * l],
+            ),
         };
         (kind, Some(object))
     }

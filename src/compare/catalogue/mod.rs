@@ -10,7 +10,7 @@ mod nodes;
 mod retrace;
 mod spot_bugs;
 
-pub use bugs::{ClampBug, NormalBug, Part, SpecularBug, local_terms};
+pub use bugs::{ClampBug, NormalBug, Part, ShadowBug, SpecularBug, local_terms};
 pub use channels::{ChannelSpace, Family, Kind};
 pub use missing_nodes::{MissingNodes, Slot, TriedNode};
 pub use nodes::{MISS, Node, Nodes};

@@ -17,7 +17,9 @@ use rayon::prelude::*;
 
 use super::retrace::trace_again;
 use crate::scene::{Light, Scene};
-use crate::trace::{Ray, World};
+use crate::trace::{
+    Branch, LightRecord, Ray, RayCounts, Recorder, SurfacePoint, TermSwitches, Tracer, View, World,
+};
 
 /// Spot lights beyond this many are not tried (each cone bug needs a world of its own).
 pub const MAX_SPOT_LIGHTS: usize = 8;
@@ -34,15 +36,19 @@ pub enum SpotBug {
     AngleRadians,
     /// The half angle taken as the full angle: a cone half as wide.
     FullAngle,
+    /// No cone and no fall-off together: a point light whose strength is `colour *
+    /// intensity` everywhere (a floor lit white from edge to edge).
+    NoConeNoFalloff,
 }
 
 impl SpotBug {
     /// Every spot bug.
-    pub const ALL: [SpotBug; 4] = [
+    pub const ALL: [SpotBug; 5] = [
         SpotBug::NoCone,
         SpotBug::NoFalloff,
         SpotBug::AngleRadians,
         SpotBug::FullAngle,
+        SpotBug::NoConeNoFalloff,
     ];
 
     /// A short name for reports.
@@ -53,6 +59,7 @@ impl SpotBug {
             SpotBug::NoFalloff => "spot-no-falloff",
             SpotBug::AngleRadians => "spot-angle-radians",
             SpotBug::FullAngle => "spot-full-angle",
+            SpotBug::NoConeNoFalloff => "spot-no-cone-no-falloff",
         }
     }
 
@@ -64,6 +71,9 @@ impl SpotBug {
             SpotBug::NoFalloff => "its strength did not fall off as 1/d^2",
             SpotBug::AngleRadians => "its angle in degrees were used as radians",
             SpotBug::FullAngle => "its half angle were taken as the full angle of the cone",
+            SpotBug::NoConeNoFalloff => {
+                "it had neither cone nor 1/d^2 fall-off: a point light of the same strength everywhere"
+            }
         }
     }
 
@@ -94,7 +104,7 @@ impl SpotBug {
         };
         let changed = match self {
             SpotBug::NoFalloff => return None,
-            SpotBug::NoCone => Light::Point {
+            SpotBug::NoCone | SpotBug::NoConeNoFalloff => Light::Point {
                 position,
                 colour,
                 intensity,
@@ -156,9 +166,76 @@ pub fn cone_changes<'a>(
     colour: DVec3,
 ) -> impl Iterator<Item = (SpotBug, usize, DVec3)> + 'a {
     worlds.iter().filter_map(move |w| {
-        let seen = trace_again(&w.world, ray);
+        let seen = if w.bug == SpotBug::NoConeNoFalloff {
+            without_falloff(&w.world, w.light, ray)
+        } else {
+            trace_again(&w.world, ray)
+        };
         (seen.is_finite() && seen != colour).then_some((w.bug, w.light, seen - colour))
     })
+}
+
+/// The colour `ray` brings back in `world` were light `light` (a point light there)
+/// not to fall off: its terms at each hit times d^2, weighted down the ray's tree as
+/// the mirrors and glass pass them on.
+fn without_falloff(world: &World, light: usize, ray: &Ray) -> DVec3 {
+    let mut falloff = FalloffRecorder {
+        world,
+        light,
+        rays: Vec::new(),
+        change: DVec3::ZERO,
+    };
+    let tracer = Tracer::new(world, TermSwitches::ALL_ON, View::Beauty);
+    let colour = tracer.trace_primary(ray, &mut RayCounts::default(), &mut falloff);
+    colour + falloff.change
+}
+
+/// Adds up what one light's terms would gain without their 1/d^2 fall-off.
+struct FalloffRecorder<'w> {
+    world: &'w World,
+    light: usize,
+    /// Per ray of the tree: the product of km and kt before it, and its hit.
+    rays: Vec<(DVec3, Option<SurfacePoint>, Option<usize>)>,
+    change: DVec3,
+}
+
+impl Recorder for FalloffRecorder<'_> {
+    fn started(&mut self, node: u32, _depth: u32, from: Option<(u32, Branch)>) {
+        let node = node as usize;
+        self.rays.truncate(node);
+        let weight = from.map_or(DVec3::ONE, |(parent, branch)| {
+            let (before, _, object) = self.rays[parent as usize];
+            object.map_or(DVec3::ZERO, |o| {
+                let material = &self.world.materials[self.world.objects[o].material];
+                let k = if branch.is_transmitted() {
+                    material.transmission
+                } else {
+                    material.mirror
+                };
+                before * k
+            })
+        });
+        self.rays.push((weight, None, None));
+    }
+
+    fn hit(&mut self, node: u32, ray: &Ray, hit: &SurfacePoint) {
+        let entry = &mut self.rays[node as usize];
+        entry.1 = Some(*hit);
+        entry.2 = self.world.world_object_of_hit(ray, hit);
+    }
+
+    fn light(&mut self, node: u32, record: &LightRecord) {
+        let (weight, Some(hit), _) = self.rays[node as usize] else {
+            return;
+        };
+        if self.world.light_scene_index.get(self.light) != Some(&record.scene_index) {
+            return;
+        }
+        if let Some(sample) = self.world.lights[self.light].sample(hit.p) {
+            let terms = record.diffuse + record.specular;
+            self.change += weight * no_falloff_change(terms, sample.distance_squared);
+        }
+    }
 }
 
 /// What the fall-off bug changes of a spot light's `diffuse + specular` terms at a point

@@ -12,7 +12,7 @@ use super::target::{FitState, Target};
 use crate::compare::catalogue::Nodes;
 use crate::compare::catalogue::SpotBug;
 use crate::compare::catalogue::{ChannelSpace, Family, Kind};
-use crate::compare::catalogue::{ClampBug, NormalBug, Part, SpecularBug};
+use crate::compare::catalogue::{ClampBug, NormalBug, Part, ShadowBug, SpecularBug};
 use crate::compare::catalogue::{Slot, TriedNode};
 use crate::compare::split::Components;
 
@@ -164,6 +164,16 @@ impl Groups {
                     None,
                 );
             }
+            for bug in ShadowBug::ALL {
+                add(
+                    Family::ShadowTest(bug),
+                    None,
+                    object,
+                    None,
+                    vec![Kind::ShadowTest(bug)],
+                    None,
+                );
+            }
         }
         for tried in tried {
             let node = Some(tried.node);
@@ -196,7 +206,14 @@ impl Groups {
                 add(Family::Missing, None, node, None, whole(kinds), None);
             }
         }
-        // A spot light's bug is the light's, wherever it shows.
+        // A spot light's bug is the light's, wherever it shows; a tracer's spot code is
+        // shared by all its spot lights, so each bug is also tried on every light at once.
+        if space.lights > 1 {
+            for bug in SpotBug::ALL {
+                let kinds = (0..space.lights).map(|l| Kind::Spot(bug, l)).collect();
+                add(Family::Spot(bug), None, None, None, kinds, None);
+            }
+        }
         for light in 0..space.lights {
             for bug in SpotBug::ALL {
                 add(

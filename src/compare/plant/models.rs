@@ -15,7 +15,9 @@ use std::fmt;
 
 use glam::DVec3;
 
-use crate::compare::catalogue::{ClampBug, Kind, NormalBug, Part, Slot, SpecularBug, SpotBug};
+use crate::compare::catalogue::{
+    ClampBug, Kind, NormalBug, Part, ShadowBug, Slot, SpecularBug, SpotBug,
+};
 use crate::compare::error::CompareError;
 use crate::compare::fit::{Encoding, NO_LIMIT_DEPTH};
 use crate::compare::other_image::OtherImage;
@@ -50,6 +52,8 @@ pub enum Plant {
     Highlight(SpecularBug),
     /// Colour clamped too early.
     Clamp(ClampBug),
+    /// Shadows tested wrongly.
+    ShadowTest(ShadowBug),
     /// A spot light computed wrongly.
     Spot(SpotBug),
     /// Planes hit only from the front.
@@ -82,7 +86,7 @@ pub struct PlantedBug {
 }
 
 /// Every cause name `parse` knows, as `raylab render --help` lists them.
-pub const CAUSE_NAMES: [&str; 28] = [
+pub const CAUSE_NAMES: [&str; 32] = [
     "light-off",
     "normal-not-flipped",
     "normal-without-x",
@@ -99,6 +103,10 @@ pub const CAUSE_NAMES: [&str; 28] = [
     "spot-no-falloff",
     "spot-angle-radians",
     "spot-full-angle",
+    "spot-no-cone-no-falloff",
+    "no-self-shadow",
+    "shadow-acne",
+    "shadow-beyond-light",
     "one-sided",
     "missing-caps",
     "missing-side",
@@ -123,6 +131,7 @@ impl Plant {
             Plant::Normal(b) => b.name().to_owned(),
             Plant::Highlight(b) => b.name().to_owned(),
             Plant::Clamp(b) => b.name().to_owned(),
+            Plant::ShadowTest(b) => b.name().to_owned(),
             Plant::Spot(b) => b.name().to_owned(),
             Plant::OneSided => "one-sided".to_owned(),
             Plant::MissingPart(Part::Caps) => "missing-caps".to_owned(),
@@ -157,6 +166,7 @@ impl Plant {
         let highlight = SpecularBug::ALL.map(Plant::Highlight);
         let clamp = ClampBug::ALL.map(Plant::Clamp);
         let spot = SpotBug::ALL.map(Plant::Spot);
+        let shadow = ShadowBug::ALL.map(Plant::ShadowTest);
         let other = [
             Plant::LightOff,
             Plant::OneSided,
@@ -179,6 +189,7 @@ impl Plant {
             .or_else(|| by_name(&highlight))
             .or_else(|| by_name(&clamp))
             .or_else(|| by_name(&spot))
+            .or_else(|| by_name(&shadow))
             .or_else(|| by_name(&other))
     }
 
@@ -206,6 +217,10 @@ impl Plant {
             Plant::Spot(SpotBug::NoFalloff) => "the spot's strength not divided by d^2",
             Plant::Spot(SpotBug::AngleRadians) => "cos(angle) with degrees as radians",
             Plant::Spot(SpotBug::FullAngle) => "the half angle halved",
+            Plant::Spot(SpotBug::NoConeNoFalloff) => "neither the cone test nor / d^2",
+            Plant::ShadowTest(ShadowBug::NoSelfShadow) => "the shadow ray skips its own object",
+            Plant::ShadowTest(ShadowBug::Acne) => "the shadow ray starts on the surface",
+            Plant::ShadowTest(ShadowBug::BeyondLight) => "any hit on the shadow ray counts",
             Plant::OneSided | Plant::MissingPart(Part::Back) => "a plane hit only when d.n < 0",
             Plant::MissingPart(_) => "one part of a shape never hit",
             Plant::MissingObject => "an object never hit",
@@ -231,6 +246,7 @@ impl Plant {
             | Plant::Normal(_)
             | Plant::Highlight(_)
             | Plant::Clamp(_)
+            | Plant::ShadowTest(_)
             | Plant::OneSided
             | Plant::MissingPart(_)
             | Plant::MissingObject => Scope::Object,
@@ -301,6 +317,7 @@ impl PlantedBug {
             Plant::Normal(b) => e.cause == Cause::Normal(b),
             Plant::Highlight(b) => e.cause == Cause::Highlight(b),
             Plant::Clamp(b) => e.cause == Cause::Clamp(b),
+            Plant::ShadowTest(b) => e.cause == Cause::ShadowTest(b),
             Plant::Spot(b) => e.cause == Cause::Spot(b),
             Plant::OneSided | Plant::MissingPart(Part::Back) => e.cause.name() == "one-sided",
             Plant::MissingPart(part) => e.cause == Cause::Missing(Some(part)),
@@ -482,6 +499,7 @@ fn is_channel_bug(plant: Plant) -> bool {
             | Plant::Normal(_)
             | Plant::Highlight(_)
             | Plant::Clamp(_)
+            | Plant::ShadowTest(_)
             | Plant::Spot(_)
             | Plant::OneSided
             | Plant::MissingPart(_)
@@ -611,6 +629,7 @@ fn channel_weights(
             Plant::Normal(b) => add(&mut weights, Kind::Normal(b), leaves, 1.0),
             Plant::Highlight(b) => add(&mut weights, Kind::Highlight(b), leaves, 1.0),
             Plant::Clamp(b) => add(&mut weights, Kind::Clamp(b), leaves, 1.0),
+            Plant::ShadowTest(b) => add(&mut weights, Kind::ShadowTest(b), leaves, 1.0),
             Plant::Spot(b) => {
                 for l in lights_of(&bug.site)? {
                     add(&mut weights, Kind::Spot(b, l), leaves.clone(), 1.0);
@@ -772,6 +791,7 @@ pub fn gallery_bugs(scene: &Scene) -> Vec<PlantedBug> {
     bugs.extend(NormalBug::ALL.map(|b| everywhere(Plant::Normal(b))));
     bugs.extend(SpecularBug::ALL.map(|b| everywhere(Plant::Highlight(b))));
     bugs.extend(ClampBug::ALL.map(|b| everywhere(Plant::Clamp(b))));
+    bugs.extend(ShadowBug::ALL.map(|b| everywhere(Plant::ShadowTest(b))));
     if lit
         .iter()
         .any(|&l| matches!(scene.lights[l], Light::Spot { .. }))

@@ -18,8 +18,8 @@ use glam::DVec3;
 
 use super::context::Context;
 use crate::compare::catalogue::{
-    ClampBug, Kind, MISS, NormalBug, Part, Slot, SpecularBug, SpotBug, cone_changes, local_terms,
-    no_falloff_change, trace_again,
+    ClampBug, Kind, MISS, NormalBug, Part, ShadowBug, Slot, SpecularBug, SpotBug, cone_changes,
+    local_terms, no_falloff_change, trace_again,
 };
 use crate::trace::shapes::Primitive;
 use crate::trace::{
@@ -205,6 +205,67 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
         }
     }
 
+    /// A tracer whose shadow rays skip the object they leave: where the shadow ray was
+    /// blocked by the hit's own object and nothing else, the light `unshadowed` (what the
+    /// shadow took away) comes back.
+    fn no_self_shadow(
+        &mut self,
+        record: &LightRecord,
+        (hit, world_object, leaf): (&SurfacePoint, usize, usize),
+        unshadowed: DVec3,
+    ) {
+        let world = self.ctx.world;
+        let (Some(blocker), Some(shadow)) = (record.blocked_by, record.shadow_ray) else {
+            return;
+        };
+        if blocker != world.scene_object(hit.object) || unshadowed == DVec3::ZERO {
+            return;
+        }
+        if world
+            .occluder_except(&shadow.ray, shadow.t_max, Some(world_object))
+            .is_none()
+        {
+            let channel = self.channel(Kind::ShadowTest(ShadowBug::NoSelfShadow), leaf);
+            self.tally.add(channel, unshadowed);
+        }
+    }
+
+    /// The shadow tests of a lit point under the other shadow bugs: a shadow ray from
+    /// the hit point itself (no offset: acne) and one that counts hits beyond the light.
+    /// Where either is blocked, the light's terms (scaled by `t`) go.
+    fn shadow_tests(
+        &mut self,
+        record: &LightRecord,
+        (hit, leaf): (&SurfacePoint, usize),
+        sample: &LightSample,
+        t: DVec3,
+    ) {
+        let lit = record.diffuse + record.specular;
+        if !record.shadow_ray_cast || record.blocked_by.is_some() || lit == DVec3::ZERO {
+            return;
+        }
+        let world = self.ctx.world;
+        let t_max = sample
+            .light_position
+            .map_or(f64::INFINITY, |p| (p - hit.p).length());
+        let raw = Ray::new(hit.p, sample.to_light);
+        if world.occluder_except(&raw, t_max, None).is_some() {
+            let channel = self.channel(Kind::ShadowTest(ShadowBug::Acne), leaf);
+            self.tally.add(channel, -t * lit);
+        }
+        if let Some(shadow) = record.shadow_ray
+            && sample.light_position.is_some()
+            && world
+                .occluder_except(&shadow.ray, f64::INFINITY, None)
+                .is_some()
+        {
+            // Blocked somewhere along the whole line, and (as the shader found) not
+            // before the light: beyond it.
+            let channel = self.channel(Kind::ShadowTest(ShadowBug::BeyondLight), leaf);
+            self.tally.add(channel, -t * lit);
+        }
+    }
+
     /// The terms under each normal and specular bug, as changes from raylab's.
     fn bugs(
         &mut self,
@@ -336,7 +397,13 @@ impl Recorder for SampleRecorder<'_, '_> {
                 &sample,
                 t * (diffuse + specular),
             );
+            self.no_self_shadow(
+                record,
+                (&hit, world_object, object),
+                t * hidden * (diffuse + specular),
+            );
         }
+        self.shadow_tests(record, (&hit, object), &sample, t);
         self.bugs(&bounce, &hit, record, &sample);
     }
 

@@ -4,7 +4,7 @@
 use serde::Serialize;
 
 use crate::compare::catalogue::SpotBug;
-use crate::compare::catalogue::{ClampBug, NormalBug, Part, SpecularBug};
+use crate::compare::catalogue::{ClampBug, NormalBug, Part, ShadowBug, SpecularBug};
 use crate::compare::catalogue::{Node, Nodes};
 use crate::compare::extras::PixelBox;
 use crate::compare::extras::ShapeGuess;
@@ -63,6 +63,8 @@ pub enum Cause {
     Highlight(SpecularBug),
     /// Colour clamped too early.
     Clamp(ClampBug),
+    /// Shadows tested wrongly.
+    ShadowTest(ShadowBug),
     /// A spot light computed wrongly (the explanation names the light).
     Spot(SpotBug),
     /// A part of an object (or all of it: `None`) is not there.
@@ -105,6 +107,7 @@ impl Cause {
             Cause::Normal(b) => b.name(),
             Cause::Highlight(b) => b.name(),
             Cause::Clamp(b) => b.name(),
+            Cause::ShadowTest(b) => b.name(),
             Cause::Spot(b) => b.name(),
             Cause::Missing(Some(Part::Back)) => "one-sided",
             Cause::Missing(Some(Part::Whole) | None) => "missing-object",

@@ -68,6 +68,16 @@ pub fn summary(e: &Explanation, scene: &Scene) -> String {
             on_object(object),
             bug.describe()
         ),
+        Cause::ShadowTest(bug) => match object {
+            Some(o) => format!(
+                "'{o}' is lit as if {} (the bug's picture fits with weight {weight:.2}).",
+                bug.describe()
+            ),
+            None => format!(
+                "Shadows look as if {} (weight {weight:.2}).",
+                bug.describe()
+            ),
+        },
         Cause::Clamp(bug) => format!(
             "Reflections{} are darker where they exceed 1: {} (weight {weight:.2}).",
             on_object(object).replace(" on ", " in "),
@@ -75,7 +85,7 @@ pub fn summary(e: &Explanation, scene: &Scene) -> String {
         ),
         Cause::Spot(bug) => format!(
             "{} lights the other image as if {} (weight {weight:.2}; explains {:.1}% of the difference).",
-            capitalised(light.as_deref().unwrap_or("a spot light")),
+            capitalised(light.as_deref().unwrap_or("every spot light")),
             bug.describe(),
             100.0 * e.share
         ),
