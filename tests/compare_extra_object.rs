@@ -15,9 +15,10 @@ mod shader;
 mod one_sample;
 
 use one_sample::{diff, first_beyond_conventions};
-use raylab::compare::shape_guess::ShapeGuess;
+use raylab::compare::ShapeGuess;
 use raylab::compare::{Cause, Comparison, ExplainedTerm};
 use raylab::scene::{Material, Object, Scene};
+use raylab::trace::Term;
 use shader::{Bugs, lab_scene, render};
 
 /// The lab scene with a blue material no object of it uses.
@@ -96,7 +97,7 @@ fn an_extra_object_is_named_first_beside_a_second_bug() {
     let ball = c
         .explanations
         .iter()
-        .find(|e| e.term == ExplainedTerm::Diffuse);
+        .find(|e| e.term == ExplainedTerm::Term(Term::Diffuse));
     let factor = ball.unwrap_or_else(|| panic!("{report}")).factor;
     assert!(
         (factor - 0.7).abs() < 0.05,

@@ -38,7 +38,11 @@ fn a_render_without_transmission_is_named_as_the_transmission_term_at_factor_zer
     let c = diff(&scene, off);
     let report = c.text_lines().join("\n");
     let first = &c.explanations[0];
-    assert_eq!(first.term, ExplainedTerm::Transmission, "{report}");
+    assert_eq!(
+        first.term,
+        ExplainedTerm::Term(Term::Transmission),
+        "{report}"
+    );
     assert!(first.factor < 0.1, "{report}");
     let glass: Vec<usize> = ["glass ball", "lens"]
         .iter()

@@ -17,6 +17,7 @@ mod one_sample;
 use one_sample::{diff, first_beyond_conventions};
 use raylab::compare::{Comparison, ExplainedTerm};
 use raylab::scene::{Scene, parse_scene};
+use raylab::trace::Term;
 use shader::{Bugs, lab_scene, render};
 
 /// `scene` without its object named `name`.
@@ -69,7 +70,7 @@ fn a_missing_ball_is_named_with_its_box_and_its_shadow() {
     assert!(
         c.explanations
             .iter()
-            .all(|e| e.term != ExplainedTerm::Shadows),
+            .all(|e| e.term != ExplainedTerm::Term(Term::Shadows)),
         "{report}"
     );
     let c = diff(

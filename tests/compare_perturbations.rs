@@ -8,7 +8,7 @@ mod shader;
 
 use raylab::compare::{Cause, CompareOptions, Comparison, ExplainedTerm, compare};
 use raylab::scene::{Light, Scene};
-use raylab::trace::{RenderOptions, RenderProgress, World, render};
+use raylab::trace::{RenderOptions, RenderProgress, Term, World, render};
 use shader::{Bugs, lab_scene, render as render_with};
 
 fn diff(bugs: &Bugs) -> Comparison {
@@ -83,7 +83,7 @@ fn a_removed_light_is_named_with_factor_zero() {
         drop_light: Some(1),
         ..Bugs::default()
     });
-    let e = named(&c, ExplainedTerm::Diffuse, Some(1), None);
+    let e = named(&c, ExplainedTerm::Term(Term::Diffuse), Some(1), None);
     assert!(e.factor < 0.05, "{}", e.factor);
     assert_eq!(e.cause, Cause::Factor);
 }
@@ -95,7 +95,7 @@ fn one_objects_halved_diffuse_is_named_with_factor_one_half() {
         diffuse_scale: Some((ball.unwrap(), 0.5)),
         ..Bugs::default()
     });
-    let e = named(&c, ExplainedTerm::Diffuse, None, ball);
+    let e = named(&c, ExplainedTerm::Term(Term::Diffuse), None, ball);
     assert!((e.factor - 0.5).abs() < 0.05, "{}", e.factor);
 }
 
@@ -105,7 +105,7 @@ fn specular_off_is_named_everywhere() {
         specular_off: true,
         ..Bugs::default()
     });
-    let e = named(&c, ExplainedTerm::Specular, None, None);
+    let e = named(&c, ExplainedTerm::Term(Term::Specular), None, None);
     assert!(e.factor < 0.05, "{}", e.factor);
 }
 
@@ -115,7 +115,7 @@ fn shadows_off_are_named() {
         shadows_off: true,
         ..Bugs::default()
     });
-    let e = named(&c, ExplainedTerm::Shadows, None, None);
+    let e = named(&c, ExplainedTerm::Term(Term::Shadows), None, None);
     assert!(e.factor < 0.1, "{}", e.factor);
 }
 
@@ -125,7 +125,7 @@ fn the_wrong_reflected_vector_is_named() {
         negated_reflection: true,
         ..Bugs::default()
     });
-    let e = named(&c, ExplainedTerm::Specular, None, None);
+    let e = named(&c, ExplainedTerm::Term(Term::Specular), None, None);
     assert_eq!(e.cause.name(), "reflected-vector-negated");
 }
 
@@ -137,7 +137,7 @@ fn the_n_minus_l_reflected_vector_is_named_alone_and_beside_a_missing_ambient() 
             ambient_off,
             ..Bugs::default()
         });
-        let e = named(&c, ExplainedTerm::Specular, None, None);
+        let e = named(&c, ExplainedTerm::Term(Term::Specular), None, None);
         assert_eq!(
             e.cause.name(),
             "reflected-vector-n-minus-l",
@@ -150,7 +150,9 @@ fn the_n_minus_l_reflected_vector_is_named_alone_and_beside_a_missing_ambient() 
         ..Bugs::default()
     });
     assert_ne!(
-        named(&c, ExplainedTerm::Specular, None, None).cause.name(),
+        named(&c, ExplainedTerm::Term(Term::Specular), None, None)
+            .cause
+            .name(),
         "reflected-vector-n-minus-l"
     );
 }
@@ -161,7 +163,12 @@ fn a_cone_normal_without_its_z_part_is_named() {
         cone_normal_without_z: true,
         ..Bugs::default()
     });
-    let e = named(&c, ExplainedTerm::Diffuse, None, object("gold cone"));
+    let e = named(
+        &c,
+        ExplainedTerm::Term(Term::Diffuse),
+        None,
+        object("gold cone"),
+    );
     assert_eq!(e.cause.name(), "normal-without-z");
 }
 
@@ -226,6 +233,6 @@ fn a_directional_light_that_never_lights_is_named() {
         directional_never_lights: true,
         ..Bugs::default()
     });
-    let e = named(&c, ExplainedTerm::Diffuse, Some(2), None);
+    let e = named(&c, ExplainedTerm::Term(Term::Diffuse), Some(2), None);
     assert!(e.factor < 0.05, "{}", e.factor);
 }

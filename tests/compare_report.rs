@@ -5,12 +5,11 @@
 #[path = "compare/shader.rs"]
 mod shader;
 
-use raylab::compare::channels::Kind;
-use raylab::compare::components::render_components;
 use raylab::compare::{
     CompareError, CompareOptions, Encoding, ExplainedTerm, OtherImage, compare, report_png,
 };
-use raylab::trace::{RenderOptions, RenderProgress, World, render};
+use raylab::compare::{Kind, render_components};
+use raylab::trace::{RenderOptions, RenderProgress, Term, World, render};
 use shader::{Bugs, lab_scene, render as render_with};
 
 fn one_sample() -> CompareOptions {
@@ -77,7 +76,10 @@ fn the_value_holds_both_pictures_and_each_explanations_pixels() {
     assert_eq!(c.raylab_rgb, plain.rgb);
     assert_eq!(c.other, other);
     let top = &c.explanations[0];
-    assert_eq!((top.term, top.object), (ExplainedTerm::Diffuse, Some(ball)));
+    assert_eq!(
+        (top.term, top.object),
+        (ExplainedTerm::Term(Term::Diffuse), Some(ball))
+    );
     let on_ball = top
         .pixels
         .iter()

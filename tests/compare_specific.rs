@@ -13,6 +13,7 @@ mod one_sample;
 use one_sample::diff;
 use raylab::compare::{Cause, Comparison, ExplainedTerm};
 use raylab::scene::{Light, Scene};
+use raylab::trace::Term;
 use shader::{Bugs, lab_scene, render};
 
 /// The lab scene with only the lights `keep` says (by kind) besides the ambient.
@@ -43,7 +44,7 @@ fn the_only_light_that_never_lights_is_named_before_the_whole_term() {
         ..Bugs::default()
     };
     let c = diff(&scene, &render(&scene, 1, &bugs));
-    assert_light_first(&c, ExplainedTerm::Diffuse, 1);
+    assert_light_first(&c, ExplainedTerm::Term(Term::Diffuse), 1);
     let report = c.text_lines().join("\n");
     let first = &c.explanations[0];
     assert!(
@@ -65,7 +66,7 @@ fn the_only_light_that_never_lights_is_named_before_the_whole_term() {
     assert!(
         c.explanations
             .iter()
-            .filter(|e| e.term == ExplainedTerm::Specular)
+            .filter(|e| e.term == ExplainedTerm::Term(Term::Specular))
             .all(|e| e.light == Some(1)),
         "{report}"
     );
@@ -79,7 +80,7 @@ fn a_dropped_point_light_alone_in_its_scene_is_named_as_the_light() {
         ..Bugs::default()
     };
     let c = diff(&scene, &render(&scene, 1, &bugs));
-    assert_light_first(&c, ExplainedTerm::Diffuse, 1);
+    assert_light_first(&c, ExplainedTerm::Term(Term::Diffuse), 1);
 }
 
 #[test]
@@ -90,7 +91,7 @@ fn with_two_lights_the_light_is_named_without_a_like_reading() {
         ..Bugs::default()
     };
     let c = diff(&scene, &render(&scene, 1, &bugs));
-    assert_light_first(&c, ExplainedTerm::Diffuse, 2);
+    assert_light_first(&c, ExplainedTerm::Term(Term::Diffuse), 2);
     let report = c.text_lines().join("\n");
     assert!(c.explanations[0].fits_as_well.is_empty(), "{report}");
     // And a term missing for every light stays the whole term.
@@ -100,6 +101,10 @@ fn with_two_lights_the_light_is_named_without_a_like_reading() {
     };
     let c = diff(&scene, &render(&scene, 1, &bugs));
     let report = c.text_lines().join("\n");
-    assert_eq!(c.explanations[0].term, ExplainedTerm::Specular, "{report}");
+    assert_eq!(
+        c.explanations[0].term,
+        ExplainedTerm::Term(Term::Specular),
+        "{report}"
+    );
     assert_eq!(c.explanations[0].light, None, "{report}");
 }

@@ -19,6 +19,7 @@ use raylab::compare::{Comparison, ExplainedTerm, Explanation};
 use raylab::scene::examples::EXAMPLE_SCENES;
 use raylab::scene::tree_path::{object_at_mut, remove_node};
 use raylab::scene::{Scene, parse_scene};
+use raylab::trace::Term;
 use shader::{Bugs, lab_scene, render};
 
 /// The path of pip 1.1 in csg.ron: the die is object 2, the pip its second operand.
@@ -68,7 +69,7 @@ fn a_pip_of_the_die_with_a_brighter_colour_is_named_by_its_path() {
     let c = diff(&scene, &own_render(&recoloured(&scene, &PIP, "pip", 2.0)));
     let report = c.text_lines().join("\n");
     let first = first_names(&c, "die/pip 1.1", &PIP);
-    assert_factor(first, ExplainedTerm::Diffuse, 2.0, &report);
+    assert_factor(first, ExplainedTerm::Term(Term::Diffuse), 2.0, &report);
     assert!(first.share > 0.9, "{report}");
     assert!(report.contains("object die/pip 1.1,"), "{report}");
     let json = c.to_json();
@@ -137,14 +138,14 @@ fn a_snowman_member_of_another_colour_is_named_and_a_snowman_all_of_it_is_the_gr
     let c = diff(&scene, &own_render(&recoloured(&scene, &head, "snow", 1.5)));
     let report = c.text_lines().join("\n");
     let first = first_names(&c, "snowman/head", &head);
-    assert_factor(first, ExplainedTerm::Diffuse, 1.5, &report);
+    assert_factor(first, ExplainedTerm::Term(Term::Diffuse), 1.5, &report);
     // Every member's colour: the group, not one member (nor three explanations).
     let mut all = scene.clone();
     all.materials.get_mut("snow").unwrap().diffuse *= 1.5;
     let c = diff(&scene, &own_render(&all));
     let report = c.text_lines().join("\n");
     let first = first_names(&c, "snowman", &[1]);
-    assert_factor(first, ExplainedTerm::Diffuse, 1.5, &report);
+    assert_factor(first, ExplainedTerm::Term(Term::Diffuse), 1.5, &report);
     assert!(first.share > 0.9, "{report}");
     // A member left out: that member, with its shadow on the one below.
     let mut forgot = scene.clone();
@@ -157,7 +158,7 @@ fn a_snowman_member_of_another_colour_is_named_and_a_snowman_all_of_it_is_the_gr
     assert!(
         c.explanations
             .iter()
-            .all(|e| e.term != ExplainedTerm::Shadows),
+            .all(|e| e.term != ExplainedTerm::Term(Term::Shadows)),
         "{report}"
     );
 }
@@ -177,7 +178,7 @@ fn a_scene_without_trees_names_objects_as_before() {
     let c = diff(&lab, &render(&lab, 1, &bugs));
     let report = c.text_lines().join("\n");
     let first = first_names(&c, "red ball", &[ball]);
-    assert_factor(first, ExplainedTerm::Diffuse, 0.5, &report);
+    assert_factor(first, ExplainedTerm::Term(Term::Diffuse), 0.5, &report);
     let json = c.to_json();
     assert!(!json.contains("\"node\""), "{json}");
 }

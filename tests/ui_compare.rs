@@ -12,7 +12,7 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use raylab::compare::ExplainedTerm;
 use raylab::scene::{Scene, load_scene};
-use raylab::trace::{RenderOptions, RenderProgress, World, render};
+use raylab::trace::{RenderOptions, RenderProgress, Term, World, render};
 use raylab::ui::compare::{
     COMPARE_PATH_LABEL, COMPARE_PICTURE_LABEL, CompareMode, ZoomView, explanation_label,
     picture_frames,
@@ -129,7 +129,10 @@ fn a_comparison_from_a_path_shows_every_mode_and_its_explanations_select_and_hig
         .position(|o| o.name == "red ball")
         .unwrap();
     let top = &c.explanations[0];
-    assert_eq!((top.term, top.object), (ExplainedTerm::Diffuse, Some(ball)));
+    assert_eq!(
+        (top.term, top.object),
+        (ExplainedTerm::Term(Term::Diffuse), Some(ball))
+    );
 
     // The view replaces the viewport; each mode button switches to its picture, and
     // "Close comparison" stays where it was whatever the mode's controls.

@@ -4,10 +4,12 @@
 pub mod convergence;
 pub mod crossover;
 pub mod diff;
+pub mod diff_accuracy;
 pub mod edit_latency;
 pub mod mesh;
 pub mod plot;
 pub mod precision;
+pub mod random_scene;
 pub mod throughput;
 
 use std::collections::BTreeMap;

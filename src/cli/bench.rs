@@ -28,6 +28,11 @@ pub struct BenchArgs {
     /// Measure the RON scenes of this folder instead of the embedded example scenes.
     #[arg(long)]
     pub scenes: Option<PathBuf>,
+    /// Only the diff's accuracy: plant bugs in the example scenes and in this many
+    /// random scenes (of the measured seeds, never tuned on), diff each picture, and
+    /// print the confusion table (with `--json`, the whole report).
+    #[arg(long, value_name = "RANDOM_SCENES")]
+    pub diff_accuracy: Option<u64>,
 }
 
 /// Runs the benchmark and prints the report.
@@ -35,6 +40,9 @@ pub struct BenchArgs {
 /// # Errors
 /// A message when a scene cannot be loaded or the plot cannot be written.
 pub fn run(args: &BenchArgs) -> Result<(), String> {
+    if let Some(count) = args.diff_accuracy {
+        return run_diff_accuracy(args, count);
+    }
     let report = measure(args)?;
     if let Some(path) = &args.plot {
         let title = format!(
@@ -52,6 +60,54 @@ pub fn run(args: &BenchArgs) -> Result<(), String> {
         print_tables(&report);
     }
     Ok(())
+}
+
+/// `raylab bench --diff-accuracy N`: the long accuracy run.
+fn run_diff_accuracy(args: &BenchArgs, count: u64) -> Result<(), String> {
+    use crate::bench::diff_accuracy::{MEASURED_SEEDS, Plan, accuracy_run, confusion_table};
+    let examples = example_scenes(args.scenes.as_deref())?;
+    let start = MEASURED_SEEDS.start;
+    let plan = Plan {
+        alone: 40,
+        pairs: 8,
+        threes: 4,
+    };
+    let report = accuracy_run(start..start + count, &examples, 200, plan)?;
+    if args.json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&report).map_err(|e| e.to_string())?
+        );
+        return Ok(());
+    }
+    for line in confusion_table(&report) {
+        println!("{line}");
+    }
+    print_accuracy(&report);
+    Ok(())
+}
+
+/// The accuracy figures in one paragraph.
+fn print_accuracy(report: &crate::bench::diff_accuracy::AccuracyReport) {
+    println!(
+        "bugs alone: {} planted, first {:.1}%, top two {:.1}%; pairs: {} bugs, top two {:.1}%, top three {:.1}%; threes: {} bugs, top three {:.1}%",
+        report.alone.0,
+        100.0 * report.top1(),
+        100.0 * report.top2(),
+        report.pairs.0,
+        100.0 * report.pair_top2(),
+        100.0 * f64::from(report.pairs.2) / f64::from(report.pairs.0.max(1)),
+        report.threes.0,
+        100.0 * f64::from(report.threes.1) / f64::from(report.threes.0.max(1)),
+    );
+    println!(
+        "correct pictures: {}, a bug claimed in {} ({:.1}%); verdicts called high: {}, right {:.1}%",
+        report.no_bug.0,
+        report.no_bug.1,
+        100.0 * report.false_verdicts(),
+        report.high.0,
+        100.0 * report.high_right()
+    );
 }
 
 /// The scenes to measure, by file name: the embedded examples, or a folder's RON files

@@ -4,6 +4,7 @@
 //! `main.rs` only calls [`run`].
 
 mod bench;
+mod bugs;
 mod conventions;
 mod diff;
 mod export;
@@ -19,6 +20,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 pub use bench::BenchArgs;
+pub use bugs::BugsArgs;
 pub use conventions::ConventionArgs;
 pub use diff::DiffArgs;
 pub use export::{DialectArg, ExportArgs};
@@ -53,6 +55,8 @@ pub enum Command {
     Inspect(InspectArgs),
     /// Compare with another renderer's image: which light, object and term differ.
     Diff(DiffArgs),
+    /// The bug gallery: the scene under each known bug, one PNG each and a contact sheet.
+    Bugs(BugsArgs),
 }
 
 /// Parses the command line and runs it. Errors are printed to stderr with a non-zero exit.
@@ -66,6 +70,7 @@ pub fn run() -> ExitCode {
         Some(Command::Bench(args)) => bench::run(&args),
         Some(Command::Inspect(args)) => inspect::run(&args),
         Some(Command::Diff(args)) => diff::run(&args),
+        Some(Command::Bugs(args)) => bugs::run(&args),
         None => start_editor(cli.scene),
     };
     match result {

@@ -59,6 +59,13 @@ pub struct RenderArgs {
     /// leaves out more rays and traces more pixels again. The PNG is the same.
     #[arg(long, default_value_t = PRUNE_BUDGET * 255.0)]
     pub prune_budget: f64,
+    /// Render as a tracer with these bugs would, comma-separated, each named as `raylab
+    /// diff` names its cause: `CAUSE[@LIGHT|@OBJECT]` (`half-vector`, `spot-no-cone@3`,
+    /// `missing-object@red ball`), or a term factor `TERM=FACTOR` (`diffuse=0@2`,
+    /// `shadows=0`). `raylab bugs SCENE -o DIR` shows each. Not with the term, view or
+    /// isolation switches.
+    #[arg(long, value_name = "BUGS")]
+    pub bug: Option<String>,
 }
 
 impl RenderArgs {
@@ -99,6 +106,9 @@ impl RenderArgs {
 pub fn run(args: &RenderArgs) -> Result<(), String> {
     let scene = super::load_any_scene(&args.scene)?;
     let scene = args.conventions.applied(scene);
+    if let Some(bugs) = &args.bug {
+        return run_with_bugs(args, scene, bugs);
+    }
     let scene = args.isolation.without_hidden_children(&scene)?;
     let options = args.options(&scene)?;
     let meshes = crate::cli::load_meshes(&scene, &args.scene)?;
@@ -139,6 +149,52 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         );
     }
     non_finite_report(&sums)
+}
+
+/// `raylab render --bug`: the scene as a tracer with `bugs` would write it, from the
+/// models `raylab diff` fits ([`crate::compare::plant`]).
+fn run_with_bugs(args: &RenderArgs, scene: Scene, bugs: &str) -> Result<(), String> {
+    let switched = !args.off.is_empty()
+        || args.solo.is_some()
+        || args.view != View::Beauty
+        || !args.isolation.mute_light.is_empty()
+        || !args.isolation.solo_light.is_empty()
+        || !args.isolation.hide.is_empty();
+    if switched {
+        return Err(
+            "--bug renders the whole picture a buggy tracer makes: it does not combine with \
+             --off, --solo, --view or the light and object switches"
+                .to_owned(),
+        );
+    }
+    let options = args.options(&scene)?;
+    let mut scene = scene;
+    scene.camera.width = options.width;
+    scene.camera.height = options.height;
+    let planted = crate::compare::plant::parse_bugs(bugs, &scene)?;
+    let meshes = crate::cli::load_meshes(&scene, &args.scene)?;
+    let started = Instant::now();
+    let picture = crate::compare::plant::plant(
+        &scene,
+        &meshes,
+        &planted,
+        options.samples_per_pixel,
+        &crate::trace::RenderProgress::default(),
+    )
+    .map_err(|e| format!("{}: {e}", args.scene.display()))?;
+    write_atomically(&args.output, &picture.png_bytes())
+        .map_err(|e| format!("cannot write {}: {e}", args.output.display()))?;
+    let names: Vec<String> = planted.iter().map(|b| b.label(&scene)).collect();
+    eprintln!(
+        "{}: {}x{} at {} spp with {} in {:.1} ms",
+        args.output.display(),
+        options.width,
+        options.height,
+        options.samples_per_pixel,
+        names.join(", "),
+        started.elapsed().as_secs_f64() * 1e3,
+    );
+    Ok(())
 }
 
 /// `Ok` when every sample was finite, else a message with how many pixels (and samples)

@@ -1,68 +1,52 @@
 //! Compare raylab's picture of a scene with another renderer's picture of it, and say
 //! which light, object and term explain the difference (see docs/COMPARE.md).
 //!
-//! 1. [`components`]: raylab's picture split into channels (each term of each light on
-//!    each object, and what each known bug or missing part would change), traced once
-//!    through the tracer's own shading code.
-//! 2. [`encoding`]: the other picture's 8-bit encoding is found, and each byte read as
-//!    the interval of values it stands for, so rounding never counts as a difference.
-//! 3. [`search`]: a greedy least-squares fit over groups of channels; each accepted
-//!    group is an explanation with its share of the squared difference.
-//! 4. [`verdicts`] and [`localise`]: steps become sentences; what nothing explains is
-//!    localised as geometry (outlines) or shading (inside objects).
+//! In folders by stage, in the order a comparison walks them; each depends only on the
+//! ones before it (and on the inputs, `error` and `other_image`):
+//!
+//! | stage | folder | takes | gives |
+//! |---|---|---|---|
+//! | 1 | `catalogue` | the scene, its world | tree nodes, known bugs, nodes tried as missing, the channel numbering |
+//! | 2 | `split` | the world, the catalogue | raylab's picture in channels per pixel (`Components`) |
+//! | 3 | `fit` | the other picture, the channels | its encoding, better conventions, the search's steps |
+//! | 4 | `extras` | the channels, the fitted model | objects the other picture draws and raylab does not |
+//! | 5 | `verdict` | steps, extra objects, what is left | explanations, each with a sentence |
+//! | 6 | `report` | both pictures, the explanations | the [`Comparison`]: JSON, text, report PNG |
+//! | 7 | `plant` | the scene, bugs of the catalogue | pictures with those bugs (`raylab render --bug`, the gallery), and which explanation names each |
+//!
+//! This face runs them: [`compare`] splits raylab's picture, reads the other one under
+//! the right encoding (and, where they fit it better, the course's other conventions,
+//! comparing again under those), explains what is left and builds the [`Comparison`].
 //!
 //! No egui here: the command line and the editor show the same [`Comparison`].
 
-pub mod bugs;
-pub mod channels;
-pub mod components;
-pub mod conventions_fit;
-pub mod different_scene;
-pub mod encoding;
-pub mod error;
-pub mod explain;
-pub mod explanation;
-pub mod extra_object;
-pub mod extra_shadow;
-pub mod groups;
-pub mod localise;
-pub mod missing_nodes;
-pub mod nodes;
-pub mod other_image;
-pub mod record_context;
-pub mod recorder;
-pub mod regions;
-pub mod relit;
+mod catalogue;
+mod error;
+mod extras;
+mod fit;
+mod other_image;
+pub mod plant;
 pub mod report;
-pub mod report_image;
-pub mod rivals;
-pub mod search;
-pub mod shape_guess;
-pub mod spot_bugs;
-pub mod summary;
-pub mod target;
-pub mod verdicts;
+mod split;
+mod verdict;
 
-pub use encoding::Encoding;
+pub use catalogue::{ClampBug, Kind, NormalBug, Part, ShadowBug, SpecularBug, SpotBug};
 pub use error::CompareError;
-pub use explanation::{Cause, ExplainedTerm, Explanation};
+pub use extras::{PixelBox, ShapeGuess};
+pub use fit::{Encoding, MIN_ERROR, MIN_STEP_SHARE};
 pub use other_image::OtherImage;
-pub use report::{Comparison, PSNR_IDENTICAL_DB, PixelValues};
-pub use report_image::{difference_heatmap, report_png, write_report_png};
+pub use report::{
+    Comparison, PSNR_IDENTICAL_DB, PixelValues, difference_heatmap, report_png, write_report_png,
+};
+pub use split::{Components, render_components};
+pub use verdict::{Cause, ExplainedTerm, Explanation};
 
 use crate::scene::{Quantise, Scene};
 use crate::trace::{MeshStore, RenderProgress, World};
 
-use components::{MISS, render_components};
-use explanation::summary;
-use target::{FitState, Target};
-
-/// A step must lower the error by at least this share of the whole difference...
-pub const MIN_STEP_SHARE: f64 = 0.005;
-
-/// ...and by at least this much: four channels a full 8-bit level outside their bytes.
-/// A difference smaller than this is no difference.
-pub const MIN_ERROR: f64 = 4.0 / (255.0 * 255.0);
+use catalogue::MISS;
+use fit::{BetterConventions, FitState, Target, better_conventions, detect_encoding};
+use verdict::{Explained, explain, summary};
 
 /// How to compare.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -141,7 +125,7 @@ fn compare_scene(
     let total = state.total;
     let floor = (MIN_STEP_SHARE * total).max(MIN_ERROR);
     let mut explanations = Vec::new();
-    let encoding = encoding::detect(&components.beauty, &other.rgb);
+    let encoding = detect_encoding(&components.beauty, &other.rgb);
     let target = if encoding == expected {
         rounded
     } else {
@@ -155,21 +139,19 @@ fn compare_scene(
         state = decoded;
         target
     };
-    if try_conventions
-        && total >= MIN_ERROR
-        && let Some(better) =
-            conventions_fit::better_conventions(scene, meshes, &target, spp, progress)
-    {
-        let found = Found {
-            total,
-            explanations,
-        };
-        return with_conventions(scene, meshes, other, spp, progress, &better, found);
-    }
-    let explained = if total >= MIN_ERROR {
-        explain::explain(&components, scene, &world, &target, &state, (total, floor))
+    let better = if try_conventions && total >= MIN_ERROR {
+        better_conventions(scene, meshes, &target, spp, progress)
     } else {
-        explain::Explained {
+        None
+    };
+    let found = better.as_ref().map(|_| Found {
+        total,
+        explanations: explanations.clone(),
+    });
+    let explained = if total >= MIN_ERROR {
+        explain(&components, scene, &world, &target, &state, (total, floor))
+    } else {
+        Explained {
             explanations: Vec::new(),
             unexplained_share: 0.0,
         }
@@ -186,7 +168,7 @@ fn compare_scene(
 
     let raylab = components.image();
     let raylab_rgb = report::rgb_of(&raylab);
-    Ok(Comparison {
+    let own = Comparison {
         width,
         height,
         samples_per_pixel: spp,
@@ -203,7 +185,37 @@ fn compare_scene(
         object_names: scene.objects.iter().map(|o| o.name.clone()).collect(),
         explanations,
         unexplained_share,
-    })
+    };
+    // The conventions and everything else are chosen together: a convention is the
+    // reading only where, with the rest fitted under it too, it leaves less unexplained
+    // than the scene's own conventions do with their fit (a missing light is a missing
+    // light, whatever mirrors the scene holds).
+    if let (Some(better), Some(found)) = (better, found) {
+        let adopted = with_conventions(scene, meshes, other, spp, progress, &better, found)?;
+        if unexplained_cost(&adopted, floor / total) < unexplained_cost(&own, floor / total) {
+            return Ok(adopted);
+        }
+    }
+    Ok(own)
+}
+
+/// What a reading leaves unexplained, as a share of the whole difference: what no
+/// cause explains (the rest, and the places: silhouettes and shading), plus `per_step`
+/// for each cause it names, so that of two readings leaving the same, the one with
+/// fewer causes wins.
+fn unexplained_cost(comparison: &Comparison, per_step: f64) -> f64 {
+    let places: f64 = comparison
+        .explanations
+        .iter()
+        .filter(|e| matches!(e.cause, Cause::Silhouette | Cause::Shading))
+        .map(|e| e.share)
+        .sum();
+    let causes = comparison
+        .explanations
+        .iter()
+        .filter(|e| !matches!(e.cause, Cause::Silhouette | Cause::Shading))
+        .count();
+    comparison.unexplained_share + places + per_step * causes as f64
 }
 
 /// What the comparison under the scene's conventions found before trying others: the
@@ -223,7 +235,7 @@ fn with_conventions(
     other: &OtherImage,
     spp: u32,
     progress: &RenderProgress,
-    better: &conventions_fit::BetterConventions,
+    better: &BetterConventions,
     found: Found,
 ) -> Result<Comparison, CompareError> {
     let mut adopted = scene.clone();

@@ -71,6 +71,22 @@ impl OtherImage {
         Ok(Self::new(width, height, pixels))
     }
 
+    /// The image as PNG bytes.
+    #[must_use]
+    pub fn png_bytes(&self) -> Vec<u8> {
+        let raw = self.rgb.iter().flatten().copied().collect();
+        let image =
+            image::RgbImage::from_raw(self.width, self.height, raw).expect("width * height pixels");
+        let mut bytes = Vec::new();
+        image
+            .write_to(
+                &mut std::io::Cursor::new(&mut bytes),
+                image::ImageFormat::Png,
+            )
+            .expect("encoding to memory cannot fail");
+        bytes
+    }
+
     /// Reads a PNG or PPM file.
     ///
     /// # Errors

@@ -39,6 +39,7 @@ pub fn cli_options(scene: &Scene, off: &[Term], solo: Option<Term>, view: View) 
         conventions: Default::default(),
         no_prune: false,
         prune_budget: 0.1,
+        bug: None,
     };
     args.options(scene).unwrap()
 }

@@ -4,7 +4,7 @@
 #![allow(dead_code)]
 
 use glam::DVec2;
-use raylab::compare::regions::PixelBox;
+use raylab::compare::PixelBox;
 use raylab::scene::Scene;
 use raylab::trace::{PinholeCamera, World, sample_in_pixel};
 

@@ -8,7 +8,7 @@ use raylab::compare::OtherImage;
 use raylab::scene::{Light, Scene};
 use raylab::trace::sample_in_pixel;
 use raylab::trace::shapes::Primitive;
-use raylab::trace::{PinholeCamera, Ray, SurfacePoint, World};
+use raylab::trace::{PinholeCamera, Ray, SurfacePoint, World, WorldLight};
 use raylab::trace::{spawn_ray, spawn_ray_to};
 
 /// The bugs to switch on; the default is none.
@@ -45,6 +45,11 @@ pub struct Bugs {
     pub ambient_off: bool,
     /// Mirrors blended as the course skeleton does: `(1 - km) local + km reflected`.
     pub mirror_blend: bool,
+    /// Every spot light lit as a point light whose strength does not fall off: no cone
+    /// test and no division by d^2.
+    pub spots_without_cone_or_falloff: bool,
+    /// The shadow ray never meets the object it leaves (a tracer that skips it).
+    pub no_self_shadow: bool,
 }
 
 struct Shader<'a> {
@@ -91,7 +96,8 @@ impl Shader<'_> {
             return true;
         }
         let plane = self.world.objects[hit.object].shape == Primitive::Plane;
-        let except = (plane || hit.n_outward.dot(to_light) > 0.0).then_some(hit.object);
+        let leaves_outward = plane || hit.n_outward.dot(to_light) > 0.0;
+        let except = (leaves_outward || self.bugs.no_self_shadow).then_some(hit.object);
         match position {
             Some(p) => {
                 let (ray, t_max) = spawn_ray_to(hit, p);
@@ -128,7 +134,20 @@ impl Shader<'_> {
             {
                 continue;
             }
-            let Some(mut sample) = light.sample(hit.p) else {
+            let bare = match *light {
+                WorldLight::Spot {
+                    position, strength, ..
+                } if self.bugs.spots_without_cone_or_falloff => {
+                    WorldLight::Point { position, strength }
+                        .sample(hit.p)
+                        .map(|mut s| {
+                            s.radiance = strength;
+                            s
+                        })
+                }
+                _ => None,
+            };
+            let Some(mut sample) = bare.or_else(|| light.sample(hit.p)) else {
                 continue;
             };
             if self.bugs.spot_no_falloff == Some(scene_index) {

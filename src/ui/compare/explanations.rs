@@ -152,6 +152,7 @@ mod tests {
     use crate::compare::{Cause, ExplainedTerm};
     use crate::scene::examples::EXAMPLE_SCENES;
     use crate::scene::parse_scene;
+    use crate::trace::Term;
 
     #[test]
     fn an_explanation_of_a_part_of_a_tree_selects_that_part_while_the_scene_has_it() {
@@ -161,7 +162,7 @@ mod tests {
             .unwrap();
         let mut scene = parse_scene(ron).unwrap();
         let e = Explanation {
-            term: ExplainedTerm::Diffuse,
+            term: ExplainedTerm::Term(Term::Diffuse),
             light: None,
             object: Some(2),
             object_name: Some("die/pip 1.1".to_owned()),

@@ -1,0 +1,442 @@
+//! How often `raylab diff` is right, on scenes and bugs it was not tuned on. Each scene
+//! (an example scene, or a random one of [`super::random_scene`]) gets bugs planted
+//! ([`crate::compare::plant`]) alone, in pairs and in threes, at several severities and
+//! on its lights and objects, and the diff of each picture is read: was each planted
+//! bug named first, in the top two, or missed, and what was named instead. Pictures
+//! with no bug (raylab's own render at other sample counts, and written in another
+//! encoding) must get no verdict at all.
+//!
+//! The seeds are split: thresholds may be tuned on [`TUNING_SEEDS`]; the figures of
+//! docs/BENCHMARKS.md are measured on [`MEASURED_SEEDS`] (and the example scenes).
+
+use std::collections::BTreeMap;
+use std::ops::Range;
+
+use serde::Serialize;
+
+use crate::compare::plant::{Plant, PlantedBug, Site, plant};
+use crate::compare::{
+    ClampBug, CompareOptions, Encoding, Explanation, NormalBug, OtherImage, Part, ShadowBug,
+    SpecularBug, SpotBug, compare_with_meshes,
+};
+use crate::scene::{ClampConvention, Light, MirrorConvention, Scene};
+use crate::trace::{MeshStore, RenderProgress, Term};
+
+/// Seeds whose random scenes the diff's thresholds may be tuned on.
+pub const TUNING_SEEDS: Range<u64> = 0..1000;
+/// Seeds whose random scenes the figures are measured on, never tuned on.
+pub const MEASURED_SEEDS: Range<u64> = 1_000_000..1_001_000;
+
+/// Causes that are places, not bugs: naming them claims no bug.
+const PLACES: [&str; 2] = ["silhouette", "shading"];
+
+/// One scene's cases: which bugs, and what the diff said.
+#[derive(Clone, Debug, Serialize)]
+pub struct CaseResult {
+    /// The scene.
+    pub scene: String,
+    /// The bugs planted, as `raylab render --bug` takes them (none: a correct picture).
+    pub bugs: Vec<String>,
+    /// For each bug, the rank (0 first) of the first explanation naming it.
+    pub ranks: Vec<Option<usize>>,
+    /// The causes the diff named, in order.
+    pub named: Vec<String>,
+    /// Per explanation: its sureness and whether it names a planted bug.
+    pub verdicts: Vec<(String, bool)>,
+}
+
+/// Per cause: how often it was named when planted.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct CauseRow {
+    /// Times planted (alone or with others).
+    pub planted: u32,
+    /// Named first (alone), or within the first as many as were planted (with others).
+    pub first: u32,
+    /// Named within the top two (alone), or within one more than were planted.
+    pub top_two: u32,
+    /// Not named at all.
+    pub missed: u32,
+    /// What was named first instead, where it was not named first: cause name -> times.
+    pub mistaken_for: BTreeMap<String, u32>,
+}
+
+/// The figures of one run.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct AccuracyReport {
+    /// Bugs planted alone: cases, named first, named in the top two.
+    pub alone: (u32, u32, u32),
+    /// Bugs of pairs (two per case): bugs, named in the top two, in the top three.
+    pub pairs: (u32, u32, u32),
+    /// Bugs of threes: bugs, named in the top three, in the top four.
+    pub threes: (u32, u32, u32),
+    /// Correct pictures, and those the diff claimed a bug in.
+    pub no_bug: (u32, u32),
+    /// Verdicts printed "high", and of those the ones naming a planted bug.
+    pub high: (u32, u32),
+    /// Per cause.
+    pub causes: BTreeMap<String, CauseRow>,
+    /// Every case.
+    pub cases: Vec<CaseResult>,
+}
+
+impl AccuracyReport {
+    /// Share of bugs planted alone named first.
+    #[must_use]
+    pub fn top1(&self) -> f64 {
+        ratio(self.alone.1, self.alone.0)
+    }
+    /// Share of bugs planted alone named in the top two.
+    #[must_use]
+    pub fn top2(&self) -> f64 {
+        ratio(self.alone.2, self.alone.0)
+    }
+    /// Share of the bugs of pairs named in the top two.
+    #[must_use]
+    pub fn pair_top2(&self) -> f64 {
+        ratio(self.pairs.1, self.pairs.0)
+    }
+    /// Share of correct pictures the diff claimed a bug in.
+    #[must_use]
+    pub fn false_verdicts(&self) -> f64 {
+        ratio(self.no_bug.1, self.no_bug.0)
+    }
+    /// Share of "high" verdicts that name a planted bug.
+    #[must_use]
+    pub fn high_right(&self) -> f64 {
+        ratio(self.high.1, self.high.0)
+    }
+
+    fn add(&mut self, case: CaseResult) {
+        let n = case.bugs.len();
+        for verdict in &case.verdicts {
+            if verdict.0 == "high" {
+                self.high.0 += 1;
+                self.high.1 += u32::from(verdict.1);
+            }
+        }
+        if n == 0 {
+            self.no_bug.0 += 1;
+            let claimed = case.named.iter().any(|c| {
+                !PLACES.contains(&c.as_str())
+                    && !c.starts_with("linear-")
+                    && c != "truncate"
+                    && c != "srgb"
+            });
+            self.no_bug.1 += u32::from(claimed);
+            self.cases.push(case);
+            return;
+        }
+        let (first_within, top_within) = if n == 1 { (1, 2) } else { (n, n + 1) };
+        let tally = match n {
+            1 => &mut self.alone,
+            2 => &mut self.pairs,
+            _ => &mut self.threes,
+        };
+        for rank in &case.ranks {
+            tally.0 += 1;
+            if n == 1 {
+                tally.1 += u32::from(rank.is_some_and(|r| r < first_within));
+                tally.2 += u32::from(rank.is_some_and(|r| r < top_within));
+            } else {
+                tally.1 += u32::from(rank.is_some_and(|r| r < first_within));
+                tally.2 += u32::from(rank.is_some_and(|r| r < top_within));
+            }
+        }
+        for (bug, rank) in case.bugs.iter().zip(&case.ranks) {
+            let cause = bug.split('@').next().unwrap_or(bug);
+            let cause = cause.split('=').next().unwrap_or(cause).to_owned();
+            let row = self.causes.entry(cause).or_default();
+            row.planted += 1;
+            row.first += u32::from(rank.is_some_and(|r| r < first_within));
+            row.top_two += u32::from(rank.is_some_and(|r| r < top_within));
+            row.missed += u32::from(rank.is_none());
+            if rank.is_none_or(|r| r >= first_within) {
+                let instead = case
+                    .named
+                    .first()
+                    .cloned()
+                    .unwrap_or_else(|| "nothing".to_owned());
+                *row.mistaken_for.entry(instead).or_default() += 1;
+            }
+        }
+        self.cases.push(case);
+    }
+}
+
+fn ratio(a: u32, b: u32) -> f64 {
+    if b == 0 {
+        1.0
+    } else {
+        f64::from(a) / f64::from(b)
+    }
+}
+
+/// The bugs that can be planted in `scene`, one per cause and site choice, drawn with
+/// `rng`: each light bug on a light of its kind, each object bug everywhere or on one
+/// object, each term factor at one of three severities.
+#[must_use]
+pub fn candidate_bugs(scene: &Scene, rng: &mut fastrand::Rng) -> Vec<PlantedBug> {
+    let lit: Vec<usize> = (0..scene.lights.len())
+        .filter(|&l| !matches!(scene.lights[l], Light::Ambient { .. }))
+        .collect();
+    let spots: Vec<usize> = lit
+        .iter()
+        .copied()
+        .filter(|&l| matches!(scene.lights[l], Light::Spot { .. }))
+        .collect();
+    let pick = |rng: &mut fastrand::Rng, list: &[usize]| list[rng.usize(0..list.len())];
+    let object_site = |rng: &mut fastrand::Rng| {
+        if scene.objects.len() > 1 && rng.bool() {
+            Site::Node(vec![rng.usize(0..scene.objects.len())])
+        } else {
+            Site::Everywhere
+        }
+    };
+    let severity = |rng: &mut fastrand::Rng| [0.0, 0.5, 2.0][rng.usize(0..3)];
+    let mut bugs = Vec::new();
+    let mut add = |plant, site| bugs.push(PlantedBug { plant, site });
+    if !lit.is_empty() {
+        add(Plant::LightOff, Site::Light(pick(rng, &lit)));
+        add(
+            Plant::Factor(Term::Diffuse, severity(rng)),
+            Site::Light(pick(rng, &lit)),
+        );
+        add(Plant::Factor(Term::Specular, 0.0), Site::Everywhere);
+        add(Plant::Factor(Term::Shadows, 0.0), Site::Everywhere);
+    }
+    add(
+        Plant::Factor(Term::Ambient, severity(rng)),
+        object_site(rng),
+    );
+    add(Plant::Factor(Term::Reflection, 0.0), Site::Everywhere);
+    for b in NormalBug::ALL {
+        add(Plant::Normal(b), object_site(rng));
+    }
+    for b in SpecularBug::ALL {
+        add(Plant::Highlight(b), Site::Everywhere);
+    }
+    for b in ClampBug::ALL {
+        add(Plant::Clamp(b), Site::Everywhere);
+    }
+    for b in ShadowBug::ALL {
+        add(Plant::ShadowTest(b), object_site(rng));
+    }
+    if !spots.is_empty() {
+        for b in SpotBug::ALL {
+            add(Plant::Spot(b), Site::Light(pick(rng, &spots)));
+        }
+    }
+    add(Plant::OneSided, Site::Everywhere);
+    add(Plant::MissingPart(Part::Caps), Site::Everywhere);
+    if scene.objects.len() > 1 {
+        add(
+            Plant::MissingObject,
+            Site::Node(vec![1 + rng.usize(0..scene.objects.len() - 1)]),
+        );
+    }
+    add(Plant::ExtraObject, Site::Everywhere);
+    add(Plant::Mirror(MirrorConvention::Blend), Site::Everywhere);
+    add(Plant::ClampAt(ClampConvention::EachRay), Site::Everywhere);
+    if !crate::compare::plant::has_glass(scene) {
+        add(Plant::NoDepthLimit, Site::Everywhere);
+    }
+    add(Plant::Encoding(Encoding::LinearTruncate), Site::Everywhere);
+    add(Plant::Encoding(Encoding::Srgb), Site::Everywhere);
+    bugs
+}
+
+/// How many cases of each kind one scene gets.
+#[derive(Clone, Copy, Debug)]
+pub struct Plan {
+    /// Bugs planted alone (drawn from the candidates; all of them where fewer).
+    pub alone: usize,
+    /// Pairs.
+    pub pairs: usize,
+    /// Threes.
+    pub threes: usize,
+}
+
+/// Runs the cases of `scene` (named `name`) and adds them to `report`. A planted picture
+/// that equals raylab's own (the bug has nothing to act on) is not a case.
+///
+/// # Errors
+/// The scene does not compile.
+pub fn run_scene(
+    name: &str,
+    scene: &Scene,
+    meshes: &MeshStore,
+    plan: Plan,
+    seed: u64,
+    report: &mut AccuracyReport,
+) -> Result<(), String> {
+    let progress = RenderProgress::default();
+    let mut rng = fastrand::Rng::with_seed(seed);
+    let own = plant(scene, meshes, &[], 1, &progress).map_err(|e| e.to_string())?;
+    let mut candidates = candidate_bugs(scene, &mut rng);
+    rng.shuffle(&mut candidates);
+    let mut cases: Vec<Vec<PlantedBug>> = candidates
+        .iter()
+        .take(plan.alone)
+        .map(|b| vec![b.clone()])
+        .collect();
+    for (count, size) in [(plan.pairs, 2), (plan.threes, 3)] {
+        for _ in 0..count {
+            let mut chosen: Vec<PlantedBug> = Vec::new();
+            for _ in 0..20 {
+                let bug = candidates[rng.usize(0..candidates.len())].clone();
+                // One bug per cause: two of the same read as one.
+                if chosen
+                    .iter()
+                    .all(|c| c.plant.name() != bug.plant.name() && !exclusive(c.plant, bug.plant))
+                {
+                    chosen.push(bug);
+                }
+                if chosen.len() == size {
+                    break;
+                }
+            }
+            if chosen.len() == size {
+                cases.push(chosen);
+            }
+        }
+    }
+    for bugs in cases {
+        let Ok(picture) = plant(scene, meshes, &bugs, 1, &progress) else {
+            continue;
+        };
+        if picture == own {
+            continue;
+        }
+        report.add(diff_case(name, scene, meshes, &bugs, &picture)?);
+    }
+    // Correct pictures: raylab's own at other sample counts, and in the other encoding.
+    for spp in [2, 4] {
+        let mut more = scene.clone();
+        more.render.samples_per_pixel = spp;
+        let picture = plant(&more, meshes, &[], spp, &progress).map_err(|e| e.to_string())?;
+        report.add(diff_case(name, scene, meshes, &[], &picture)?);
+    }
+    report.add(diff_case(name, scene, meshes, &[], &own)?);
+    Ok(())
+}
+
+/// Whether two bugs cannot be told apart when planted together (both encodings, both a
+/// change of convention that the other undoes).
+fn exclusive(a: Plant, b: Plant) -> bool {
+    matches!((a, b), (Plant::Encoding(_), Plant::Encoding(_)))
+}
+
+/// The diff of `picture` against `scene` at 1 sample per pixel, read against `bugs`.
+fn diff_case(
+    name: &str,
+    scene: &Scene,
+    meshes: &MeshStore,
+    bugs: &[PlantedBug],
+    picture: &OtherImage,
+) -> Result<CaseResult, String> {
+    let options = CompareOptions {
+        samples_per_pixel: Some(1),
+    };
+    let comparison =
+        compare_with_meshes(scene, meshes, picture, &options, &RenderProgress::default())
+            .map_err(|e| format!("{name}: {e}"))?;
+    let explanations: &[Explanation] = &comparison.explanations;
+    let ranks = bugs
+        .iter()
+        .map(|bug| explanations.iter().position(|e| bug.is_named_by(e)))
+        .collect();
+    Ok(CaseResult {
+        scene: name.to_owned(),
+        bugs: bugs.iter().map(|b| b.label(scene)).collect(),
+        ranks,
+        named: explanations
+            .iter()
+            .map(|e| e.cause.name().to_owned())
+            .collect(),
+        verdicts: explanations
+            .iter()
+            .map(|e| {
+                (
+                    e.sureness().to_owned(),
+                    bugs.iter().any(|b| b.is_named_by(e)),
+                )
+            })
+            .collect(),
+    })
+}
+
+/// The confusion table as text: one row per cause.
+#[must_use]
+pub fn confusion_table(report: &AccuracyReport) -> Vec<String> {
+    let mut lines = vec![format!(
+        "{:<28} {:>7} {:>6} {:>6} {:>6}  mistaken for",
+        "cause", "planted", "first", "top 2", "missed"
+    )];
+    for (cause, row) in &report.causes {
+        let mut instead: Vec<(&String, &u32)> = row.mistaken_for.iter().collect();
+        instead.sort_by(|a, b| b.1.cmp(a.1));
+        let instead: Vec<String> = instead
+            .iter()
+            .take(3)
+            .map(|(c, n)| format!("{c} x{n}"))
+            .collect();
+        lines.push(format!(
+            "{cause:<28} {:>7} {:>6} {:>6} {:>6}  {}",
+            row.planted,
+            row.first,
+            row.top_two,
+            row.missed,
+            instead.join(", ")
+        ));
+    }
+    lines
+}
+
+/// The accuracy run: `seeds` random scenes and the `examples` (resized to `width`
+/// pixels wide), each with `plan`'s cases. Progress goes to stderr.
+///
+/// # Errors
+/// A scene that does not compile.
+pub fn accuracy_run(
+    seeds: Range<u64>,
+    examples: &[(String, Scene)],
+    width: u32,
+    plan: Plan,
+) -> Result<AccuracyReport, String> {
+    let mut report = AccuracyReport::default();
+    let meshes = MeshStore::default();
+    for (i, (name, scene)) in examples.iter().enumerate() {
+        if !crate::scene::mesh_objects(scene).is_empty() {
+            continue; // a mesh file is not at hand here
+        }
+        let mut scene = scene.clone();
+        let height = (f64::from(scene.camera.height) * f64::from(width)
+            / f64::from(scene.camera.width))
+        .round() as u32;
+        (scene.camera.width, scene.camera.height) = (width, height.max(1));
+        scene.render.samples_per_pixel = 1;
+        eprintln!("diff accuracy: {name}");
+        run_scene(
+            name,
+            &scene,
+            &meshes,
+            plan,
+            MEASURED_SEEDS.start + i as u64,
+            &mut report,
+        )?;
+    }
+    for seed in seeds {
+        let height = width * 3 / 4;
+        let scene = super::random_scene::random_scene(seed, width, height);
+        eprintln!("diff accuracy: random scene {seed}");
+        run_scene(
+            &format!("random {seed}"),
+            &scene,
+            &meshes,
+            plan,
+            seed,
+            &mut report,
+        )?;
+    }
+    Ok(report)
+}

@@ -1,0 +1,16 @@
+//! Stage 3, the fit: the other picture read as intervals under its 8-bit encoding, the
+//! course's other conventions tried, and a greedy least-squares search over groups of
+//! channels, each accepted group a step with its share of the squared difference.
+
+mod conventions;
+mod encoding;
+mod groups;
+mod rivals;
+mod search;
+mod target;
+
+pub use conventions::{BetterConventions, NO_LIMIT_DEPTH, better_conventions, convention_names};
+pub use encoding::{Encoding, detect as detect_encoding};
+pub use groups::{Group, Groups};
+pub use search::{MIN_ERROR, MIN_STEP_SHARE, Step, search};
+pub use target::{FitState, OFF_LEVELS, Target};

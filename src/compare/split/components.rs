@@ -1,0 +1,233 @@
+//! raylab's picture split into channels, pixel by pixel: every camera sample traced once
+//! through the tracer with the [`SampleRecorder`] listening (which also traces each ray
+//! again without each tree node it may show, for the nodes that might be missing).
+//!
+//! Stored pixel-major (compressed rows): pixel `p`'s channels are
+//! `entries[offsets[p]..offsets[p + 1]]`, sorted by channel.
+
+use std::sync::atomic::Ordering;
+
+use glam::{DVec2, DVec3};
+use rayon::prelude::*;
+
+use super::context::Context;
+use super::recorder::{SampleRecorder, Tally};
+use crate::compare::catalogue::{ChannelSpace, MISS, MissingNodes, Nodes, TriedNode, spot_worlds};
+use crate::scene::Scene;
+use crate::trace::sample_in_pixel;
+use crate::trace::{
+    Image, PinholeCamera, RayCounts, RenderProgress, TermSwitches, Tracer, View, World,
+};
+
+/// One channel's colour at one pixel.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Entry {
+    /// The channel.
+    pub channel: u32,
+    /// Its colour (averaged over the pixel's samples).
+    pub value: [f32; 3],
+}
+
+/// raylab's picture and its channels.
+#[derive(Clone, Debug)]
+pub struct Components {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// Samples per pixel.
+    pub samples_per_pixel: u32,
+    /// The channel numbering.
+    pub space: ChannelSpace,
+    /// raylab's picture, linear and unclamped, as `render` makes it.
+    pub beauty: Vec<[f64; 3]>,
+    /// The leaf ([`Nodes::leaves`]) the first sample of each pixel hit, or [`MISS`].
+    pub labels: Vec<u32>,
+    /// Whether a pixel's samples saw more than one object (or some missed).
+    pub mixed: Vec<bool>,
+    /// The scene object the first sample of each pixel would hit were the scene object
+    /// it hit missing, or [`MISS`] (nothing behind, or that object not tried missing).
+    pub behind: Vec<u32>,
+    /// Start of each pixel's entries; one more than there are pixels.
+    pub offsets: Vec<u32>,
+    /// The entries, pixel by pixel.
+    pub entries: Vec<Entry>,
+    /// Per channel: squared changes of the diffuse and the specular part (normal bugs).
+    pub split: Vec<[f64; 2]>,
+    /// Rays cast.
+    pub rays: RayCounts,
+    /// The nodes of the scene's trees, whose leaves the channels are per.
+    pub nodes: Nodes,
+    /// The nodes tried as missing.
+    pub tried: Vec<TriedNode>,
+}
+
+impl Components {
+    /// The entries of pixel `p`.
+    #[must_use]
+    pub fn pixel(&self, p: usize) -> &[Entry] {
+        &self.entries[self.offsets[p] as usize..self.offsets[p + 1] as usize]
+    }
+
+    /// The scene object pixel `p`'s first sample hit (raylab's object-id view), or
+    /// [`MISS`].
+    #[must_use]
+    pub fn object_label(&self, p: usize) -> u32 {
+        match self.labels[p] {
+            MISS => MISS,
+            leaf => self.nodes.object_of_leaf(leaf as usize) as u32,
+        }
+    }
+
+    /// raylab's picture as the renderer's [`Image`].
+    #[must_use]
+    pub fn image(&self) -> Image {
+        Image {
+            width: self.width,
+            height: self.height,
+            pixels: self
+                .beauty
+                .iter()
+                .map(|c| DVec3::from_array(*c).as_vec3())
+                .collect(),
+        }
+    }
+}
+
+/// One row's results.
+struct Row {
+    beauty: Vec<[f64; 3]>,
+    labels: Vec<u32>,
+    behind: Vec<u32>,
+    mixed: Vec<bool>,
+    counts: Vec<u32>,
+    entries: Vec<Entry>,
+    split: Vec<[f64; 2]>,
+    rays: RayCounts,
+}
+
+/// Splits raylab's `width` x `height` picture of `scene` (compiled as `world`) at `spp`
+/// samples per pixel into channels; `None` if cancelled through `progress`.
+#[must_use]
+pub fn render_components(
+    scene: &Scene,
+    world: &World,
+    (width, height): (u32, u32),
+    spp: u32,
+    progress: &RenderProgress,
+) -> Option<Components> {
+    let nodes = Nodes::new(scene, world);
+    let missing = MissingNodes::new(scene, world, &nodes);
+    let tried = missing.tried_nodes();
+    let spot = spot_worlds(scene, world);
+    let ctx = Context::new(world, scene.lights.len(), &nodes, missing, spot);
+    let space = ctx.space;
+    let camera = PinholeCamera::new(&world.camera, width, height);
+    let spp = spp.max(1);
+    // one batch per row here
+    progress
+        .batches_total
+        .store(height as usize, Ordering::Relaxed);
+    progress.batches_done.store(0, Ordering::Relaxed);
+    let rows: Vec<Option<Row>> = (0..height)
+        .into_par_iter()
+        .map(|y| {
+            if progress.is_cancelled() {
+                return None;
+            }
+            let row = render_row(&ctx, &camera, width, y, spp);
+            progress.batches_done.fetch_add(1, Ordering::Relaxed);
+            Some(row)
+        })
+        .collect();
+    let rows: Vec<Row> = rows.into_iter().collect::<Option<_>>()?;
+    let pixels = width as usize * height as usize;
+    let mut components = Components {
+        width,
+        height,
+        samples_per_pixel: spp,
+        space,
+        beauty: Vec::with_capacity(pixels),
+        labels: Vec::with_capacity(pixels),
+        behind: Vec::with_capacity(pixels),
+        mixed: Vec::with_capacity(pixels),
+        offsets: Vec::with_capacity(pixels + 1),
+        entries: Vec::new(),
+        split: vec![[0.0; 2]; space.count()],
+        rays: RayCounts::default(),
+        nodes,
+        tried,
+    };
+    components.offsets.push(0);
+    for row in rows {
+        components.beauty.extend(row.beauty);
+        components.labels.extend(row.labels);
+        components.behind.extend(row.behind);
+        components.mixed.extend(row.mixed);
+        let base = components.entries.len() as u32;
+        let mut end = base;
+        for count in row.counts {
+            end += count;
+            components.offsets.push(end);
+        }
+        components.entries.extend(row.entries);
+        for (sum, part) in components.split.iter_mut().zip(row.split) {
+            sum[0] += part[0];
+            sum[1] += part[1];
+        }
+        components.rays.add(&row.rays);
+    }
+    Some(components)
+}
+
+fn render_row(ctx: &Context, camera: &PinholeCamera, width: u32, y: u32, spp: u32) -> Row {
+    let tracer = Tracer::new(ctx.world, TermSwitches::ALL_ON, View::Beauty);
+    let scale = 1.0 / f64::from(spp);
+    let mut recorder = SampleRecorder::new(ctx);
+    let mut row = Row {
+        beauty: Vec::with_capacity(width as usize),
+        labels: Vec::with_capacity(width as usize),
+        behind: Vec::with_capacity(width as usize),
+        mixed: Vec::with_capacity(width as usize),
+        counts: Vec::with_capacity(width as usize),
+        entries: Vec::new(),
+        split: Vec::new(),
+        rays: RayCounts::default(),
+    };
+    let mut pixel = Tally::default();
+    for x in 0..width {
+        pixel.entries.clear();
+        let mut sum = DVec3::ZERO;
+        let mut labels = Vec::with_capacity(1);
+        let mut behind = MISS;
+        for index in 0..spp {
+            let point = DVec2::new(f64::from(x), f64::from(y)) + sample_in_pixel(x, y, index, spp);
+            let ray = camera.ray(point);
+            recorder.start();
+            let colour = tracer.trace_primary(&ray, &mut row.rays, &mut recorder);
+            if !colour.is_finite() {
+                continue; // the renderer's guard: a non-finite sample adds nothing
+            }
+            sum += colour;
+            if labels.is_empty() {
+                behind = recorder.behind;
+            }
+            labels.push(recorder.primary_leaf().map_or(MISS, |l| l as u32));
+            pixel.absorb(&recorder.tally);
+        }
+        row.beauty.push((sum * scale).to_array());
+        let first = labels.first().copied().unwrap_or(MISS);
+        row.labels.push(first);
+        row.behind.push(behind);
+        row.mixed.push(labels.iter().any(|&l| l != first));
+        pixel.entries.sort_unstable_by_key(|(c, _)| *c);
+        row.counts.push(pixel.entries.len() as u32);
+        row.entries
+            .extend(pixel.entries.iter().map(|&(channel, v)| Entry {
+                channel,
+                value: (v * scale).as_vec3().to_array(),
+            }));
+    }
+    row.split = recorder.split;
+    row
+}

@@ -1,0 +1,104 @@
+//! The diff on the cases a class writes that it used to get wrong: a missing light
+//! beside a mirror (read as the course's conventions before the joint fit), spot lights
+//! without cone and fall-off on several lights at once (a saturated picture), and a
+//! tracer that never lets an object shadow itself. Each student picture comes from the
+//! independent test shader (tests/compare/shader.rs), not from raylab's own models.
+
+#[path = "compare/one_sample.rs"]
+mod one_sample;
+#[path = "compare/shader.rs"]
+mod shader;
+
+use one_sample::diff;
+use raylab::compare::{Cause, ExplainedTerm, ShadowBug, SpotBug};
+use raylab::scene::{Light, load_scene};
+use raylab::trace::Term;
+use shader::{Bugs, render};
+
+fn example(name: &str) -> raylab::scene::Scene {
+    let path = format!("{}/scenes/{name}", env!("CARGO_MANIFEST_DIR"));
+    let mut scene = load_scene(std::path::Path::new(&path)).unwrap();
+    // A quarter of the size: the same picture, quicker.
+    scene.camera.width /= 4;
+    scene.camera.height /= 4;
+    scene
+}
+
+#[test]
+fn a_missing_light_beside_a_mirror_is_a_missing_light_not_a_convention() {
+    let scene = example("default.ron");
+    let directional = scene
+        .lights
+        .iter()
+        .position(|l| matches!(l, Light::Directional { .. }))
+        .unwrap();
+    let other = render(
+        &scene,
+        1,
+        &Bugs {
+            drop_light: Some(directional),
+            ..Bugs::default()
+        },
+    );
+    let c = diff(&scene, &other);
+    let report = c.text_lines().join("\n");
+    let first = &c.explanations[0];
+    assert_eq!(first.cause, Cause::Factor, "{report}");
+    assert_eq!(first.light, Some(directional), "{report}");
+    assert!(first.factor < 0.05, "{report}");
+    assert!(
+        c.explanations
+            .iter()
+            .all(|e| e.term != ExplainedTerm::Conventions),
+        "{report}"
+    );
+}
+
+#[test]
+fn spots_without_cone_and_falloff_on_every_light_are_named_in_a_saturated_picture() {
+    let scene = example("spotlights.ron");
+    let other = render(
+        &scene,
+        1,
+        &Bugs {
+            spots_without_cone_or_falloff: true,
+            ..Bugs::default()
+        },
+    );
+    let white = other.rgb.iter().filter(|p| **p == [255, 255, 255]).count();
+    assert!(
+        white * 3 > other.rgb.len(),
+        "the picture saturates: {white} white pixels"
+    );
+    let c = diff(&scene, &other);
+    let report = c.text_lines().join("\n");
+    let first = &c.explanations[0];
+    assert_eq!(
+        first.cause,
+        Cause::Spot(SpotBug::NoConeNoFalloff),
+        "{report}"
+    );
+    assert_eq!(first.light, None, "every spot light at once: {report}");
+}
+
+#[test]
+fn an_object_that_never_shadows_itself_is_named() {
+    let scene = example("csg.ron");
+    let other = render(
+        &scene,
+        1,
+        &Bugs {
+            no_self_shadow: true,
+            ..Bugs::default()
+        },
+    );
+    let c = diff(&scene, &other);
+    let report = c.text_lines().join("\n");
+    let first = &c.explanations[0];
+    assert_eq!(
+        first.cause,
+        Cause::ShadowTest(ShadowBug::NoSelfShadow),
+        "{report}"
+    );
+    assert_eq!(first.term, ExplainedTerm::Term(Term::Shadows), "{report}");
+}
