@@ -6,8 +6,7 @@ use std::path::{Path, PathBuf};
 use clap::Args;
 
 use crate::compare::{CompareOptions, OtherImage, compare_with_meshes, write_report_png};
-use crate::scene::legacy::import_legacy_file;
-use crate::scene::{Scene, load_scene};
+use crate::scene::Scene;
 use crate::trace::RenderProgress;
 
 /// Arguments of `raylab diff`.
@@ -37,18 +36,11 @@ pub struct DiffArgs {
 /// # Errors
 /// The loader's message, naming the file.
 pub fn load_any_scene(path: &Path) -> Result<Scene, String> {
-    if path
-        .extension()
-        .is_some_and(|x| x.eq_ignore_ascii_case("txt"))
-    {
-        let import = import_legacy_file(path).map_err(|e| e.to_string())?;
-        for warning in &import.warnings {
-            eprintln!("warning: {}: {warning}", path.display());
-        }
-        Ok(import.scene)
-    } else {
-        load_scene(path).map_err(|e| format!("{}: {e}", path.display()))
+    let (scene, warnings) = crate::scene::load_any_scene(path)?;
+    for warning in &warnings {
+        eprintln!("warning: {warning}");
     }
+    Ok(scene)
 }
 
 /// Runs `raylab diff`.

@@ -1,8 +1,9 @@
 //! The command line: `raylab [SCENE.ron]` starts the editor, `raylab render` renders
 //! headless, `raylab inspect` prints a pixel's rays, `raylab diff` compares with another
-//! renderer. `main.rs` only calls [`run`].
+//! renderer, `raylab class` a whole class's renders. `main.rs` only calls [`run`].
 
 mod bench;
+mod class;
 mod conventions;
 mod diff;
 mod import;
@@ -17,6 +18,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 pub use bench::BenchArgs;
+pub use class::ClassArgs;
 pub use conventions::ConventionArgs;
 pub use diff::DiffArgs;
 pub use import::ImportArgs;
@@ -48,6 +50,9 @@ pub enum Command {
     Inspect(InspectArgs),
     /// Compare with another renderer's image: which light, object and term differ.
     Diff(DiffArgs),
+    /// Compare a whole class's renders with the scenes: a table, the bugs across the
+    /// class and feedback per student, in a report folder.
+    Class(ClassArgs),
 }
 
 /// Parses the command line and runs it. Errors are printed to stderr with a non-zero exit.
@@ -60,6 +65,7 @@ pub fn run() -> ExitCode {
         Some(Command::Bench(args)) => bench::run(&args),
         Some(Command::Inspect(args)) => inspect::run(&args),
         Some(Command::Diff(args)) => diff::run(&args),
+        Some(Command::Class(args)) => class::run(&args),
         None => start_editor(cli.scene),
     };
     match result {
@@ -93,10 +99,8 @@ pub(crate) fn load_meshes(
     scene: &crate::scene::Scene,
     scene_path: &std::path::Path,
 ) -> Result<crate::trace::MeshStore, String> {
-    let folder = scene_path.parent().unwrap_or(std::path::Path::new("."));
-    let data = crate::scene::read_scene_meshes(scene, folder)
-        .map_err(|e| format!("{}: {e}", scene_path.display()))?;
-    for warning in data.values().flat_map(|mesh| &mesh.warnings) {
+    let (data, warnings) = crate::scene::read_meshes_beside(scene, scene_path)?;
+    for warning in warnings {
         eprintln!("warning: {warning}");
     }
     Ok(crate::trace::MeshStore::build(&data))

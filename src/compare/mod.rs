@@ -29,6 +29,7 @@ pub mod localise;
 pub mod missing_nodes;
 pub mod nodes;
 pub mod other_image;
+pub mod perceptual;
 pub mod record_context;
 pub mod recorder;
 pub mod regions;
