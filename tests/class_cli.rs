@@ -24,7 +24,8 @@ fn class_writes_the_report_and_a_rerun_reuses_it() {
     let stderr = String::from_utf8_lossy(&first.stderr);
     assert!(first.status.success(), "{stderr}");
     assert!(
-        stderr.contains("4 students x 3 scenes; 8 pairs compared, 0 reused from the cache, 2 errors"),
+        stderr
+            .contains("4 students x 3 scenes; 8 pairs compared, 0 reused from the cache, 2 errors"),
         "{stderr}"
     );
     for file in ["index.html", "class.csv", "class.json"] {
@@ -32,7 +33,10 @@ fn class_writes_the_report_and_a_rerun_reuses_it() {
     }
     let again = raylab(&args);
     let stderr = String::from_utf8_lossy(&again.stderr);
-    assert!(stderr.contains("0 pairs compared, 8 reused from the cache"), "{stderr}");
+    assert!(
+        stderr.contains("0 pairs compared, 8 reused from the cache"),
+        "{stderr}"
+    );
 
     let inside = class.submissions_dir().join("report");
     let refused = raylab(&[

@@ -26,9 +26,23 @@ fn run(class: &generated::Class, report: &Path) -> ClassRun {
 }
 
 fn outcome<'a>(run: &'a ClassRun, student: &str, scene: &str) -> &'a Outcome {
-    let s = run.roster.students.iter().position(|x| x.name == student).unwrap();
-    let c = run.roster.scenes.iter().position(|x| x.name == scene).unwrap();
-    &run.rows.iter().find(|r| r.student == s && r.scene == c).unwrap().outcome
+    let s = run
+        .roster
+        .students
+        .iter()
+        .position(|x| x.name == student)
+        .unwrap();
+    let c = run
+        .roster
+        .scenes
+        .iter()
+        .position(|x| x.name == scene)
+        .unwrap();
+    &run.rows
+        .iter()
+        .find(|r| r.student == s && r.scene == c)
+        .unwrap()
+        .outcome
 }
 
 fn findings<'a>(run: &'a ClassRun, student: &str, scene: &str) -> &'a [Finding] {
@@ -56,23 +70,46 @@ fn the_table_csv_and_json_name_the_planted_bugs() {
     let hidden = class.scene("shapes").objects[HIDDEN_IN_SHAPES].name.clone();
     // The planted bugs, as the comparison names them.
     let muted = top(&run, "bob", "default");
-    assert_eq!((muted.light, muted.factor < 0.1), (Some(lit), true), "{muted:?}");
+    assert_eq!(
+        (muted.light, muted.factor < 0.1),
+        (Some(lit), true),
+        "{muted:?}"
+    );
     let missing = top(&run, "bob", "shapes");
     assert_eq!(missing.cause, "missing-object", "{missing:?}");
     assert_eq!(missing.object.as_deref(), Some(hidden.as_str()));
     let specular = top(&run, "cat", "default");
-    assert_eq!((specular.term.as_str(), specular.factor < 0.1), ("specular", true), "{specular:?}");
+    assert_eq!(
+        (specular.term.as_str(), specular.factor < 0.1),
+        ("specular", true),
+        "{specular:?}"
+    );
     let shadows = top(&run, "dan", "default");
-    assert_eq!((shadows.term.as_str(), shadows.factor < 0.1), ("shadows", true), "{shadows:?}");
+    assert_eq!(
+        (shadows.term.as_str(), shadows.factor < 0.1),
+        ("shadows", true),
+        "{shadows:?}"
+    );
     // The right renders: nothing found, identical.
     for scene in ["default", "shapes", "spotlights"] {
         assert!(findings(&run, "ann", scene).is_empty(), "ann/{scene}");
-        let Outcome::Done { result, .. } = outcome(&run, "ann", scene) else { unreachable!() };
-        assert_eq!((result.psnr_db, result.flip_mean), (100.0, 0.0), "ann/{scene}");
+        let Outcome::Done { result, .. } = outcome(&run, "ann", scene) else {
+            unreachable!()
+        };
+        assert_eq!(
+            (result.psnr_db, result.flip_mean),
+            (100.0, 0.0),
+            "ann/{scene}"
+        );
     }
     // A planted bug is a visible difference.
-    let Outcome::Done { result, .. } = outcome(&run, "bob", "shapes") else { unreachable!() };
-    assert!(result.flip_mean > 0.0 && result.flip_p99 >= result.flip_mean, "{result:?}");
+    let Outcome::Done { result, .. } = outcome(&run, "bob", "shapes") else {
+        unreachable!()
+    };
+    assert!(
+        result.flip_mean > 0.0 && result.flip_p99 >= result.flip_mean,
+        "{result:?}"
+    );
 
     // class.csv: a row per student and scene, each explanation's fields.
     let csv_text = std::fs::read_to_string(report.join("class.csv")).unwrap();
@@ -90,12 +127,23 @@ fn the_table_csv_and_json_name_the_planted_bugs() {
     let bob_shapes = record("bob", "shapes");
     assert_eq!(&bob_shapes[column("explanation_1_cause")], "missing-object");
     assert_eq!(&bob_shapes[column("explanation_1_object")], hidden);
-    assert_eq!(&record("bob", "default")[column("explanation_1_light")], lit.to_string());
-    assert_eq!(&record("cat", "default")[column("explanation_1_term")], "specular");
-    assert_eq!(&record("dan", "default")[column("explanation_1_term")], "shadows");
+    assert_eq!(
+        &record("bob", "default")[column("explanation_1_light")],
+        lit.to_string()
+    );
+    assert_eq!(
+        &record("cat", "default")[column("explanation_1_term")],
+        "specular"
+    );
+    assert_eq!(
+        &record("dan", "default")[column("explanation_1_term")],
+        "shadows"
+    );
     assert_eq!(&record("ann", "default")[column("psnr_db")], "100");
     for field in ["factor", "share"] {
-        let value: f64 = bob_shapes[column(&format!("explanation_1_{field}"))].parse().unwrap();
+        let value: f64 = bob_shapes[column(&format!("explanation_1_{field}"))]
+            .parse()
+            .unwrap();
         assert!((0.0..=1.0).contains(&value), "{field} {value}");
     }
 
@@ -110,22 +158,37 @@ fn the_table_csv_and_json_name_the_planted_bugs() {
             .find(|p| p["student"] == student && p["scene"] == scene)
             .unwrap()
     };
-    assert_eq!(pair("bob", "shapes")["explanations"][0]["cause"], "missing-object");
-    assert_eq!(pair("bob", "shapes")["explanations"][0]["object"], hidden.as_str());
+    assert_eq!(
+        pair("bob", "shapes")["explanations"][0]["cause"],
+        "missing-object"
+    );
+    assert_eq!(
+        pair("bob", "shapes")["explanations"][0]["object"],
+        hidden.as_str()
+    );
     assert_eq!(pair("bob", "default")["explanations"][0]["light"], lit);
     assert!(pair("bob", "shapes")["flip_mean"].as_f64().unwrap() > 0.0);
     let bugs = json["bugs"].as_array().unwrap();
     let missing_bug = bugs.iter().find(|b| b["bug"] == "missing-object").unwrap();
     assert_eq!(missing_bug["students"], serde_json::json!(["bob"]));
     assert_eq!(missing_bug["scenes"], serde_json::json!(["shapes"]));
-    assert!(bugs.iter().any(|b| b["bug"] == "specular off" && b["students"] == serde_json::json!(["cat"])));
+    assert!(
+        bugs.iter()
+            .any(|b| b["bug"] == "specular off" && b["students"] == serde_json::json!(["cat"]))
+    );
 
     // The page: each student's cell names the top bug, the summary counts it.
     let page = std::fs::read_to_string(report.join("index.html")).unwrap();
-    assert!(page.contains(&format!("missing-object, &#39;{hidden}&#39;")), "bob's shapes cell");
+    assert!(
+        page.contains(&format!("missing-object, &#39;{hidden}&#39;")),
+        "bob's shapes cell"
+    );
     assert!(page.contains("missing-object: 1 of 4 students, in shapes"));
     assert!(page.contains("specular off: 1 of 4 students, in default"));
-    assert!(page.contains(&raylab::class::page::escape(&missing.summary)), "bob's feedback");
+    assert!(
+        page.contains(&raylab::class::page::escape(&missing.summary)),
+        "bob's feedback"
+    );
 }
 
 #[test]
@@ -144,10 +207,21 @@ fn bad_pairs_are_rows_and_unmatched_files_are_listed() {
         other => panic!("{other:?}"),
     }
     // Matched by case and suffix.
-    assert!(matches!(outcome(&run, "ann", "spotlights"), Outcome::Done { .. }));
-    assert!(matches!(outcome(&run, "dan", "default"), Outcome::Done { .. }));
+    assert!(matches!(
+        outcome(&run, "ann", "spotlights"),
+        Outcome::Done { .. }
+    ));
+    assert!(matches!(
+        outcome(&run, "dan", "default"),
+        Outcome::Done { .. }
+    ));
     assert_eq!(outcome(&run, "dan", "shapes"), &Outcome::Missing);
-    let bob = run.roster.students.iter().find(|s| s.name == "bob").unwrap();
+    let bob = run
+        .roster
+        .students
+        .iter()
+        .find(|s| s.name == "bob")
+        .unwrap();
     assert_eq!(bob.unmatched, vec!["notes.txt"]);
     assert_eq!(run.roster.loose_files, vec!["README.txt"]);
 
@@ -163,7 +237,12 @@ fn bad_pairs_are_rows_and_unmatched_files_are_listed() {
             .clone()
     };
     assert_eq!(pair("cat", "shapes")["status"], "error");
-    assert!(pair("cat", "shapes")["error"].as_str().unwrap().contains("40x30"));
+    assert!(
+        pair("cat", "shapes")["error"]
+            .as_str()
+            .unwrap()
+            .contains("40x30")
+    );
     assert_eq!(pair("bob", "spotlights")["status"], "missing");
     let students = json["students"].as_array().unwrap();
     let bob = students.iter().find(|s| s["name"] == "bob").unwrap();
@@ -172,7 +251,9 @@ fn bad_pairs_are_rows_and_unmatched_files_are_listed() {
     assert_eq!(json["loose_files"], serde_json::json!(["README.txt"]));
     let page = std::fs::read_to_string(report.join("index.html")).unwrap();
     assert!(page.contains("bob: notes.txt matched no scene."));
-    assert!(page.contains("README.txt is in the submissions folder, not in a student&#39;s folder."));
+    assert!(
+        page.contains("README.txt is in the submissions folder, not in a student&#39;s folder.")
+    );
     assert!(page.contains("Scene spotlights: no render of this scene was found."));
 }
 
@@ -221,8 +302,16 @@ fn a_stopped_run_keeps_the_finished_pairs_and_a_rerun_finishes() {
     )
     .unwrap();
     assert!(stopped.cancelled);
-    let not_run = stopped.rows.iter().filter(|r| r.outcome == Outcome::NotRun).count();
-    assert!(not_run > 0 && stopped.computed >= 1, "{not_run} not run, {} computed", stopped.computed);
+    let not_run = stopped
+        .rows
+        .iter()
+        .filter(|r| r.outcome == Outcome::NotRun)
+        .count();
+    assert!(
+        not_run > 0 && stopped.computed >= 1,
+        "{not_run} not run, {} computed",
+        stopped.computed
+    );
     write_report(&stopped, &report).unwrap();
     let page = std::fs::read_to_string(report.join("index.html")).unwrap();
     assert!(page.contains("not run (stopped)"));
@@ -235,13 +324,22 @@ fn a_stopped_run_keeps_the_finished_pairs_and_a_rerun_finishes() {
 #[test]
 fn nothing_in_the_inputs_is_written_and_a_report_inside_them_is_refused() {
     let class = generate("inputs");
-    let before = (snapshot(&class.scenes_dir()), snapshot(&class.submissions_dir()));
+    let before = (
+        snapshot(&class.scenes_dir()),
+        snapshot(&class.submissions_dir()),
+    );
     let report = class.root.join("report");
     let run = run(&class, &report);
     write_report(&run, &report).unwrap();
-    let after = (snapshot(&class.scenes_dir()), snapshot(&class.submissions_dir()));
+    let after = (
+        snapshot(&class.scenes_dir()),
+        snapshot(&class.submissions_dir()),
+    );
     assert!(before == after, "the inputs changed");
-    for inside in [class.submissions_dir().join("report"), class.scenes_dir().join("out")] {
+    for inside in [
+        class.submissions_dir().join("report"),
+        class.scenes_dir().join("out"),
+    ] {
         let error = run_class(
             &class.scenes_dir(),
             &class.submissions_dir(),
@@ -288,10 +386,16 @@ fn the_page_references_only_files_inside_the_report() {
                 assert!(page.contains(&format!("id=\"{anchor}\"")), "anchor {value}");
                 continue;
             }
-            assert!(!value.contains(':') && !value.starts_with('/'), "not relative: {value}");
+            assert!(
+                !value.contains(':') && !value.starts_with('/'),
+                "not relative: {value}"
+            );
             let file: PathBuf = std::fs::canonicalize(report.join(&value))
                 .unwrap_or_else(|e| panic!("{value}: {e}"));
-            assert!(file.starts_with(&root) && file.is_file(), "{value} outside the report");
+            assert!(
+                file.starts_with(&root) && file.is_file(),
+                "{value} outside the report"
+            );
             files += 1;
         }
     }

@@ -13,9 +13,7 @@ use glam::DVec3;
 use crate::class::{ClassOptions, run_class};
 use crate::scene::examples::EXAMPLE_SCENES;
 use crate::scene::{Light, Scene, parse_scene, save_scene};
-use crate::trace::{
-    Isolation, RenderOptions, RenderProgress, Term, TermSwitches, World, render,
-};
+use crate::trace::{Isolation, RenderOptions, RenderProgress, Term, TermSwitches, World, render};
 
 /// A bug planted in a student's render.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -83,7 +81,14 @@ pub fn class_scenes(count: usize, width: u32, height: u32) -> Result<Vec<(String
             let angle = (40.0 * turns as f64).to_radians();
             let turned = glam::DQuat::from_axis_angle(DVec3::Y, angle) * offset;
             scene.camera.position = scene.camera.look_at + turned;
-            name = format!("{name}_turned{}", if turns > 1 { turns.to_string() } else { String::new() });
+            name = format!(
+                "{name}_turned{}",
+                if turns > 1 {
+                    turns.to_string()
+                } else {
+                    String::new()
+                }
+            );
         }
         scenes.push((name, scene));
     }
@@ -125,7 +130,9 @@ pub fn generate_class(
         save_scene(scene, &scene_folder.join(format!("{name}.ron"))).map_err(|e| e.to_string())?;
     }
     for student in 0..students {
-        let student_folder = folder.join("submissions").join(format!("student_{student:02}"));
+        let student_folder = folder
+            .join("submissions")
+            .join(format!("student_{student:02}"));
         std::fs::create_dir_all(&student_folder).map_err(|e| e.to_string())?;
         for (index, (name, scene)) in scenes.iter().enumerate() {
             let bytes = render_with_bug(scene, &planted_bug(student, scene, index))?;

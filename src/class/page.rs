@@ -185,7 +185,11 @@ pub fn class_page(run: &ClassRun) -> String {
     problems(run, &mut html);
     html.push_str("<h2>Feedback per student</h2>\n");
     for (s, student) in run.roster.students.iter().enumerate() {
-        let _ = writeln!(html, "<h3 id=\"student-{s}\">{}</h3>", escape(&student.name));
+        let _ = writeln!(
+            html,
+            "<h3 id=\"student-{s}\">{}</h3>",
+            escape(&student.name)
+        );
         for paragraph in student_feedback(run, s) {
             let _ = writeln!(html, "<p class=\"feedback\">{}</p>", escape(&paragraph));
         }

@@ -160,8 +160,7 @@ pub fn compare_pair(
 /// The picture scaled to [`THUMBNAIL_WIDTH`] wide, as PNG bytes.
 fn thumbnail_png(picture: &OtherImage) -> Result<Vec<u8>, String> {
     let bytes = picture.rgb.iter().flatten().copied().collect();
-    let image =
-        RgbImage::from_raw(picture.width, picture.height, bytes).ok_or("picture size")?;
+    let image = RgbImage::from_raw(picture.width, picture.height, bytes).ok_or("picture size")?;
     let height = (u64::from(picture.height) * u64::from(THUMBNAIL_WIDTH)
         / u64::from(picture.width.max(1)))
     .max(1) as u32;

@@ -11,7 +11,14 @@ const SCENE_EXTENSIONS: [&str; 2] = ["ron", "txt"];
 /// Words a student may add after the scene's name, each after `_`, `-`, `.` or a space;
 /// several may follow one another (`default_render_final.png`).
 const SUFFIXES: [&str; 8] = [
-    "render", "rendered", "out", "output", "final", "image", "result", "raytraced",
+    "render",
+    "rendered",
+    "out",
+    "output",
+    "final",
+    "image",
+    "result",
+    "raytraced",
 ];
 
 /// One scene of the class.
@@ -83,7 +90,10 @@ fn entries(folder: &Path) -> Result<Vec<PathBuf>, String> {
     let mut paths: Vec<PathBuf> = std::fs::read_dir(folder)
         .map_err(|e| format!("cannot read {}: {e}", folder.display()))?
         .filter_map(|entry| entry.ok().map(|e| e.path()))
-        .filter(|p| !p.file_name().is_some_and(|n| n.to_string_lossy().starts_with('.')))
+        .filter(|p| {
+            !p.file_name()
+                .is_some_and(|n| n.to_string_lossy().starts_with('.'))
+        })
         .collect();
     paths.sort();
     Ok(paths)
@@ -106,14 +116,15 @@ pub fn scene_files(folder: &Path) -> Result<Vec<SceneFile>, String> {
         .into_iter()
         .filter(|p| p.is_file())
         .filter(|p| {
-            p.extension().is_some_and(|x| {
-                SCENE_EXTENSIONS
-                    .iter()
-                    .any(|e| x.eq_ignore_ascii_case(e))
-            })
+            p.extension()
+                .is_some_and(|x| SCENE_EXTENSIONS.iter().any(|e| x.eq_ignore_ascii_case(e)))
         })
         .map(|path| SceneFile {
-            name: path.file_stem().unwrap_or_default().to_string_lossy().into_owned(),
+            name: path
+                .file_stem()
+                .unwrap_or_default()
+                .to_string_lossy()
+                .into_owned(),
             path,
         })
         .collect();
@@ -124,7 +135,10 @@ pub fn scene_files(folder: &Path) -> Result<Vec<SceneFile>, String> {
         ));
     }
     for (i, a) in scenes.iter().enumerate() {
-        if let Some(b) = scenes[i + 1..].iter().find(|b| stem_key(&b.path) == stem_key(&a.path)) {
+        if let Some(b) = scenes[i + 1..]
+            .iter()
+            .find(|b| stem_key(&b.path) == stem_key(&a.path))
+        {
             return Err(format!(
                 "{} and {} have the same name: a render could not say which it is",
                 a.path.display(),
@@ -184,7 +198,10 @@ pub fn roster(scenes: &Path, submissions: &Path) -> Result<Roster, String> {
     };
     for path in entries(submissions)? {
         if path.is_dir() {
-            let files: Vec<PathBuf> = entries(&path)?.into_iter().filter(|p| p.is_file()).collect();
+            let files: Vec<PathBuf> = entries(&path)?
+                .into_iter()
+                .filter(|p| p.is_file())
+                .collect();
             let student = match_student(file_name(&path), &files, &roster.scenes);
             roster.students.push(student);
         } else {
@@ -224,7 +241,10 @@ mod tests {
         let student = match_student("ann".to_owned(), &files, &scenes);
         assert_eq!(student.renders[&0], PathBuf::from("Default.PNG"));
         assert_eq!(student.renders[&1], PathBuf::from("glass_render.ppm"));
-        assert_eq!(student.renders[&2], PathBuf::from("mirror_cap-out_final.png"));
+        assert_eq!(
+            student.renders[&2],
+            PathBuf::from("mirror_cap-out_final.png")
+        );
         assert_eq!(student.unmatched, vec!["notes.txt", "shapes_v2.png"]);
         assert_eq!(student.missing(4), vec![3]);
     }

@@ -154,10 +154,7 @@ pub fn class_json(run: &ClassRun) -> String {
             .collect(),
         loose_files: &run.roster.loose_files,
         pairs: run.rows.iter().map(|row| pair_json(run, row)).collect(),
-        bugs: counts
-            .iter()
-            .map(|c| bug_json(run, c))
-            .collect(),
+        bugs: counts.iter().map(|c| bug_json(run, c)).collect(),
         computed: run.computed,
         reused: run.reused,
         cancelled: run.cancelled,

@@ -43,8 +43,8 @@ pub fn read_meshes_beside(
     scene_path: &Path,
 ) -> Result<(BTreeMap<String, MeshData>, Vec<String>), String> {
     let folder = scene_path.parent().unwrap_or(Path::new("."));
-    let data = read_scene_meshes(scene, folder)
-        .map_err(|e| format!("{}: {e}", scene_path.display()))?;
+    let data =
+        read_scene_meshes(scene, folder).map_err(|e| format!("{}: {e}", scene_path.display()))?;
     let warnings = data
         .values()
         .flat_map(|mesh| mesh.warnings.iter().cloned())

@@ -73,8 +73,14 @@ pub fn generate(name: &str) -> Class {
     let submissions = class.submissions_dir();
     let render = |scene: &str, bug: PlantedBug| render_with_bug(class.scene(scene), &bug).unwrap();
     let default = class.scene("default");
-    write(&submissions.join("ann/default.png"), &render("default", PlantedBug::None));
-    write(&submissions.join("ann/shapes.png"), &render("shapes", PlantedBug::None));
+    write(
+        &submissions.join("ann/default.png"),
+        &render("default", PlantedBug::None),
+    );
+    write(
+        &submissions.join("ann/shapes.png"),
+        &render("shapes", PlantedBug::None),
+    );
     write(
         &submissions.join("ann/spotlights_render.png"),
         &render("spotlights", PlantedBug::None),
