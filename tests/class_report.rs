@@ -11,7 +11,9 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use generated::{HIDDEN_IN_SHAPES, first_lit, generate, snapshot};
+use raylab::bench::class::{PlantedBug, render_with_bug};
 use raylab::class::{ClassOptions, ClassRun, Finding, Outcome, run_class, write_report};
+use raylab::trace::Term;
 
 fn run(class: &generated::Class, report: &Path) -> ClassRun {
     run_class(
@@ -66,10 +68,10 @@ fn the_table_csv_and_json_name_the_planted_bugs() {
     let run = run(&class, &report);
     write_report(&run, &report).unwrap();
 
-    let lit = first_lit(class.scene("default"));
+    let lit = first_lit(class.scene("spotlights"));
     let hidden = class.scene("shapes").objects[HIDDEN_IN_SHAPES].name.clone();
     // The planted bugs, as the comparison names them.
-    let muted = top(&run, "bob", "default");
+    let muted = top(&run, "bob", "spotlights");
     assert_eq!(
         (muted.light, muted.factor < 0.1),
         (Some(lit), true),
@@ -128,7 +130,7 @@ fn the_table_csv_and_json_name_the_planted_bugs() {
     assert_eq!(&bob_shapes[column("explanation_1_cause")], "missing-object");
     assert_eq!(&bob_shapes[column("explanation_1_object")], hidden);
     assert_eq!(
-        &record("bob", "default")[column("explanation_1_light")],
+        &record("bob", "spotlights")[column("explanation_1_light")],
         lit.to_string()
     );
     assert_eq!(
@@ -140,12 +142,18 @@ fn the_table_csv_and_json_name_the_planted_bugs() {
         "shadows"
     );
     assert_eq!(&record("ann", "default")[column("psnr_db")], "100");
-    for field in ["factor", "share"] {
-        let value: f64 = bob_shapes[column(&format!("explanation_1_{field}"))]
+    let number = |field: &str| -> f64 {
+        bob_shapes[column(&format!("explanation_1_{field}"))]
             .parse()
-            .unwrap();
-        assert!((0.0..=1.0).contains(&value), "{field} {value}");
-    }
+            .unwrap()
+    };
+    // A hidden object: its geometry missing (factor 0), nearly all of the difference.
+    assert!(number("factor").abs() < 0.01, "{}", number("factor"));
+    assert!(
+        (0.9..=1.0).contains(&number("share")),
+        "{}",
+        number("share")
+    );
 
     // class.json: the same, and the bugs across the class.
     let json: serde_json::Value =
@@ -166,7 +174,7 @@ fn the_table_csv_and_json_name_the_planted_bugs() {
         pair("bob", "shapes")["explanations"][0]["object"],
         hidden.as_str()
     );
-    assert_eq!(pair("bob", "default")["explanations"][0]["light"], lit);
+    assert_eq!(pair("bob", "spotlights")["explanations"][0]["light"], lit);
     assert!(pair("bob", "shapes")["flip_mean"].as_f64().unwrap() > 0.0);
     let bugs = json["bugs"].as_array().unwrap();
     let missing_bug = bugs.iter().find(|b| b["bug"] == "missing-object").unwrap();
@@ -197,7 +205,7 @@ fn bad_pairs_are_rows_and_unmatched_files_are_listed() {
     let report = class.root.join("report");
     let run = run(&class, &report);
     write_report(&run, &report).unwrap();
-    assert_eq!(outcome(&run, "bob", "spotlights"), &Outcome::Missing);
+    assert_eq!(outcome(&run, "bob", "default"), &Outcome::Missing);
     match outcome(&run, "cat", "shapes") {
         Outcome::Error(e) => assert!(e.contains("40x30") && e.contains("80x60"), "{e}"),
         other => panic!("{other:?}"),
@@ -243,18 +251,18 @@ fn bad_pairs_are_rows_and_unmatched_files_are_listed() {
             .unwrap()
             .contains("40x30")
     );
-    assert_eq!(pair("bob", "spotlights")["status"], "missing");
+    assert_eq!(pair("bob", "default")["status"], "missing");
     let students = json["students"].as_array().unwrap();
     let bob = students.iter().find(|s| s["name"] == "bob").unwrap();
     assert_eq!(bob["unmatched"], serde_json::json!(["notes.txt"]));
-    assert_eq!(bob["missing"], serde_json::json!(["spotlights"]));
+    assert_eq!(bob["missing"], serde_json::json!(["default"]));
     assert_eq!(json["loose_files"], serde_json::json!(["README.txt"]));
     let page = std::fs::read_to_string(report.join("index.html")).unwrap();
     assert!(page.contains("bob: notes.txt matched no scene."));
     assert!(
         page.contains("README.txt is in the submissions folder, not in a student&#39;s folder.")
     );
-    assert!(page.contains("Scene spotlights: no render of this scene was found."));
+    assert!(page.contains("Scene default: no render of this scene was found."));
 }
 
 #[test]
@@ -262,24 +270,45 @@ fn a_rerun_reuses_the_cache_and_a_changed_picture_costs_one_pair() {
     let class = generate("cache");
     let report = class.root.join("report");
     let first = run(&class, &report);
-    // 10 renders: 8 compared, 2 errors (wrong size, not an image).
-    assert_eq!((first.computed, first.reused), (8, 0));
+    // 9 renders: 7 compared, 2 errors (wrong size, not an image).
+    assert_eq!((first.computed, first.reused), (7, 0));
     let again = run(&class, &report);
-    assert_eq!((again.computed, again.reused), (0, 8));
-    assert_eq!(
+    assert_eq!((again.computed, again.reused), (0, 7));
+    // The cached result is the computed one (numbers through JSON, to the last bits).
+    let (cached, computed) = (
         findings(&again, "bob", "shapes"),
         findings(&first, "bob", "shapes"),
-        "the cached result is the computed one"
     );
+    assert_eq!(cached.len(), computed.len());
+    for (a, b) in cached.iter().zip(computed) {
+        assert_eq!(
+            (&a.cause, &a.term, a.light, &a.object, &a.summary),
+            (&b.cause, &b.term, b.light, &b.object, &b.summary)
+        );
+        assert!((a.factor - b.factor).abs() < 1e-12 && (a.share - b.share).abs() < 1e-12);
+    }
     // A late submission replaces a picture: one pair is compared again.
-    std::fs::copy(
-        class.submissions_dir().join("ann/default.png"),
-        class.submissions_dir().join("bob/default.png"),
+    let fixed = render_with_bug(
+        class.scene("spotlights"),
+        &PlantedBug::TermOff(Term::Shadows),
+    );
+    std::fs::write(
+        class.submissions_dir().join("bob/spotlights.png"),
+        fixed.unwrap(),
     )
     .unwrap();
     let late = run(&class, &report);
-    assert_eq!((late.computed, late.reused), (1, 7));
-    assert!(findings(&late, "bob", "default").is_empty());
+    assert_eq!((late.computed, late.reused), (1, 6));
+    assert_eq!(top(&late, "bob", "spotlights").term, "shadows");
+    // The same picture as another pair's of the same scene is that pair's result.
+    std::fs::copy(
+        class.submissions_dir().join("ann/spotlights_render.png"),
+        class.submissions_dir().join("bob/spotlights.png"),
+    )
+    .unwrap();
+    let copied = run(&class, &report);
+    assert_eq!((copied.computed, copied.reused), (0, 7));
+    assert!(findings(&copied, "bob", "spotlights").is_empty());
 }
 
 #[test]
@@ -318,7 +347,7 @@ fn a_stopped_run_keeps_the_finished_pairs_and_a_rerun_finishes() {
     let rest = run(&class, &report);
     assert!(!rest.cancelled);
     assert_eq!(rest.reused, stopped.computed);
-    assert_eq!(rest.computed + rest.reused, 8);
+    assert_eq!(rest.computed + rest.reused, 7);
 }
 
 #[test]
@@ -400,7 +429,7 @@ fn the_page_references_only_files_inside_the_report() {
         }
     }
     // Each compared pair: thumbnail, report image, FLIP map.
-    assert_eq!(files, 8 * 3);
+    assert_eq!(files, 7 * 3);
     for tag in ["<script", "<link", "@import", "url("] {
         assert!(!page.contains(tag), "the page loads something: {tag}");
     }
