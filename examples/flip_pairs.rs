@@ -12,7 +12,7 @@ use raylab::compare::perceptual::ldr_flip;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    if args.is_empty() || args.len() % 2 != 0 {
+    if args.is_empty() || !args.len().is_multiple_of(2) {
         eprintln!("usage: flip_pairs REFERENCE TEST [REFERENCE TEST ...]");
         std::process::exit(2);
     }
