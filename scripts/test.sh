@@ -14,6 +14,15 @@ if ! command -v xvfb-run >/dev/null 2>&1 || ! command -v xauth >/dev/null 2>&1; 
     DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq xvfb xauth >/dev/null
 fi
 
+# A C++ compiler for nv-flip-sys, which builds NVIDIA's FLIP (the perceptual difference).
+if ! command -v c++ >/dev/null 2>&1; then
+    sudo_cmd=""
+    if [ "$(id -u)" != 0 ]; then sudo_cmd="sudo"; fi
+    echo "installing g++ (for the FLIP perceptual difference)"
+    $sudo_cmd apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq g++ >/dev/null
+fi
+
 cargo fmt --check
 # No module of the tracer imports one that imports it back (see README, Layout).
 if command -v python3 >/dev/null 2>&1; then

@@ -6,6 +6,7 @@
 #![warn(missing_docs)]
 
 pub mod bench;
+pub mod class;
 pub mod cli;
 pub mod compare;
 pub mod gizmo;

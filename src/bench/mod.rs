@@ -1,6 +1,7 @@
 //! `raylab bench`: throughput, speed against error, and the cost of double precision.
 //! Everything here calls the same tracer as the editor and the command line.
 
+pub mod class;
 pub mod convergence;
 pub mod crossover;
 pub mod diff;
@@ -65,6 +66,9 @@ pub struct BenchReport {
     pub bvh_crossover: Vec<CrossoverPoint>,
     /// `raylab diff` of a 500x500 scene with 5 objects and 3 lights, best time.
     pub diff_500_ms: f64,
+    /// `raylab class` on a generated class (the example scenes at 400x300 with planted
+    /// bugs; 6 students x 10 scenes, a quick run 3 x 4), every pair compared, per minute.
+    pub class_pairs_per_minute: f64,
     /// Triangles of the generated torus knot of the mesh section.
     pub mesh_triangles: usize,
     /// Best time to build the knot's hierarchy, all cores.

@@ -224,6 +224,10 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
     let precision = precision_cost(if args.quick { 200_000 } else { 1_000_000 }, runs);
     eprintln!("diff: a 500x500 scene, 5 objects, 3 lights");
     let (diff_500_ms, _) = crate::bench::diff::diff_time(runs)?;
+    let (students, class_scenes) = if args.quick { (3, 4) } else { (6, 10) };
+    eprintln!("class: {students} students x {class_scenes} scenes at 400x300, planted bugs");
+    let class_pairs_per_minute =
+        crate::bench::class::class_pairs_per_minute(students, class_scenes, (400, 300))?;
     // A million triangles even in a quick run: the targets are stated for that size.
     let mesh = crate::bench::mesh::mesh_bench(1_000_000, 800, 600, runs.min(3));
     eprintln!("mesh: edit to first preview frame, 1,000,000 triangles on a floor");
@@ -246,6 +250,7 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
         precision,
         bvh_crossover,
         diff_500_ms,
+        class_pairs_per_minute,
         mesh_triangles: mesh.triangles,
         mesh_build_ms: mesh.build_ms,
         mesh_mrays_per_s: mesh.mrays_per_s,
@@ -392,6 +397,10 @@ fn print_tables(report: &BenchReport) {
     println!(
         "diff of a 500x500 scene (5 objects, 3 lights): {:.1} ms",
         report.diff_500_ms
+    );
+    println!(
+        "class of generated students (400x300, planted bugs): {:.1} pairs per minute",
+        report.class_pairs_per_minute
     );
     println!(
         "mesh: {} triangles, build {:.0} ms, {:.2} Mrays/s primary, {:.1} bytes per triangle",

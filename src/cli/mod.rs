@@ -1,10 +1,12 @@
 //! The command line: `raylab [SCENE.ron]` starts the editor, `raylab render` renders
 //! headless, `raylab import` and `raylab export` convert from and to the course format,
-//! `raylab inspect` prints a pixel's rays, `raylab diff` compares with another renderer.
-//! `main.rs` only calls [`run`].
+//! `raylab inspect` prints a pixel's rays, `raylab diff` compares with another renderer,
+//! `raylab bugs` shows each known bug, `raylab class` a whole class's renders. `main.rs`
+//! only calls [`run`].
 
 mod bench;
 mod bugs;
+mod class;
 mod conventions;
 mod diff;
 mod export;
@@ -21,6 +23,7 @@ use clap::{Parser, Subcommand};
 
 pub use bench::BenchArgs;
 pub use bugs::BugsArgs;
+pub use class::ClassArgs;
 pub use conventions::ConventionArgs;
 pub use diff::DiffArgs;
 pub use export::{DialectArg, ExportArgs};
@@ -57,6 +60,9 @@ pub enum Command {
     Diff(DiffArgs),
     /// The bug gallery: the scene under each known bug, one PNG each and a contact sheet.
     Bugs(BugsArgs),
+    /// Compare a whole class's renders with the scenes: a table, the bugs across the
+    /// class and feedback per student, in a report folder.
+    Class(ClassArgs),
 }
 
 /// Parses the command line and runs it. Errors are printed to stderr with a non-zero exit.
@@ -71,6 +77,7 @@ pub fn run() -> ExitCode {
         Some(Command::Inspect(args)) => inspect::run(&args),
         Some(Command::Diff(args)) => diff::run(&args),
         Some(Command::Bugs(args)) => bugs::run(&args),
+        Some(Command::Class(args)) => class::run(&args),
         None => start_editor(cli.scene),
     };
     match result {
@@ -96,29 +103,20 @@ fn start_editor(_scene: Option<PathBuf>) -> Result<(), String> {
 }
 
 /// Reads the scene a command takes: RON, or a course text scene (told by its content, as
-/// the editor's File > Open does) imported on the fly, the import's summary and warnings
-/// to stderr.
+/// the editor's File > Open does) imported on the fly, the import's warnings to stderr.
 ///
 /// # Errors
 /// The loader's or the importer's message, naming the file.
 pub(crate) fn load_any_scene(path: &std::path::Path) -> Result<crate::scene::Scene, String> {
-    use crate::scene::{SceneOrCourse, SceneOrCourseError, load_scene_or_course};
-    match load_scene_or_course(path) {
-        Ok(SceneOrCourse::Ron(scene)) => Ok(*scene),
-        Ok(SceneOrCourse::Course(import)) => {
-            eprintln!(
-                "note: {} is a course scene, imported: {}",
-                path.display(),
-                import.summary()
-            );
-            for warning in &import.warnings {
-                eprintln!("warning: {}: {warning}", path.display());
-            }
-            Ok(import.scene)
-        }
-        Err(SceneOrCourseError::Ron(e)) => Err(format!("{}: {e}", path.display())),
-        Err(error @ SceneOrCourseError::Course(_)) => Err(error.to_string()),
+    let (scene, warnings) = crate::scene::load_any_scene(path)?;
+    if crate::scene::read_text_file(path).is_ok_and(|t| crate::scene::legacy::looks_like_legacy(&t))
+    {
+        eprintln!("note: {} is a course scene, imported", path.display());
     }
+    for warning in &warnings {
+        eprintln!("warning: {warning}");
+    }
+    Ok(scene)
 }
 
 /// Reads and builds the meshes `scene` (read from `scene_path`) refers to, printing the
@@ -130,10 +128,8 @@ pub(crate) fn load_meshes(
     scene: &crate::scene::Scene,
     scene_path: &std::path::Path,
 ) -> Result<crate::trace::MeshStore, String> {
-    let folder = scene_path.parent().unwrap_or(std::path::Path::new("."));
-    let data = crate::scene::read_scene_meshes(scene, folder)
-        .map_err(|e| format!("{}: {e}", scene_path.display()))?;
-    for warning in data.values().flat_map(|mesh| &mesh.warnings) {
+    let (data, warnings) = crate::scene::read_meshes_beside(scene, scene_path)?;
+    for warning in warnings {
         eprintln!("warning: {warning}");
     }
     Ok(crate::trace::MeshStore::build(&data))

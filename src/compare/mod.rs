@@ -25,6 +25,7 @@ mod error;
 mod extras;
 mod fit;
 mod other_image;
+pub mod perceptual;
 pub mod plant;
 pub mod report;
 mod split;

@@ -3,6 +3,7 @@
 //! Nothing here knows about rendering or the editor; `trace` compiles a [`Scene`] into a
 //! render-ready world.
 
+mod any_file;
 mod conventions;
 mod error;
 pub mod examples;
@@ -19,6 +20,7 @@ pub mod transform;
 pub mod tree_path;
 mod validate;
 
+pub use any_file::{load_any_scene, read_meshes_beside};
 pub use conventions::{ClampConvention, Conventions, MirrorConvention, Quantise};
 pub use error::SceneError;
 pub use file::{

@@ -91,10 +91,12 @@ impl EditorApp {
                     || "render.png".to_owned(),
                     |n| n.to_string_lossy().into_owned(),
                 ),
-            DialogPurpose::ExportCourse(_) => match self.document_file().and_then(Path::file_stem) {
-                Some(stem) => format!("{}.txt", stem.to_string_lossy()),
-                None => format!("{}.txt", self.unnamed),
-            },
+            DialogPurpose::ExportCourse(_) => {
+                match self.document_file().and_then(Path::file_stem) {
+                    Some(stem) => format!("{}.txt", stem.to_string_lossy()),
+                    None => format!("{}.txt", self.unnamed),
+                }
+            }
             _ => match self.document_file().and_then(Path::file_stem) {
                 Some(stem) => format!("{}.ron", stem.to_string_lossy()),
                 None => format!("{}.ron", self.unnamed),
