@@ -62,6 +62,11 @@ fn clicking_a_gallery_picture_compares_the_scene_with_it_and_the_diff_names_its_
         harness.get_by_label(&thumbnail_label(label));
     }
 
+    // It is further down than the window shows: scrolled to, then clicked.
+    harness
+        .get_by_label(&thumbnail_label("shadows=0"))
+        .scroll_to_me();
+    harness.run();
     harness.get_by_label(&thumbnail_label("shadows=0")).click();
     harness.run();
     step_until(&mut harness, "the comparison", |app| {
