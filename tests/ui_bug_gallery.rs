@@ -75,7 +75,10 @@ fn clicking_a_gallery_picture_compares_the_scene_with_it_and_the_diff_names_its_
     let app = harness.state();
     assert_eq!(app.compare().error(), None);
     let compared = app.compare().compared().expect("the comparison is shown");
-    assert_eq!(compared.source, OtherSource::Planted("shadows=0".to_owned()));
+    assert_eq!(
+        compared.source,
+        OtherSource::Planted("shadows=0".to_owned())
+    );
     let scaled = gallery_scene(app.scene().clone(), None);
     let planted = parse_bugs("shadows=0", &scaled).unwrap();
     let top = compared
@@ -98,7 +101,9 @@ fn clicking_a_gallery_picture_compares_the_scene_with_it_and_the_diff_names_its_
 fn an_edit_marks_the_gallery_stale_until_refresh_renders_it_again() {
     let mut harness = harness();
     open_gallery(&mut harness);
-    let before = harness.state().bug_gallery().thumbnails()[0].picture.clone();
+    let before = harness.state().bug_gallery().thumbnails()[0]
+        .picture
+        .clone();
     assert!(
         !harness
             .get_by_label(OWN_PICTURE_LABEL)
@@ -113,7 +118,12 @@ fn an_edit_marks_the_gallery_stale_until_refresh_renders_it_again() {
         .push(Command::Edit(SceneEdit::SetCamera(camera)));
     harness.run();
     // The pictures of the older scene cannot be compared, and say so.
-    assert!(harness.state().bug_gallery().is_stale(harness.state().scene()));
+    assert!(
+        harness
+            .state()
+            .bug_gallery()
+            .is_stale(harness.state().scene())
+    );
     assert!(
         harness
             .get_by_label(OWN_PICTURE_LABEL)

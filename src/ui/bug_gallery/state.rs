@@ -81,11 +81,8 @@ impl BugGallery {
     pub fn start(&mut self, scene: &Scene, folder: Option<&Path>, ctx: &egui::Context) {
         self.running = None;
         self.error = None;
-        let (thread_scene, folder, repaint) = (
-            scene.clone(),
-            folder.map(Path::to_owned),
-            ctx.clone(),
-        );
+        let (thread_scene, folder, repaint) =
+            (scene.clone(), folder.map(Path::to_owned), ctx.clone());
         let bugs = gallery_bugs(&gallery_scene(scene.clone(), None)).len();
         let job = BackgroundJob::spawn(
             "bug gallery",

@@ -146,7 +146,10 @@ fn thumbnail_ui(ui: &mut Ui, ctx: &egui::Context, thumbnail: &mut Thumbnail, sta
     let picture = &thumbnail.picture;
     let texture = thumbnail.texture.get_or_insert_with(|| {
         let size = [picture.width as usize, picture.height as usize];
-        let pixels = picture.rgb.iter().map(|&[r, g, b]| Color32::from_rgb(r, g, b));
+        let pixels = picture
+            .rgb
+            .iter()
+            .map(|&[r, g, b]| Color32::from_rgb(r, g, b));
         ctx.load_texture(
             format!("bug gallery {}", thumbnail.label),
             ColorImage::new(size, pixels.collect()),

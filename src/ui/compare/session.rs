@@ -4,8 +4,7 @@
 use std::path::{Path, PathBuf};
 
 use crate::compare::{
-    CompareError, CompareOptions, Comparison, OtherImage, PixelValues, compare,
-    compare_with_meshes,
+    CompareError, CompareOptions, Comparison, OtherImage, PixelValues, compare, compare_with_meshes,
 };
 use crate::preview::BackgroundJob;
 use crate::scene::Scene;
