@@ -37,6 +37,7 @@ pub fn cli_options(scene: &Scene, off: &[Term], solo: Option<Term>, view: View) 
         view,
         isolation: Default::default(),
         conventions: Default::default(),
+        bug: None,
     };
     args.options(scene).unwrap()
 }

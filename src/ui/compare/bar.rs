@@ -57,7 +57,8 @@ pub fn compare_bar_ui(
             ui.label(RichText::new("scene changed since").color(Color32::from_rgb(255, 200, 120)));
             match session.compared().map(|c| c.source.clone()) {
                 Some(OtherSource::File(path)) => {
-                    if ui.button("Compare again").clicked() {
+                    let again = ui.button("Compare again").clicked();
+                    if again {
                         commands.push(Command::CompareWith(path));
                     }
                 }
