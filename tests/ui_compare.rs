@@ -14,8 +14,8 @@ use raylab::compare::ExplainedTerm;
 use raylab::scene::{Scene, load_scene};
 use raylab::trace::{RenderOptions, RenderProgress, Term, World, render};
 use raylab::ui::compare::{
-    COMPARE_PATH_LABEL, COMPARE_PICTURE_LABEL, CompareMode, ZoomView, explanation_label,
-    picture_frames,
+    COMPARE_PATH_LABEL, COMPARE_PICTURE_LABEL, CompareMode, OtherSource, ZoomView,
+    explanation_label, picture_frames,
 };
 use raylab::ui::viewport::pixel_inspector::{OTHER_VALUE_LABEL, RAYLAB_VALUE_LABEL, compared_rows};
 use raylab::ui::{EditorApp, EditorOptions, Selection};
@@ -268,7 +268,7 @@ fn a_wrong_size_picture_is_a_clear_error_and_a_dropped_png_compares() {
     wait_for_comparison(&mut harness);
     assert!(harness.state().compare().error().is_none());
     let compared = harness.state().compare().compared().expect("shown");
-    assert_eq!(compared.path, theirs);
+    assert_eq!(compared.source, OtherSource::File(theirs));
 }
 
 #[test]

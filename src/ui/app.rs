@@ -7,6 +7,7 @@ use egui::util::undoer::{Settings as UndoSettings, Undoer};
 
 use crate::scene::Scene;
 use crate::trace::Isolation;
+use crate::ui::bug_gallery::BugGallery;
 use crate::ui::commands::{Command, Selection};
 use crate::ui::compare::CompareSession;
 use crate::ui::document::autosave::Autosave;
@@ -80,6 +81,8 @@ pub struct EditorApp {
     export: ExportState,
     /// File > Compare with Image: the running or shown comparison.
     compare: CompareSession,
+    /// File > Bug gallery: the scene under each bug of the catalogue.
+    bug_gallery: BugGallery,
     recent: RecentFiles,
     pending: Option<DiscardAction>,
     /// An action to do once the Save As dialog has saved the scene ("Save" in the
@@ -128,6 +131,7 @@ impl EditorApp {
             isolation_memory: IsolationMemory::default(),
             export: ExportState::default(),
             compare: CompareSession::default(),
+            bug_gallery: BugGallery::default(),
             recent,
             pending: None,
             after_save: None,
@@ -278,6 +282,12 @@ impl EditorApp {
     #[must_use]
     pub fn compare(&self) -> &CompareSession {
         &self.compare
+    }
+
+    /// The Bug gallery window's state.
+    #[must_use]
+    pub fn bug_gallery(&self) -> &BugGallery {
+        &self.bug_gallery
     }
 
     /// Recent files.

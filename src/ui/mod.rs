@@ -3,6 +3,7 @@
 //! frame in [`EditorApp`], which also feeds undo and restarts the preview.
 
 mod app;
+pub mod bug_gallery;
 pub mod commands;
 pub mod compare;
 pub mod document;

@@ -136,6 +136,15 @@ impl EditorApp {
             Command::SetRayPaths(settings) => self.looking.ray_paths = settings,
             Command::ShowCompare => self.compare.show_window(),
             Command::CompareWith(path) => self.compare.start(&self.scene, &path, ctx),
+            Command::ShowBugGallery => {
+                let folder = self.path.as_deref().and_then(std::path::Path::parent);
+                self.bug_gallery.show(&self.scene, folder, ctx);
+            }
+            Command::CompareWithGalleryPicture(index) => {
+                if let Some(picture) = self.bug_gallery.picture_to_compare(index) {
+                    self.compare.start_picture(picture, ctx);
+                }
+            }
             Command::Isolate(toggle) => toggle.apply(&mut self.isolation),
         }
     }

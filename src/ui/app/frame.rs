@@ -1,6 +1,7 @@
 //! One frame of the editor: input, the panels laid out around the viewport, and the
 //! windows and dialogs over them.
 
+use crate::ui::bug_gallery::bug_gallery_window;
 use crate::ui::commands::{Command, Selection};
 use crate::ui::compare::{compare_view_ui, compare_window, is_compare_image};
 use crate::ui::document::confirm::{DiscardAction, discard_modal};
@@ -273,6 +274,13 @@ impl EditorApp {
             &mut self.commands,
         );
         compare_window(ctx, &mut self.compare, &mut self.commands);
+        bug_gallery_window(
+            ctx,
+            &mut self.bug_gallery,
+            &self.scene,
+            self.path.as_deref().and_then(std::path::Path::parent),
+            &mut self.commands,
+        );
         self.file_dialog_ui(ctx);
         if let Some(pixel) = self.looking.inspected {
             let view = InspectorView {

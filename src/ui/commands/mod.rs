@@ -195,4 +195,8 @@ pub enum Command {
     ShowCompare,
     /// Compare the scene with another renderer's picture in this file (in the background).
     CompareWith(PathBuf),
+    /// Show the Bug gallery window (rendering the gallery of the scene in the background).
+    ShowBugGallery,
+    /// Compare the scene with picture `n` of the Bug gallery (0: raylab's own).
+    CompareWithGalleryPicture(usize),
 }

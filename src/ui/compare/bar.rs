@@ -5,7 +5,7 @@
 use egui::{Color32, RichText};
 
 use super::mode::{CompareMode, Side};
-use super::session::CompareSession;
+use super::session::{CompareSession, OtherSource};
 use super::view::{MAX_ZOOM, ZoomView};
 use crate::scene::Scene;
 use crate::ui::commands::Command;
@@ -45,20 +45,27 @@ pub fn compare_bar_ui(
         zoom_ui(ui, &mut session.view);
         ui.separator();
         if let Some(compared) = session.compared() {
-            let name = compared.path.file_name().map_or_else(
-                || compared.path.display().to_string(),
-                |n| n.to_string_lossy().into_owned(),
-            );
-            ui.weak(name)
-                .on_hover_text(compared.path.display().to_string());
+            let hover = match &compared.source {
+                OtherSource::File(path) => path.display().to_string(),
+                OtherSource::Planted(label) => {
+                    format!("The scene rendered as a tracer with the bug {label} would")
+                }
+            };
+            ui.weak(compared.source.name()).on_hover_text(hover);
         }
         if session.is_stale(scene) {
             ui.label(RichText::new("scene changed since").color(Color32::from_rgb(255, 200, 120)));
-            let path = session.compared().map(|c| c.path.clone());
-            if let Some(path) = path
-                && ui.button("Compare again").clicked()
-            {
-                commands.push(Command::CompareWith(path));
+            match session.compared().map(|c| c.source.clone()) {
+                Some(OtherSource::File(path)) => {
+                    let again = ui.button("Compare again").clicked();
+                    if again {
+                        commands.push(Command::CompareWith(path));
+                    }
+                }
+                Some(OtherSource::Planted(_)) => {
+                    ui.weak("(refresh the Bug gallery for pictures of this scene)");
+                }
+                None => {}
             }
         }
     });

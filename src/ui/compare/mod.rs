@@ -16,6 +16,6 @@ mod window;
 pub use explanations::{explanation_label, explanation_selection, explanations_ui};
 pub use mode::{CompareMode, Side};
 pub use picture::{COMPARE_PICTURE_LABEL, compare_view_ui, picture_frames};
-pub use session::CompareSession;
+pub use session::{CompareSession, OtherSource, PictureToCompare};
 pub use view::{MAX_ZOOM, ZoomView, split_at};
 pub use window::{COMPARE_PATH_LABEL, compare_window, is_compare_image};

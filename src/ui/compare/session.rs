@@ -3,9 +3,12 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::compare::{CompareError, CompareOptions, Comparison, OtherImage, PixelValues, compare};
+use crate::compare::{
+    CompareError, CompareOptions, Comparison, OtherImage, PixelValues, compare, compare_with_meshes,
+};
 use crate::preview::BackgroundJob;
 use crate::scene::Scene;
+use crate::trace::MeshStore;
 
 use super::mode::{CompareMode, Side};
 use super::textures::CompareTextures;
@@ -15,18 +18,57 @@ use super::view::ZoomView;
 pub struct Compared {
     /// The comparison's result.
     pub comparison: Comparison,
-    /// The other picture's file.
-    pub path: PathBuf,
+    /// Where the other picture came from.
+    pub source: OtherSource,
     /// The scene as it was compared (to notice later edits).
     pub scene: Scene,
     /// Its pictures on the GPU, made when first shown.
     pub textures: Option<CompareTextures>,
 }
 
+/// Where the other picture of a comparison came from.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum OtherSource {
+    /// A file (PNG or PPM): it can be compared again after an edit.
+    File(PathBuf),
+    /// A picture made in the editor (a Bug gallery picture), named by its bug.
+    Planted(String),
+}
+
+impl OtherSource {
+    /// A short name for the toolbar.
+    #[must_use]
+    pub fn name(&self) -> String {
+        match self {
+            Self::File(path) => path.file_name().map_or_else(
+                || path.display().to_string(),
+                |n| n.to_string_lossy().into_owned(),
+            ),
+            Self::Planted(label) => format!("bug gallery: {label}"),
+        }
+    }
+}
+
+/// A picture made in the editor, to compare with a scene (a Bug gallery picture).
+pub struct PictureToCompare {
+    /// The scene at the picture's size, as compared.
+    pub compared_scene: Scene,
+    /// The editor's scene the picture was made of (a later edit makes the result stale).
+    pub editor_scene: Scene,
+    /// The scene's meshes.
+    pub meshes: MeshStore,
+    /// The picture.
+    pub picture: OtherImage,
+    /// Its samples per pixel: raylab's side is rendered with as many.
+    pub samples_per_pixel: u32,
+    /// What the toolbar calls it.
+    pub label: String,
+}
+
 /// A running comparison.
 struct Running {
     job: BackgroundJob<Result<Comparison, String>>,
-    path: PathBuf,
+    source: OtherSource,
     scene: Scene,
 }
 
@@ -62,23 +104,56 @@ impl CompareSession {
     /// Starts comparing `scene` with the picture at `path` on a thread of its own (a
     /// running comparison is cancelled). The window opens to show progress and errors.
     pub fn start(&mut self, scene: &Scene, path: &Path, ctx: &egui::Context) {
+        self.path_text = path.display().to_string();
+        let (thread_scene, thread_path) = (scene.clone(), path.to_owned());
+        let work = move |progress: &_| {
+            let other = OtherImage::load(&thread_path)?;
+            compare(&thread_scene, &other, &CompareOptions::default(), progress)
+        };
+        self.spawn(OtherSource::File(path.to_owned()), scene, work, ctx);
+    }
+
+    /// Starts comparing a picture made in the editor with its scene, as [`Self::start`]
+    /// does a file's; no file is written.
+    pub fn start_picture(&mut self, request: PictureToCompare, ctx: &egui::Context) {
+        let source = OtherSource::Planted(request.label);
+        let PictureToCompare {
+            compared_scene,
+            editor_scene,
+            meshes,
+            picture,
+            samples_per_pixel,
+            ..
+        } = request;
+        let options = CompareOptions {
+            samples_per_pixel: Some(samples_per_pixel),
+        };
+        let work = move |progress: &_| {
+            compare_with_meshes(&compared_scene, &meshes, &picture, &options, progress)
+        };
+        self.spawn(source, &editor_scene, work, ctx);
+    }
+
+    /// Runs `work` on a thread of its own; `scene` is kept to notice later edits.
+    fn spawn(
+        &mut self,
+        source: OtherSource,
+        scene: &Scene,
+        work: impl FnOnce(&crate::trace::RenderProgress) -> Result<Comparison, CompareError>
+        + Send
+        + 'static,
+        ctx: &egui::Context,
+    ) {
         self.running = None;
         self.error = None;
         self.window_open = true;
-        self.path_text = path.display().to_string();
-        let (thread_scene, thread_path, repaint) = (scene.clone(), path.to_owned(), ctx.clone());
+        let repaint = ctx.clone();
         let job = BackgroundJob::spawn(
             "comparison",
-            move |progress| {
-                let other = match OtherImage::load(&thread_path) {
-                    Ok(other) => other,
-                    Err(error) => return Some(Err(error.to_string())),
-                };
-                match compare(&thread_scene, &other, &CompareOptions::default(), progress) {
-                    Ok(comparison) => Some(Ok(comparison)),
-                    Err(CompareError::Cancelled) => None,
-                    Err(error) => Some(Err(error.to_string())),
-                }
+            move |progress| match work(progress) {
+                Ok(comparison) => Some(Ok(comparison)),
+                Err(CompareError::Cancelled) => None,
+                Err(error) => Some(Err(error.to_string())),
             },
             move || repaint.request_repaint(),
         );
@@ -86,7 +161,7 @@ impl CompareSession {
             Ok(job) => {
                 self.running = Some(Running {
                     job,
-                    path: path.to_owned(),
+                    source,
                     scene: scene.clone(),
                 });
             }
@@ -107,7 +182,7 @@ impl CompareSession {
             Ok(comparison) => {
                 self.compared = Some(Compared {
                     comparison,
-                    path: running.path,
+                    source: running.source,
                     scene: running.scene,
                     textures: None,
                 });

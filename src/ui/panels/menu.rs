@@ -161,6 +161,14 @@ fn file_menu_ui(ui: &mut Ui, state: &MenuState<'_>, commands: &mut Vec<Command>)
         Command::ShowCompare,
         commands,
     );
+    entry_ui(
+        ui,
+        "Bug gallery…",
+        "",
+        true,
+        Command::ShowBugGallery,
+        commands,
+    );
     ui.separator();
     let mut in_app = state.in_app_dialogs;
     let hover = if state.native_dialogs {
