@@ -850,7 +850,8 @@ mod tests {
     fn names_read_back_as_the_same_bug() {
         let scene = scene();
         for bug in gallery_bugs(&scene) {
-            let text = bug.to_string();
+            // As a reader writes it: objects by name.
+            let text = bug.label(&scene);
             let read = parse_bugs(&text, &scene).unwrap_or_else(|e| panic!("{text}: {e}"));
             assert_eq!(read, vec![bug], "{text}");
         }
