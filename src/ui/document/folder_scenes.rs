@@ -42,7 +42,7 @@ mod tests {
     fn steps_through_the_scene_files_of_a_folder_by_name() {
         let dir = std::env::temp_dir().join(format!("raylab-folder-scenes-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
-        for name in ["b.txt", "a.ron", "c.TXT", "notes.md", "d.png"] {
+        for name in ["b.txt", "a.ron", "c.TXT", "b-notes.md", "d.png"] {
             std::fs::write(dir.join(name), "x").unwrap();
         }
         let next = |name: &str| neighbour_scene(&dir.join(name), true);
@@ -53,7 +53,7 @@ mod tests {
         assert_eq!(previous("b.txt"), Some(dir.join("a.ron")));
         assert_eq!(previous("a.ron"), None, "the first one");
         assert_eq!(
-            next("notes.md"),
+            next("b-notes.md"),
             Some(dir.join("b.txt")),
             "by name from anything"
         );
