@@ -206,13 +206,15 @@ impl Groups {
                 add(Family::Missing, None, node, None, whole(kinds), None);
             }
         }
-        // A spot light's bug is the light's, wherever it shows; a tracer's spot code is
-        // shared by all its spot lights, so each bug is also tried on every light at once.
+        // A spot light's bug is the light's, wherever it shows. A spot light without
+        // cone and fall-off saturates the picture, where one light's change alone cannot
+        // be told from the others' (the clipped pixels hide which): that bug is also
+        // tried on every light at once. (The other bugs tried so read as every light
+        // where one light has them: the fit cannot yet prefer the specific one there.)
         if space.lights > 1 {
-            for bug in SpotBug::ALL {
-                let kinds = (0..space.lights).map(|l| Kind::Spot(bug, l)).collect();
-                add(Family::Spot(bug), None, None, None, kinds, None);
-            }
+            let bug = SpotBug::NoConeNoFalloff;
+            let kinds = (0..space.lights).map(|l| Kind::Spot(bug, l)).collect();
+            add(Family::Spot(bug), None, None, None, kinds, None);
         }
         for light in 0..space.lights {
             for bug in SpotBug::ALL {
