@@ -162,8 +162,16 @@ fn open_and_export_browse_use_the_in_app_dialog() {
     // The export proposes the scene's name in the last export folder, else the user's
     // pictures or home folder: never beside the scene (issue 51, point 5).
     let proposed = std::path::PathBuf::from(&harness.state().export().path);
-    assert_eq!(proposed.file_name(), Some(std::ffi::OsStr::new("other.png")));
-    assert_ne!(proposed.parent(), Some(dir.as_path()), "{}", proposed.display());
+    assert_eq!(
+        proposed.file_name(),
+        Some(std::ffi::OsStr::new("other.png"))
+    );
+    assert_ne!(
+        proposed.parent(),
+        Some(dir.as_path()),
+        "{}",
+        proposed.display()
+    );
 }
 
 #[test]
