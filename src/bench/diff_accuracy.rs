@@ -134,13 +134,8 @@ impl AccuracyReport {
         };
         for rank in &case.ranks {
             tally.0 += 1;
-            if n == 1 {
-                tally.1 += u32::from(rank.is_some_and(|r| r < first_within));
-                tally.2 += u32::from(rank.is_some_and(|r| r < top_within));
-            } else {
-                tally.1 += u32::from(rank.is_some_and(|r| r < first_within));
-                tally.2 += u32::from(rank.is_some_and(|r| r < top_within));
-            }
+            tally.1 += u32::from(rank.is_some_and(|r| r < first_within));
+            tally.2 += u32::from(rank.is_some_and(|r| r < top_within));
         }
         for (bug, rank) in case.bugs.iter().zip(&case.ranks) {
             let cause = bug.split('@').next().unwrap_or(bug);
