@@ -102,3 +102,52 @@ fn an_object_that_never_shadows_itself_is_named() {
     );
     assert_eq!(first.term, ExplainedTerm::Term(Term::Shadows), "{report}");
 }
+
+/// Whether `cause` claims a bug (as opposed to saying where, or how the picture was
+/// written or sampled).
+fn claims_a_bug(cause: Cause) -> bool {
+    !matches!(
+        cause,
+        Cause::Sampling | Cause::Silhouette | Cause::Shading | Cause::Encoding(_)
+    )
+}
+
+#[test]
+fn a_correct_anti_aliased_render_draws_no_verdict_but_sampling() {
+    for name in ["default.ron", "spotlights.ron", "shapes.ron"] {
+        let scene = example(name);
+        // The student's tracer is right but takes 4 samples per pixel; the diff, at 1,
+        // sees every edge differ by whole colours.
+        let other = render(&scene, 4, &Bugs::default());
+        let c = diff(&scene, &other);
+        let report = c.text_lines().join("\n");
+        assert!(
+            c.explanations.iter().all(|e| !claims_a_bug(e.cause)),
+            "{name}: {report}"
+        );
+        assert_eq!(c.explanations[0].cause, Cause::Sampling, "{name}: {report}");
+    }
+}
+
+#[test]
+fn a_bug_under_anti_aliasing_is_still_named() {
+    let scene = example("default.ron");
+    let directional = scene
+        .lights
+        .iter()
+        .position(|l| matches!(l, Light::Directional { .. }))
+        .unwrap();
+    let other = render(
+        &scene,
+        4,
+        &Bugs {
+            drop_light: Some(directional),
+            ..Bugs::default()
+        },
+    );
+    let c = diff(&scene, &other);
+    let report = c.text_lines().join("\n");
+    let first = &c.explanations[0];
+    assert_eq!(first.cause, Cause::Factor, "{report}");
+    assert_eq!(first.light, Some(directional), "{report}");
+}

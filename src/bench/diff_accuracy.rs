@@ -27,8 +27,11 @@ pub const TUNING_SEEDS: Range<u64> = 0..1000;
 /// Seeds whose random scenes the figures are measured on, never tuned on.
 pub const MEASURED_SEEDS: Range<u64> = 1_000_000..1_001_000;
 
+/// The confidence from which a verdict is printed "high" (`Explanation::sureness`).
+const HIGH: f64 = 0.7;
+
 /// Causes that are places, not bugs: naming them claims no bug.
-const PLACES: [&str; 2] = ["silhouette", "shading"];
+const PLACES: [&str; 3] = ["silhouette", "shading", "sampling"];
 
 /// One scene's cases: which bugs, and what the diff said.
 #[derive(Clone, Debug, Serialize)]
@@ -41,8 +44,27 @@ pub struct CaseResult {
     pub ranks: Vec<Option<usize>>,
     /// The causes the diff named, in order.
     pub named: Vec<String>,
-    /// Per explanation: its sureness and whether it names a planted bug.
-    pub verdicts: Vec<(String, bool)>,
+    /// Per explanation, what it claimed and whether that was right.
+    pub verdicts: Vec<Verdict>,
+}
+
+/// One explanation of a case, judged.
+#[derive(Clone, Debug, Serialize)]
+pub struct Verdict {
+    /// Its confidence, 0 to 1 (printed as a sureness: high from 0.7).
+    pub confidence: f64,
+    /// Whether it claims a bug (not a place, an encoding or the sampling).
+    pub claims: bool,
+    /// Whether it names a planted bug.
+    pub right: bool,
+}
+
+/// Whether naming `cause` claims a bug: places, encodings and sampling do not.
+fn claims_a_bug(cause: &str) -> bool {
+    !PLACES.contains(&cause)
+        && !cause.starts_with("linear-")
+        && cause != "truncate"
+        && cause != "srgb"
 }
 
 /// Per cause: how often it was named when planted.
@@ -71,7 +93,8 @@ pub struct AccuracyReport {
     pub threes: (u32, u32, u32),
     /// Correct pictures, and those the diff claimed a bug in.
     pub no_bug: (u32, u32),
-    /// Verdicts printed "high", and of those the ones naming a planted bug.
+    /// Verdicts claiming a bug printed "high", and of those the ones naming a planted
+    /// bug.
     pub high: (u32, u32),
     /// Per cause.
     pub causes: BTreeMap<String, CauseRow>,
@@ -108,20 +131,15 @@ impl AccuracyReport {
 
     fn add(&mut self, case: CaseResult) {
         let n = case.bugs.len();
-        for verdict in &case.verdicts {
-            if verdict.0 == "high" {
+        for verdict in case.verdicts.iter().filter(|v| v.claims) {
+            if verdict.confidence >= HIGH {
                 self.high.0 += 1;
-                self.high.1 += u32::from(verdict.1);
+                self.high.1 += u32::from(verdict.right);
             }
         }
         if n == 0 {
             self.no_bug.0 += 1;
-            let claimed = case.named.iter().any(|c| {
-                !PLACES.contains(&c.as_str())
-                    && !c.starts_with("linear-")
-                    && c != "truncate"
-                    && c != "srgb"
-            });
+            let claimed = case.named.iter().any(|c| claims_a_bug(c));
             self.no_bug.1 += u32::from(claimed);
             self.cases.push(case);
             return;
@@ -350,14 +368,36 @@ fn diff_case(
             .collect(),
         verdicts: explanations
             .iter()
-            .map(|e| {
-                (
-                    e.sureness().to_owned(),
-                    bugs.iter().any(|b| b.is_named_by(e)),
-                )
+            .map(|e| Verdict {
+                confidence: e.confidence,
+                claims: claims_a_bug(e.cause.name()),
+                right: bugs.iter().any(|b| b.is_named_by(e)),
             })
             .collect(),
     })
+}
+
+/// Of the verdicts claiming a bug with at least each confidence (0.5 to 0.95 by 0.05):
+/// how many, and the share naming a planted bug. What "high" should start at.
+#[must_use]
+pub fn calibration(report: &AccuracyReport) -> Vec<(f64, u32, f64)> {
+    (10..20)
+        .map(|step| {
+            let at_least = f64::from(step) * 0.05;
+            let chosen: Vec<&Verdict> = report
+                .cases
+                .iter()
+                .flat_map(|c| &c.verdicts)
+                .filter(|v| v.claims && v.confidence >= at_least)
+                .collect();
+            let right = chosen.iter().filter(|v| v.right).count();
+            (
+                at_least,
+                chosen.len() as u32,
+                ratio(right as u32, chosen.len() as u32),
+            )
+        })
+        .collect()
 }
 
 /// The confusion table as text: one row per cause.
@@ -416,7 +456,7 @@ pub fn accuracy_run(
             &scene,
             &meshes,
             plan,
-            MEASURED_SEEDS.start + i as u64,
+            seeds.start + i as u64,
             &mut report,
         )?;
     }
@@ -434,4 +474,51 @@ pub fn accuracy_run(
         )?;
     }
     Ok(report)
+}
+
+/// The example scenes the benchmark report's accuracy keys are measured on (the
+/// diff-accuracy run takes every example scene and more random ones).
+const REPORT_SCENES: [&str; 3] = ["default.ron", "shapes.ron", "spotlights.ron"];
+
+/// The accuracy run of `raylab bench`'s report: bugs planted in the example scenes
+/// named in [`REPORT_SCENES`] (only `default.ron` in a `quick` run) and in random scenes
+/// of the measured seeds (none in a quick run, two otherwise), at 200 pixels wide.
+///
+/// # Errors
+/// A scene does not compile.
+pub fn report_accuracy(
+    examples: &[(String, Scene)],
+    quick: bool,
+) -> Result<AccuracyReport, String> {
+    let wanted = if quick {
+        &REPORT_SCENES[..1]
+    } else {
+        &REPORT_SCENES[..]
+    };
+    let chosen: Vec<(String, Scene)> = examples
+        .iter()
+        .filter(|(name, _)| wanted.contains(&name.as_str()))
+        .cloned()
+        .collect();
+    let (seeds, plan) = if quick {
+        (
+            0,
+            Plan {
+                alone: 12,
+                pairs: 3,
+                threes: 0,
+            },
+        )
+    } else {
+        (
+            2,
+            Plan {
+                alone: 24,
+                pairs: 6,
+                threes: 2,
+            },
+        )
+    };
+    let start = MEASURED_SEEDS.start;
+    accuracy_run(start..start + seeds, &chosen, 200, plan)
 }

@@ -33,6 +33,10 @@ pub struct BenchArgs {
     /// print the confusion table (with `--json`, the whole report).
     #[arg(long, value_name = "RANDOM_SCENES")]
     pub diff_accuracy: Option<u64>,
+    /// With `--diff-accuracy`: random scenes of the tuning seeds instead (the ones the
+    /// diff's thresholds may be set on; the figures reported use the measured seeds).
+    #[arg(long, requires = "diff_accuracy")]
+    pub tuning: bool,
 }
 
 /// Runs the benchmark and prints the report.
@@ -64,9 +68,15 @@ pub fn run(args: &BenchArgs) -> Result<(), String> {
 
 /// `raylab bench --diff-accuracy N`: the long accuracy run.
 fn run_diff_accuracy(args: &BenchArgs, count: u64) -> Result<(), String> {
-    use crate::bench::diff_accuracy::{MEASURED_SEEDS, Plan, accuracy_run, confusion_table};
+    use crate::bench::diff_accuracy::{
+        MEASURED_SEEDS, Plan, TUNING_SEEDS, accuracy_run, calibration, confusion_table,
+    };
     let examples = example_scenes(args.scenes.as_deref())?;
-    let start = MEASURED_SEEDS.start;
+    let start = if args.tuning {
+        TUNING_SEEDS.start
+    } else {
+        MEASURED_SEEDS.start
+    };
     let plan = Plan {
         alone: 40,
         pairs: 8,
@@ -84,6 +94,12 @@ fn run_diff_accuracy(args: &BenchArgs, count: u64) -> Result<(), String> {
         println!("{line}");
     }
     print_accuracy(&report);
+    for (at_least, count, right) in calibration(&report) {
+        println!(
+            "claims with confidence >= {at_least:.2}: {count}, right {:.1}%",
+            100.0 * right
+        );
+    }
     Ok(())
 }
 
@@ -228,6 +244,8 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
     eprintln!("class: {students} students x {class_scenes} scenes at 400x300, planted bugs");
     let class_pairs_per_minute =
         crate::bench::class::class_pairs_per_minute(students, class_scenes, (400, 300))?;
+    eprintln!("diff accuracy: bugs planted in example and random scenes");
+    let accuracy = crate::bench::diff_accuracy::report_accuracy(&examples, args.quick)?;
     // A million triangles even in a quick run: the targets are stated for that size.
     let mesh = crate::bench::mesh::mesh_bench(1_000_000, 800, 600, runs.min(3));
     eprintln!("mesh: edit to first preview frame, 1,000,000 triangles on a floor");
@@ -251,6 +269,9 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
         bvh_crossover,
         diff_500_ms,
         class_pairs_per_minute,
+        diff_top1: accuracy.top1(),
+        diff_top2: accuracy.top2(),
+        diff_false_verdicts: accuracy.false_verdicts(),
         mesh_triangles: mesh.triangles,
         mesh_build_ms: mesh.build_ms,
         mesh_mrays_per_s: mesh.mrays_per_s,
@@ -401,6 +422,12 @@ fn print_tables(report: &BenchReport) {
     println!(
         "class of generated students (400x300, planted bugs): {:.1} pairs per minute",
         report.class_pairs_per_minute
+    );
+    println!(
+        "diff accuracy (bugs alone): named first {:.1}%, in the top two {:.1}%; a bug claimed in {:.1}% of correct pictures",
+        100.0 * report.diff_top1,
+        100.0 * report.diff_top2,
+        100.0 * report.diff_false_verdicts
     );
     println!(
         "mesh: {} triangles, build {:.0} ms, {:.2} Mrays/s primary, {:.1} bytes per triangle",

@@ -34,7 +34,7 @@ mod verdict;
 pub use catalogue::{ClampBug, Kind, NormalBug, Part, ShadowBug, SpecularBug, SpotBug};
 pub use error::CompareError;
 pub use extras::{PixelBox, ShapeGuess};
-pub use fit::{Encoding, MIN_ERROR, MIN_STEP_SHARE};
+pub use fit::{Encoding, MIN_ERROR, MIN_STEP_SHARE, NOISE_SHARE};
 pub use other_image::OtherImage;
 pub use report::{
     Comparison, PSNR_IDENTICAL_DB, PixelValues, difference_heatmap, report_png, write_report_png,
@@ -46,7 +46,10 @@ use crate::scene::{Quantise, Scene};
 use crate::trace::{MeshStore, RenderProgress, World};
 
 use catalogue::MISS;
-use fit::{BetterConventions, FitState, Target, better_conventions, detect_encoding};
+use fit::{
+    BetterConventions, FitState, SamplingSpread, Target, better_conventions, detect_encoding,
+    samples_otherwise,
+};
 use verdict::{Explained, explain, summary};
 
 /// How to compare.
@@ -121,16 +124,31 @@ fn compare_scene(
         Quantise::Round => Encoding::LinearRound,
         Quantise::Truncate => Encoding::LinearTruncate,
     };
-    let rounded = Target::new(other, expected);
+    // Where the other picture samples pixels otherwise than raylab, its edges may be
+    // any blend of their sides (`fit::SamplingSpread`); elsewhere pixel for pixel.
+    let spread = if spp > 1
+        || samples_otherwise(
+            &own_bytes(&components),
+            &other.rgb,
+            &outline(&components),
+            width,
+        ) {
+        SamplingSpread::of(&components.beauty, width)
+    } else {
+        SamplingSpread::none(components.beauty.len())
+    };
+    let rounded = Target::new(other, expected, &spread);
     let mut state = FitState::new(components.beauty.clone(), &rounded);
     let total = state.total;
-    let floor = (MIN_STEP_SHARE * total).max(MIN_ERROR);
+    let floor = (MIN_STEP_SHARE * total)
+        .max(MIN_ERROR)
+        .max(NOISE_SHARE * rounded.sampling_noise(&state.error));
     let mut explanations = Vec::new();
     let encoding = detect_encoding(&components.beauty, &other.rgb);
     let target = if encoding == expected {
         rounded
     } else {
-        let target = Target::new(other, encoding);
+        let target = Target::new(other, encoding, &spread);
         let decoded = FitState::new(components.beauty.clone(), &target);
         if state.total - decoded.total >= floor {
             explanations.push(encoding_explanation(
@@ -200,6 +218,31 @@ fn compare_scene(
     Ok(own)
 }
 
+/// raylab's picture as bytes (rounded), to compare outlines with the other picture's.
+fn own_bytes(components: &Components) -> Vec<[u8; 3]> {
+    components
+        .beauty
+        .iter()
+        .map(|p| p.map(|v| (v.clamp(0.0, 1.0) * 255.0).round() as u8))
+        .collect()
+}
+
+/// Whether each pixel lies where raylab's objects (or an object and the background)
+/// meet: a 4-neighbour has another object's label.
+fn outline(components: &Components) -> Vec<bool> {
+    let (w, h) = (components.width as usize, components.height as usize);
+    let label = |p: usize| components.object_label(p);
+    (0..w * h)
+        .map(|p| {
+            let (x, y) = (p % w, p / w);
+            (x > 0 && label(p - 1) != label(p))
+                || (x + 1 < w && label(p + 1) != label(p))
+                || (y > 0 && label(p - w) != label(p))
+                || (y + 1 < h && label(p + w) != label(p))
+        })
+        .collect()
+}
+
 /// What a reading leaves unexplained, as a share of the whole difference: what no
 /// cause explains (the rest, and the places: silhouettes and shading), plus `per_step`
 /// for each cause it names, so that of two readings leaving the same, the one with
@@ -214,7 +257,12 @@ fn unexplained_cost(comparison: &Comparison, per_step: f64) -> f64 {
     let causes = comparison
         .explanations
         .iter()
-        .filter(|e| !matches!(e.cause, Cause::Silhouette | Cause::Shading))
+        .filter(|e| {
+            !matches!(
+                e.cause,
+                Cause::Silhouette | Cause::Shading | Cause::Sampling
+            )
+        })
         .count();
     comparison.unexplained_share + places + per_step * causes as f64
 }

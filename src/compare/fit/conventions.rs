@@ -9,6 +9,7 @@
 //! [`NO_LIMIT_DEPTH`] (`no-depth-limit`; in scenes with mirrors and no glass).
 
 use super::search::{MIN_ERROR, MIN_STEP_SHARE};
+use super::target::NOISE_SHARE;
 use super::target::{FitState, Target};
 use crate::scene::{ClampConvention, Conventions, MirrorConvention, Scene};
 use crate::trace::{MeshStore, RenderOptions, RenderProgress, World, render};
@@ -110,7 +111,9 @@ pub fn better_conventions(
     }
     let ((conventions, max_depth), state) = best?;
     let gain = baseline.total - state.total;
-    let floor = (MIN_STEP_SHARE * baseline.total).max(MIN_ERROR);
+    let floor = (MIN_STEP_SHARE * baseline.total)
+        .max(MIN_ERROR)
+        .max(NOISE_SHARE * target.sampling_noise(&baseline.error));
     (gain >= MIN_CONVENTION_SHARE * baseline.total && gain >= floor).then(|| {
         let pixels = (0..baseline.error.len() as u32)
             .filter(|&p| state.error[p as usize] < baseline.error[p as usize])

@@ -6,11 +6,13 @@ mod conventions;
 mod encoding;
 mod groups;
 mod rivals;
+mod sampling;
 mod search;
 mod target;
 
 pub use conventions::{BetterConventions, NO_LIMIT_DEPTH, better_conventions, convention_names};
 pub use encoding::{Encoding, detect as detect_encoding};
 pub use groups::{Group, Groups};
+pub use sampling::{SamplingSpread, samples_otherwise};
 pub use search::{MIN_ERROR, MIN_STEP_SHARE, Step, search};
-pub use target::{FitState, OFF_LEVELS, Target};
+pub use target::{FitState, NOISE_SHARE, OFF_LEVELS, Target};

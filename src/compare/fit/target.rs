@@ -7,11 +7,17 @@
 //! bytes, so rounding is never a difference.
 
 use super::encoding::{Encoding, distance_outside};
+use super::sampling::SamplingSpread;
 use crate::compare::other_image::OtherImage;
 
 /// A pixel counts as still different when some channel is this many 8-bit levels outside
 /// what its byte stands for.
 pub const OFF_LEVELS: f64 = 2.0;
+
+/// The share of the error on edges ([`Target::sampling_noise`]) a step must take away
+/// to be a finding: sampling's leftovers are scattered along edges with both signs, so
+/// one factor takes away a small part of them, while a bug's change is coherent.
+pub const NOISE_SHARE: f64 = 0.5;
 
 /// The other picture decoded with one encoding.
 #[derive(Clone, Debug)]
@@ -23,18 +29,30 @@ pub struct Target {
     /// Per pixel and channel, 1 where the fit may use the channel, 0 where the other
     /// renderer clipped it (255: its true value is unknown).
     pub weight: Vec<[f64; 3]>,
+    /// Per pixel, how much of an edge it is: 0 in smooth regions, towards 1 where
+    /// anti-aliasing may change it by whole colours (from the sampling spread).
+    pub edge: Vec<f64>,
 }
 
 impl Target {
-    /// `other` decoded with `encoding`.
+    /// `other` decoded with `encoding`, each pixel's interval widened by what sampling
+    /// may do to it (`spread`, from raylab's picture) and its weight lowered to match.
     #[must_use]
-    pub fn new(other: &OtherImage, encoding: Encoding) -> Self {
+    pub fn new(other: &OtherImage, encoding: Encoding, spread: &SamplingSpread) -> Self {
         let table: Vec<(f64, f64)> = (0..=255u8).map(|k| encoding.interval(k)).collect();
         let decoded: Vec<f64> = (0..=255u8).map(|k| encoding.decode(k)).collect();
         let intervals = other
             .rgb
             .iter()
-            .map(|p| p.map(|k| table[usize::from(k)]))
+            .zip(&spread.reach)
+            .map(|(p, reach)| {
+                let mut interval = p.map(|k| table[usize::from(k)]);
+                for (c, (lo, hi)) in interval.iter_mut().enumerate() {
+                    *lo -= reach[c].0;
+                    *hi += reach[c].1;
+                }
+                interval
+            })
             .collect();
         let middle = other
             .rgb
@@ -44,13 +62,36 @@ impl Target {
         let weight = other
             .rgb
             .iter()
-            .map(|p| p.map(|k| if k == 255 { 0.0 } else { 1.0 }))
+            .zip(&spread.weight)
+            .map(|(p, w)| {
+                let mut weight = w.to_owned();
+                for (c, &k) in p.iter().enumerate() {
+                    if k == 255 {
+                        weight[c] = 0.0;
+                    }
+                }
+                weight
+            })
+            .collect();
+        let edge = spread
+            .weight
+            .iter()
+            .map(|w| 1.0 - w.iter().copied().fold(1.0, f64::min))
             .collect();
         Self {
             intervals,
             middle,
             weight,
+            edge,
         }
+    }
+
+    /// What of `error` (per pixel) sits on edges, where another renderer's sampling
+    /// alone leaves differences: no single step is believed unless it takes away more
+    /// than [`NOISE_SHARE`] of this.
+    #[must_use]
+    pub fn sampling_noise(&self, error: &[f64]) -> f64 {
+        error.iter().zip(&self.edge).map(|(e, edge)| e * edge).sum()
     }
 
     /// This target with `pixels` out of the fit: any value is right there, and the

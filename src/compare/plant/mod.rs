@@ -8,5 +8,6 @@ mod models;
 
 pub use gallery::{Gallery, GalleryPicture, gallery, gallery_scene};
 pub use models::{
-    CAUSE_NAMES, Plant, PlantedBug, Site, gallery_bugs, has_glass, parse_bugs, plant, plant_each,
+    CAUSE_NAMES, LOOP_BUG_NAMES, Plant, PlantedBug, Site, gallery_bugs, has_glass, parse_bugs,
+    plant, plant_each,
 };

@@ -22,7 +22,7 @@ use crate::compare::error::CompareError;
 use crate::compare::fit::{Encoding, NO_LIMIT_DEPTH};
 use crate::compare::other_image::OtherImage;
 use crate::compare::split::{Components, render_components};
-use crate::compare::verdict::{Cause, ExplainedTerm, Explanation};
+use crate::compare::verdict::{Cause, ExplainedTerm, Explanation, looped_lights};
 use crate::scene::{
     ClampConvention, Light, MirrorConvention, Object, Quantise, Scene, Shape, Transform, Trs,
 };
@@ -362,11 +362,20 @@ fn parse_bug(text: &str, scene: &Scene) -> Result<PlantedBug, String> {
         Some((name, site)) => (name.trim(), Some(site.trim().trim_matches('"'))),
         None => (text, None),
     };
+    if let Some(bug) = loop_bug(name, scene) {
+        return match site {
+            None => bug,
+            Some(site) => Err(format!(
+                "{name}@{site}: {name} says itself which light or object it concerns"
+            )),
+        };
+    }
     let plant = Plant::from_name(name).ok_or_else(|| {
         format!(
-            "unknown bug {name:?}: one of {}, or TERM=FACTOR (ambient, diffuse, specular, \
+            "unknown bug {name:?}: one of {}, {}, or TERM=FACTOR (ambient, diffuse, specular, \
              shadows, reflection, transmission)",
-            CAUSE_NAMES.join(", ")
+            CAUSE_NAMES.join(", "),
+            LOOP_BUG_NAMES.join(", ")
         )
     })?;
     let scope = plant.scope();
@@ -402,6 +411,47 @@ fn parse_bug(text: &str, scene: &Scene) -> Result<PlantedBug, String> {
     };
     Ok(PlantedBug { plant, site })
 }
+
+/// The bugs of a tracer's loops, as the catalogue models them: the last light or object
+/// skipped (a loop that stops one short) is that light off or that object missing; the
+/// ambient added once per light is the ambient term times the number of other lights.
+fn loop_bug(name: &str, scene: &Scene) -> Option<Result<PlantedBug, String>> {
+    let bug = match name {
+        "last-light-skipped" => match scene.lights.len() {
+            0 => Err("last-light-skipped: the scene has no light".to_owned()),
+            n => Ok(PlantedBug {
+                plant: Plant::LightOff,
+                site: Site::Light(n - 1),
+            }),
+        },
+        "last-object-skipped" => match scene.objects.len() {
+            0 => Err("last-object-skipped: the scene has no object".to_owned()),
+            n => Ok(PlantedBug {
+                plant: Plant::MissingObject,
+                site: Site::Node(vec![n - 1]),
+            }),
+        },
+        "ambient-per-light" => match looped_lights(scene) {
+            0 | 1 => Err(
+                "ambient-per-light: the scene needs two lights or more beside the ambient for it to show"
+                    .to_owned(),
+            ),
+            n => Ok(PlantedBug {
+                plant: Plant::Factor(Term::Ambient, n as f64),
+                site: Site::Everywhere,
+            }),
+        },
+        _ => return None,
+    };
+    Some(bug)
+}
+
+/// The cause names of the loop bugs, planted as other causes (see [`parse_bugs`]).
+pub const LOOP_BUG_NAMES: [&str; 3] = [
+    "last-light-skipped",
+    "last-object-skipped",
+    "ambient-per-light",
+];
 
 /// The path of the node named `name` (an object's name, or a tree path `a/b`).
 fn node_path(scene: &Scene, name: &str) -> Option<Vec<usize>> {

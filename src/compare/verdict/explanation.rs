@@ -90,6 +90,9 @@ pub enum Cause {
     Silhouette,
     /// Shading varies across an object in a way no factor or known bug explains.
     Shading,
+    /// Pixels along edges differ as another renderer's sampling (anti-aliasing) would
+    /// make them: not a bug.
+    Sampling,
     /// The picture is of another version of the scene: outlines differ on several
     /// objects and nothing explains the bulk of the difference.
     DifferentScene {
@@ -129,6 +132,7 @@ impl Cause {
             }
             Cause::Silhouette => "silhouette",
             Cause::Shading => "shading",
+            Cause::Sampling => "sampling",
             Cause::DifferentScene { .. } => "different-scene",
         }
     }

@@ -14,7 +14,7 @@ use super::explanation::{Cause, ExplainedTerm, Explanation};
 use super::summary::summary;
 use crate::compare::catalogue::Kind;
 use crate::compare::catalogue::MISS;
-use crate::compare::fit::{FitState, OFF_LEVELS, Target};
+use crate::compare::fit::{FitState, NOISE_SHARE, OFF_LEVELS, Target};
 use crate::compare::split::Components;
 use crate::scene::Scene;
 use crate::trace::Term;
@@ -171,6 +171,8 @@ fn term_weights(components: &Components, p: usize, size: f64, weights: &mut [f64
 #[derive(Default)]
 struct Pile {
     error: f64,
+    /// The part of `error` on edges, where sampling alone makes differences.
+    edge_error: f64,
     pixels: Vec<u32>,
     terms: [f64; 5],
     /// The first and last leaf seen among them: the node holding both is named.
@@ -178,8 +180,20 @@ struct Pile {
 }
 
 impl Pile {
-    fn add(&mut self, p: usize, error: f64, leaf: Option<usize>) {
+    /// This pile, or none when it lies mostly on edges: then it joins `sampled`.
+    fn unless_sampled(self, sampled: &mut Pile) -> Option<Pile> {
+        if self.error == 0.0 || self.edge_error < NOISE_SHARE * self.error {
+            return Some(self);
+        }
+        sampled.error += self.error;
+        sampled.edge_error += self.edge_error;
+        sampled.pixels.extend(self.pixels);
+        None
+    }
+
+    fn add(&mut self, p: usize, error: f64, edge: f64, leaf: Option<usize>) {
         self.error += error;
+        self.edge_error += error * edge;
         self.pixels.push(p as u32);
         if let Some(leaf) = leaf {
             self.leaves = Some(
@@ -212,16 +226,28 @@ pub fn localise(
         if near[p] && object_differs(components, target, state, p) {
             let leaf = outline_leaf(components, p);
             let object = leaf.map_or(objects, |l| components.nodes.object_of_leaf(l));
-            outline[object].add(p, error, leaf);
+            outline[object].add(p, error, target.edge[p], leaf);
         } else if components.labels[p] != MISS {
             let leaf = components.labels[p] as usize;
             let pile = &mut inside[components.nodes.object_of_leaf(leaf)];
             term_weights(components, p, error.sqrt(), &mut pile.terms);
-            pile.add(p, error, Some(leaf));
+            pile.add(p, error, target.edge[p], Some(leaf));
         }
     }
     let mut out = Vec::new();
     let nodes = &components.nodes;
+    // Piles that lie mostly on edges are another renderer's sampling, gathered in one.
+    let mut sampled = Pile::default();
+    let (outline, inside): (Vec<Pile>, Vec<Pile>) = (
+        outline
+            .into_iter()
+            .filter_map(|p| p.unless_sampled(&mut sampled))
+            .collect(),
+        inside
+            .into_iter()
+            .filter_map(|p| p.unless_sampled(&mut sampled))
+            .collect(),
+    );
     let mut emit = |pile: Pile, term: ExplainedTerm, cause: Cause, confidence| {
         if pile.error / total < MIN_SHARE {
             return;
@@ -269,5 +295,13 @@ pub fn localise(
         ][best];
         emit(pile, term, Cause::Shading, SHADING_CONFIDENCE);
     }
+    sampled.pixels.sort_unstable();
+    let confidence = sampled.edge_error / sampled.error.max(f64::MIN_POSITIVE);
+    emit(
+        sampled,
+        ExplainedTerm::Geometry,
+        Cause::Sampling,
+        confidence,
+    );
     out
 }

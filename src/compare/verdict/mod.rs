@@ -11,4 +11,4 @@ mod verdicts;
 
 pub use explain::{Explained, explain};
 pub use explanation::{Cause, ExplainedTerm, Explanation};
-pub use summary::summary;
+pub use summary::{looped_lights, summary};

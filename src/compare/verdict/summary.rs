@@ -8,6 +8,43 @@ use crate::scene::tree_path::object_at;
 use crate::scene::{ClampConvention, CsgOp, Light, MirrorConvention, Quantise, Scene, Shape};
 use crate::trace::Term;
 
+/// The lights a tracer's light loop visits: every light but the ambient ones.
+#[must_use]
+pub fn looped_lights(scene: &Scene) -> usize {
+    scene
+        .lights
+        .iter()
+        .filter(|l| !matches!(l, Light::Ambient { .. }))
+        .count()
+}
+
+/// For a factor that a loop's bug makes, the sentence naming it: a whole light missing
+/// that is the last of the list (a loop that stops one short), or the ambient term
+/// scaled by the number of lights (added inside the light loop).
+fn loop_hint(e: &Explanation, scene: &Scene) -> String {
+    let whole_light =
+        e.object.is_none() && matches!(e.term, ExplainedTerm::Term(Term::Diffuse | Term::Specular));
+    if let Some(light) = e.light
+        && whole_light
+        && e.factor < 0.05
+        && light + 1 == scene.lights.len()
+        && scene.lights.len() > 1
+    {
+        return " It is the last light of the scene: a loop over the lights that stops one short skips it.".to_owned();
+    }
+    let lights = looped_lights(scene);
+    if e.term == ExplainedTerm::Term(Term::Ambient)
+        && e.light.is_none()
+        && lights >= 2
+        && (e.factor - lights as f64).abs() < 0.15 * lights as f64
+    {
+        return format!(
+            " That is the number of lights ({lights}): the ambient is added once per light, inside the light loop."
+        );
+    }
+    String::new()
+}
+
 fn light_name(scene: &Scene, light: usize) -> String {
     let kind = scene.lights.get(light).map_or("?", Light::kind_name);
     format!("light {light} ({kind})")
@@ -47,11 +84,12 @@ pub fn summary(e: &Explanation, scene: &Scene) -> String {
                 (None, Some(o)) => format!("The {term} of '{o}'"),
                 (None, None) => format!("The {term} term"),
             };
-            if f < 0.05 {
+            let sentence = if f < 0.05 {
                 format!("{subject} is missing in the other image (factor {f:.2}).")
             } else {
                 format!("{subject} is {f:.2} times raylab's in the other image.")
-            }
+            };
+            sentence + &loop_hint(e, scene)
         }
         Cause::Normal(bug) => match object {
             Some(o) => format!(
@@ -103,11 +141,16 @@ pub fn summary(e: &Explanation, scene: &Scene) -> String {
                     ))
                 ),
                 Some(Part::Whole) | None => format!(
-                    "'{o}' is missing in the other image{}: what lies behind it shows instead, and its shadows are gone (weight {weight:.2}).",
+                    "'{o}' is missing in the other image{}: what lies behind it shows instead, and its shadows are gone (weight {weight:.2}).{}",
                     e.bbox.map_or_else(String::new, |b| format!(
                         " (raylab draws it at x {}..{}, y {}..{})",
                         b.x0, b.x1, b.y0, b.y1
-                    ))
+                    )),
+                    if e.node.len() == 1 && e.node[0] + 1 == scene.objects.len() && scene.objects.len() > 1 {
+                        " It is the last object of the scene: a loop over the objects that stops one short skips it."
+                    } else {
+                        ""
+                    }
                 ),
                 Some(p) => format!(
                     "{} of '{o}' are missing in the other image: what lies behind shows instead (weight {weight:.2}).",
@@ -163,6 +206,7 @@ pub fn summary(e: &Explanation, scene: &Scene) -> String {
             "Shading varies across {} in a way no factor or known bug explains; it follows the {term} term, as a wrong normal or reflected vector would.",
             object.map_or("the picture".to_owned(), |o| format!("'{o}'"))
         ),
+        Cause::Sampling => "The pictures differ along edges as another renderer's anti-aliasing makes them (more samples, or other places in the pixel): not a bug.".to_owned(),
         Cause::DifferentScene { objects } => format!(
             "The picture looks like another version of this scene: the outlines of {objects} objects differ and no factor or known bug explains most of the difference. Was it rendered from an older scene file (the camera or objects moved)? The verdicts below are weak until the two agree."
         ),
