@@ -151,7 +151,7 @@ impl EditorApp {
                 ),
                 has_object_selected: !self.selection.node_paths().is_empty(),
                 group_selected: self.selection.node_path().is_some_and(|path| {
-                    crate::scene::tree_path::object_at(&self.scene.objects, &path)
+                    crate::scene::tree::object_at(&self.scene.objects, &path)
                         .is_some_and(|o| matches!(o.shape, crate::scene::Shape::Group { .. }))
                 }),
             };

@@ -12,7 +12,7 @@ use super::projection::ViewMapping;
 use crate::gizmo::transform_drag::{TranslateHandle, euler_ring_axes, world_axis};
 use crate::gizmo::view::object_axes;
 use crate::gizmo::{GizmoMode, HandleId};
-use crate::scene::tree_path::{object_at, world_from_parent};
+use crate::scene::tree::{object_at, world_from_parent};
 use crate::scene::{Light, Scene, Transform};
 use crate::ui::commands::Selection;
 

@@ -49,7 +49,7 @@ pub fn inspector_ui(
                 }
             }
             Selection::Part(path) => {
-                if let Some(object) = crate::scene::tree_path::object_at(&scene.objects, path) {
+                if let Some(object) = crate::scene::tree::object_at(&scene.objects, path) {
                     object::object_ui(ui, scene, path, object, meshes, focus_name, commands);
                 }
             }

@@ -4,7 +4,7 @@
 
 use glam::DAffine3;
 
-use super::Object;
+use crate::scene::model::Object;
 
 /// The object at `path` among `objects` (and their children); `None` past the tree.
 #[must_use]
@@ -37,14 +37,6 @@ pub fn siblings_mut<'a>(
         (_, []) => Some(objects),
         (_, parent) => object_at_mut(objects, parent)?.shape.children_mut(),
     }
-}
-
-/// Takes the node at `path` out of its tree (a top-level object, a group's child or a
-/// CSG operand), returning it; `None` when the path leads nowhere.
-pub fn remove_node(objects: &mut Vec<Object>, path: &[usize]) -> Option<Object> {
-    let &last = path.last()?;
-    let siblings = siblings_mut(objects, path)?;
-    (last < siblings.len()).then(|| siblings.remove(last))
 }
 
 /// The transform from the space the node at `path` is placed in (its parent's object
@@ -138,8 +130,9 @@ mod tests {
         assert_eq!(path_name(&objects, &[1, 0]), "die/cube");
         assert_eq!(siblings_mut(&mut objects, &[1, 0]).unwrap().len(), 3);
         assert_eq!(siblings_mut(&mut objects, &[1]).unwrap().len(), 2);
-        assert_eq!(remove_node(&mut objects, &[1, 2]).unwrap().name, "pip 2");
-        assert!(remove_node(&mut objects, &[1, 2]).is_none());
-        assert_eq!(object_at(&objects, &[1]).unwrap().shape.children().len(), 2);
+        assert!(
+            siblings_mut(&mut objects, &[0, 0]).is_none(),
+            "a leaf holds no list"
+        );
     }
 }
