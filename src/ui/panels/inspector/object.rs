@@ -6,11 +6,11 @@ use std::collections::BTreeMap;
 use egui::Ui;
 
 use super::fields::{number_row_ui, vec3_row_ui};
+use super::layout::{grid_ui, heading_ui};
 use super::limits::{self, Limits};
 use super::material::material_rows_ui;
 use super::mesh::mesh_rows_ui;
 use super::tree_node::{breadcrumb_ui, csg_op_row_ui, tree_actions_ui};
-use super::{grid_ui, heading_ui};
 use crate::preview::MeshFacts;
 use crate::scene::tree::effective_material;
 use crate::scene::*;

@@ -3,7 +3,7 @@
 
 use egui::Ui;
 
-use super::heading_ui;
+use super::layout::heading_ui;
 use crate::scene::Scene;
 use crate::scene::tree::path_name;
 use crate::ui::commands::{CSG_OPS, Command, SceneEdit};
