@@ -282,5 +282,4 @@ pub fn grab(scene: &Scene, selection: &Selection, handle: HandleId) -> Option<Gr
 }
 
 #[cfg(test)]
-#[path = "edit_tests.rs"]
 mod tests;
