@@ -76,30 +76,23 @@ pub fn effective_material<'a>(objects: &'a [Object], path: &[usize]) -> Option<&
 
 #[cfg(test)]
 mod tests {
+    use super::super::test_trees::leaf;
     use super::*;
     use crate::scene::{CsgOp, Shape, Transform, Trs};
     use glam::DVec3;
 
-    fn leaf(name: &str, x: f64) -> Object {
-        Object {
-            name: name.to_owned(),
-            shape: Shape::Sphere,
-            transform: Transform::Trs(Trs {
-                translate: DVec3::new(x, 0.0, 0.0),
-                ..Trs::default()
-            }),
-            material: String::new(),
-        }
-    }
-
     fn die() -> Vec<Object> {
         vec![
-            leaf("ball", 0.0),
+            leaf("ball", 0.0, ""),
             Object {
                 name: "die".to_owned(),
                 shape: Shape::Csg {
                     op: CsgOp::Difference,
-                    operands: vec![leaf("body", 0.0), leaf("pip 1", 1.0), leaf("pip 2", 2.0)],
+                    operands: vec![
+                        leaf("body", 0.0, ""),
+                        leaf("pip 1", 1.0, ""),
+                        leaf("pip 2", 2.0, ""),
+                    ],
                 },
                 transform: Transform::Trs(Trs {
                     translate: DVec3::new(0.0, 5.0, 0.0),
