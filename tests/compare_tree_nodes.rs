@@ -17,7 +17,7 @@ use one_sample::diff;
 use own_render::own_render;
 use raylab::compare::{Comparison, ExplainedTerm, Explanation};
 use raylab::scene::examples::EXAMPLE_SCENES;
-use raylab::scene::tree_path::{object_at_mut, remove_node};
+use raylab::scene::tree::{object_at_mut, remove_node};
 use raylab::scene::{Scene, parse_scene};
 use raylab::trace::Term;
 use shader::{Bugs, lab_scene, render};

@@ -479,7 +479,7 @@ fn a_hit_names_the_path_of_the_leaf_it_lies_on_through_groups_and_csg_nodes() {
 
 #[test]
 fn every_hit_on_the_csg_example_names_by_index_the_leaf_its_name_path_names() {
-    use raylab::scene::tree_path::path_name;
+    use raylab::scene::tree::path_name;
     use raylab::trace::PinholeCamera;
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/csg.ron");
     let scene = raylab::scene::load_scene(&path).unwrap();

@@ -6,7 +6,7 @@
 use std::collections::BTreeSet;
 use std::path::Path;
 
-use raylab::scene::tree_path::siblings_mut;
+use raylab::scene::tree::siblings_mut;
 use raylab::scene::{Scene, load_scene};
 use raylab::trace::{
     Image, Isolation, PinholeCamera, RenderOptions, RenderProgress, TermSwitches, View, World,

@@ -8,7 +8,7 @@ use editor_harness::harness_on_example;
 use egui::{Key, Modifiers};
 use egui_kittest::kittest::Queryable;
 use raylab::scene::Shape;
-use raylab::scene::tree_path::object_at;
+use raylab::scene::tree::object_at;
 use raylab::ui::{Command, Selection};
 
 fn die_index(harness: &egui_kittest::Harness<'_, raylab::ui::EditorApp>) -> usize {

@@ -12,7 +12,6 @@ pub mod ray_paths;
 pub mod snap;
 pub mod spot;
 pub mod transform_drag;
-pub mod trs;
 pub mod view;
 
 use glam::DVec3;

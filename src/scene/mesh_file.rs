@@ -255,18 +255,13 @@ fn find_bad_vertex_line(path: &Path) -> Option<usize> {
 /// order. No file is touched.
 #[must_use]
 pub fn mesh_objects(scene: &Scene) -> Vec<(&Object, &str)> {
-    let mut found = Vec::new();
-    // Reversed on the stack, so objects come out in the scene's order.
-    let mut work: Vec<&Object> = scene.objects.iter().rev().collect();
-    while let Some(object) = work.pop() {
-        match &object.shape {
-            Shape::Mesh { path } => found.push((object, path.as_str())),
-            Shape::Csg { operands, .. } => work.extend(operands.iter().rev()),
-            Shape::Group { children } => work.extend(children.iter().rev()),
-            _ => {}
-        }
-    }
-    found
+    scene
+        .nodes()
+        .filter_map(|node| match &node.object.shape {
+            Shape::Mesh { path } => Some((node.object, path.as_str())),
+            _ => None,
+        })
+        .collect()
 }
 
 /// Every mesh file a scene refers to, read from the scene's folder, keyed by the path as
@@ -294,9 +289,7 @@ pub fn read_scene_meshes(
 /// it (with `/` separators), so a scene saved in `folder` keeps working when the folder
 /// moves. Other paths are left as they are.
 pub fn relative_mesh_paths(scene: &mut Scene, folder: &Path) {
-    // A work list, not recursion: trees may be deep.
-    let mut pending: Vec<&mut Object> = scene.objects.iter_mut().collect();
-    while let Some(object) = pending.pop() {
+    scene.edit_nodes(|object| {
         if let Shape::Mesh { path } = &mut object.shape
             && let Ok(below) = Path::new(path.as_str()).strip_prefix(folder)
             && Path::new(path.as_str()).is_absolute()
@@ -304,10 +297,7 @@ pub fn relative_mesh_paths(scene: &mut Scene, folder: &Path) {
         {
             *path = text.replace('\\', "/");
         }
-        if let Some(children) = object.shape.children_mut() {
-            pending.extend(children.iter_mut());
-        }
-    }
+    });
 }
 
 /// Where a mesh path written in a scene points, for a scene in `folder`.
@@ -321,6 +311,15 @@ fn read_error(path: &Path, source: std::io::Error) -> SceneError {
         path: path.to_path_buf(),
         source,
     }
+}
+
+/// The last part of a mesh path as the scene writes it (`"meshes/knot.obj"` gives
+/// `"knot.obj"`), for a short label; the path itself where it has none.
+#[must_use]
+pub fn mesh_file_name(path: &str) -> String {
+    Path::new(path)
+        .file_name()
+        .map_or(path.to_owned(), |n| n.to_string_lossy().into_owned())
 }
 
 fn invalid(path: &Path, line: Option<usize>, message: &str) -> SceneError {

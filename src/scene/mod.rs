@@ -17,7 +17,7 @@ mod scene_or_course;
 mod shape;
 mod text_file;
 pub mod transform;
-pub mod tree_path;
+pub mod tree;
 mod validate;
 
 pub use any_file::{load_any_scene, read_meshes_beside};

@@ -1,4 +1,5 @@
-//! Object placement: translate / rotate / scale, or a general affine matrix.
+//! Object placement: translate / rotate / scale, or a general affine matrix, and the way
+//! back from a matrix to the nearest (or an exact) placement.
 //!
 //! In a file the usual form is an unnamed struct `(translate: .., rotate_deg: .., scale: ..)`
 //! and the general form is `Matrix(((m00, m01, m02, m03), (..), (..)))`, the rows of the
@@ -52,6 +53,31 @@ impl Default for Trs {
 }
 
 impl Trs {
+    /// The nearest translate / rotate / scale to an affine matrix (exact without shear);
+    /// the translation alone where the matrix has no rotation and scale to read.
+    #[must_use]
+    pub fn nearest(affine: &DAffine3) -> Trs {
+        let (scale, rotation, translate) = affine.to_scale_rotation_translation();
+        // Trs applies Rz * Ry * Rx: glam's ZYX order returns (z, y, x).
+        let (z, y, x) = rotation.to_euler(glam::EulerRot::ZYX);
+        let trs = Trs {
+            translate,
+            rotate_deg: DVec3::new(x.to_degrees(), y.to_degrees(), z.to_degrees()),
+            scale,
+        };
+        if trs.scale.is_finite()
+            && trs.rotate_deg.is_finite()
+            && trs.scale.min_element().abs() > 0.0
+        {
+            trs
+        } else {
+            Trs {
+                translate,
+                ..Trs::default()
+            }
+        }
+    }
+
     /// The object-to-world matrix.
     #[must_use]
     pub fn world_from_object(&self) -> DAffine3 {
@@ -91,6 +117,20 @@ pub fn sin_cos_deg(degrees: f64) -> (f64, f64) {
 }
 
 impl Transform {
+    /// A placement as translate / rotate / scale where that holds it exactly (to
+    /// rounding), else as a matrix (a shear).
+    #[must_use]
+    pub fn from_affine(affine: &DAffine3) -> Transform {
+        let trs = Trs::nearest(affine);
+        let again = trs.world_from_object();
+        let tolerance = 1e-9 * (1.0 + affine.translation.abs().max_element());
+        if again.abs_diff_eq(*affine, tolerance) {
+            Transform::Trs(trs)
+        } else {
+            Transform::Matrix(rows_from_affine(affine))
+        }
+    }
+
     /// The object-to-world matrix.
     #[must_use]
     pub fn world_from_object(&self) -> DAffine3 {
@@ -325,6 +365,35 @@ impl<'de> Deserialize<'de> for RowOrNumber {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn nearest_trs_gives_back_a_shear_free_placement() {
+        let trs = Trs {
+            translate: DVec3::new(1.0, -2.0, 0.5),
+            rotate_deg: DVec3::new(20.0, -35.0, 70.0),
+            scale: DVec3::new(2.0, 0.5, 1.5),
+        };
+        let back = Trs::nearest(&trs.world_from_object());
+        let a = trs.world_from_object();
+        let b = back.world_from_object();
+        assert!(a.abs_diff_eq(b, 1e-9), "{a:?} vs {b:?}");
+        assert!(matches!(
+            Transform::from_affine(&a),
+            Transform::Trs(t) if t.world_from_object().abs_diff_eq(a, 1e-9)
+        ));
+    }
+
+    #[test]
+    fn a_sheared_placement_stays_a_matrix() {
+        let shear = DAffine3 {
+            matrix3: DMat3::from_cols(DVec3::X, DVec3::new(0.5, 1.0, 0.0), DVec3::Z),
+            translation: DVec3::new(3.0, 0.0, -1.0),
+        };
+        assert_eq!(
+            Transform::from_affine(&shear),
+            Transform::Matrix(rows_from_affine(&shear))
+        );
+    }
 
     #[test]
     fn trs_applies_scale_then_x_y_z_rotation_then_translation() {

@@ -22,7 +22,6 @@ use std::path::PathBuf;
 
 use stored::Stored;
 
-pub use crate::gizmo::trs::trs_from_matrix;
 pub use app::{EditorApp, EditorOptions};
 pub use commands::{Command, LightKind, SceneEdit, Selection};
 pub use document::confirm::DiscardAction;

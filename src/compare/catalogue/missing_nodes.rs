@@ -12,7 +12,7 @@ use std::ops::Range;
 use rayon::prelude::*;
 
 use super::nodes::{Node, Nodes, Place};
-use crate::scene::tree_path::{object_at, remove_node, world_from_parent};
+use crate::scene::tree::{object_at, remove_node, world_from_parent};
 use crate::scene::{CsgOp, Object, Scene, Shape};
 use crate::trace::shapes::{Aabb, shape_bounds};
 use crate::trace::{Ray, World};

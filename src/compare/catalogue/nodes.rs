@@ -8,7 +8,7 @@
 use std::collections::BTreeSet;
 use std::ops::Range;
 
-use crate::scene::tree_path::{object_at, path_name};
+use crate::scene::tree::{object_at, path_name};
 use crate::scene::{CsgOp, Scene, Shape};
 use crate::trace::World;
 

@@ -290,7 +290,7 @@ impl PlantedBug {
             Site::Node(path) => format!(
                 "{}@{}",
                 self.plant.name(),
-                crate::scene::tree_path::path_name(&scene.objects, path)
+                crate::scene::tree::path_name(&scene.objects, path)
             ),
             _ => self.to_string(),
         }

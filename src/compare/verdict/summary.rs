@@ -4,7 +4,7 @@ use super::explanation::{Cause, ExplainedTerm, Explanation};
 use crate::compare::catalogue::Part;
 use crate::compare::extras::ShapeGuess;
 use crate::compare::fit::Encoding;
-use crate::scene::tree_path::object_at;
+use crate::scene::tree::object_at;
 use crate::scene::{ClampConvention, CsgOp, Light, MirrorConvention, Quantise, Scene, Shape};
 use crate::trace::Term;
 

@@ -58,6 +58,16 @@ pub fn is_grammar_word(word: &str) -> bool {
         .any(|w| word.eq_ignore_ascii_case(w))
 }
 
+/// The block word `token` is (`Scene`, `Camera`, ...), if it is one.
+pub(crate) fn block_word(token: &Token<'_>) -> Option<&'static str> {
+    BLOCK_WORDS.iter().copied().find(|word| token.is(word))
+}
+
+/// Whether a token is meant as a number: it starts with a digit, a sign or a point.
+pub(crate) fn looks_numeric(text: &str) -> bool {
+    text.starts_with(|c: char| c.is_ascii_digit() || matches!(c, '+' | '-' | '.'))
+}
+
 /// The longest name taken from a comment, in characters; a longer comment is prose, not
 /// a name.
 pub const MAX_COMMENT_NAME_CHARS: usize = 60;

@@ -3,7 +3,7 @@
 
 use std::path::{Component, Path, PathBuf};
 
-use crate::scene::{Object, Scene, Shape};
+use crate::scene::{Scene, Shape};
 
 /// Rewrites every relative `Mesh` path of `scene`, written relative to `from_folder`, to
 /// name the same file relative to `to_folder`. Paths are compared lexically (after
@@ -19,18 +19,13 @@ pub fn rebase_mesh_paths(scene: &mut Scene, from_folder: &Path, to_folder: &Path
     if from == to {
         return;
     }
-    // A work list, not recursion: trees may be deep.
-    let mut pending: Vec<&mut Object> = scene.objects.iter_mut().collect();
-    while let Some(object) = pending.pop() {
+    scene.edit_nodes(|object| {
         if let Shape::Mesh { path } = &mut object.shape
             && Path::new(path.as_str()).is_relative()
         {
             *path = relative_to(&normalised(&from.join(&*path)), &to);
         }
-        if let Some(children) = object.shape.children_mut() {
-            pending.extend(children.iter_mut());
-        }
-    }
+    });
 }
 
 /// `path` without `.` and with each `..` taking back the component before it.
@@ -68,6 +63,7 @@ fn relative_to(target: &Path, folder: &Path) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scene::Object;
 
     fn scene_with_mesh(path: &str) -> Scene {
         let leaf = Object {

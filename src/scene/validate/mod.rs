@@ -3,11 +3,13 @@
 
 use glam::DVec3;
 
+mod failure;
 mod objects;
 
 use super::error::SceneError;
 use super::light::Light;
 use super::model::{Camera, Material, RenderSettings, Scene};
+use failure::{invalid, prefixed};
 
 /// The largest accepted image width or height, in pixels.
 pub const MAX_IMAGE_SIDE: u32 = 16384;
@@ -51,26 +53,6 @@ pub fn validate(scene: &Scene) -> Result<(), SceneError> {
             .map_err(|e| prefixed(&format!("lights[{index}] ({})", light.kind_name()), e))?;
     }
     Ok(())
-}
-
-pub(super) fn invalid<T>(message: String) -> Result<T, SceneError> {
-    Err(SceneError::Invalid(message))
-}
-
-pub(super) fn prefixed(at: &str, error: SceneError) -> SceneError {
-    match error {
-        SceneError::Invalid(message) => SceneError::Invalid(format!("{at}: {message}")),
-        other => other,
-    }
-}
-
-pub(super) fn list_or_none<'a>(names: impl Iterator<Item = &'a String>) -> String {
-    let names: Vec<String> = names.map(|n| format!("\"{n}\"")).collect();
-    if names.is_empty() {
-        "none".to_owned()
-    } else {
-        names.join(", ")
-    }
 }
 
 fn finite(field: &str, value: f64) -> Result<(), SceneError> {

@@ -3,7 +3,8 @@
 
 use std::collections::BTreeMap;
 
-use super::{SceneError, invalid, prefixed};
+use super::failure::{invalid, list_or_none, prefixed};
+use crate::scene::error::SceneError;
 use crate::scene::model::{Material, Object};
 use crate::scene::shape::Shape;
 use crate::scene::transform::Transform;
@@ -84,7 +85,7 @@ fn check_material_name(
         if object.shape.is_tree_node() || inherited.is_some_and(known) {
             return Ok(());
         }
-        let defined = super::list_or_none(materials.keys());
+        let defined = list_or_none(materials.keys());
         return invalid(format!(
             "no material (name one of: {defined}; inside a tree a parent's applies)"
         ));
@@ -94,14 +95,14 @@ fn check_material_name(
             "unknown material \"{}\" on a group (a group's material applies to children \
              that name none; defined: {})",
             object.material,
-            super::list_or_none(materials.keys())
+            list_or_none(materials.keys())
         ));
     }
     if !known(&object.material) {
         return invalid(format!(
             "unknown material \"{}\" (defined: {})",
             object.material,
-            super::list_or_none(materials.keys())
+            list_or_none(materials.keys())
         ));
     }
     Ok(())

@@ -277,5 +277,4 @@ where
 }
 
 #[cfg(test)]
-#[path = "tile_tests.rs"]
 mod tests;

@@ -319,5 +319,4 @@ fn chain_link(index: usize, len: usize) -> Children {
 }
 
 #[cfg(test)]
-#[path = "chains_tests.rs"]
 mod tests;

@@ -214,5 +214,4 @@ pub(crate) fn crossings(ray: &Ray, out: &mut Vec<ShapeHit>, minor: f64) {
 }
 
 #[cfg(test)]
-#[path = "torus_tests.rs"]
 mod tests;

@@ -218,7 +218,7 @@ fn hide_parts(objects: &mut [crate::scene::Object], kept: &[usize], hidden: &BTr
             continue; // its whole object is hidden
         };
         let moved = [&[top], &path[1..]].concat();
-        if let Some(part) = crate::scene::tree_path::object_at_mut(objects, &moved) {
+        if let Some(part) = crate::scene::tree::object_at_mut(objects, &moved) {
             part.shape = crate::scene::Shape::Group {
                 children: Vec::new(),
             };

@@ -16,7 +16,8 @@ use crate::ui::panels::status_bar::{StatusInfo, StatusMessage, status_bar_ui};
 use crate::ui::shortcuts::{help_window, shortcut_commands};
 use crate::ui::style::apply_style;
 use crate::ui::viewport::convergence_plot::convergence_plot_ui;
-use crate::ui::viewport::picture::{ViewportInput, viewport_ui};
+use crate::ui::viewport::exchange::ViewportInput;
+use crate::ui::viewport::picture::viewport_ui;
 use crate::ui::viewport::pixel_inspector::{InspectorView, pixel_inspector_ui};
 use crate::ui::viewport::preview_link::PreviewLink;
 use egui::{Color32, RichText, ViewportCommand};
@@ -151,7 +152,7 @@ impl EditorApp {
                 ),
                 has_object_selected: !self.selection.node_paths().is_empty(),
                 group_selected: self.selection.node_path().is_some_and(|path| {
-                    crate::scene::tree_path::object_at(&self.scene.objects, &path)
+                    crate::scene::tree::object_at(&self.scene.objects, &path)
                         .is_some_and(|o| matches!(o.shape, crate::scene::Shape::Group { .. }))
                 }),
             };

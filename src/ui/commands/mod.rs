@@ -1,117 +1,18 @@
 //! Everything the panels can ask for, as values. Panels push commands while laying out;
 //! the app applies them once per frame (`app.rs`), which also feeds undo and restarts the
-//! preview. Scene edits are plain functions here, testable without a window.
+//! preview. Scene edits are plain functions here, testable without a window; edits of the
+//! object trees go through `scene::tree`.
 
 mod placement;
 mod scene_edit;
-mod tree_edit;
-mod tree_move;
-mod tree_wrap;
+mod selection;
 
 use std::path::PathBuf;
 
-use crate::scene::{Camera, Light, Material, Object, RenderSettings, Shape};
-
-/// What the inspector shows.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub enum Selection {
-    /// Nothing selected.
-    #[default]
-    None,
-    /// The camera.
-    Camera,
-    /// The render settings.
-    Render,
-    /// A top-level object, by index.
-    Object(usize),
-    /// A node inside an object tree (a CSG operand, a group's child), by its path of
-    /// indices from the top-level object down (two or more; see `Selection::node`).
-    Part(Vec<usize>),
-    /// Two or more objects or parts (Ctrl+click in the outliner), by path, in the
-    /// order picked (see `Selection::several`).
-    Several(Vec<Vec<usize>>),
-    /// A material, by name.
-    Material(String),
-    /// A light, by index.
-    Light(usize),
-}
-
 pub use crate::scene::LightKind;
-pub use scene_edit::{material_users, repair_selection, unique_name};
-pub use tree_edit::{CSG_OPS, part_exists};
-
-/// A change to the scene (and the selection that follows it).
-#[derive(Clone, Debug, PartialEq)]
-pub enum SceneEdit {
-    /// Adds a unit shape where the camera looks, upright and standing on the floor if
-    /// there is one, with the first material (creating one if there is none).
-    AddObject(Shape),
-    /// Adds a Mesh object for the OBJ file at this path (as the scene writes it), named
-    /// after the file.
-    AddMesh(String),
-    /// Adds a light of a kind.
-    AddLight(LightKind),
-    /// Adds a grey material with a fresh name.
-    AddMaterial,
-    /// Duplicates the selected object or light (moved aside, so both are seen) or
-    /// material, and selects the copy.
-    DuplicateSelected,
-    /// Deletes the selected object, light or (unused) material.
-    DeleteSelected,
-    /// Replaces an object.
-    SetObject(usize, Object),
-    /// Replaces a node inside an object tree, by path.
-    SetPart(Vec<usize>, Object),
-    /// Puts the selected object or part into a new group in its place (Ctrl+G).
-    GroupSelected,
-    /// Puts the selected object or part, as the first operand, into a new CSG node of
-    /// this operator in its place (add the other operands next).
-    CsgSelected(crate::scene::CsgOp),
-    /// Puts the selected group's children in its place, placed as they were.
-    UngroupSelected,
-    /// Moves a node (by path) into a tree node, as its last child or operand, or beside
-    /// a leaf, right after it; it stays where it is in the world (outliner drag).
-    MoveNode {
-        /// The node moved.
-        from: Vec<usize>,
-        /// Where it was dropped.
-        onto: Vec<usize>,
-    },
-    /// Adds a unit shape as the last operand or child of the selected tree node.
-    AddOperand(Shape),
-    /// Replaces a light.
-    SetLight(usize, Light),
-    /// Replaces the camera.
-    SetCamera(Camera),
-    /// Replaces the render settings.
-    SetRender(RenderSettings),
-    /// Replaces a material's values.
-    SetMaterial(String, Material),
-    /// Gives an object its own copy of the material it shares with others, named after
-    /// both ("gold (flat ring)"), so editing it changes only that object.
-    MakeMaterialUnique(usize),
-    /// Renames a material and every reference to it.
-    RenameMaterial {
-        /// The current name.
-        from: String,
-        /// The new name.
-        to: String,
-    },
-}
-
-impl SceneEdit {
-    /// Whether the edit names an object or light by its index.
-    #[must_use]
-    pub fn is_by_index(&self) -> bool {
-        matches!(
-            self,
-            SceneEdit::SetObject(..)
-                | SceneEdit::SetPart(..)
-                | SceneEdit::SetLight(..)
-                | SceneEdit::MakeMaterialUnique(_)
-        )
-    }
-}
+pub use crate::scene::tree::unique_name;
+pub use scene_edit::{CSG_OPS, SceneEdit, material_users};
+pub use selection::{Selection, repair_selection};
 
 /// Everything a panel, shortcut or dialog can ask the app to do.
 #[derive(Clone, Debug, PartialEq)]

@@ -5,7 +5,7 @@
 
 use glam::{DAffine3, DQuat, DVec3};
 
-use crate::scene::{Camera, Scene, Shape, Transform, Trs};
+use crate::scene::{Camera, Object, Scene, Shape, Transform, Trs};
 use crate::trace::shapes::shape_bounds;
 
 /// A floor is a plane whose normal is within this cosine of the camera's up.
@@ -67,7 +67,7 @@ pub fn new_object_transform(scene: &Scene, shape: &Shape) -> Transform {
         _ => target,
     };
     let affine = DAffine3::from_scale_rotation_translation(DVec3::splat(size), rotation, centre);
-    let mut trs = crate::gizmo::trs::trs_from_matrix(&affine);
+    let mut trs = Trs::nearest(&affine);
     // Whole degrees stay whole in the inspector (no 89.99999999999999), and the scale and
     // position are the ones chosen, not their round trip through a matrix (a scale of 1
     // saved as 0.9999999999999998).
@@ -139,6 +139,22 @@ pub fn moved(transform: &Transform, offset: DVec3) -> Transform {
             Transform::Matrix(rows)
         }
     }
+}
+
+/// Where a new operand goes: half the size of the node's first operand, centred on that
+/// one's +x face, so it shows at once (a bite of a Difference, a bump of a Union);
+/// unit size at the origin in an empty node.
+pub fn beside_first(first: Option<&Object>) -> Transform {
+    let Some(Transform::Trs(first)) = first.map(|o| &o.transform) else {
+        return Transform::Trs(Trs::default());
+    };
+    let size = first.scale.abs().element_sum() / 3.0;
+    let face = first.world_from_object().transform_point3(glam::DVec3::X);
+    Transform::Trs(Trs {
+        translate: face,
+        rotate_deg: glam::DVec3::ZERO,
+        scale: glam::DVec3::splat(size * 0.5),
+    })
 }
 
 #[cfg(test)]

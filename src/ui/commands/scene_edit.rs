@@ -1,10 +1,101 @@
-//! Scene edits as plain functions: add, duplicate, delete, rename and replace, with the
-//! selection following what was added or removed. Testable without a window.
+//! Scene edits as values and as plain functions: add, duplicate, delete, rename and
+//! replace, with the selection following what was added or removed. Edits of the object
+//! trees go through `scene::tree`. Testable without a window.
 
 use glam::DVec3;
 
-use super::{SceneEdit, Selection, placement, tree_edit, tree_move, tree_wrap};
-use crate::scene::{Light, LightKind, Material, Object, Scene, Shape};
+use super::placement;
+use super::selection::Selection;
+use crate::scene::tree::{
+    add_child, delete_node, insert_node, move_node, object_at, object_at_mut, unique_name,
+    unwrap_group, wrap_node, wrap_nodes,
+};
+use crate::scene::{
+    Camera, CsgOp, Light, LightKind, Material, Object, RenderSettings, Scene, Shape,
+};
+
+/// A change to the scene (and the selection that follows it).
+#[derive(Clone, Debug, PartialEq)]
+pub enum SceneEdit {
+    /// Adds a unit shape where the camera looks, upright and standing on the floor if
+    /// there is one, with the first material (creating one if there is none).
+    AddObject(Shape),
+    /// Adds a Mesh object for the OBJ file at this path (as the scene writes it), named
+    /// after the file.
+    AddMesh(String),
+    /// Adds a light of a kind.
+    AddLight(LightKind),
+    /// Adds a grey material with a fresh name.
+    AddMaterial,
+    /// Duplicates the selected object or light (moved aside, so both are seen) or
+    /// material, and selects the copy.
+    DuplicateSelected,
+    /// Deletes the selected object, light or (unused) material.
+    DeleteSelected,
+    /// Replaces an object.
+    SetObject(usize, Object),
+    /// Replaces a node inside an object tree, by path.
+    SetPart(Vec<usize>, Object),
+    /// Puts the selected object or part into a new group in its place (Ctrl+G).
+    GroupSelected,
+    /// Puts the selected object or part, as the first operand, into a new CSG node of
+    /// this operator in its place (add the other operands next).
+    CsgSelected(CsgOp),
+    /// Puts the selected group's children in its place, placed as they were.
+    UngroupSelected,
+    /// Moves a node (by path) into a tree node, as its last child or operand, or beside
+    /// a leaf, right after it; it stays where it is in the world (outliner drag).
+    MoveNode {
+        /// The node moved.
+        from: Vec<usize>,
+        /// Where it was dropped.
+        onto: Vec<usize>,
+    },
+    /// Adds a unit shape as the last operand or child of the selected tree node.
+    AddOperand(Shape),
+    /// Replaces a light.
+    SetLight(usize, Light),
+    /// Replaces the camera.
+    SetCamera(Camera),
+    /// Replaces the render settings.
+    SetRender(RenderSettings),
+    /// Replaces a material's values.
+    SetMaterial(String, Material),
+    /// Gives an object its own copy of the material it shares with others, named after
+    /// both ("gold (flat ring)"), so editing it changes only that object.
+    MakeMaterialUnique(usize),
+    /// Renames a material and every reference to it.
+    RenameMaterial {
+        /// The current name.
+        from: String,
+        /// The new name.
+        to: String,
+    },
+}
+
+impl SceneEdit {
+    /// Whether the edit names an object or light by its index.
+    #[must_use]
+    pub fn is_by_index(&self) -> bool {
+        matches!(
+            self,
+            SceneEdit::SetObject(..)
+                | SceneEdit::SetPart(..)
+                | SceneEdit::SetLight(..)
+                | SceneEdit::MakeMaterialUnique(_)
+        )
+    }
+}
+
+/// The operators offered for a CSG node, with a line on what each keeps.
+pub const CSG_OPS: [(CsgOp, &str); 3] = [
+    (CsgOp::Union, "inside any operand"),
+    (CsgOp::Intersection, "inside every operand"),
+    (
+        CsgOp::Difference,
+        "inside the first operand and none of the others",
+    ),
+];
 
 impl SceneEdit {
     /// Applies the edit; the selection follows added, duplicated and deleted items.
@@ -48,14 +139,19 @@ impl SceneEdit {
             SceneEdit::SetObject(index, object) => {
                 *scene.objects.get_mut(index).ok_or("no such object")? = object;
             }
-            SceneEdit::SetPart(path, object) => tree_edit::set_node(scene, &path, object)?,
-            SceneEdit::GroupSelected => tree_wrap::wrap_selected(scene, selection, None)?,
-            SceneEdit::CsgSelected(op) => tree_wrap::wrap_selected(scene, selection, Some(op))?,
-            SceneEdit::UngroupSelected => tree_wrap::ungroup_selected(scene, selection)?,
-            SceneEdit::MoveNode { from, onto } => {
-                tree_move::move_node(scene, selection, &from, &onto)?;
+            SceneEdit::SetPart(path, object) => {
+                *object_at_mut(&mut scene.objects, &path).ok_or("no such object")? = object;
             }
-            SceneEdit::AddOperand(shape) => tree_edit::add_operand(scene, selection, shape)?,
+            SceneEdit::GroupSelected => wrap_selected(scene, selection, None)?,
+            SceneEdit::CsgSelected(op) => wrap_selected(scene, selection, Some(op))?,
+            SceneEdit::UngroupSelected => {
+                let path = selection.node_path().ok_or("select a group to ungroup")?;
+                *selection = Selection::node(unwrap_group(&mut scene.objects, &path)?);
+            }
+            SceneEdit::MoveNode { from, onto } => {
+                *selection = Selection::node(move_node(&mut scene.objects, &from, &onto)?);
+            }
+            SceneEdit::AddOperand(shape) => add_operand(scene, selection, shape)?,
             SceneEdit::SetLight(index, light) => {
                 *scene.lights.get_mut(index).ok_or("no such light")? = light;
             }
@@ -90,42 +186,10 @@ impl SceneEdit {
 /// on the leaves that inherit it.
 #[must_use]
 pub fn material_users(scene: &Scene, material: &str) -> usize {
-    let mut count = 0;
-    let mut work: Vec<(&Object, &str)> = scene
-        .objects
-        .iter()
-        .map(|o| (o, o.material.as_str()))
-        .collect();
-    while let Some((object, shown)) = work.pop() {
-        let children = object.shape.children();
-        if children.is_empty() {
-            count += usize::from(shown == material);
-        }
-        for child in children {
-            let inherits = if child.material.is_empty() {
-                shown
-            } else {
-                child.material.as_str()
-            };
-            work.push((child, inherits));
-        }
-    }
-    count
-}
-
-/// Drops a selection that no longer points at anything (after undo, open, delete).
-pub fn repair_selection(scene: &Scene, selection: &mut Selection) {
-    let valid = match selection {
-        Selection::Object(i) => *i < scene.objects.len(),
-        Selection::Part(path) => tree_edit::part_exists(scene, path),
-        Selection::Several(paths) => paths.iter().all(|p| tree_edit::part_exists(scene, p)),
-        Selection::Light(i) => *i < scene.lights.len(),
-        Selection::Material(name) => scene.materials.contains_key(name),
-        Selection::None | Selection::Camera | Selection::Render => true,
-    };
-    if !valid {
-        *selection = Selection::None;
-    }
+    scene
+        .nodes()
+        .filter(|node| node.is_leaf() && node.shown_material == material)
+        .count()
 }
 
 /// Adds an object of `shape` named `base` (or `base 2`, ... where taken), with the first
@@ -141,20 +205,6 @@ fn add_object(scene: &mut Scene, selection: &mut Selection, shape: Shape, base: 
         material,
     });
     *selection = Selection::Object(scene.objects.len() - 1);
-}
-
-/// `base` if unused, else `base 2`, `base 3`...
-#[must_use]
-pub fn unique_name<'a>(base: &str, taken: impl Iterator<Item = &'a String>) -> String {
-    let taken: Vec<&String> = taken.collect();
-    let free = |name: &str| !taken.iter().any(|t| t.as_str() == name);
-    if free(base) {
-        return base.to_owned();
-    }
-    (2..)
-        .map(|n| format!("{base} {n}"))
-        .find(|name| free(name))
-        .unwrap_or_else(|| base.to_owned())
 }
 
 /// A light of `kind` with sensible values for the default scene's scale.
@@ -228,7 +278,7 @@ fn duplicate(scene: &mut Scene, selection: &mut Selection) -> Result<(), String>
             scene.materials.insert(new_name.clone(), copy);
             *selection = Selection::Material(new_name);
         }
-        Selection::Part(path) => tree_edit::duplicate_part(scene, &path, selection)?,
+        Selection::Part(path) => duplicate_part(scene, &path, selection)?,
         // Nothing duplicable selected: the shortcut does nothing.
         Selection::None | Selection::Camera | Selection::Render | Selection::Several(_) => {}
     }
@@ -238,24 +288,22 @@ fn duplicate(scene: &mut Scene, selection: &mut Selection) -> Result<(), String>
 fn delete(scene: &mut Scene, selection: &mut Selection) -> Result<(), String> {
     match selection.clone() {
         Selection::Object(i) if i < scene.objects.len() => {
-            scene.objects.remove(i);
-            *selection = neighbour(i, scene.objects.len(), Selection::Object);
+            let next = delete_node(&mut scene.objects, &[i])?;
+            *selection = next.map_or(Selection::None, Selection::node);
         }
-        Selection::Part(path) => tree_edit::delete_part(scene, &path, selection)?,
+        Selection::Part(path) => {
+            let next = delete_node(&mut scene.objects, &path)?;
+            *selection = next.map_or(Selection::None, Selection::node);
+        }
         Selection::Several(paths) => {
             // Last first, so the paths before stay right; all or nothing.
-            let mut edited = scene.clone();
+            let mut edited = scene.objects.clone();
             let mut sorted = paths;
             sorted.sort_unstable_by(|a, b| b.cmp(a));
             for path in &sorted {
-                let mut one = Selection::node(path.clone());
-                if path.len() == 1 {
-                    edited.objects.remove(path[0]);
-                } else {
-                    tree_edit::delete_part(&mut edited, path, &mut one)?;
-                }
+                delete_node(&mut edited, path)?;
             }
-            *scene = edited;
+            scene.objects = edited;
             *selection = Selection::None;
         }
         Selection::Light(i) if i < scene.lights.len() => {
@@ -263,14 +311,11 @@ fn delete(scene: &mut Scene, selection: &mut Selection) -> Result<(), String> {
             *selection = neighbour(i, scene.lights.len(), Selection::Light);
         }
         Selection::Material(name) => {
-            let mut users: Vec<&str> = Vec::new();
-            let mut work: Vec<&Object> = scene.objects.iter().collect();
-            while let Some(object) = work.pop() {
-                if object.material == name {
-                    users.push(object.name.as_str());
-                }
-                work.extend(object.shape.children());
-            }
+            let users: Vec<&str> = scene
+                .nodes()
+                .filter(|node| node.object.material == name)
+                .map(|node| node.object.name.as_str())
+                .collect();
             if !users.is_empty() {
                 return Err(format!(
                     "material \"{name}\" is used by {}; give them another material first",
@@ -286,7 +331,66 @@ fn delete(scene: &mut Scene, selection: &mut Selection) -> Result<(), String> {
     Ok(())
 }
 
-/// The item that takes the place of a deleted one: the next, else the previous.
+/// Wraps the selected node (or the several selected, of one list) into a new group
+/// (`op` `None`) or CSG node, and selects the new node.
+fn wrap_selected(
+    scene: &mut Scene,
+    selection: &mut Selection,
+    op: Option<CsgOp>,
+) -> Result<(), String> {
+    let wrapped = if let Selection::Several(paths) = selection {
+        wrap_nodes(&mut scene.objects, paths, op)?
+    } else {
+        let path = selection.node_path().ok_or("select an object first")?;
+        wrap_node(&mut scene.objects, &path, op)?
+    };
+    *selection = Selection::node(wrapped);
+    Ok(())
+}
+
+/// Adds a unit shape as the last operand (or child) of the selected tree node, placed
+/// beside its first operand (see `placement::beside_first`), and selects it.
+fn add_operand(scene: &mut Scene, selection: &mut Selection, shape: Shape) -> Result<(), String> {
+    let path = selection
+        .node_path()
+        .ok_or("select a CSG node or a group")?;
+    let node = object_at(&scene.objects, &path).ok_or("no such object")?;
+    let children = node.shape.children();
+    let operand = Object {
+        name: unique_name(shape.name(), children.iter().map(|o| &o.name)),
+        transform: placement::beside_first(children.first()),
+        shape,
+        // Inherits the node's material.
+        material: String::new(),
+    };
+    *selection = Selection::Part(add_child(&mut scene.objects, &path, operand)?);
+    Ok(())
+}
+
+/// Duplicates the selected part of a tree beside it (moved aside, so both are seen),
+/// and selects the copy.
+fn duplicate_part(
+    scene: &mut Scene,
+    path: &[usize],
+    selection: &mut Selection,
+) -> Result<(), String> {
+    let (&at, parent) = path.split_last().ok_or("no such object")?;
+    let original = object_at(&scene.objects, path).ok_or("no such object")?;
+    let mut copy = original.clone();
+    let offset = placement::duplicate_offset(scene, &copy.shape, &copy.transform);
+    copy.transform = placement::moved(&copy.transform, offset);
+    let siblings = object_at(&scene.objects, parent).ok_or("no such object")?;
+    copy.name = unique_name(
+        &copy.name,
+        siblings.shape.children().iter().map(|o| &o.name),
+    );
+    let next = [parent, &[at + 1]].concat();
+    insert_node(&mut scene.objects, &next, copy)?;
+    *selection = Selection::Part(next);
+    Ok(())
+}
+
+/// The light that takes the place of a deleted one: the next, else the previous.
 fn neighbour(index: usize, len: usize, make: fn(usize) -> Selection) -> Selection {
     if len == 0 {
         Selection::None
@@ -312,15 +416,11 @@ fn rename_material(scene: &mut Scene, from: &str, to: &str) -> Result<(), String
         .ok_or_else(|| format!("no material \"{from}\""))?;
     scene.materials.insert(to.to_owned(), material);
     // Children and operands name materials too.
-    let mut work: Vec<&mut Object> = scene.objects.iter_mut().collect();
-    while let Some(object) = work.pop() {
+    scene.edit_nodes(|object| {
         if object.material == from {
             object.material = to.to_owned();
         }
-        if let Some(children) = object.shape.children_mut() {
-            work.extend(children.iter_mut());
-        }
-    }
+    });
     Ok(())
 }
 
@@ -377,3 +477,6 @@ mod tests {
         crate::scene::validate(&scene).unwrap();
     }
 }
+
+#[cfg(test)]
+mod tree_tests;

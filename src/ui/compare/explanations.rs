@@ -6,7 +6,7 @@ use egui::{Color32, RichText};
 
 use crate::compare::{Comparison, Explanation, PSNR_IDENTICAL_DB};
 use crate::scene::Scene;
-use crate::scene::tree_path::path_name;
+use crate::scene::tree::path_name;
 use crate::ui::commands::{Command, Selection};
 use crate::ui::state::light_label;
 
@@ -190,7 +190,7 @@ mod tests {
             Some(Selection::Object(2))
         );
         // Renamed since: the explanation no longer points at it.
-        crate::scene::tree_path::object_at_mut(&mut scene.objects, &[2, 1])
+        crate::scene::tree::object_at_mut(&mut scene.objects, &[2, 1])
             .unwrap()
             .name = "pip one".to_owned();
         assert_eq!(explanation_selection(&e, &scene), None);

@@ -4,7 +4,7 @@
 
 use egui::{Color32, Pos2};
 
-use super::overlay::{Element, Part, dot, line};
+use super::element::{Element, Part, dot, line};
 use super::projection::ViewMapping;
 use crate::gizmo::HandleId;
 use crate::gizmo::frustum::frustum;

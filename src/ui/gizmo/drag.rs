@@ -16,9 +16,10 @@ use crate::scene::{Light, Scene, Transform};
 use crate::trace::Isolation;
 use crate::ui::commands::{Command, Selection};
 use crate::ui::gizmo::edit::{DragGeometry, Grabbed, drag_edit, grab};
+use crate::ui::gizmo::element::{Element, Part};
 use crate::ui::gizmo::hit::handle_shapes;
 use crate::ui::gizmo::lights::{dim_unlit_markers, marker_toggles_ui};
-use crate::ui::gizmo::overlay::{Element, Part, gizmo_elements};
+use crate::ui::gizmo::overlay::gizmo_elements;
 use crate::ui::gizmo::paint::{paint_elements, paint_matrix_hint, paint_readout};
 use crate::ui::gizmo::projection::ViewMapping;
 use crate::ui::gizmo::toolbar::{ToolbarAction, gizmo_modes_ui};
@@ -269,7 +270,7 @@ fn paint_hints(
     now: Option<Pos2>,
     scene: &Scene,
     selection: &Selection,
-    elements: &[crate::ui::gizmo::overlay::Element],
+    elements: &[Element],
     view: &ViewMapping,
 ) {
     if let Selection::Object(i) = selection

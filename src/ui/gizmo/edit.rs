@@ -13,7 +13,7 @@ use crate::gizmo::transform_drag::{
     TranslateHandle, euler_ring_axes, rotate_drag, scale_drag, translate_drag,
 };
 use crate::gizmo::view::object_axes;
-use crate::scene::tree_path::{object_at, world_from_parent};
+use crate::scene::tree::{object_at, world_from_parent};
 use crate::scene::{Camera, Light, Object, Scene, Transform, Trs};
 use crate::trace::Ray;
 use crate::ui::commands::{SceneEdit, Selection};
@@ -282,5 +282,4 @@ pub fn grab(scene: &Scene, selection: &Selection, handle: HandleId) -> Option<Gr
 }
 
 #[cfg(test)]
-#[path = "edit_tests.rs"]
 mod tests;

@@ -3,7 +3,7 @@
 use egui::Pos2;
 use glam::DVec2;
 
-use super::overlay::{Element, Part};
+use super::element::{Element, Part};
 use crate::gizmo::HandleId;
 use crate::gizmo::handles::HandleShape;
 

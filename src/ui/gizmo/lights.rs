@@ -6,7 +6,7 @@
 use egui::{Color32, CornerRadius, Pos2, Rect, UiBuilder, Vec2};
 use glam::DVec3;
 
-use super::overlay::{CONE_COLOUR, Element, Part, dot, line};
+use super::element::{CONE_COLOUR, Element, Part, dot, line};
 use super::projection::{ViewMapping, sun_tail};
 use crate::gizmo::HandleId;
 use crate::gizmo::spot::{rim_handle, rim_points, rim_radial, tip_point};

@@ -5,6 +5,7 @@
 pub mod camera;
 pub mod drag;
 pub mod edit;
+pub mod element;
 pub mod hit;
 pub mod lights;
 pub mod overlay;

@@ -7,12 +7,13 @@ use egui::{Color32, Pos2, Vec2};
 use glam::DVec3;
 
 use super::camera::{camera_elements, shows_scene_camera};
+use super::element::{AXIS_COLOURS, Element, Part, dot, line};
 use super::lights::{SpotCone, light_elements, spot_handles};
 use super::projection::ViewMapping;
 use crate::gizmo::transform_drag::{TranslateHandle, euler_ring_axes, world_axis};
 use crate::gizmo::view::object_axes;
 use crate::gizmo::{GizmoMode, HandleId};
-use crate::scene::tree_path::{object_at, world_from_parent};
+use crate::scene::tree::{object_at, world_from_parent};
 use crate::scene::{Light, Scene, Transform};
 use crate::ui::commands::Selection;
 
@@ -20,43 +21,6 @@ use crate::ui::commands::Selection;
 const ARROW_PX: f64 = 84.0;
 /// Radius of the rotate rings, in screen points.
 const RING_PX: f64 = 72.0;
-
-/// Colours of the x, y and z handles.
-pub const AXIS_COLOURS: [Color32; 3] = [
-    Color32::from_rgb(236, 72, 80),
-    Color32::from_rgb(118, 206, 62),
-    Color32::from_rgb(66, 140, 246),
-];
-/// The spotlight cone and its handles.
-pub const CONE_COLOUR: Color32 = Color32::from_rgb(255, 196, 64);
-/// A handle under the pointer or being dragged.
-pub const HOT_COLOUR: Color32 = Color32::from_rgb(255, 240, 120);
-
-/// How an element is drawn (screen points).
-#[derive(Clone, Debug)]
-pub enum Part {
-    /// A line.
-    Line(Pos2, Pos2),
-    /// An arrow from the first point to the second.
-    Arrow(Pos2, Pos2),
-    /// A closed line through the points.
-    Loop(Vec<Pos2>),
-    /// A filled dot with an outline.
-    Dot(Pos2, f32),
-    /// A filled quadrilateral.
-    Quad([Pos2; 4]),
-}
-
-/// One drawn piece of a gizmo, grabbable when it has a handle.
-#[derive(Clone, Debug)]
-pub struct Element {
-    /// What to draw.
-    pub part: Part,
-    /// Its colour.
-    pub colour: Color32,
-    /// The handle it belongs to.
-    pub handle: Option<HandleId>,
-}
 
 /// Every element of the viewport's gizmos for this scene, selection and mode, in
 /// painting order.
@@ -205,34 +169,6 @@ fn scale_elements(out: &mut Vec<Element>, view: &ViewMapping, trs: &crate::scene
     if let Some(p) = view.project(trs.translate) {
         dot(out, p, 3.5, Color32::WHITE, None);
     }
-}
-
-pub(super) fn dot(
-    out: &mut Vec<Element>,
-    p: Pos2,
-    radius: f32,
-    colour: Color32,
-    handle: Option<HandleId>,
-) {
-    out.push(Element {
-        part: Part::Dot(p, radius),
-        colour,
-        handle,
-    });
-}
-
-pub(super) fn line(
-    out: &mut Vec<Element>,
-    a: Pos2,
-    b: Pos2,
-    colour: Color32,
-    handle: Option<HandleId>,
-) {
-    out.push(Element {
-        part: Part::Line(a, b),
-        colour,
-        handle,
-    });
 }
 
 fn square(centre: Pos2, half: f32) -> [Pos2; 4] {

@@ -4,7 +4,7 @@
 use egui::{Align2, Color32, FontId, Pos2, Rect, Shape, Stroke, Vec2};
 
 use crate::gizmo::HandleId;
-use crate::ui::gizmo::overlay::{Element, HOT_COLOUR, Part};
+use crate::ui::gizmo::element::{Element, HOT_COLOUR, Part};
 
 /// Paints the elements; `hot` is the handle under the pointer or being dragged.
 pub fn paint_elements(painter: &egui::Painter, elements: &[Element], hot: Option<HandleId>) {

@@ -90,7 +90,7 @@ pub fn status_bar_ui(ui: &mut Ui, info: &StatusInfo<'_>, commands: &mut Vec<Comm
             }
         }
         if let Some((file, fraction)) = &info.loading {
-            let name = super::file_name(file);
+            let name = crate::scene::mesh_file::mesh_file_name(file);
             if *fraction < 1.0 {
                 ui.label(format!("reading {name}"))
                     .on_hover_text(format!("The preview is reading the mesh file {file}"));

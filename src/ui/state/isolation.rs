@@ -4,7 +4,7 @@
 //! term switches they are debugging state: never in the scene, never an undo step.
 
 use super::labels::light_label;
-use crate::scene::tree_path::object_at;
+use crate::scene::tree::object_at;
 use crate::scene::{Light, Object, Scene};
 use crate::trace::Isolation;
 
@@ -84,7 +84,7 @@ pub fn isolation_note(isolation: &Isolation, scene: &Scene) -> Option<String> {
                 isolation
                     .hidden_parts
                     .iter()
-                    .map(|p| crate::scene::tree_path::path_name(&scene.objects, p)),
+                    .map(|p| crate::scene::tree::path_name(&scene.objects, p)),
             ),
         ),
     ];

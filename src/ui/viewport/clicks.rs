@@ -8,7 +8,7 @@
 use egui::{Pos2, Response, Vec2};
 use glam::{DVec2, DVec3};
 
-use super::picture::ViewportInput;
+use super::exchange::ViewportInput;
 use super::pixel_inspector::{PixelInspection, inspected_pixel};
 use crate::scene::Scene;
 use crate::trace::PinholeCamera;

@@ -6,6 +6,7 @@
 pub mod camera_navigation;
 mod clicks;
 pub mod convergence_plot;
+pub mod exchange;
 pub mod full_picture_marker;
 pub mod isolation_memory;
 mod legend;

@@ -5,21 +5,18 @@
 use egui::{Align2, Color32, CornerRadius, FontId, Pos2, Rect, Sense, Stroke, Vec2};
 
 use super::clicks::{inspected_anchor, picture_clicks};
+use super::exchange::{ViewportInput, ViewportOutput};
 use super::full_picture_marker::full_picture_marker_ui;
 use super::marks::{HEADER_HEIGHT, header_ui, pass_badge, selection_marker};
-use super::pixel_inspector::{PixelAnchor, PixelInspection};
+use super::pixel_inspector::PixelAnchor;
 use super::preview_link::PreviewLink;
 use super::ray_paths::{ray_path_controls_ui, ray_paths_ui, screen_segments};
 use super::toolbar::toolbar_ui;
-use crate::scene::Scene;
-use crate::trace::Isolation;
-use crate::ui::commands::{Command, Selection};
+use crate::ui::commands::Command;
 use crate::ui::gizmo::drag::GizmoInput;
 use crate::ui::gizmo::projection::ViewMapping;
-use crate::ui::state::PreviewSettings;
-use crate::ui::state::RayPathSettings;
+use crate::ui::state::free_render_size;
 use crate::ui::state::isolation_note;
-use crate::ui::state::{ViewCamera, free_render_size};
 
 /// Accessible name of the picture, for tests and screen readers.
 pub const VIEWPORT_LABEL: &str = "Viewport";
@@ -33,37 +30,6 @@ pub fn letterbox(outer: Rect, aspect: f32) -> Rect {
         Vec2::new(outer.width(), outer.width() / aspect)
     };
     Rect::from_center_size(outer.center(), size)
-}
-
-/// What the viewport shows.
-pub struct ViewportInput<'a> {
-    /// The scene.
-    pub scene: &'a Scene,
-    /// The preview, when running.
-    pub preview: Option<&'a PreviewLink>,
-    /// The selection.
-    pub selection: &'a Selection,
-    /// The toolbar's settings.
-    pub settings: &'a PreviewSettings,
-    /// Lights muted or solo, objects hidden.
-    pub isolation: &'a Isolation,
-    /// The view camera (or camera view).
-    pub view: &'a ViewCamera,
-    /// What the ray-path overlay draws.
-    pub ray_paths: &'a RayPathSettings,
-    /// The inspected pixel.
-    pub inspected: Option<(u32, u32)>,
-    /// The newest inspections of the inspected and pinned pixels.
-    pub inspections: &'a [PixelInspection],
-}
-
-/// What the viewport found out while laying out.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct ViewportOutput {
-    /// The size a free view renders at in this viewport.
-    pub free_size: (u32, u32),
-    /// Where the inspected pixel is on screen.
-    pub anchor: Option<PixelAnchor>,
 }
 
 /// Shows the viewport and pushes the commands of its clicks, drags and controls.

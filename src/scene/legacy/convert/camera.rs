@@ -26,7 +26,7 @@
 use glam::{DAffine3, DVec3};
 
 use super::super::syntax::{At, Item, TransformStep};
-use super::Converter;
+use super::converter::Converter;
 use super::transform::compose;
 use crate::scene::{Camera, Scene};
 

@@ -8,7 +8,7 @@
 
 use super::super::error::LegacyError;
 use super::super::syntax::{At, Item, LightSetting};
-use super::Converter;
+use super::converter::Converter;
 use crate::scene::{Light, LightKind, Scene};
 
 /// The half-angle given to a spot light that had no `Angle`. It is imported with

@@ -13,8 +13,9 @@ use glam::DVec3;
 
 use super::super::error::LegacyError;
 use super::super::syntax::{At, Item, SurfaceEdit};
-use super::Converter;
+use super::converter::Converter;
 use super::dialect::Dialect;
+use super::pending::Definition;
 use crate::scene::Material;
 
 /// Preferred name of the legacy default material.
@@ -37,14 +38,6 @@ pub fn default_material(dialect: Dialect) -> Material {
         transmission: DVec3::ZERO,
         ior: 1.0,
     }
-}
-
-/// One Material block's result.
-pub(super) struct Definition {
-    pub(super) name: String,
-    pub(super) material: Material,
-    pub(super) line: usize,
-    pub(super) used: bool,
 }
 
 impl Converter<'_> {

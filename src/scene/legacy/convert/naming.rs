@@ -8,9 +8,9 @@
 
 use std::collections::{BTreeMap, HashSet};
 
-use super::Converter;
+use super::converter::Converter;
 use super::materials::{DEFAULT_MATERIAL_NAME, default_material, unique};
-use super::objects::{Base, PendingObject, PendingShape};
+use super::pending::{Base, PendingObject, PendingShape};
 use crate::scene::{Material, Object, Scene, Shape};
 
 /// What the naming needs besides the objects.

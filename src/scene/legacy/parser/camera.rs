@@ -3,10 +3,11 @@
 use super::super::error::Diagnostics;
 use super::super::lexer::Token;
 use super::super::syntax::{Block, ParsedBlock};
+use super::at_token::{at, error};
 use super::entries::decode;
+use super::header::{Header, header};
 use super::transform::{TRANSFORM_WORDS, transform_step};
 use super::values::number;
-use super::{Header, at, error, header};
 
 /// A Camera block: the word `Camera` and the tokens after it.
 pub(super) fn parse_camera(

@@ -3,10 +3,9 @@
 //! numbers after them.
 
 use super::super::error::{Diagnostics, LegacyError};
-use super::super::lexer::Token;
+use super::super::lexer::{Token, block_word, looks_numeric};
 use super::super::syntax::{At, Item};
-use super::values::looks_numeric;
-use super::{at, block_word, error};
+use super::at_token::{at, error};
 
 /// Every keyword that may appear inside a block; each block kind lists the ones it takes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

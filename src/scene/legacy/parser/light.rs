@@ -5,9 +5,10 @@
 use super::super::error::Diagnostics;
 use super::super::lexer::Token;
 use super::super::syntax::{Block, LightSetting, ParsedBlock};
+use super::at_token::{at, error};
 use super::entries::{Entry, Word, decode};
+use super::header::{header, no_numbers};
 use super::values::{capped_count, colour, numbers, vector};
-use super::{at, error, header, no_numbers};
 use crate::scene::{LightKind, MAX_LIGHT_SAMPLES, MAX_SPOT_ANGLE_DEG};
 
 /// The keywords of a Light block.

@@ -6,9 +6,10 @@ use glam::DVec3;
 use super::super::error::Diagnostics;
 use super::super::lexer::Token;
 use super::super::syntax::{Block, ParsedBlock, SurfaceEdit};
+use super::at_token::{at, error};
 use super::entries::{Entry, Word, decode};
+use super::header::{header, no_numbers};
 use super::values::{colour, non_negative, numbers};
-use super::{at, error, header, no_numbers};
 use crate::scene::MAX_IOR;
 
 /// The keywords of a Material block.

@@ -15,13 +15,16 @@
 //! Values the scene format cannot hold (negative colours, zero scales, a spot angle over
 //! 180 degrees...) are errors here too, at the token that holds them.
 //!
-//! This file splits the stream into blocks and reads block headers; `entries` splits a
+//! This file splits the stream into blocks, `header` reads block headers, `at_token` says
+//! where a token stands (and reports errors there); `entries` splits a
 //! block body into keyword entries, `values` checks their arguments, and one file per
 //! block kind (`scene`, `camera`, `light`, `material`, `object`, with `transform` shared by
 //! cameras and objects) turns entries into typed settings; `tree` reads nested blocks.
 
+mod at_token;
 mod camera;
 mod entries;
+mod header;
 mod light;
 mod material;
 mod object;
@@ -30,25 +33,16 @@ mod transform;
 mod tree;
 mod values;
 
-use super::error::{Diagnostics, LegacyError};
-use super::lexer::{Comments, Token, is_grammar_word};
-use super::syntax::{At, Block, ParsedBlock};
+use super::error::Diagnostics;
+#[cfg(test)]
+use super::error::LegacyError;
+use super::lexer::{Comments, Token, block_word, is_grammar_word};
+use super::syntax::{Block, ParsedBlock};
+use at_token::{at, error};
 use entries::decode;
 pub use tree::MAX_NESTING;
-use values::looks_numeric;
 
 pub(crate) use super::lexer::BLOCK_WORDS;
-
-fn at(token: &Token<'_>) -> At {
-    At {
-        line: token.line,
-        token: token.text.to_owned(),
-    }
-}
-
-fn error(token: &Token<'_>, message: impl Into<String>) -> LegacyError {
-    LegacyError::new(token.line, token.text, message)
-}
 
 /// Parses the whole token stream into blocks. Blocks with errors in their header are
 /// left out; entries with errors are left out of their block. Every error is pushed.
@@ -98,10 +92,6 @@ pub fn parse(
     blocks
 }
 
-fn block_word(token: &Token<'_>) -> Option<&'static str> {
-    BLOCK_WORDS.iter().copied().find(|word| token.is(word))
-}
-
 /// One block: its tokens without the `End`; never empty.
 fn parse_block(
     tokens: &[Token<'_>],
@@ -148,48 +138,6 @@ fn parse_block(
             None
         }
     }
-}
-
-/// A block header: the type (or name) token right after the block word, the numbers after
-/// it, and the body. `None`, with an error, when the block is empty.
-struct Header<'t, 'a> {
-    kind: Token<'a>,
-    numbers: &'t [Token<'a>],
-    body: &'t [Token<'a>],
-}
-
-fn header<'t, 'a>(
-    word: &Token<'a>,
-    rest: &'t [Token<'a>],
-    needs: &str,
-    errors: &mut Diagnostics,
-) -> Option<Header<'t, 'a>> {
-    let Some((kind, after)) = rest.split_first() else {
-        errors.push(error(word, format!("the block needs {needs}")));
-        return None;
-    };
-    let count = after.iter().take_while(|t| looks_numeric(t.text)).count();
-    Some(Header {
-        kind: *kind,
-        numbers: &after[..count],
-        body: &after[count..],
-    })
-}
-
-/// Reports numbers after a header that takes none.
-fn no_numbers(header: &Header<'_, '_>, errors: &mut Diagnostics) -> bool {
-    if let Some(first) = header.numbers.first() {
-        errors.push(error(
-            first,
-            format!(
-                "`{}` takes no numbers, found {}",
-                header.kind.text,
-                header.numbers.len()
-            ),
-        ));
-        return false;
-    }
-    true
 }
 
 #[cfg(test)]

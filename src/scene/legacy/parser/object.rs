@@ -5,11 +5,12 @@
 use super::super::error::Diagnostics;
 use super::super::lexer::Token;
 use super::super::syntax::{ObjectKind, ObjectNode, ObjectSetting};
+use super::at_token::{at, error};
 use super::entries::{Entry, Word, decode, present};
+use super::header::{header, no_numbers};
 use super::material::surface_edit;
 use super::transform::transform_step;
 use super::values::{name, number};
-use super::{at, error, header, no_numbers};
 use crate::scene::Shape;
 
 /// The keywords of an Object block (and of a tree node's own keywords).

@@ -4,8 +4,8 @@
 
 use super::super::error::Diagnostics;
 use super::super::syntax::SceneSetting;
+use super::at_token::error;
 use super::entries::{Entry, Word};
-use super::error;
 use super::values::{capped_count, colour, name, numbers, whole};
 use crate::scene::{MAX_IMAGE_SIDE, MAX_SAMPLES_PER_PIXEL};
 

@@ -5,8 +5,8 @@ use glam::DVec3;
 
 use super::super::error::Diagnostics;
 use super::super::syntax::{Axis, TransformStep};
+use super::at_token::error;
 use super::entries::{Entry, Word};
-use super::error;
 use super::values::{number, numbers, vector};
 
 /// The transform keywords (all a Camera block takes).

@@ -10,9 +10,9 @@
 use super::super::error::Diagnostics;
 use super::super::lexer::{Comments, Token};
 use super::super::syntax::{CsgForm, ObjectKind, ObjectNode};
+use super::at_token::{at, error};
 use super::entries::{decode, present};
 use super::object::{OBJECT_WORDS, object_setting, parse_object};
-use super::{at, error};
 use crate::scene::CsgOp;
 
 /// The deepest nesting of trees a legacy file may have: far beyond the few levels

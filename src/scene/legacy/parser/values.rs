@@ -6,13 +6,8 @@ use glam::DVec3;
 
 use super::super::error::Diagnostics;
 use super::super::lexer::Token;
+use super::at_token::error;
 use super::entries::Entry;
-use super::error;
-
-/// Whether a token is meant as a number: it starts with a digit, a sign or a point.
-pub(super) fn looks_numeric(text: &str) -> bool {
-    text.starts_with(|c: char| c.is_ascii_digit() || matches!(c, '+' | '-' | '.'))
-}
 
 /// A whole token as a finite number: `1`, `-3`, `1.`, `.5`, `1e-3`; not `1,0`, `inf`, `0x1`.
 fn parse_number(text: &str) -> Result<f64, &'static str> {

@@ -3,8 +3,8 @@
 use egui::Ui;
 
 use super::fields::{number_row_ui, vec3_row_ui, whole_number_row_ui};
+use super::layout::{grid_ui, heading_ui};
 use super::limits::{FOV_DEG, IMAGE_SIDE, Limits};
-use super::{grid_ui, heading_ui};
 use crate::scene::*;
 use crate::ui::commands::{Command, SceneEdit};
 

@@ -4,8 +4,8 @@ use egui::Ui;
 use glam::DVec3;
 
 use super::fields::{colour_row_ui, number_row_ui, vec3_row_ui, whole_number_row_ui};
+use super::layout::{grid_ui, heading_ui};
 use super::limits::{LIGHT_RADIUS, LIGHT_SAMPLES, Limits, SPOT_ANGLE_DEG};
-use super::{grid_ui, heading_ui};
 use crate::scene::Light;
 use crate::ui::commands::{Command, SceneEdit};
 

@@ -3,8 +3,8 @@
 use egui::Ui;
 
 use super::fields::{colour_row_ui, number_row_ui};
+use super::layout::{grid_ui, heading_ui};
 use super::limits::{IOR, SHININESS};
-use super::{grid_ui, heading_ui};
 use crate::scene::*;
 use crate::ui::commands::{Command, SceneEdit};
 

@@ -8,7 +8,7 @@ use crate::preview::MeshFacts;
 /// The rows of a mesh read from `path` (as the scene writes it), in the object grid.
 pub(super) fn mesh_rows_ui(ui: &mut Ui, path: &str, facts: Option<&MeshFacts>) {
     ui.label("Mesh");
-    let name = crate::ui::panels::file_name(path);
+    let name = crate::scene::mesh_file::mesh_file_name(path);
     ui.add(egui::Label::new(name).truncate())
         .on_hover_text(format!(
             "{path}\nThe scene refers to this file; saving never rewrites it"

@@ -3,6 +3,7 @@
 
 mod camera;
 mod fields;
+mod layout;
 pub use fields::take_field_notice;
 mod light;
 mod limits;
@@ -49,7 +50,7 @@ pub fn inspector_ui(
                 }
             }
             Selection::Part(path) => {
-                if let Some(object) = crate::scene::tree_path::object_at(&scene.objects, path) {
+                if let Some(object) = crate::scene::tree::object_at(&scene.objects, path) {
                     object::object_ui(ui, scene, path, object, meshes, focus_name, commands);
                 }
             }
@@ -65,22 +66,4 @@ pub fn inspector_ui(
                 }
             }
         });
-}
-
-pub(super) fn heading_ui(ui: &mut Ui, kind: &str, title: &str) {
-    ui.add_space(4.0);
-    ui.horizontal(|ui| {
-        ui.label(egui::RichText::new(kind).small().weak());
-        ui.heading(title);
-    });
-    ui.separator();
-}
-
-/// A two-column grid of labelled rows.
-pub(super) fn grid_ui(ui: &mut Ui, id: &str, rows: impl FnOnce(&mut Ui)) {
-    egui::Grid::new(id)
-        .num_columns(2)
-        .spacing([12.0, 6.0])
-        .min_col_width(72.0)
-        .show(ui, rows);
 }

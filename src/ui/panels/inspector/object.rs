@@ -6,13 +6,13 @@ use std::collections::BTreeMap;
 use egui::Ui;
 
 use super::fields::{number_row_ui, vec3_row_ui};
+use super::layout::{grid_ui, heading_ui};
 use super::limits::{self, Limits};
 use super::material::material_rows_ui;
 use super::mesh::mesh_rows_ui;
 use super::tree_node::{breadcrumb_ui, csg_op_row_ui, tree_actions_ui};
-use super::{grid_ui, heading_ui};
 use crate::preview::MeshFacts;
-use crate::scene::tree_path::effective_material;
+use crate::scene::tree::effective_material;
 use crate::scene::*;
 use crate::ui::commands::{Command, SceneEdit};
 
@@ -211,9 +211,7 @@ pub(super) fn transform_ui(ui: &mut Ui, transform: &mut Transform) {
                 .on_hover_text("Keeps position, rotation and scale; drops any shear")
                 .clicked()
             {
-                *transform = Transform::Trs(crate::gizmo::trs::trs_from_matrix(
-                    &transform.world_from_object(),
-                ));
+                *transform = Transform::Trs(Trs::nearest(&transform.world_from_object()));
             }
         }
     }

@@ -4,8 +4,8 @@
 use egui::Ui;
 
 use super::fields::{colour_row_ui, whole_number_row_ui};
+use super::layout::{grid_ui, heading_ui};
 use super::limits::{MAX_DEPTH, MAX_SAMPLES_PER_PIXEL};
-use super::{grid_ui, heading_ui};
 use crate::scene::*;
 use crate::ui::commands::{Command, SceneEdit};
 

@@ -3,9 +3,9 @@
 
 use egui::Ui;
 
-use super::heading_ui;
+use super::layout::heading_ui;
 use crate::scene::Scene;
-use crate::scene::tree_path::path_name;
+use crate::scene::tree::path_name;
 use crate::ui::commands::{CSG_OPS, Command, SceneEdit};
 
 /// Lists the picked nodes and offers Group and the three booleans.

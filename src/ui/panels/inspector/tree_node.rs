@@ -4,7 +4,7 @@
 
 use egui::Ui;
 
-use crate::scene::tree_path::object_at;
+use crate::scene::tree::object_at;
 use crate::scene::{Scene, Shape};
 use crate::ui::commands::{CSG_OPS, Command, SceneEdit, Selection};
 

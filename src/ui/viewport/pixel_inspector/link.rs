@@ -5,7 +5,7 @@
 
 use std::sync::Arc;
 
-use super::PixelInspection;
+use super::inspection::PixelInspection;
 use crate::preview::{Probe, WorldCache};
 use crate::scene::Scene;
 use crate::trace::{Isolation, TermSwitches};

@@ -1,9 +1,43 @@
 //! Where the pixel inspector window goes: beside each newly inspected pixel, until the
 //! user moves it; from then on it stays where they put it (until it is closed).
 
-use egui::{Id, Pos2, Vec2};
+use egui::{Id, Pos2, Rect, Vec2};
 
-use super::window::PixelAnchor;
+/// Space between the inspected pixel and the window.
+const GAP: f32 = 28.0;
+
+/// Where the inspected pixel is on screen, and the screen the window stays on.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PixelAnchor {
+    /// The pixel's screen position.
+    pub pos: Pos2,
+    /// The viewport's rectangle (the window prefers to stay over it).
+    pub viewport: Rect,
+    /// The whole window's content (the inspector may cover side panels rather than
+    /// the pixel).
+    pub screen: Rect,
+}
+
+impl PixelAnchor {
+    /// The top-left corner of a window of `size`: right of the pixel when it fits in
+    /// the viewport, else left of it when that fits, else on the side with more room,
+    /// never over the pixel while the screen has room beside it.
+    pub(super) fn window_pos(&self, size: Vec2) -> Pos2 {
+        let right = self.pos.x + GAP;
+        let left = self.pos.x - GAP - size.x;
+        let x = if right + size.x <= self.viewport.max.x {
+            right
+        } else if left >= self.viewport.min.x {
+            left
+        } else if self.screen.max.x - self.pos.x >= self.pos.x - self.screen.min.x {
+            right.min(self.screen.max.x - size.x)
+        } else {
+            left.max(self.screen.min.x)
+        };
+        let y = (self.pos.y - 80.0).min(self.screen.max.y - size.y);
+        Pos2::new(x, y.max(self.screen.min.y))
+    }
+}
 
 /// What the window's placement remembers between frames.
 pub(super) struct Placement {

@@ -5,7 +5,7 @@
 use egui::{Color32, RichText};
 use glam::DVec3;
 
-use super::{InspectedBounce, InspectedLight, InspectedPixel};
+use super::inspection::{InspectedBounce, InspectedLight, InspectedPixel};
 use crate::trace::{BounceReport, Branch, LightRecord};
 
 /// The label of the final colour's row (tests find the window by it).

@@ -2,10 +2,10 @@
 //! opens beside the inspected pixel (not over it), at its top for each new pixel, and the
 //! wheel scrolls it anywhere over it.
 
-use egui::{Color32, Id, Pos2, Rect, RichText, Vec2};
+use egui::{Color32, Id, Rect, RichText, Vec2};
 
-use super::PixelInspection;
-use super::placement::Placement;
+use super::inspection::PixelInspection;
+use super::placement::{PixelAnchor, Placement};
 use super::report_view::pixel_ui;
 use crate::ui::commands::Command;
 use crate::ui::state::RayPathSettings;
@@ -17,42 +17,6 @@ const WIDTH: f32 = 400.0;
 const HEIGHT: f32 = 460.0;
 /// The widest the user can make it; every line of the report fits in [`WIDTH`].
 pub const MAX_WIDTH: f32 = WIDTH * 1.5;
-/// Space between the inspected pixel and the window.
-const GAP: f32 = 28.0;
-
-/// Where the inspected pixel is on screen, and the screen the window stays on.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PixelAnchor {
-    /// The pixel's screen position.
-    pub pos: Pos2,
-    /// The viewport's rectangle (the window prefers to stay over it).
-    pub viewport: Rect,
-    /// The whole window's content (the inspector may cover side panels rather than
-    /// the pixel).
-    pub screen: Rect,
-}
-
-impl PixelAnchor {
-    /// The top-left corner of a window of `size`: right of the pixel when it fits in
-    /// the viewport, else left of it when that fits, else on the side with more room,
-    /// never over the pixel while the screen has room beside it.
-    pub(super) fn window_pos(&self, size: Vec2) -> Pos2 {
-        let right = self.pos.x + GAP;
-        let left = self.pos.x - GAP - size.x;
-        let x = if right + size.x <= self.viewport.max.x {
-            right
-        } else if left >= self.viewport.min.x {
-            left
-        } else if self.screen.max.x - self.pos.x >= self.pos.x - self.screen.min.x {
-            right.min(self.screen.max.x - size.x)
-        } else {
-            left.max(self.screen.min.x)
-        };
-        let y = (self.pos.y - 80.0).min(self.screen.max.y - size.y);
-        Pos2::new(x, y.max(self.screen.min.y))
-    }
-}
-
 /// What the window shows.
 pub struct InspectorView<'a> {
     /// The inspected pixel.
@@ -179,6 +143,7 @@ fn contents_ui(ui: &mut egui::Ui, view: &InspectorView, commands: &mut Vec<Comma
 mod tests {
     use super::*;
     use crate::trace::{Term, TermSwitches};
+    use egui::Pos2;
 
     #[test]
     fn switches_read_as_on_the_command_line() {

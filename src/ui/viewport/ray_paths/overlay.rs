@@ -340,5 +340,4 @@ fn v(p: DVec3) -> String {
 }
 
 #[cfg(test)]
-#[path = "overlay_tests.rs"]
 mod tests;

@@ -4,7 +4,7 @@
 
 use glam::DAffine3;
 
-use super::Object;
+use crate::scene::model::Object;
 
 /// The object at `path` among `objects` (and their children); `None` past the tree.
 #[must_use]
@@ -37,14 +37,6 @@ pub fn siblings_mut<'a>(
         (_, []) => Some(objects),
         (_, parent) => object_at_mut(objects, parent)?.shape.children_mut(),
     }
-}
-
-/// Takes the node at `path` out of its tree (a top-level object, a group's child or a
-/// CSG operand), returning it; `None` when the path leads nowhere.
-pub fn remove_node(objects: &mut Vec<Object>, path: &[usize]) -> Option<Object> {
-    let &last = path.last()?;
-    let siblings = siblings_mut(objects, path)?;
-    (last < siblings.len()).then(|| siblings.remove(last))
 }
 
 /// The transform from the space the node at `path` is placed in (its parent's object
@@ -84,30 +76,23 @@ pub fn effective_material<'a>(objects: &'a [Object], path: &[usize]) -> Option<&
 
 #[cfg(test)]
 mod tests {
+    use super::super::test_trees::leaf;
     use super::*;
     use crate::scene::{CsgOp, Shape, Transform, Trs};
     use glam::DVec3;
 
-    fn leaf(name: &str, x: f64) -> Object {
-        Object {
-            name: name.to_owned(),
-            shape: Shape::Sphere,
-            transform: Transform::Trs(Trs {
-                translate: DVec3::new(x, 0.0, 0.0),
-                ..Trs::default()
-            }),
-            material: String::new(),
-        }
-    }
-
     fn die() -> Vec<Object> {
         vec![
-            leaf("ball", 0.0),
+            leaf("ball", 0.0, ""),
             Object {
                 name: "die".to_owned(),
                 shape: Shape::Csg {
                     op: CsgOp::Difference,
-                    operands: vec![leaf("body", 0.0), leaf("pip 1", 1.0), leaf("pip 2", 2.0)],
+                    operands: vec![
+                        leaf("body", 0.0, ""),
+                        leaf("pip 1", 1.0, ""),
+                        leaf("pip 2", 2.0, ""),
+                    ],
                 },
                 transform: Transform::Trs(Trs {
                     translate: DVec3::new(0.0, 5.0, 0.0),
@@ -138,8 +123,9 @@ mod tests {
         assert_eq!(path_name(&objects, &[1, 0]), "die/cube");
         assert_eq!(siblings_mut(&mut objects, &[1, 0]).unwrap().len(), 3);
         assert_eq!(siblings_mut(&mut objects, &[1]).unwrap().len(), 2);
-        assert_eq!(remove_node(&mut objects, &[1, 2]).unwrap().name, "pip 2");
-        assert!(remove_node(&mut objects, &[1, 2]).is_none());
-        assert_eq!(object_at(&objects, &[1]).unwrap().shape.children().len(), 2);
+        assert!(
+            siblings_mut(&mut objects, &[0, 0]).is_none(),
+            "a leaf holds no list"
+        );
     }
 }

@@ -101,7 +101,7 @@ fn aiming_a_directional_light_puts_its_tail_under_the_cursor() {
 
 #[test]
 fn a_part_moves_in_its_parents_space_with_the_grabbed_point_under_the_cursor() {
-    use crate::scene::tree_path::world_from_parent;
+    use crate::scene::tree::world_from_parent;
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/csg.ron");
     let scene = crate::scene::load_scene(&path).expect("example");
     // A pip of the die, which is turned and scaled: its parent's axes are not the

@@ -4,8 +4,8 @@
 use glam::{DAffine3, DVec3};
 
 use super::*;
-use crate::scene::tree_path::world_from_parent;
-use crate::ui::commands::SceneEdit;
+use crate::scene::tree::world_from_parent;
+use crate::scene::{Transform, Trs};
 
 /// The CSG example scene: its die is rotated, scaled and holds a nested node.
 fn csg_scene() -> Scene {
@@ -232,7 +232,7 @@ fn placed(scene: &Scene, name: &str) -> (DAffine3, String) {
         if object.name == name {
             let world =
                 world_from_parent(&scene.objects, &path) * object.transform.world_from_object();
-            let material = crate::scene::tree_path::effective_material(&scene.objects, &path);
+            let material = crate::scene::tree::effective_material(&scene.objects, &path);
             return (world, material.unwrap_or_default().to_owned());
         }
         for k in 0..object.shape.children().len() {

@@ -8,7 +8,7 @@ use egui::collapsing_header::CollapsingState;
 use crate::scene::Object;
 use crate::ui::commands::{Command, SceneEdit, Selection};
 
-use super::outliner::{HIDE_ICON, Row, item_button, item_menu, row_ui, shape_icon, toggle_ui};
+use super::row::{HIDE_ICON, Row, item_button, item_menu, row_ui, shape_icon, toggle_ui};
 use crate::trace::Isolation;
 use crate::ui::state::IsolationToggle;
 
