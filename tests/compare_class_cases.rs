@@ -151,3 +151,58 @@ fn a_bug_under_anti_aliasing_is_still_named() {
     assert_eq!(first.cause, Cause::Factor, "{report}");
     assert_eq!(first.light, Some(directional), "{report}");
 }
+
+/// The scene's picture with `bugs` planted (as `raylab render --bug` takes them).
+fn planted(scene: &raylab::scene::Scene, bugs: &str) -> raylab::compare::OtherImage {
+    let bugs = raylab::compare::plant::parse_bugs(bugs, scene).unwrap();
+    raylab::compare::plant::plant(
+        scene,
+        &raylab::trace::MeshStore::default(),
+        &bugs,
+        1,
+        &raylab::trace::RenderProgress::default(),
+    )
+    .unwrap()
+}
+
+#[test]
+fn the_last_light_skipped_and_the_ambient_per_light_are_named_as_loop_bugs() {
+    let scene = example("default.ron");
+    let c = diff(&scene, &planted(&scene, "last-light-skipped"));
+    let first = &c.explanations[0];
+    assert_eq!(
+        first.light,
+        Some(scene.lights.len() - 1),
+        "{:#?}",
+        c.text_lines()
+    );
+    assert!(
+        first.summary.contains("the last light"),
+        "{}",
+        first.summary
+    );
+
+    let c = diff(&scene, &planted(&scene, "ambient-per-light"));
+    let first = &c.explanations[0];
+    assert_eq!(
+        first.term,
+        ExplainedTerm::Term(Term::Ambient),
+        "{:#?}",
+        c.text_lines()
+    );
+    assert!(
+        first.summary.contains("once per light"),
+        "{}",
+        first.summary
+    );
+
+    let c = diff(&scene, &planted(&scene, "last-object-skipped"));
+    let first = &c.explanations[0];
+    assert_eq!(
+        first.node,
+        vec![scene.objects.len() - 1],
+        "{:#?}",
+        c.text_lines()
+    );
+    assert!(first.summary.contains("last object"), "{}", first.summary);
+}

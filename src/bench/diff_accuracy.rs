@@ -16,8 +16,8 @@ use serde::Serialize;
 
 use crate::compare::plant::{Plant, PlantedBug, Site, plant};
 use crate::compare::{
-    ClampBug, CompareOptions, Encoding, Explanation, NormalBug, OtherImage, Part, ShadowBug,
-    SpecularBug, SpotBug, compare_with_meshes,
+    ClampBug, CompareOptions, Encoding, Explanation, HIGH_CONFIDENCE, NormalBug, OtherImage, Part,
+    ShadowBug, SpecularBug, SpotBug, compare_with_meshes,
 };
 use crate::scene::{ClampConvention, Light, MirrorConvention, Scene};
 use crate::trace::{MeshStore, RenderProgress, Term};
@@ -26,9 +26,6 @@ use crate::trace::{MeshStore, RenderProgress, Term};
 pub const TUNING_SEEDS: Range<u64> = 0..1000;
 /// Seeds whose random scenes the figures are measured on, never tuned on.
 pub const MEASURED_SEEDS: Range<u64> = 1_000_000..1_001_000;
-
-/// The confidence from which a verdict is printed "high" (`Explanation::sureness`).
-const HIGH: f64 = 0.7;
 
 /// Causes that are places, not bugs: naming them claims no bug.
 const PLACES: [&str; 3] = ["silhouette", "shading", "sampling"];
@@ -132,7 +129,7 @@ impl AccuracyReport {
     fn add(&mut self, case: CaseResult) {
         let n = case.bugs.len();
         for verdict in case.verdicts.iter().filter(|v| v.claims) {
-            if verdict.confidence >= HIGH {
+            if verdict.confidence >= HIGH_CONFIDENCE {
                 self.high.0 += 1;
                 self.high.1 += u32::from(verdict.right);
             }

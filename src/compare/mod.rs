@@ -40,7 +40,7 @@ pub use report::{
     Comparison, PSNR_IDENTICAL_DB, PixelValues, difference_heatmap, report_png, write_report_png,
 };
 pub use split::{Components, render_components};
-pub use verdict::{Cause, ExplainedTerm, Explanation};
+pub use verdict::{Cause, ExplainedTerm, Explanation, HIGH_CONFIDENCE};
 
 use crate::scene::{Quantise, Scene};
 use crate::trace::{MeshStore, RenderProgress, World};

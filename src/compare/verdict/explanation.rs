@@ -138,6 +138,11 @@ impl Cause {
     }
 }
 
+/// The confidence from which a verdict is called "high": calibrated on the accuracy
+/// benchmark's tuning seeds (`raylab bench --diff-accuracy 6 --tuning`, docs/COMPARE.md),
+/// where 95.3% of the claims at or above it named a planted bug (94.1% from 0.7).
+pub const HIGH_CONFIDENCE: f64 = 0.9;
+
 /// One explanation of (part of) the difference.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Explanation {
@@ -174,10 +179,10 @@ pub struct Explanation {
 }
 
 impl Explanation {
-    /// "high", "medium" or "low".
+    /// "high", "medium" or "low". "high" starts at [`HIGH_CONFIDENCE`].
     #[must_use]
     pub fn sureness(&self) -> &'static str {
-        if self.confidence >= 0.7 {
+        if self.confidence >= HIGH_CONFIDENCE {
             "high"
         } else if self.confidence >= 0.4 {
             "medium"

@@ -10,5 +10,5 @@ mod summary;
 mod verdicts;
 
 pub use explain::{Explained, explain};
-pub use explanation::{Cause, ExplainedTerm, Explanation};
+pub use explanation::{Cause, ExplainedTerm, Explanation, HIGH_CONFIDENCE};
 pub use summary::{looped_lights, summary};
