@@ -78,6 +78,9 @@ struct Bounce {
     mirror: Option<(DVec3, DVec3)>,
     /// The ray's colour under each clamping bug.
     clamped: [DVec3; ClampBug::ALL.len()],
+    /// The shading normal under each normal bug ([`NormalBug::normal`]), worked out at
+    /// the first light of the hit: it depends on the hit, not on the light.
+    bug_normals: Option<[Option<DVec3>; NormalBug::ALL.len()]>,
 }
 
 /// Splits one sample into channels. Reused across samples: call [`SampleRecorder::start`]
@@ -159,6 +162,7 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
             throughput,
             mirror: None,
             clamped: [DVec3::ZERO; ClampBug::ALL.len()],
+            bug_normals: None,
         });
     }
 
@@ -232,11 +236,12 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
 
     /// The shadow tests of a lit point under the other shadow bugs: a shadow ray from
     /// the hit point itself (no offset: acne) and one that counts hits beyond the light.
-    /// Where either is blocked, the light's terms (scaled by `t`) go.
+    /// Where either is blocked, the light's terms (scaled by `t`) go. (`hit` is on world
+    /// object `world_object`, of leaf `leaf`.)
     fn shadow_tests(
         &mut self,
         record: &LightRecord,
-        (hit, leaf): (&SurfacePoint, usize),
+        (hit, world_object, leaf): (&SurfacePoint, Option<usize>, usize),
         sample: &LightSample,
         t: DVec3,
     ) {
@@ -249,7 +254,11 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
             .light_position
             .map_or(f64::INFINITY, |p| (p - hit.p).length());
         let raw = Ray::new(hit.p, sample.to_light);
-        if world.occluder_except(&raw, t_max, None).is_some() {
+        // Acne is the surface meeting its own ray: asked of it first, the whole world
+        // only where it does not (the same answer, either way: any blocker blocks).
+        let own =
+            world_object.is_some_and(|w| world.objects[w].blocks(&raw, raw.dir.recip(), t_max));
+        if own || world.occluder_except(&raw, t_max, None).is_some() {
             let channel = self.channel(Kind::ShadowTest(ShadowBug::Acne), leaf);
             self.tally.add(channel, -t * lit);
         }
@@ -266,19 +275,38 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
         }
     }
 
-    /// The terms under each normal and specular bug, as changes from raylab's.
+    /// The shading normal under each normal bug at the hit of ray `node` (`None` where
+    /// a bug gives raylab's or no usable normal, or the ray hit nothing shaded).
+    fn bug_normals(&mut self, node: u32) -> [Option<DVec3>; NormalBug::ALL.len()] {
+        let bounce = &self.chain[node as usize];
+        if let Some(normals) = bounce.bug_normals {
+            return normals;
+        }
+        let normals = match (bounce.hit, bounce.world_object) {
+            (Some(hit), Some(world_index)) => {
+                let world_object = &self.ctx.world.objects[world_index];
+                NormalBug::ALL.map(|bug| bug.normal(&hit, bounce.ray_dir, world_object))
+            }
+            _ => [None; NormalBug::ALL.len()],
+        };
+        self.chain[node as usize].bug_normals = Some(normals);
+        normals
+    }
+
+    /// The terms under each normal and specular bug, as changes from raylab's, with the
+    /// hit's `normals` under the normal bugs ([`Self::bug_normals`]).
     fn bugs(
         &mut self,
         bounce: &Bounce,
         hit: &SurfacePoint,
         record: &LightRecord,
         sample: &LightSample,
+        normals: &[Option<DVec3>; NormalBug::ALL.len()],
     ) {
         let (Some(object), Some(world_index)) = (bounce.leaf, bounce.world_object) else {
             return;
         };
         let material = self.ctx.material(world_index);
-        let world_object = &self.ctx.world.objects[world_index];
         let t = bounce.throughput;
         let light = LocalLight {
             n: hit.n,
@@ -288,8 +316,8 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
         };
         let lit = record.n_dot_l > 0.0 && record.blocked_by.is_none();
         let mut behind: Option<bool> = None;
-        for bug in NormalBug::ALL {
-            let Some(n) = bug.normal(hit, bounce.ray_dir, world_object) else {
+        for (bug, normal) in NormalBug::ALL.into_iter().zip(normals) {
+            let Some(n) = *normal else {
                 continue;
             };
             let visible = if record.n_dot_l > 0.0 {
@@ -403,8 +431,9 @@ impl Recorder for SampleRecorder<'_, '_> {
                 t * hidden * (diffuse + specular),
             );
         }
-        self.shadow_tests(record, (&hit, object), &sample, t);
-        self.bugs(&bounce, &hit, record, &sample);
+        self.shadow_tests(record, (&hit, bounce.world_object, object), &sample, t);
+        let normals = self.bug_normals(node);
+        self.bugs(&bounce, &hit, record, &sample, &normals);
     }
 
     fn reflection(&mut self, node: u32, km: DVec3, reflected: DVec3) {
