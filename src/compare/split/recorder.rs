@@ -78,16 +78,19 @@ struct Bounce {
     mirror: Option<(DVec3, DVec3)>,
     /// The ray's colour under each clamping bug.
     clamped: [DVec3; ClampBug::ALL.len()],
-    /// The shading normal under each normal bug ([`NormalBug::normal`]), worked out at
-    /// the first light of the hit: it depends on the hit, not on the light.
-    bug_normals: Option<[Option<DVec3>; NormalBug::ALL.len()]>,
 }
+
+/// The shading normal under each normal bug ([`NormalBug::normal`]) at one hit.
+type BugNormals = [Option<DVec3>; NormalBug::ALL.len()];
 
 /// Splits one sample into channels. Reused across samples: call [`SampleRecorder::start`]
 /// before each.
 pub struct SampleRecorder<'c, 'w> {
     ctx: &'c Context<'w>,
     chain: Vec<Bounce>,
+    /// Per ray of [`Self::chain`], the normals under the normal bugs once worked out (at
+    /// the hit's first light: they depend on the hit, not on the light).
+    normals: Vec<Option<BugNormals>>,
     /// The channels of the current sample.
     pub tally: Tally,
     /// Per channel, squared changes of the diffuse and of the specular part (for the
@@ -105,6 +108,7 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
         Self {
             ctx,
             chain: Vec::new(),
+            normals: Vec::new(),
             tally: Tally::default(),
             split: vec![[0.0; 2]; ctx.space.count()],
             behind: MISS,
@@ -114,6 +118,7 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
     /// Forgets the previous sample.
     pub fn start(&mut self) {
         self.chain.clear();
+        self.normals.clear();
         self.tally.entries.clear();
         self.behind = MISS;
     }
@@ -162,7 +167,6 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
             throughput,
             mirror: None,
             clamped: [DVec3::ZERO; ClampBug::ALL.len()],
-            bug_normals: None,
         });
     }
 
@@ -277,11 +281,15 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
 
     /// The shading normal under each normal bug at the hit of ray `node` (`None` where
     /// a bug gives raylab's or no usable normal, or the ray hit nothing shaded).
-    fn bug_normals(&mut self, node: u32) -> [Option<DVec3>; NormalBug::ALL.len()] {
-        let bounce = &self.chain[node as usize];
-        if let Some(normals) = bounce.bug_normals {
+    fn bug_normals(&mut self, node: u32) -> BugNormals {
+        let node = node as usize;
+        if self.normals.len() <= node {
+            self.normals.resize(node + 1, None);
+        }
+        if let Some(normals) = self.normals[node] {
             return normals;
         }
+        let bounce = &self.chain[node];
         let normals = match (bounce.hit, bounce.world_object) {
             (Some(hit), Some(world_index)) => {
                 let world_object = &self.ctx.world.objects[world_index];
@@ -289,7 +297,7 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
             }
             _ => [None; NormalBug::ALL.len()],
         };
-        self.chain[node as usize].bug_normals = Some(normals);
+        self.normals[node] = Some(normals);
         normals
     }
 
@@ -301,7 +309,7 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
         hit: &SurfacePoint,
         record: &LightRecord,
         sample: &LightSample,
-        normals: &[Option<DVec3>; NormalBug::ALL.len()],
+        normals: &BugNormals,
     ) {
         let (Some(object), Some(world_index)) = (bounce.leaf, bounce.world_object) else {
             return;
@@ -488,7 +496,17 @@ impl Recorder for SampleRecorder<'_, '_> {
                 }
             }
             // A cone bug changes the whole picture the camera ray brings back.
-            for (bug, light, change) in cone_changes(&self.ctx.spot, &bounce.ray, colour) {
+            let ctx = self.ctx;
+            let traced: Vec<bool> = (0..ctx.spot.len())
+                .map(|k| self.spot_may_change(k))
+                .collect();
+            let worlds = ctx
+                .spot
+                .iter()
+                .zip(traced)
+                .filter(|(_, t)| *t)
+                .map(|(w, _)| w);
+            for (bug, light, change) in cone_changes(worlds, &bounce.ray, colour) {
                 let channel = self.channel(Kind::Spot(bug, light), object);
                 self.tally.add(channel, change);
             }
@@ -498,6 +516,27 @@ impl Recorder for SampleRecorder<'_, '_> {
 }
 
 impl SampleRecorder<'_, '_> {
+    /// Whether the camera ray of the current sample may bring back another colour in
+    /// spot world `k` than here. Not where that world only changes its spot light and
+    /// the light's sample at every hit of the ray's tree is the same as here: the tree
+    /// is the same rays (the geometry is), each shaded alike, so the trace again would
+    /// give this colour bit for bit. The fall-off bug's trace adds what the light gives
+    /// inside its cone too: always traced.
+    fn spot_may_change(&self, k: usize) -> bool {
+        let spot = &self.ctx.spot[k];
+        if !self.ctx.spot_alike[k] || spot.bug == SpotBug::NoConeNoFalloff {
+            return true;
+        }
+        let (here, there) = (
+            &self.ctx.world.lights[spot.light],
+            &spot.world.lights[spot.light],
+        );
+        self.chain
+            .iter()
+            .filter_map(|b| b.hit)
+            .any(|hit| here.sample(hit.p) != there.sample(hit.p))
+    }
+
     /// What the ray of `bounce` would return without each tried node it may show (traced
     /// again in the world without it), as changes of the pixel; for the camera ray
     /// (`primary`), also the scene object it would meet without the one it hit
