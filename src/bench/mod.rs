@@ -66,6 +66,10 @@ pub struct BenchReport {
     pub bvh_crossover: Vec<CrossoverPoint>,
     /// `raylab diff` of a 500x500 scene with 5 objects and 3 lights, best time.
     pub diff_500_ms: f64,
+    /// `raylab diff` of a 1280x720 course scene with mirrors at 4 samples a pixel (like
+    /// the public corpus's slowest pair) against a mirror-blending tracer's picture, best
+    /// time.
+    pub diff_1280x720_ms: f64,
     /// `raylab class` on a generated class (the example scenes at 400x300 with planted
     /// bugs; 6 students x 10 scenes, a quick run 3 x 4), every pair compared, per minute.
     pub class_pairs_per_minute: f64,

@@ -240,6 +240,8 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
     let precision = precision_cost(if args.quick { 200_000 } else { 1_000_000 }, runs);
     eprintln!("diff: a 500x500 scene, 5 objects, 3 lights");
     let (diff_500_ms, _) = crate::bench::diff::diff_time(runs)?;
+    eprintln!("diff: a 1280x720 course scene with mirrors, 4 samples a pixel");
+    let (diff_1280x720_ms, _) = crate::bench::diff::diff_1280_time(runs.min(2))?;
     let (students, class_scenes) = if args.quick { (3, 4) } else { (6, 10) };
     eprintln!("class: {students} students x {class_scenes} scenes at 400x300, planted bugs");
     let class_pairs_per_minute =
@@ -268,6 +270,7 @@ fn measure(args: &BenchArgs) -> Result<BenchReport, String> {
         precision,
         bvh_crossover,
         diff_500_ms,
+        diff_1280x720_ms,
         class_pairs_per_minute,
         diff_top1: accuracy.top1(),
         diff_top2: accuracy.top2(),
@@ -418,6 +421,10 @@ fn print_tables(report: &BenchReport) {
     println!(
         "diff of a 500x500 scene (5 objects, 3 lights): {:.1} ms",
         report.diff_500_ms
+    );
+    println!(
+        "diff of a 1280x720 course scene with mirrors (4 spp, 11 objects): {:.1} ms",
+        report.diff_1280x720_ms
     );
     println!(
         "class of generated students (400x300, planted bugs): {:.1} pairs per minute",

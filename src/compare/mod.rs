@@ -159,7 +159,7 @@ fn compare_scene(
         target
     };
     let better = if try_conventions && total >= MIN_ERROR {
-        better_conventions(scene, meshes, &target, spp, progress)
+        better_conventions(scene, meshes, &components.beauty, &target, spp, progress)
     } else {
         None
     };

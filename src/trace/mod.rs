@@ -38,8 +38,9 @@ pub use inspect::{
 pub use ray::Ray;
 pub use ray_counts::RayCounts;
 pub use render::{
-    AdaptiveOptions, AdaptiveRender, CachedPass, PRUNE_BUDGET, PrunedRender, render,
+    AdaptiveOptions, AdaptiveRender, CachedPass, PRUNE_BUDGET, PrunedRender, Variant, render,
     render_adaptive, render_one_sample_cached, render_pruned, render_samples, render_samples_into,
+    render_variants,
 };
 pub use reshade::{HitCache, MAX_CACHE_BYTES, RetraceReason, Reuse, cache_fits};
 pub use shade::{

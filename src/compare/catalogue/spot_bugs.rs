@@ -161,11 +161,11 @@ pub fn spot_worlds(scene: &Scene, world: &World) -> Vec<SpotWorld> {
 /// What each cone bug changes of a camera ray's colour `colour`: the ray traced again
 /// in each of `worlds`.
 pub fn cone_changes<'a>(
-    worlds: &'a [SpotWorld],
+    worlds: impl IntoIterator<Item = &'a SpotWorld> + 'a,
     ray: &'a Ray,
     colour: DVec3,
 ) -> impl Iterator<Item = (SpotBug, usize, DVec3)> + 'a {
-    worlds.iter().filter_map(move |w| {
+    worlds.into_iter().filter_map(move |w| {
         let seen = if w.bug == SpotBug::NoConeNoFalloff {
             without_falloff(&w.world, w.light, ray)
         } else {

@@ -8,11 +8,16 @@
 //! a depth limit is tried the same way: raylab's picture with rays bouncing to
 //! [`NO_LIMIT_DEPTH`] (`no-depth-limit`; in scenes with mirrors and no glass).
 
+use glam::DVec3;
+
 use super::search::{MIN_ERROR, MIN_STEP_SHARE};
 use super::target::NOISE_SHARE;
 use super::target::{FitState, Target};
 use crate::scene::{ClampConvention, Conventions, MirrorConvention, Scene};
-use crate::trace::{MeshStore, RenderOptions, RenderProgress, World, render};
+
+#[cfg(doc)]
+use crate::trace::render;
+use crate::trace::{MeshStore, RenderProgress, Variant, World, render_variants};
 
 /// Another convention must take away at least this share of the difference the scene's
 /// own leaves (a convention is the whole picture's habit: it explains much or nothing).
@@ -37,39 +42,34 @@ pub struct BetterConventions {
 
 /// Which mirror and clamp conventions explain `target` best, if better than the scene's
 /// by [`MIN_CONVENTION_SHARE`] of the difference (and by more than a step's floor). The
-/// quantisation is the encoding's business and stays the scene's. `None` also when
-/// cancelled.
+/// quantisation is the encoding's business and stays the scene's. `own` is raylab's
+/// picture under the scene's conventions (the split's, linear, unclamped). `None` also
+/// when cancelled.
+///
+/// The candidates share one trace: each camera sample's ray tree, traced to the deepest
+/// candidate's depth, folded under each (the pictures [`render`] would make of each).
 #[must_use]
 pub fn better_conventions(
     scene: &Scene,
     meshes: &MeshStore,
+    own_picture: &[[f64; 3]],
     target: &Target,
     spp: u32,
     progress: &RenderProgress,
 ) -> Option<BetterConventions> {
     let own = scene.render.conventions;
-    let error_under = |conventions: Conventions, max_depth: u32| -> Option<FitState> {
-        let mut varied = scene.clone();
-        varied.render.conventions = conventions;
-        varied.render.max_depth = max_depth;
-        let world = World::with_meshes(&varied, meshes).ok()?;
-        let options = RenderOptions {
-            samples_per_pixel: spp,
-            ..RenderOptions::from_scene(&varied)
-        };
-        let (image, _) = render(&world, &options, progress)?;
-        let model = image
-            .pixels
+    // The picture `render` writes holds each pixel in f32.
+    let rendered = |pixels: Vec<[f64; 3]>| -> FitState { FitState::new(pixels, target) };
+    let baseline = rendered(
+        own_picture
             .iter()
-            .map(|p| p.as_dvec3().to_array())
-            .collect();
-        Some(FitState::new(model, target))
-    };
-    let depth = scene.render.max_depth;
-    let baseline = error_under(own, depth)?;
+            .map(|p| DVec3::from_array(*p).as_vec3().as_dvec3().to_array())
+            .collect(),
+    );
     if baseline.total < MIN_ERROR {
         return None;
     }
+    let depth = scene.render.max_depth;
     // Without mirrors the mirror convention changes nothing: no render for it.
     let mirrors = scene
         .materials
@@ -102,9 +102,27 @@ pub fn better_conventions(
     if mirrors && !glass && depth < NO_LIMIT_DEPTH {
         candidates.push((own, NO_LIMIT_DEPTH));
     }
+    let deepest = candidates.iter().map(|c| c.1).max().unwrap_or(depth);
+    let mut traced = scene.clone();
+    traced.render.max_depth = deepest;
+    let world = World::with_meshes(&traced, meshes).ok()?;
+    let variants: Vec<Variant> = candidates
+        .iter()
+        .map(|&(conventions, max_depth)| Variant {
+            conventions,
+            max_depth,
+        })
+        .collect();
+    let size = (scene.camera.width, scene.camera.height);
+    let pictures = render_variants(&world, size, spp, &variants, progress)?;
     let mut best: Option<((Conventions, u32), FitState)> = None;
-    for candidate in candidates {
-        let state = error_under(candidate.0, candidate.1)?;
+    for (candidate, image) in candidates.into_iter().zip(pictures) {
+        let model = image
+            .pixels
+            .iter()
+            .map(|p| p.as_dvec3().to_array())
+            .collect();
+        let state = rendered(model);
         if best.as_ref().is_none_or(|(_, b)| state.total < b.total) {
             best = Some((candidate, state));
         }

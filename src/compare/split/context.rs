@@ -22,6 +22,10 @@ pub struct Context<'w> {
     pub missing: MissingNodes,
     /// The worlds of the spot lights' cone bugs.
     pub spot: Vec<SpotWorld>,
+    /// Per world of [`Self::spot`]: whether it is `world` with only its spot light
+    /// changed (the same other lights, ambient and spheres), so that a camera ray whose
+    /// hits all get the same sample of that light there brings back the same colour.
+    pub spot_alike: Vec<bool>,
 }
 
 impl<'w> Context<'w> {
@@ -40,6 +44,17 @@ impl<'w> Context<'w> {
         for (index, &scene_index) in world.light_scene_index.iter().enumerate() {
             world_light[scene_index] = Some(index);
         }
+        let spot_alike = spot
+            .iter()
+            .map(|w| {
+                let (changed, light) = (&w.world, w.light);
+                changed.lights.len() == world.lights.len()
+                    && changed.ambient == world.ambient
+                    && changed.light_spheres == world.light_spheres
+                    && (0..world.lights.len())
+                        .all(|i| i == light || changed.lights[i] == world.lights[i])
+            })
+            .collect();
         Self {
             world,
             space: ChannelSpace {
@@ -51,6 +66,7 @@ impl<'w> Context<'w> {
             nodes,
             missing,
             spot,
+            spot_alike,
         }
     }
 

@@ -80,11 +80,17 @@ struct Bounce {
     clamped: [DVec3; ClampBug::ALL.len()],
 }
 
+/// The shading normal under each normal bug ([`NormalBug::normal`]) at one hit.
+type BugNormals = [Option<DVec3>; NormalBug::ALL.len()];
+
 /// Splits one sample into channels. Reused across samples: call [`SampleRecorder::start`]
 /// before each.
 pub struct SampleRecorder<'c, 'w> {
     ctx: &'c Context<'w>,
     chain: Vec<Bounce>,
+    /// Per ray of [`Self::chain`], the normals under the normal bugs once worked out (at
+    /// the hit's first light: they depend on the hit, not on the light).
+    normals: Vec<Option<BugNormals>>,
     /// The channels of the current sample.
     pub tally: Tally,
     /// Per channel, squared changes of the diffuse and of the specular part (for the
@@ -102,6 +108,7 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
         Self {
             ctx,
             chain: Vec::new(),
+            normals: Vec::new(),
             tally: Tally::default(),
             split: vec![[0.0; 2]; ctx.space.count()],
             behind: MISS,
@@ -111,6 +118,7 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
     /// Forgets the previous sample.
     pub fn start(&mut self) {
         self.chain.clear();
+        self.normals.clear();
         self.tally.entries.clear();
         self.behind = MISS;
     }
@@ -232,11 +240,12 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
 
     /// The shadow tests of a lit point under the other shadow bugs: a shadow ray from
     /// the hit point itself (no offset: acne) and one that counts hits beyond the light.
-    /// Where either is blocked, the light's terms (scaled by `t`) go.
+    /// Where either is blocked, the light's terms (scaled by `t`) go. (`hit` is on world
+    /// object `world_object`, of leaf `leaf`.)
     fn shadow_tests(
         &mut self,
         record: &LightRecord,
-        (hit, leaf): (&SurfacePoint, usize),
+        (hit, world_object, leaf): (&SurfacePoint, Option<usize>, usize),
         sample: &LightSample,
         t: DVec3,
     ) {
@@ -249,7 +258,11 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
             .light_position
             .map_or(f64::INFINITY, |p| (p - hit.p).length());
         let raw = Ray::new(hit.p, sample.to_light);
-        if world.occluder_except(&raw, t_max, None).is_some() {
+        // Acne is the surface meeting its own ray: asked of it first, the whole world
+        // only where it does not (the same answer, either way: any blocker blocks).
+        let own =
+            world_object.is_some_and(|w| world.objects[w].blocks(&raw, raw.dir.recip(), t_max));
+        if own || world.occluder_except(&raw, t_max, None).is_some() {
             let channel = self.channel(Kind::ShadowTest(ShadowBug::Acne), leaf);
             self.tally.add(channel, -t * lit);
         }
@@ -266,19 +279,42 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
         }
     }
 
-    /// The terms under each normal and specular bug, as changes from raylab's.
+    /// The shading normal under each normal bug at the hit of ray `node` (`None` where
+    /// a bug gives raylab's or no usable normal, or the ray hit nothing shaded).
+    fn bug_normals(&mut self, node: u32) -> BugNormals {
+        let node = node as usize;
+        if self.normals.len() <= node {
+            self.normals.resize(node + 1, None);
+        }
+        if let Some(normals) = self.normals[node] {
+            return normals;
+        }
+        let bounce = &self.chain[node];
+        let normals = match (bounce.hit, bounce.world_object) {
+            (Some(hit), Some(world_index)) => {
+                let world_object = &self.ctx.world.objects[world_index];
+                NormalBug::ALL.map(|bug| bug.normal(&hit, bounce.ray_dir, world_object))
+            }
+            _ => [None; NormalBug::ALL.len()],
+        };
+        self.normals[node] = Some(normals);
+        normals
+    }
+
+    /// The terms under each normal and specular bug, as changes from raylab's, with the
+    /// hit's `normals` under the normal bugs ([`Self::bug_normals`]).
     fn bugs(
         &mut self,
         bounce: &Bounce,
         hit: &SurfacePoint,
         record: &LightRecord,
         sample: &LightSample,
+        normals: &BugNormals,
     ) {
         let (Some(object), Some(world_index)) = (bounce.leaf, bounce.world_object) else {
             return;
         };
         let material = self.ctx.material(world_index);
-        let world_object = &self.ctx.world.objects[world_index];
         let t = bounce.throughput;
         let light = LocalLight {
             n: hit.n,
@@ -288,8 +324,8 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
         };
         let lit = record.n_dot_l > 0.0 && record.blocked_by.is_none();
         let mut behind: Option<bool> = None;
-        for bug in NormalBug::ALL {
-            let Some(n) = bug.normal(hit, bounce.ray_dir, world_object) else {
+        for (bug, normal) in NormalBug::ALL.into_iter().zip(normals) {
+            let Some(n) = *normal else {
                 continue;
             };
             let visible = if record.n_dot_l > 0.0 {
@@ -403,8 +439,9 @@ impl Recorder for SampleRecorder<'_, '_> {
                 t * hidden * (diffuse + specular),
             );
         }
-        self.shadow_tests(record, (&hit, object), &sample, t);
-        self.bugs(&bounce, &hit, record, &sample);
+        self.shadow_tests(record, (&hit, bounce.world_object, object), &sample, t);
+        let normals = self.bug_normals(node);
+        self.bugs(&bounce, &hit, record, &sample, &normals);
     }
 
     fn reflection(&mut self, node: u32, km: DVec3, reflected: DVec3) {
@@ -459,7 +496,17 @@ impl Recorder for SampleRecorder<'_, '_> {
                 }
             }
             // A cone bug changes the whole picture the camera ray brings back.
-            for (bug, light, change) in cone_changes(&self.ctx.spot, &bounce.ray, colour) {
+            let ctx = self.ctx;
+            let traced: Vec<bool> = (0..ctx.spot.len())
+                .map(|k| self.spot_may_change(k))
+                .collect();
+            let worlds = ctx
+                .spot
+                .iter()
+                .zip(traced)
+                .filter(|(_, t)| *t)
+                .map(|(w, _)| w);
+            for (bug, light, change) in cone_changes(worlds, &bounce.ray, colour) {
                 let channel = self.channel(Kind::Spot(bug, light), object);
                 self.tally.add(channel, change);
             }
@@ -469,6 +516,27 @@ impl Recorder for SampleRecorder<'_, '_> {
 }
 
 impl SampleRecorder<'_, '_> {
+    /// Whether the camera ray of the current sample may bring back another colour in
+    /// spot world `k` than here. Not where that world only changes its spot light and
+    /// the light's sample at every hit of the ray's tree is the same as here: the tree
+    /// is the same rays (the geometry is), each shaded alike, so the trace again would
+    /// give this colour bit for bit. The fall-off bug's trace adds what the light gives
+    /// inside its cone too: always traced.
+    fn spot_may_change(&self, k: usize) -> bool {
+        let spot = &self.ctx.spot[k];
+        if !self.ctx.spot_alike[k] || spot.bug == SpotBug::NoConeNoFalloff {
+            return true;
+        }
+        let (here, there) = (
+            &self.ctx.world.lights[spot.light],
+            &spot.world.lights[spot.light],
+        );
+        self.chain
+            .iter()
+            .filter_map(|b| b.hit)
+            .any(|hit| here.sample(hit.p) != there.sample(hit.p))
+    }
+
     /// What the ray of `bounce` would return without each tried node it may show (traced
     /// again in the world without it), as changes of the pixel; for the camera ray
     /// (`primary`), also the scene object it would meet without the one it hit

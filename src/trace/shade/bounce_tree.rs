@@ -195,6 +195,30 @@ pub(crate) fn fold_back(
     returned(0, &root.bounce, root.brought_back, conventions, recorder)
 }
 
+/// The colour of a shaded tree (from [`super::tracer::Tracer::ray_tree`]) as a trace
+/// under `conventions` with `max_depth` would fold it: the rays deeper than
+/// `max_depth` were never cast there, so a ray at that depth keeps only its own colour.
+/// The same steps as [`fold_back`], in the same order, so the same bits.
+pub(crate) fn fold_within(tree: &[Node], conventions: &Conventions, max_depth: u32) -> DVec3 {
+    let mut brought_back: SmallVec<[BroughtBack; INLINE_RAYS]> =
+        SmallVec::from_elem(BroughtBack::default(), tree.len());
+    for index in (1..tree.len()).rev() {
+        let node = &tree[index];
+        if node.depth > max_depth {
+            continue;
+        }
+        let colour = node.bounce.returns(brought_back[index], conventions);
+        let (parent, branch) = node.from.expect("every ray but the root has a parent");
+        let slot = &mut brought_back[parent as usize];
+        if branch.is_transmitted() {
+            slot.transmitted = Some(colour);
+        } else {
+            slot.reflected = Some(colour);
+        }
+    }
+    tree[0].bounce.returns(brought_back[0], conventions)
+}
+
 /// What the ray `node` returns ([`Bounce::returns`]); the recorder sees its colour, and
 /// where the each-ray clamp changed it, the colour before.
 #[inline]

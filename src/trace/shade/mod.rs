@@ -18,7 +18,7 @@ mod subtree_bound;
 mod tracer;
 
 pub use bounce_tree::RayAt;
-pub(crate) use bounce_tree::{Bounce, BroughtBack};
+pub(crate) use bounce_tree::{Bounce, BroughtBack, fold_within};
 pub use branch::Branch;
 pub use lit_factors::LitFactors;
 pub use object_id::object_id_colour;

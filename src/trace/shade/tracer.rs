@@ -19,12 +19,14 @@
 
 use glam::DVec3;
 
+#[cfg(doc)]
+use super::bounce_tree::fold_within;
 use super::bounce_tree::{BroughtBack, Node, RayAt, Spawned, Tree, fold_back, returned};
 use super::branch::Branch;
 use super::depth_view::DepthRange;
 use super::object_id::object_id_colour;
 use super::ray_source::{LiveRays, RaySource};
-use super::record::Recorder;
+use super::record::{NoRecorder, Recorder};
 use crate::trace::ray::Ray;
 use crate::trace::ray_counts::RayCounts;
 use crate::trace::terms::{ActiveTerms, TermSwitches, View};
@@ -135,6 +137,20 @@ impl<'w> Tracer<'w> {
             ..Node::new(*ray, 0, None)
         });
         push_children(&mut tree, 0, spawned);
+        self.grow(&mut tree, rays, counts, recorder);
+        fold_back(&mut tree, conventions, recorder)
+    }
+
+    /// Shades the rays of `tree` after its first, breadth first, adding the rays each
+    /// starts: the walk of [`Self::radiance`] below the camera ray.
+    #[inline(always)]
+    fn grow(
+        &self,
+        tree: &mut Tree,
+        rays: &mut impl RaySource,
+        counts: &mut RayCounts,
+        recorder: &mut impl Recorder,
+    ) {
         let mut index = 1;
         while index < tree.len() {
             let node = tree[index];
@@ -147,10 +163,33 @@ impl<'w> Tracer<'w> {
             let (bounce, spawned) =
                 self.shade(&node.ray, at, &self.secondary, rays, counts, recorder);
             tree[index].bounce = bounce;
-            push_children(&mut tree, index, spawned);
+            push_children(tree, index, spawned);
             index += 1;
         }
-        fold_back(&mut tree, conventions, recorder)
+    }
+
+    /// The whole tree of a camera ray (in the lit view), shaded but not folded: what
+    /// [`fold_within`] turns into its colour under any conventions and any depth limit
+    /// up to the world's, each time as a trace with those would give it, bit for bit.
+    pub(crate) fn ray_tree(&self, ray: &Ray, counts: &mut RayCounts) -> Tree {
+        counts.primary += 1;
+        let rays = &mut LiveRays::all();
+        let (bounce, spawned) = self.shade(
+            ray,
+            RayAt::CAMERA,
+            &self.primary,
+            rays,
+            counts,
+            &mut NoRecorder,
+        );
+        let mut tree = Tree::new();
+        tree.push(Node {
+            bounce,
+            ..Node::new(*ray, 0, None)
+        });
+        push_children(&mut tree, 0, spawned);
+        self.grow(&mut tree, rays, counts, &mut NoRecorder);
+        tree
     }
 }
 
