@@ -137,7 +137,8 @@ impl EditorApp {
             Command::ShowCompare => self.compare.show_window(),
             Command::CompareWith(path) => {
                 let folder = self.scene_folder().map(std::path::Path::to_owned);
-                self.compare.start(&self.scene, folder.as_deref(), &path, ctx);
+                self.compare
+                    .start(&self.scene, folder.as_deref(), &path, ctx);
             }
             Command::ShowBugGallery => {
                 let folder = self.scene_folder().map(std::path::Path::to_owned);
