@@ -324,3 +324,54 @@ fn every_explanation_reads_without_scrolling_the_list() {
         );
     }
 }
+
+/// File > Compare with Image… on `scenes/mesh.ron` (opened as a user opens it): the
+/// comparison reads the scene's mesh files beside it as the preview and Export PNG do,
+/// instead of failing with "the mesh file "knot.obj" is not loaded".
+#[test]
+fn a_scene_with_meshes_compares_with_the_meshes_read_beside_it() {
+    use raylab::scene::read_scene_meshes;
+    use raylab::trace::MeshStore;
+    use raylab::ui::{Command, SceneEdit};
+
+    let mut harness = editor_harness::harness_on_example("mesh.ron");
+    assert_eq!(harness.state().scene().objects[1].name, "knot");
+    // A small picture keeps the test quick; the size is the scene's, as a user sets it.
+    let mut camera = harness.state().scene().camera.clone();
+    (camera.width, camera.height) = (64, 48);
+    harness
+        .state_mut()
+        .push(Command::Edit(SceneEdit::SetCamera(camera)));
+    harness.run();
+
+    // Their picture: what `raylab render` gives, the meshes read from the scene's folder.
+    let scene = harness.state().scene().clone();
+    let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let meshes = MeshStore::build(&read_scene_meshes(&scene, &folder).unwrap());
+    let world = World::with_meshes(&scene, &meshes).unwrap();
+    let (image, _) = render(
+        &world,
+        &RenderOptions::from_scene(&scene),
+        &RenderProgress::default(),
+    )
+    .unwrap();
+    let dir = temp_dir("compare-mesh");
+    let theirs = dir.join("theirs.png");
+    std::fs::write(&theirs, image.png_bytes()).unwrap();
+
+    compare_through_the_window(&mut harness, &theirs);
+    let app = harness.state();
+    assert_eq!(
+        app.compare().error(),
+        None,
+        "the comparison of a mesh scene runs"
+    );
+    let c = app.compare().comparison().expect("the comparison is shown");
+    for mesh in ["knot", "pyramid"] {
+        let index = scene.objects.iter().position(|o| o.name == mesh).unwrap();
+        assert!(
+            c.objects.contains(&Some(index)),
+            "the {mesh} is in raylab's picture"
+        );
+    }
+}

@@ -283,3 +283,55 @@ fn the_export_proposes_the_last_export_folder_else_pictures_or_home_never_the_sc
         dir.join("csg.png")
     );
 }
+
+/// Every text the last frame painted, with where it starts.
+fn painted_texts(harness: &Harness<'_, EditorApp>) -> Vec<(egui::Pos2, String)> {
+    fn walk(shape: &egui::Shape, out: &mut Vec<(egui::Pos2, String)>) {
+        match shape {
+            egui::Shape::Vec(shapes) => shapes.iter().for_each(|s| walk(s, out)),
+            egui::Shape::Text(text) => out.push((text.pos, text.galley.text().to_owned())),
+            _ => {}
+        }
+    }
+    let mut out = Vec::new();
+    for clipped in &harness.output().shapes {
+        walk(&clipped.shape, &mut out);
+    }
+    out
+}
+
+#[test]
+fn a_path_too_long_for_its_field_shows_its_end_until_it_is_edited() {
+    let deep = "/home/student/courses/cosc342/assignment-two/renders/final-versions/";
+    let path = format!("{deep}snowman-with-glass.png");
+    let mut harness = harness();
+    harness.state_mut().push(Command::ShowExport);
+    harness.run();
+    set_export_path(&mut harness, Path::new(&path));
+    // While it is edited, the field shows the text as typed.
+    let field = harness.get_by_label("export path").rect();
+    let elided_in_field = |harness: &Harness<'_, EditorApp>| {
+        painted_texts(harness)
+            .into_iter()
+            .find(|(pos, text)| field.contains(*pos) && text.starts_with('…'))
+    };
+    assert_eq!(elided_in_field(&harness), None, "editing shows it whole");
+    // The edit ends (focus elsewhere): the field shows the file's name and the folder
+    // nearest it, the start cut off.
+    harness.get_by_label("export width").focus();
+    harness.run();
+    let (_, shown) = elided_in_field(&harness).expect("the path's end is shown in the field");
+    assert!(
+        shown.ends_with("/snowman-with-glass.png"),
+        "the end of the path, with its file name: {shown:?}"
+    );
+    assert!(
+        path.ends_with(shown.trim_start_matches('…')),
+        "{shown:?} is the end of {path:?}"
+    );
+    assert_eq!(
+        harness.state().export().path,
+        path,
+        "the path itself is whole"
+    );
+}

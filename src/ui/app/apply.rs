@@ -135,10 +135,14 @@ impl EditorApp {
             }
             Command::SetRayPaths(settings) => self.looking.ray_paths = settings,
             Command::ShowCompare => self.compare.show_window(),
-            Command::CompareWith(path) => self.compare.start(&self.scene, &path, ctx),
+            Command::CompareWith(path) => {
+                let folder = self.scene_folder().map(std::path::Path::to_owned);
+                self.compare
+                    .start(&self.scene, folder.as_deref(), &path, ctx);
+            }
             Command::ShowBugGallery => {
-                let folder = self.path.as_deref().and_then(std::path::Path::parent);
-                self.bug_gallery.show(&self.scene, folder, ctx);
+                let folder = self.scene_folder().map(std::path::Path::to_owned);
+                self.bug_gallery.show(&self.scene, folder.as_deref(), ctx);
             }
             Command::CompareWithGalleryPicture(index) => {
                 if let Some(picture) = self.bug_gallery.picture_to_compare(index) {

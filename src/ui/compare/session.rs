@@ -1,13 +1,16 @@
 //! The state of a comparison in the editor: the job that runs it off the UI thread, its
 //! outcome (the comparison, or an error for the user), and how it is being looked at.
+//! A comparison with a file reads the scene's mesh files on the job's thread the way the
+//! preview and Export PNG do ([`MeshCache::read`], from the scene file's folder).
 
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use crate::compare::{
-    CompareError, CompareOptions, Comparison, OtherImage, PixelValues, compare, compare_with_meshes,
+    CompareError, CompareOptions, Comparison, OtherImage, PixelValues, compare_with_meshes,
 };
-use crate::preview::BackgroundJob;
-use crate::scene::Scene;
+use crate::preview::{BackgroundJob, MeshCache};
+use crate::scene::{LoadWatch, Scene};
 use crate::trace::MeshStore;
 
 use super::mode::{CompareMode, Side};
@@ -72,6 +75,15 @@ struct Running {
     scene: Scene,
 }
 
+/// A comparison's failure as the job reports it: the message for the user, none when
+/// it was cancelled.
+fn failure(error: CompareError) -> Option<String> {
+    match error {
+        CompareError::Cancelled => None,
+        error => Some(error.to_string()),
+    }
+}
+
 /// Everything the editor keeps about comparing with another image.
 #[derive(Default)]
 pub struct CompareSession {
@@ -102,13 +114,37 @@ impl CompareSession {
     }
 
     /// Starts comparing `scene` with the picture at `path` on a thread of its own (a
-    /// running comparison is cancelled). The window opens to show progress and errors.
-    pub fn start(&mut self, scene: &Scene, path: &Path, ctx: &egui::Context) {
+    /// running comparison is cancelled); its mesh files are read there first, from
+    /// `folder` (the scene file's; none: never saved). The window opens to show progress
+    /// and errors.
+    pub fn start(
+        &mut self,
+        scene: &Scene,
+        folder: Option<&Path>,
+        path: &Path,
+        ctx: &egui::Context,
+    ) {
         self.path_text = path.display().to_string();
         let (thread_scene, thread_path) = (scene.clone(), path.to_owned());
+        let folder = folder.map(Path::to_path_buf);
         let work = move |progress: &_| {
-            let other = OtherImage::load(&thread_path)?;
-            compare(&thread_scene, &other, &CompareOptions::default(), progress)
+            let other = OtherImage::load(&thread_path).map_err(|e| Some(e.to_string()))?;
+            let meshes = MeshCache::default()
+                .read(
+                    &thread_scene,
+                    folder.as_deref(),
+                    &MeshStore::default(),
+                    &mut |_| Arc::new(LoadWatch::default()),
+                )
+                .map_err(|e| Some(format!("the scene cannot be rendered: {e}")))?;
+            compare_with_meshes(
+                &thread_scene,
+                &meshes,
+                &other,
+                &CompareOptions::default(),
+                progress,
+            )
+            .map_err(failure)
         };
         self.spawn(OtherSource::File(path.to_owned()), scene, work, ctx);
     }
@@ -130,16 +166,18 @@ impl CompareSession {
         };
         let work = move |progress: &_| {
             compare_with_meshes(&compared_scene, &meshes, &picture, &options, progress)
+                .map_err(failure)
         };
         self.spawn(source, &editor_scene, work, ctx);
     }
 
-    /// Runs `work` on a thread of its own; `scene` is kept to notice later edits.
+    /// Runs `work` on a thread of its own; `scene` is kept to notice later edits. The
+    /// work fails with the message for the user, or with none when it was cancelled.
     fn spawn(
         &mut self,
         source: OtherSource,
         scene: &Scene,
-        work: impl FnOnce(&crate::trace::RenderProgress) -> Result<Comparison, CompareError>
+        work: impl FnOnce(&crate::trace::RenderProgress) -> Result<Comparison, Option<String>>
         + Send
         + 'static,
         ctx: &egui::Context,
@@ -152,8 +190,8 @@ impl CompareSession {
             "comparison",
             move |progress| match work(progress) {
                 Ok(comparison) => Some(Ok(comparison)),
-                Err(CompareError::Cancelled) => None,
-                Err(error) => Some(Err(error.to_string())),
+                Err(None) => None,
+                Err(Some(error)) => Some(Err(error)),
             },
             move || repaint.request_repaint(),
         );
