@@ -5,7 +5,7 @@ students' renders with different planted bugs (and one student's against itself)
 on the bug galleries of a few example scenes (`raylab bugs`): the scene's own picture
 against each known bug's, from a one-level rounding change to a missing object.
 
-    python3 -m venv /tmp/flipref && /tmp/flipref/bin/pip install flip-evaluator
+    python3 -m venv /tmp/flipref && /tmp/flipref/bin/pip install flip-evaluator numpy
     /tmp/flipref/bin/python scripts/flip_check.py
 
 Prints each pair's mean and 99th percentile from both, and exits 1 if a mean differs by
@@ -42,15 +42,15 @@ for scene in ["shapes", "spotlights", "glass", "csg"]:
 ours = subprocess.run(["target/release/examples/flip_pairs"] + [p for pair in pairs for p in pair],
                       check=True, capture_output=True, text=True).stdout.splitlines()
 worst = worst_p99 = 0.0
-print(f"{'pair':60} {'mean (package)':>15} {'mean (raylab)':>14} {'p99 (package)':>14} {'p99 (raylab)':>13}")
+print(f"{'pair':75} {'mean (package)':>15} {'mean (raylab)':>14} {'p99 (package)':>14} {'p99 (raylab)':>13}")
 for (reference, test), line in zip(pairs, ours):
     mine = json.loads(line)
     error_map, mean, _ = flip.evaluate(reference, test, "LDR", applyMagma=False)
     p99 = float(np.percentile(np.asarray(error_map, dtype=np.float64), 99))
     worst = max(worst, abs(mean - mine["mean"]))
     worst_p99 = max(worst_p99, abs(p99 - mine["p99"]))
-    label = os.path.relpath(test, work) + " vs " + os.path.basename(reference)
-    print(f"{label:60} {mean:15.6f} {mine['mean']:14.6f} {p99:14.6f} {mine['p99']:13.6f}")
+    label = os.path.relpath(test, work) + " vs " + os.path.join(*reference.split(os.sep)[-2:])
+    print(f"{label:75} {mean:15.6f} {mine['mean']:14.6f} {p99:14.6f} {mine['p99']:13.6f}")
 print(f"{len(pairs)} pairs; largest difference of the means: {worst:.2e} (tolerance {TOLERANCE}); "
       f"of the 99th percentiles: {worst_p99:.2e}")
 shutil.rmtree(work)
