@@ -12,7 +12,8 @@ width=${3:-400}
 height=${4:-300}
 work=$(mktemp -d /tmp/raylab-class-bench.XXXXXX)
 trap 'rm -rf "$work"' EXIT
-cargo build --release --quiet --bin raylab --example class_generate
+# No editor: the timing needs none, and a release build of egui costs many minutes.
+cargo build --release --quiet --no-default-features --bin raylab --example class_generate
 echo "generating $students students x $scenes scenes at ${width}x${height} in $work"
 ./target/release/examples/class_generate "$work" "$students" "$scenes" "$width" "$height"
 echo "raylab class, every pair compared ($(nproc) cores):"

@@ -193,10 +193,24 @@ fn the_table_csv_and_json_name_the_planted_bugs() {
     );
     assert!(page.contains("missing-object: 1 of 4 students, in shapes"));
     assert!(page.contains("specular off: 1 of 4 students, in default"));
+    // The feedback speaks to the student about their render and the reference.
+    let feedback = raylab::class::feedback::to_student(&missing.summary);
     assert!(
-        page.contains(&raylab::class::page::escape(&missing.summary)),
+        feedback.contains("missing in your render") && feedback.contains("the reference draws"),
+        "{feedback}"
+    );
+    assert!(
+        page.contains(&raylab::class::page::escape(&feedback)),
         "bob's feedback"
     );
+    for student in 0..run.roster.students.len() {
+        for paragraph in raylab::class::feedback::student_feedback(&run, student) {
+            assert!(
+                !paragraph.contains("other image") && !paragraph.contains("raylab's"),
+                "{paragraph}"
+            );
+        }
+    }
 }
 
 #[test]

@@ -219,3 +219,116 @@ fn a_broken_scene_is_named() {
     let stderr = failure(&["diff", path(&file), path(&image)]);
     assert!(stderr.contains("broken.ron"), "{stderr}");
 }
+
+/// Where the report image's panels start and how large they are: the layout of
+/// `src/compare/report/png.rs` (12-pixel margins, a 58-pixel caption, 360-pixel panels
+/// in four columns) for the 120x90 lab scene.
+const REPORT_MARGIN: u32 = 12;
+const REPORT_CAPTION: u32 = 58;
+const REPORT_PANEL: (u32, u32) = (360, 270);
+
+/// The pixels of panel `column` of the report's first row.
+fn first_row_panel(report: &image::RgbImage, column: u32) -> Vec<[u8; 3]> {
+    let x0 = REPORT_MARGIN + column * (REPORT_PANEL.0 + REPORT_MARGIN);
+    let y0 = REPORT_MARGIN + REPORT_CAPTION;
+    (y0..y0 + REPORT_PANEL.1)
+        .flat_map(|y| (x0..x0 + REPORT_PANEL.0).map(move |x| report.get_pixel(x, y).0))
+        .collect()
+}
+
+/// `raylab diff --json --report` on `other`: the JSON's raw text, and the report image.
+fn diff_with_report(other: &Path, report: &Path) -> (String, image::RgbImage) {
+    let result = raylab(&[
+        "diff",
+        &lab_path(),
+        path(other),
+        "--json",
+        "--report",
+        path(report),
+    ]);
+    assert!(
+        result.status.success(),
+        "{}",
+        String::from_utf8_lossy(&result.stderr)
+    );
+    let text = String::from_utf8(result.stdout).unwrap();
+    (text, image::open(report).unwrap().to_rgb8())
+}
+
+#[test]
+fn flip_is_in_the_json_after_the_old_fields_and_its_map_is_a_fourth_panel() {
+    let dir = out_dir("compare-cli-flip");
+    let own = dir.join("own.png");
+    let own_render = raylab(&["render", &lab_path(), "-o", path(&own)]);
+    assert!(own_render.status.success());
+    let scene = lab_scene();
+    let buggy = render_with(
+        &scene,
+        1,
+        &Bugs {
+            specular_off: true,
+            ..Bugs::default()
+        },
+    );
+    let buggy_path = dir.join("no_specular.png");
+    write_png(&buggy_path, buggy.width, buggy.height, &buggy.rgb);
+
+    let (same_text, same_report) = diff_with_report(&own, &dir.join("same.png"));
+    let (bug_text, bug_report) = diff_with_report(&buggy_path, &dir.join("bug.png"));
+
+    // Every field the JSON had keeps its place; FLIP's two come after them.
+    let keys = [
+        "\"psnr_db\"",
+        "\"explanations\"",
+        "\"unexplained_share\"",
+        "\"encoding\"",
+        "\"width\"",
+        "\"height\"",
+        "\"samples_per_pixel\"",
+        "\"flip_mean\"",
+        "\"flip_p99\"",
+    ];
+    let at: Vec<usize> = keys
+        .iter()
+        .map(|k| {
+            bug_text
+                .rfind(k)
+                .unwrap_or_else(|| panic!("{k} in {bug_text}"))
+        })
+        .collect();
+    assert!(at.windows(2).all(|w| w[0] < w[1]), "{keys:?} at {at:?}");
+
+    let figure = |text: &str, key: &str| {
+        let json: serde_json::Value = serde_json::from_str(text).unwrap();
+        json[key]
+            .as_f64()
+            .unwrap_or_else(|| panic!("{key} in {json}"))
+    };
+    assert_eq!(figure(&same_text, "flip_mean"), 0.0, "{same_text}");
+    assert_eq!(figure(&same_text, "flip_p99"), 0.0, "{same_text}");
+    let (mean, p99) = (
+        figure(&bug_text, "flip_mean"),
+        figure(&bug_text, "flip_p99"),
+    );
+    assert!(mean > 0.005 && p99 > mean && p99 <= 1.0, "{bug_text}");
+
+    // Four panels in the first row; the fourth is FLIP's map: all but black for the
+    // same picture, with bright pixels (magma's orange and yellow) for the bug.
+    for report in [&same_report, &bug_report] {
+        assert_eq!(
+            report.width(),
+            REPORT_MARGIN + 4 * (REPORT_PANEL.0 + REPORT_MARGIN)
+        );
+    }
+    let brightest = |pixels: &[[u8; 3]]| {
+        pixels
+            .iter()
+            .map(|p| p.iter().map(|&c| u32::from(c)).sum::<u32>())
+            .max()
+            .unwrap()
+    };
+    assert!(brightest(&first_row_panel(&same_report, 3)) < 30);
+    assert!(brightest(&first_row_panel(&bug_report, 3)) > 300);
+    // The panel is a picture, not the white page around it.
+    assert!(brightest(&first_row_panel(&bug_report, 3)) < 3 * 255);
+}

@@ -138,6 +138,36 @@ fn the_report_image_has_three_picture_panels_and_labels() {
 }
 
 #[test]
+fn the_report_images_fourth_panel_is_the_flip_map() {
+    let scene = lab_scene();
+    let other = render_with(
+        &scene,
+        1,
+        &Bugs {
+            drop_light: Some(1),
+            ..Bugs::default()
+        },
+    );
+    let c = compare(&scene, &other, &one_sample(), &RenderProgress::default()).unwrap();
+    let png = image::load_from_memory(&report_png(&c).unwrap())
+        .unwrap()
+        .to_rgb8();
+    // Four columns of 360-pixel panels (the 120x90 pictures scaled 3x), 12 apart.
+    assert_eq!(png.width(), 12 + 4 * (360 + 12));
+    let map = c.perceptual().map_rgb();
+    let (x0, y0) = (12 + 3 * (360 + 12), 12 + 58);
+    for (x, y) in [(0, 0), (60, 45), (119, 89), (30, 70)] {
+        let at = (y * c.width + x) as usize;
+        assert_eq!(
+            png.get_pixel(x0 + 3 * x + 1, y0 + 3 * y + 1).0,
+            map[at],
+            "pixel {x},{y}"
+        );
+    }
+    assert!(c.perceptual().mean > 0.0);
+}
+
+#[test]
 fn an_srgb_encoded_image_is_read_as_srgb_and_explained_by_it() {
     let scene = lab_scene();
     let plain = render_with(&scene, 1, &Bugs::default());

@@ -135,12 +135,43 @@ pub fn generate_class(
             .join(format!("student_{student:02}"));
         std::fs::create_dir_all(&student_folder).map_err(|e| e.to_string())?;
         for (index, (name, scene)) in scenes.iter().enumerate() {
-            let bytes = render_with_bug(scene, &planted_bug(student, scene, index))?;
+            let rendered = render_with_bug(scene, &planted_bug(student, scene, index))?;
+            let bytes = signed(&rendered, student)?;
             let path = student_folder.join(format!("{name}.png"));
             std::fs::write(&path, bytes).map_err(|e| format!("{}: {e}", path.display()))?;
         }
     }
     Ok(students * scenes.len())
+}
+
+/// `png` with student `student`'s mark: one channel of one pixel (the student's index,
+/// counted row by row) a level off. Students with the same planted bug would otherwise
+/// hand in the same bytes, which the class's cache compares once: a real class's
+/// renders all differ, and the timing must compare every pair. One level at one pixel
+/// is below what the comparison explains.
+///
+/// # Errors
+/// `png` is not a PNG.
+pub fn signed(png: &[u8], student: usize) -> Result<Vec<u8>, String> {
+    let mut image = image::load_from_memory(png)
+        .map_err(|e| format!("generated render: {e}"))?
+        .to_rgb8();
+    let (width, height) = image.dimensions();
+    let at = student % (width as usize * height as usize);
+    let pixel = image.get_pixel_mut((at % width as usize) as u32, (at / width as usize) as u32);
+    pixel.0[0] = if pixel.0[0] < 255 {
+        pixel.0[0] + 1
+    } else {
+        254
+    };
+    let mut bytes = Vec::new();
+    image
+        .write_to(
+            &mut std::io::Cursor::new(&mut bytes),
+            image::ImageFormat::Png,
+        )
+        .map_err(|e| format!("generated render: {e}"))?;
+    Ok(bytes)
 }
 
 /// Pairs per minute of `raylab class` on a generated class of `students` students and
@@ -176,4 +207,37 @@ pub fn class_pairs_per_minute(
     })();
     let _ = std::fs::remove_dir_all(&folder);
     result
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_students_render_differs_even_with_the_same_bug() {
+        let folder =
+            std::env::temp_dir().join(format!("raylab-generated-class-{}", std::process::id()));
+        let pairs = generate_class(&folder, 5, 2, (24, 18)).unwrap();
+        assert_eq!(pairs, 10);
+        let mut seen = std::collections::HashSet::new();
+        for student in 0..5 {
+            let renders = folder
+                .join("submissions")
+                .join(format!("student_{student:02}"));
+            for entry in std::fs::read_dir(&renders).unwrap() {
+                let bytes = std::fs::read(entry.unwrap().path()).unwrap();
+                assert!(
+                    seen.insert(bytes),
+                    "student {student}: a render another handed in"
+                );
+            }
+        }
+        // Students 0 and 4 plant the same bug in each scene: only their marks differ.
+        let scenes = class_scenes(2, 24, 18).unwrap();
+        assert_eq!(
+            planted_bug(0, &scenes[0].1, 0),
+            planted_bug(4, &scenes[0].1, 0)
+        );
+        std::fs::remove_dir_all(&folder).unwrap();
+    }
 }

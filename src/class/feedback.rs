@@ -69,6 +69,32 @@ pub fn bug_sentence(run: &ClassRun, count: &BugCount) -> String {
     )
 }
 
+/// The comparison's words for the student's picture and raylab's, and the student's:
+/// `raylab diff` compares any renderer's picture, so its sentences say "the other
+/// image"; a student reads about "your render" against "the reference". Longest first,
+/// so that "the other image's" is not read as "the other image" + "'s".
+const TO_STUDENT: [(&str, &str); 9] = [
+    ("The other image's", "Your render's"),
+    ("the other image's", "your render's"),
+    ("The other image", "Your render"),
+    ("the other image", "your render"),
+    ("The picture looks like", "Your render looks like"),
+    ("does its tracer", "does your tracer"),
+    ("Was it rendered", "Was your render made"),
+    ("raylab's", "the reference's"),
+    ("raylab ", "the reference "),
+];
+
+/// An explanation's sentence as feedback to the student whose render it explains.
+#[must_use]
+pub fn to_student(summary: &str) -> String {
+    TO_STUDENT
+        .iter()
+        .fold(summary.to_owned(), |text, (from, to)| {
+            text.replace(from, to)
+        })
+}
+
 /// Feedback for student `student`, one paragraph per scene and one for files that
 /// matched nothing, in sentences.
 #[must_use]
@@ -80,7 +106,10 @@ pub fn student_feedback(run: &ClassRun, student: usize) -> Vec<String> {
         let text = match &row.outcome {
             Outcome::Missing => format!("Scene {scene}: no render of this scene was found."),
             Outcome::NotRun => format!("Scene {scene}: not compared (the run was stopped)."),
-            Outcome::Error(e) => format!("Scene {scene} ({picture}): could not be compared: {e}."),
+            Outcome::Error(e) => format!(
+                "Scene {scene} ({picture}): could not be compared: {}.",
+                to_student(e)
+            ),
             Outcome::Done { result, .. } => {
                 let mut text = format!(
                     "Scene {scene} ({picture}): PSNR {:.1} dB, FLIP {:.3}.",
@@ -96,7 +125,7 @@ pub fn student_feedback(run: &ClassRun, student: usize) -> Vec<String> {
                 }
                 for f in shown {
                     text.push(' ');
-                    text.push_str(&f.summary);
+                    text.push_str(&to_student(&f.summary));
                 }
                 text
             }

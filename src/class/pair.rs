@@ -7,7 +7,6 @@ use std::path::Path;
 use image::RgbImage;
 use serde::{Deserialize, Serialize};
 
-use crate::compare::perceptual::ldr_flip;
 use crate::compare::{CompareOptions, Comparison, OtherImage, compare_with_meshes, report_png};
 use crate::scene::Scene;
 use crate::trace::{MeshStore, RenderProgress};
@@ -133,12 +132,8 @@ pub fn compare_pair(
         &RenderProgress::default(),
     )
     .map_err(|e| e.to_string())?;
-    let flip = ldr_flip(
-        comparison.width,
-        comparison.height,
-        &comparison.raylab_rgb,
-        &picture.rgb,
-    );
+    // The report image's FLIP panel and the pair's figures share one computation.
+    let flip = comparison.perceptual();
     std::fs::create_dir_all(folder)
         .map_err(|e| format!("cannot create {}: {e}", folder.display()))?;
     let write = |name: &str, bytes: &[u8]| {

@@ -18,8 +18,9 @@ pub struct DiffArgs {
     /// Print one JSON object instead of readable lines.
     #[arg(long)]
     pub json: bool,
-    /// Also write a report image: both pictures, the difference, the top explanations.
-    #[arg(short, long)]
+    /// Also write a report image: both pictures, the difference, the LDR-FLIP error
+    /// map, the top explanations.
+    #[arg(short, long, visible_alias = "report")]
     pub output: Option<PathBuf>,
     /// Samples per pixel of raylab's picture (default: the scene's; 1 for a renderer
     /// without anti-aliasing).

@@ -204,6 +204,7 @@ fn compare_scene(
         object_names: scene.objects.iter().map(|o| o.name.clone()).collect(),
         explanations,
         unexplained_share,
+        perceptual: std::sync::OnceLock::new(),
     };
     // The conventions and everything else are chosen together: a convention is the
     // reading only where, with the rest fitted under it too, it leaves less unexplained

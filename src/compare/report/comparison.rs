@@ -2,10 +2,13 @@
 //! under each pixel and the explanations with their pixels, so a viewer (the command
 //! line's report, the editor) shows it without computing anything again.
 
+use std::sync::OnceLock;
+
 use serde::Serialize;
 
 use crate::compare::fit::Encoding;
 use crate::compare::other_image::OtherImage;
+use crate::compare::perceptual::{Perceptual, ldr_flip};
 use crate::compare::verdict::{Cause, Explanation};
 use crate::trace::Image;
 use crate::trace::encode_linear;
@@ -43,6 +46,9 @@ pub struct Comparison {
     pub explanations: Vec<Explanation>,
     /// Share of the squared difference nothing explains.
     pub unexplained_share: f64,
+    /// LDR-FLIP of the other picture against raylab's 8-bit picture, computed the first
+    /// time [`Comparison::perceptual`] asks (the editor's comparisons never pay for it).
+    pub(in crate::compare) perceptual: OnceLock<Perceptual>,
 }
 
 /// Both pictures' values at one pixel.
@@ -101,6 +107,10 @@ struct ComparisonJson<'a> {
     width: u32,
     height: u32,
     samples_per_pixel: u32,
+    /// Mean LDR-FLIP error, 0 to 1.
+    flip_mean: f64,
+    /// 99th percentile of the per-pixel LDR-FLIP error, 0 to 1.
+    flip_p99: f64,
 }
 
 /// Rounds for reports: 4 decimals are plenty and keep the JSON readable.
@@ -108,7 +118,20 @@ fn round4(x: f64) -> f64 {
     (x * 1e4).round() / 1e4
 }
 
+/// Rounds FLIP figures: a near match's mean is often below 1e-3, so 6 decimals.
+fn round6(x: f64) -> f64 {
+    (x * 1e6).round() / 1e6
+}
+
 impl Comparison {
+    /// LDR-FLIP of the other picture (the test image) against raylab's 8-bit picture
+    /// (the reference): the per-pixel map, its mean and 99th percentile.
+    #[must_use]
+    pub fn perceptual(&self) -> &Perceptual {
+        self.perceptual
+            .get_or_init(|| ldr_flip(self.width, self.height, &self.raylab_rgb, &self.other.rgb))
+    }
+
     /// The values of both pictures at column `x`, row `y`.
     #[must_use]
     pub fn pixel(&self, x: u32, y: u32) -> PixelValues {
@@ -159,6 +182,8 @@ impl Comparison {
             width: self.width,
             height: self.height,
             samples_per_pixel: self.samples_per_pixel,
+            flip_mean: round6(self.perceptual().mean),
+            flip_p99: round6(self.perceptual().p99),
         };
         serde_json::to_string_pretty(&json).expect("plain data serialises")
     }
@@ -200,6 +225,11 @@ impl Comparison {
         lines.push(format!(
             "unexplained: {:.1}%",
             100.0 * self.unexplained_share
+        ));
+        let flip = self.perceptual();
+        lines.push(format!(
+            "LDR-FLIP: mean {:.4}, 99th percentile {:.4} (0 = no visible difference, 1 = the largest)",
+            flip.mean, flip.p99
         ));
         lines
     }

@@ -1,5 +1,6 @@
-//! REPORT.png: raylab's picture, the other one, the difference heatmap and the pixels
-//! of the top explanations, each panel labelled ([`super::panel_grid_png`]).
+//! REPORT.png: raylab's picture, the other one, the difference heatmap and the LDR-FLIP
+//! error map in the first row, the pixels of the top explanations in the second, each
+//! panel labelled ([`super::panel_grid_png`]).
 
 use std::path::Path;
 
@@ -9,6 +10,8 @@ use crate::compare::verdict::Explanation;
 
 /// Panels are scaled to about this width.
 const PANEL_WIDTH: f64 = 360.0;
+/// Panels per row: the four pictures of the first row.
+const COLUMNS: u32 = 4;
 /// Explanations shown as mask panels.
 const MASK_PANELS: usize = 3;
 /// Mask pixels are painted in this colour over a dimmed raylab picture.
@@ -81,6 +84,19 @@ fn mask_panel(comparison: &Comparison, index: usize, e: &Explanation) -> Panel {
     }
 }
 
+/// The LDR-FLIP error map in the FLIP tool's own colours, so it reads as FLIP's does.
+fn flip_panel(comparison: &Comparison) -> Panel {
+    let flip = comparison.perceptual();
+    Panel {
+        pixels: flip.map_rgb(),
+        title: "LDR-FLIP".to_owned(),
+        lines: vec![
+            format!("mean {:.4}, 99th percentile {:.4}", flip.mean, flip.p99),
+            "black = no visible difference, yellow = most".to_owned(),
+        ],
+    }
+}
+
 fn panels(comparison: &Comparison) -> Vec<Panel> {
     let (heatmap, most) = difference_heatmap(comparison);
     let mut panels = vec![
@@ -109,6 +125,7 @@ fn panels(comparison: &Comparison) -> Vec<Panel> {
                 ),
             ],
         },
+        flip_panel(comparison),
     ];
     for (i, e) in comparison.explanations.iter().take(MASK_PANELS).enumerate() {
         panels.push(mask_panel(comparison, i, e));
@@ -122,7 +139,7 @@ fn panels(comparison: &Comparison) -> Vec<Panel> {
 /// A message when text cannot be drawn or the PNG not encoded.
 pub fn report_png(comparison: &Comparison) -> Result<Vec<u8>, String> {
     let size = (comparison.width, comparison.height);
-    panel_grid_png(size, &panels(comparison), 3, PANEL_WIDTH)
+    panel_grid_png(size, &panels(comparison), COLUMNS, PANEL_WIDTH)
         .map_err(|e| format!("report image: {e}"))
 }
 
