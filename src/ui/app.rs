@@ -3,8 +3,6 @@
 
 use std::path::{Path, PathBuf};
 
-use egui::util::undoer::{Settings as UndoSettings, Undoer};
-
 use crate::scene::Scene;
 use crate::trace::Isolation;
 use crate::ui::bug_gallery::BugGallery;
@@ -27,10 +25,17 @@ use crate::ui::viewport::preview_link::PreviewLink;
 
 mod apply;
 mod document;
+mod file_actions;
 mod frame;
 mod looking;
 mod mesh_fit;
+mod tools;
+mod view;
 mod view_state;
+
+pub use document::Document;
+pub use tools::Tools;
+pub use view::View;
 
 /// How to start the editor.
 #[derive(Clone, Debug, Default)]
@@ -51,58 +56,36 @@ pub struct EditorOptions {
     pub dialog_folder: Option<PathBuf>,
 }
 
-/// The editor.
+/// The editor: the document, how it is viewed, the tools working on it, and the
+/// frame's own state (the commands to apply, the notices, the window).
 pub struct EditorApp {
-    scene: Scene,
-    /// The scene as last loaded or saved: unsaved changes are a difference from it.
-    saved: Scene,
-    path: Option<PathBuf>,
-    /// The course text file the scene was imported from, while it has no file of its own.
-    imported_from: Option<PathBuf>,
-    /// Whether an imported OBJ is scaled to a unit box once its size is known.
-    fit_imported_meshes: bool,
-    /// The mesh imported last, until the preview knows its size.
-    pending_fit: Option<mesh_fit::PendingFit>,
-    /// What stands for the file name when there is none ("default scene", "untitled").
-    unnamed: &'static str,
-    selection: Selection,
-    undoer: Undoer<Scene>,
+    /// The scene being edited, its file, undo history and selection.
+    document: Document,
+    /// How the document is shown: preview, view camera, isolation, open panels.
+    view: View,
+    /// The tool windows and dialogs: export, compare, bug gallery, file dialogs.
+    tools: Tools,
+    /// This frame's commands, applied at its end.
     commands: Vec<Command>,
-    preview_enabled: bool,
-    preview: Option<PreviewLink>,
-    /// The toolbar's switches, view and overlays (editor state).
-    preview_settings: PreviewSettings,
-    /// The view camera, the inspected and pinned pixels, the probes (never the scene).
-    looking: looking::Looking,
-    /// Lights muted or solo, objects hidden (editor state, remembered per file).
-    isolation: Isolation,
-    /// The isolation of every file that has some, for the next time it opens.
-    isolation_memory: IsolationMemory,
-    export: ExportState,
-    /// File > Compare with Image: the running or shown comparison.
-    compare: CompareSession,
-    /// File > Bug gallery: the scene under each bug of the catalogue.
-    bug_gallery: BugGallery,
+    /// Recent files (File > Open Recent), kept across runs.
     recent: RecentFiles,
-    pending: Option<DiscardAction>,
-    /// An action to do once the Save As dialog has saved the scene ("Save" in the
-    /// unsaved-changes question of an untitled scene).
-    after_save: Option<DiscardAction>,
-    file_dialogs: FileDialogs,
-    /// The folder of the last file picked in a dialog: the next dialog starts there when
-    /// the scene has no file of its own (an import, a new scene).
-    last_folder: Option<std::path::PathBuf>,
+    /// The error shown in the error area, if any.
     error: Option<String>,
     /// Something the user should know that is not a failure (an import's warnings).
     warning: Option<String>,
+    /// The status bar's message.
     message: Option<StatusMessage>,
-    show_help: bool,
-    focus_name: bool,
+    /// Whether the window may close (Quit was answered, or a screenshot is taken).
     allow_close: bool,
+    /// The window title last sent.
     title: String,
+    /// Whether the style and fonts were installed.
     styled: bool,
+    /// The screenshot to take, for a screenshot run.
     screenshot: Option<ScreenshotHook>,
+    /// Whether the screenshot waits for the final (fully sampled) frame.
     screenshot_final: bool,
+    /// Crash recovery: unsaved work written aside, and the offer to restore it.
     autosave: Autosave,
 }
 
@@ -113,35 +96,17 @@ impl EditorApp {
         let scene = files::default_scene();
         let looking = looking::Looking::new(&scene);
         let mut app = Self {
-            saved: scene.clone(),
-            scene,
-            path: None,
-            imported_from: None,
-            fit_imported_meshes: true,
-            pending_fit: None,
-            unnamed: "default scene",
-            selection: Selection::None,
-            undoer: undoer(),
+            document: Document::new(scene, "default scene"),
+            view: View::new(looking, options.preview),
+            tools: Tools::new(FileDialogs::new(
+                options.native_dialogs.resolve(),
+                options.dialog_folder,
+            )),
             commands: Vec::new(),
-            preview_enabled: options.preview,
-            preview: None,
-            preview_settings: PreviewSettings::default(),
-            looking,
-            isolation: Isolation::NONE,
-            isolation_memory: IsolationMemory::default(),
-            export: ExportState::default(),
-            compare: CompareSession::default(),
-            bug_gallery: BugGallery::default(),
             recent,
-            pending: None,
-            after_save: None,
-            file_dialogs: FileDialogs::new(options.native_dialogs.resolve(), options.dialog_folder),
-            last_folder: None,
             error: None,
             warning: None,
             message: None,
-            show_help: false,
-            focus_name: false,
             allow_close: false,
             title: String::new(),
             styled: false,
@@ -149,7 +114,6 @@ impl EditorApp {
             screenshot_final: options.screenshot_final,
             autosave: Autosave::new(options.recovery),
         };
-        app.undoer.add_undo(&app.scene);
         if let Some(path) = options.scene {
             app.open(&path);
         }
@@ -164,31 +128,31 @@ impl EditorApp {
     /// The scene being edited.
     #[must_use]
     pub fn scene(&self) -> &Scene {
-        &self.scene
+        &self.document.scene
     }
 
     /// What the inspector shows.
     #[must_use]
     pub fn selection(&self) -> &Selection {
-        &self.selection
+        &self.document.selection
     }
 
     /// The scene's file, if it has one.
     #[must_use]
     pub fn path(&self) -> Option<&Path> {
-        self.path.as_deref()
+        self.document.path.as_deref()
     }
 
     /// Whether the scene differs from its file.
     #[must_use]
     pub fn is_dirty(&self) -> bool {
-        self.scene != self.saved
+        self.document.is_dirty()
     }
 
     /// Whether Undo would do something (an edit was made since the scene was opened).
     #[must_use]
     pub fn can_undo(&self) -> bool {
-        self.undoer.has_undo(&self.scene)
+        self.document.can_undo()
     }
 
     /// The error shown in the error area, if any.
@@ -218,62 +182,62 @@ impl EditorApp {
     /// The file dialogs (which one is open, the in-app preference).
     #[must_use]
     pub fn file_dialogs(&self) -> &FileDialogs {
-        &self.file_dialogs
+        &self.tools.file_dialogs
     }
 
     /// The action waiting for a "discard unsaved changes?" answer.
     #[must_use]
     pub fn pending_discard(&self) -> Option<&DiscardAction> {
-        self.pending.as_ref()
+        self.tools.pending.as_ref()
     }
 
     /// The window title: file name, `*` when unsaved.
     #[must_use]
     pub fn title(&self) -> String {
         let marker = if self.is_dirty() { "*" } else { "" };
-        format!("{}{marker} — raylab", self.file_label())
+        format!("{}{marker} — raylab", self.document.file_label())
     }
 
     /// The export window's state.
     #[must_use]
     pub fn export(&self) -> &ExportState {
-        &self.export
+        &self.tools.export
     }
 
     /// The preview, when running.
     #[must_use]
     pub fn preview(&self) -> Option<&PreviewLink> {
-        self.preview.as_ref()
+        self.view.preview.as_ref()
     }
 
     /// The toolbar's settings.
     #[must_use]
     pub fn preview_settings(&self) -> &PreviewSettings {
-        &self.preview_settings
+        &self.view.preview_settings
     }
 
     /// Lights muted or solo and objects hidden, by scene index.
     #[must_use]
     pub fn isolation(&self) -> &Isolation {
-        &self.isolation
+        &self.view.isolation
     }
 
     /// Installs the per-file isolation memory of an earlier run (read from eframe's
     /// storage at start-up) and brings back the open file's switches.
     pub fn set_isolation_memory(&mut self, memory: IsolationMemory) {
-        self.isolation_memory = memory;
-        if let Some(path) = &self.path {
-            self.isolation = self.isolation_memory.recall(path);
-            keep_in_range(&mut self.isolation, &self.scene);
+        self.view.isolation_memory = memory;
+        if let Some(path) = &self.document.path {
+            self.view.isolation = self.view.isolation_memory.recall(path);
+            keep_in_range(&mut self.view.isolation, &self.document.scene);
         }
     }
 
     /// The per-file isolation memory as it would be saved now.
     #[must_use]
     pub fn isolation_memory(&self) -> IsolationMemory {
-        let mut memory = self.isolation_memory.clone();
-        if let Some(path) = &self.path {
-            memory.remember(path, &self.isolation);
+        let mut memory = self.view.isolation_memory.clone();
+        if let Some(path) = &self.document.path {
+            memory.remember(path, &self.view.isolation);
         }
         memory
     }
@@ -281,43 +245,19 @@ impl EditorApp {
     /// The comparison with another renderer's picture.
     #[must_use]
     pub fn compare(&self) -> &CompareSession {
-        &self.compare
+        &self.tools.compare
     }
 
     /// The Bug gallery window's state.
     #[must_use]
     pub fn bug_gallery(&self) -> &BugGallery {
-        &self.bug_gallery
+        &self.tools.bug_gallery
     }
 
     /// Recent files.
     #[must_use]
     pub fn recent(&self) -> &RecentFiles {
         &self.recent
-    }
-
-    /// The scene's file name; for an import not saved yet, the file it came from
-    /// ("snowman.txt (imported)").
-    fn file_label(&self) -> String {
-        let name = |p: &Path| p.file_name().map(|n| n.to_string_lossy().into_owned());
-        if let Some(name) = self.path.as_deref().and_then(name) {
-            return name;
-        }
-        match self.imported_from.as_deref().and_then(name) {
-            Some(name) => format!("{name} (imported)"),
-            None => self.unnamed.to_owned(),
-        }
-    }
-
-    /// The file the scene stands for: its own, else the course file it was imported from.
-    fn document_file(&self) -> Option<&Path> {
-        self.path.as_deref().or(self.imported_from.as_deref())
-    }
-
-    /// Where the scene's mesh files are found: its file's folder, or the folder of the
-    /// course file it was imported from (whose mesh paths are relative to it).
-    fn scene_folder(&self) -> Option<&Path> {
-        self.document_file().and_then(Path::parent)
     }
 
     /// The end of a clean session: nothing left to recover.
@@ -329,9 +269,9 @@ impl EditorApp {
     pub fn save_state(&self, storage: &mut dyn eframe::Storage) {
         if self.screenshot.is_none() {
             self.recent.save(storage);
-            self.preview_settings.save(storage);
+            self.view.preview_settings.save(storage);
             self.view_memory().save(storage);
-            self.file_dialogs.save_setting(storage);
+            self.tools.file_dialogs.save_setting(storage);
             self.isolation_memory().save(storage);
         }
     }
@@ -341,14 +281,6 @@ impl EditorApp {
     pub fn is_screenshot_run(&self) -> bool {
         self.screenshot.is_some()
     }
-}
-
-/// A fresh undo history.
-fn undoer() -> Undoer<Scene> {
-    Undoer::with_settings(UndoSettings {
-        max_undos: 200,
-        ..UndoSettings::default()
-    })
 }
 
 impl eframe::App for EditorApp {

@@ -26,7 +26,10 @@ impl EditorApp {
             if reshuffled && matches!(&command, Command::Edit(edit) if edit.is_by_index()) {
                 continue;
             }
-            let lists = (self.scene.objects.len(), self.scene.lights.len());
+            let lists = (
+                self.document.scene.objects.len(),
+                self.document.scene.lights.len(),
+            );
             let may_reshuffle = matches!(
                 command,
                 Command::Undo
@@ -37,40 +40,44 @@ impl EditorApp {
             );
             // The isolation switches follow their items through a reshuffle of this
             // document (opening another brings that file's own switches).
-            let anchors = (!self.isolation.is_none()
+            let anchors = (!self.view.isolation.is_none()
                 && matches!(&command, Command::Undo | Command::Redo | Command::Edit(_)))
-            .then(|| IsolationAnchors::take(&self.scene, &self.isolation));
+            .then(|| IsolationAnchors::take(&self.document.scene, &self.view.isolation));
             let undo = matches!(command, Command::Undo | Command::Redo);
             self.execute(command, ctx);
-            let lists_changed = lists != (self.scene.objects.len(), self.scene.lights.len());
+            let lists_changed = lists
+                != (
+                    self.document.scene.objects.len(),
+                    self.document.scene.lights.len(),
+                );
             if let Some(anchors) = anchors
                 && (undo || lists_changed)
             {
-                self.isolation = anchors.follow(&self.scene);
+                self.view.isolation = anchors.follow(&self.document.scene);
             }
             reshuffled |= may_reshuffle || lists_changed;
         }
-        repair_selection(&self.scene, &mut self.selection);
-        keep_in_range(&mut self.isolation, &self.scene);
+        repair_selection(&self.document.scene, &mut self.document.selection);
+        keep_in_range(&mut self.view.isolation, &self.document.scene);
         let editing = ctx.input(|i| i.pointer.any_down()) || ctx.text_edit_focused();
         if !editing {
-            self.undoer.add_undo(&self.scene);
+            self.document.undoer.add_undo(&self.document.scene);
         }
     }
 
     pub(super) fn execute(&mut self, command: Command, ctx: &egui::Context) {
         match command {
-            Command::Select(selection) => self.selection = selection,
+            Command::Select(selection) => self.document.selection = selection,
             Command::Edit(edit) => self.edit(edit),
             Command::Undo => {
-                if let Some(scene) = self.undoer.undo(&self.scene) {
-                    self.scene = scene.clone();
+                if let Some(scene) = self.document.undoer.undo(&self.document.scene) {
+                    self.document.scene = scene.clone();
                     self.forget_notice();
                 }
             }
             Command::Redo => {
-                if let Some(scene) = self.undoer.redo(&self.scene) {
-                    self.scene = scene.clone();
+                if let Some(scene) = self.document.undoer.redo(&self.document.scene) {
+                    self.document.scene = scene.clone();
                     self.forget_notice();
                 }
             }
@@ -81,7 +88,7 @@ impl EditorApp {
             Command::ImportLegacyDialog => self.guard(DiscardAction::ImportDialog, ctx),
             Command::ImportLegacy(path) => self.guard(DiscardAction::Import(path), ctx),
             Command::Quit => self.guard(DiscardAction::Quit, ctx),
-            Command::Save => match self.path.clone() {
+            Command::Save => match self.document.path.clone() {
                 Some(path) => {
                     self.save_as(&path);
                 }
@@ -92,10 +99,12 @@ impl EditorApp {
                 self.save_as(&path);
             }
             Command::ShowExport => {
-                let document = self.document_file().map(std::path::Path::to_owned);
-                self.export.show(&self.scene, document.as_deref());
+                let document = self.document.document_file().map(std::path::Path::to_owned);
+                self.tools
+                    .export
+                    .show(&self.document.scene, document.as_deref());
             }
-            Command::ShowHelp => self.show_help = !self.show_help,
+            Command::ShowHelp => self.view.show_help = !self.view.show_help,
             Command::BrowseExportPath => self.request_dialog(DialogPurpose::ExportPng, ctx),
             Command::ExportCourseDialog(dialect) => {
                 self.request_dialog(DialogPurpose::ExportCourse(dialect), ctx);
@@ -104,52 +113,65 @@ impl EditorApp {
             Command::ImportObjDialog => self.request_dialog(DialogPurpose::ImportObj, ctx),
             Command::ImportObj(path) => self.import_obj(&path),
             Command::CancelMeshLoading => {
-                if let Some(preview) = &self.preview {
+                if let Some(preview) = &self.view.preview {
                     preview.cancel_loading();
                 }
             }
             Command::BrowseCompareImage => self.request_dialog(DialogPurpose::CompareImage, ctx),
-            Command::SetPreferInAppFileDialog(prefer) => self.file_dialogs.prefer_in_app = prefer,
-            Command::SetFitImportedMeshes(fit) => self.fit_imported_meshes = fit,
+            Command::SetPreferInAppFileDialog(prefer) => {
+                self.tools.file_dialogs.prefer_in_app = prefer
+            }
+            Command::SetFitImportedMeshes(fit) => self.document.fit_imported_meshes = fit,
             Command::DismissError => self.error = None,
             Command::DismissWarning => self.warning = None,
-            Command::FocusName => self.focus_name = true,
-            Command::SetPreviewSettings(settings) => self.preview_settings = settings,
-            Command::InspectPixel(pixel) => self.looking.inspected = pixel,
-            Command::Pick(request) => self.looking.pick(&self.scene, &self.isolation, request),
-            Command::SetView(view) => self.looking.view = view,
+            Command::FocusName => self.view.focus_name = true,
+            Command::SetPreviewSettings(settings) => self.view.preview_settings = settings,
+            Command::InspectPixel(pixel) => self.view.looking.inspected = pixel,
+            Command::Pick(request) => {
+                self.view
+                    .looking
+                    .pick(&self.document.scene, &self.view.isolation, request)
+            }
+            Command::SetView(view) => self.view.looking.camera = view,
             Command::ToggleCameraView => {
-                let view = &mut self.looking.view;
+                let view = &mut self.view.looking.camera;
                 // Leaving camera view starts from where the scene camera is, not from a
                 // pose left over from earlier (another scene, a moved camera).
                 *view = if view.through_scene_camera {
-                    ViewCamera::free(&self.scene.camera)
+                    ViewCamera::free(&self.document.scene.camera)
                 } else {
-                    ViewCamera::through(&self.scene.camera)
+                    ViewCamera::through(&self.document.scene.camera)
                 };
             }
             Command::SetSceneCameraFromView => {
-                let camera = self.looking.view.as_scene_camera(&self.scene.camera);
+                let camera = self
+                    .view
+                    .looking
+                    .camera
+                    .as_scene_camera(&self.document.scene.camera);
                 self.edit(SceneEdit::SetCamera(camera));
-                self.looking.view = ViewCamera::through(&self.scene.camera);
+                self.view.looking.camera = ViewCamera::through(&self.document.scene.camera);
             }
-            Command::SetRayPaths(settings) => self.looking.ray_paths = settings,
-            Command::ShowCompare => self.compare.show_window(),
+            Command::SetRayPaths(settings) => self.view.looking.ray_paths = settings,
+            Command::ShowCompare => self.tools.compare.show_window(),
             Command::CompareWith(path) => {
-                let folder = self.scene_folder().map(std::path::Path::to_owned);
-                self.compare
-                    .start(&self.scene, folder.as_deref(), &path, ctx);
+                let folder = self.document.scene_folder().map(std::path::Path::to_owned);
+                self.tools
+                    .compare
+                    .start(&self.document.scene, folder.as_deref(), &path, ctx);
             }
             Command::ShowBugGallery => {
-                let folder = self.scene_folder().map(std::path::Path::to_owned);
-                self.bug_gallery.show(&self.scene, folder.as_deref(), ctx);
+                let folder = self.document.scene_folder().map(std::path::Path::to_owned);
+                self.tools
+                    .bug_gallery
+                    .show(&self.document.scene, folder.as_deref(), ctx);
             }
             Command::CompareWithGalleryPicture(index) => {
-                if let Some(picture) = self.bug_gallery.picture_to_compare(index) {
-                    self.compare.start_picture(picture, ctx);
+                if let Some(picture) = self.tools.bug_gallery.picture_to_compare(index) {
+                    self.tools.compare.start_picture(picture, ctx);
                 }
             }
-            Command::Isolate(toggle) => toggle.apply(&mut self.isolation),
+            Command::Isolate(toggle) => toggle.apply(&mut self.view.isolation),
         }
     }
 
@@ -162,7 +184,7 @@ impl EditorApp {
     }
 
     pub(super) fn edit(&mut self, edit: SceneEdit) {
-        if let Err(error) = edit.apply(&mut self.scene, &mut self.selection) {
+        if let Err(error) = edit.apply(&mut self.document.scene, &mut self.document.selection) {
             self.error = Some(error);
         }
     }

@@ -36,14 +36,14 @@ impl EditorApp {
             ctx.request_repaint();
             return;
         }
-        if self.preview_enabled && self.preview.is_none() {
-            self.preview = Some(PreviewLink::new(&ctx));
+        if self.view.preview_enabled && self.view.preview.is_none() {
+            self.view.preview = Some(PreviewLink::new(&ctx));
         }
-        if let Some(preview) = &mut self.preview {
-            preview.poll(&ctx, self.preview_settings.nan_guard);
+        if let Some(preview) = &mut self.view.preview {
+            preview.poll(&ctx, self.view.preview_settings.nan_guard);
         }
-        self.looking.start(&ctx);
-        match self.looking.poll(&self.scene) {
+        self.view.looking.start(&ctx);
+        match self.view.looking.poll(&self.document.scene) {
             Some(Ok(command)) => self.commands.push(command),
             Some(Err(message)) => self.message = Some(StatusMessage::done(message)),
             None => {}
@@ -53,30 +53,40 @@ impl EditorApp {
         self.dialogs(&ctx);
         self.fit_imported_mesh();
         self.apply_commands(&ctx);
-        let dirty = self.is_dirty();
+        let dirty = self.document.is_dirty();
         let now = std::time::Instant::now();
-        if let Some(wait) = self
-            .autosave
-            .tick(&self.scene, dirty, self.path.as_deref(), now)
-        {
+        if let Some(wait) = self.autosave.tick(
+            &self.document.scene,
+            dirty,
+            self.document.path.as_deref(),
+            now,
+        ) {
             ctx.request_repaint_after(wait);
         }
-        let folder = self.scene_folder().map(std::path::Path::to_owned);
-        if let Some(preview) = &mut self.preview {
+        let folder = self.document.scene_folder().map(std::path::Path::to_owned);
+        if let Some(preview) = &mut self.view.preview {
             preview.sync(
-                self.looking.shown_scene(&self.scene),
+                self.view.looking.shown_scene(&self.document.scene),
                 folder.as_deref(),
-                &self.preview_settings,
-                &self.isolation,
+                &self.view.preview_settings,
+                &self.view.isolation,
             );
         }
-        self.looking
-            .sync_inspections(&self.scene, self.preview_settings.switches, &self.isolation);
-        if self.preview.as_ref().is_some_and(|p| p.loading().is_some()) {
+        self.view.looking.sync_inspections(
+            &self.document.scene,
+            self.view.preview_settings.switches,
+            &self.view.isolation,
+        );
+        if self
+            .view
+            .preview
+            .as_ref()
+            .is_some_and(|p| p.loading().is_some())
+        {
             // The reading's progress bar moves without a frame being published.
             ctx.request_repaint_after(std::time::Duration::from_millis(100));
         }
-        if self.looking.is_busy() {
+        if self.view.looking.is_busy() {
             // Frames keep coming until the probe answers (it also wakes the window).
             ctx.request_repaint();
         }
@@ -86,7 +96,7 @@ impl EditorApp {
             self.title = title;
         }
         if let Some(hook) = &mut self.screenshot {
-            let ready = self.preview.as_ref().is_some_and(|p| {
+            let ready = self.view.preview.as_ref().is_some_and(|p| {
                 p.shows_full_resolution()
                     && (!self.screenshot_final || p.shown().is_some_and(|s| s.is_final))
             });
@@ -126,9 +136,12 @@ impl EditorApp {
         if ctx.input(|i| !i.raw.hovered_files.is_empty()) {
             drop_hint(ctx);
         }
-        if ctx.input(|i| i.viewport().close_requested()) && !self.allow_close && self.is_dirty() {
+        if ctx.input(|i| i.viewport().close_requested())
+            && !self.allow_close
+            && self.document.is_dirty()
+        {
             ctx.send_viewport_cmd(ViewportCommand::CancelClose);
-            self.pending = Some(DiscardAction::Quit);
+            self.tools.pending = Some(DiscardAction::Quit);
         }
     }
 
@@ -137,22 +150,22 @@ impl EditorApp {
         egui::Panel::top("menu").show(ui, |ui| {
             let state = MenuState {
                 recent: &self.recent,
-                in_app_dialogs: self.file_dialogs.uses_in_app(),
-                fit_imported_meshes: self.fit_imported_meshes,
-                native_dialogs: self.file_dialogs.native_available(),
-                can_undo: self.undoer.has_undo(&self.scene),
-                can_redo: self.undoer.has_redo(&self.scene),
+                in_app_dialogs: self.tools.file_dialogs.uses_in_app(),
+                fit_imported_meshes: self.document.fit_imported_meshes,
+                native_dialogs: self.tools.file_dialogs.native_available(),
+                can_undo: self.document.can_undo(),
+                can_redo: self.document.can_redo(),
                 has_selection: matches!(
-                    self.selection,
+                    self.document.selection,
                     Selection::Object(_)
                         | Selection::Part(_)
                         | Selection::Several(_)
                         | Selection::Light(_)
                         | Selection::Material(_)
                 ),
-                has_object_selected: !self.selection.node_paths().is_empty(),
-                group_selected: self.selection.node_path().is_some_and(|path| {
-                    crate::scene::tree::object_at(&self.scene.objects, &path)
+                has_object_selected: !self.document.selection.node_paths().is_empty(),
+                group_selected: self.document.selection.node_path().is_some_and(|path| {
+                    crate::scene::tree::object_at(&self.document.scene.objects, &path)
                         .is_some_and(|o| matches!(o.shape, crate::scene::Shape::Group { .. }))
                 }),
             };
@@ -176,16 +189,20 @@ impl EditorApp {
         let below_menu = ui.available_rect_before_wrap().min.y;
         notices_ui(ui.ctx(), below_menu, notices, &mut commands);
         egui::Panel::bottom("status").show(ui, |ui| {
-            let file = self.file_label();
+            let file = self.document.file_label();
             let info = StatusInfo {
                 file: &file,
-                dirty: self.is_dirty(),
-                objects: self.scene.objects.len(),
-                lights: self.scene.lights.len(),
-                frame: self.preview.as_ref().and_then(PreviewLink::shown),
-                progress: self.preview.as_ref().and_then(PreviewLink::pass_progress),
-                loading: self.preview.as_ref().and_then(PreviewLink::loading),
-                error: self.preview.as_ref().and_then(PreviewLink::error),
+                dirty: self.document.is_dirty(),
+                objects: self.document.scene.objects.len(),
+                lights: self.document.scene.lights.len(),
+                frame: self.view.preview.as_ref().and_then(PreviewLink::shown),
+                progress: self
+                    .view
+                    .preview
+                    .as_ref()
+                    .and_then(PreviewLink::pass_progress),
+                loading: self.view.preview.as_ref().and_then(PreviewLink::loading),
+                error: self.view.preview.as_ref().and_then(PreviewLink::error),
                 autosave_error: self.autosave.error.as_deref(),
                 message: self.message.as_ref(),
             };
@@ -202,9 +219,9 @@ impl EditorApp {
                 panel_title_ui(ui, "Outliner");
                 outliner_ui(
                     ui,
-                    &self.scene,
-                    &self.selection,
-                    &self.isolation,
+                    &self.document.scene,
+                    &self.document.selection,
+                    &self.view.isolation,
                     &mut commands,
                 );
             });
@@ -215,44 +232,50 @@ impl EditorApp {
             .show(ui, |ui| {
                 panel_title_ui(ui, "Inspector");
                 let meshes = self
+                    .view
                     .preview
                     .as_ref()
                     .map(PreviewLink::mesh_facts)
                     .unwrap_or_default();
                 inspector_ui(
                     ui,
-                    &self.scene,
+                    &self.document.scene,
                     &meshes,
-                    &self.selection,
-                    &mut self.focus_name,
+                    &self.document.selection,
+                    &mut self.view.focus_name,
                     &mut commands,
                 );
                 // A rename asked for an item without a name field: forget it.
-                self.focus_name = false;
+                self.view.focus_name = false;
                 // A typed value the field did not take as typed is said, not dropped.
                 if let Some(notice) = take_field_notice(ui.ctx()) {
                     self.message = Some(StatusMessage::notice(notice));
                 }
             });
         egui::CentralPanel::no_frame().show(ui, |ui| {
-            if self.compare.is_showing() {
-                compare_view_ui(ui, &mut self.compare, &self.scene, &mut commands);
+            if self.tools.compare.is_showing() {
+                compare_view_ui(
+                    ui,
+                    &mut self.tools.compare,
+                    &self.document.scene,
+                    &mut commands,
+                );
                 return;
             }
             let input = ViewportInput {
-                scene: &self.scene,
-                preview: self.preview.as_ref(),
-                selection: &self.selection,
-                settings: &self.preview_settings,
-                isolation: &self.isolation,
-                view: &self.looking.view,
-                ray_paths: &self.looking.ray_paths,
-                inspected: self.looking.inspected,
-                inspections: self.looking.inspections(),
+                scene: &self.document.scene,
+                preview: self.view.preview.as_ref(),
+                selection: &self.document.selection,
+                settings: &self.view.preview_settings,
+                isolation: &self.view.isolation,
+                view: &self.view.looking.camera,
+                ray_paths: &self.view.looking.ray_paths,
+                inspected: self.view.looking.inspected,
+                inspections: self.view.looking.inspections(),
             };
             let output = viewport_ui(ui, &input, &mut commands);
-            self.looking.free_size = output.free_size;
-            self.looking.anchor = output.anchor;
+            self.view.looking.free_size = output.free_size;
+            self.view.looking.anchor = output.anchor;
         });
         self.commands = commands;
     }
@@ -261,57 +284,60 @@ impl EditorApp {
         if let Some(answer) = self.autosave.offer_ui(ctx) {
             self.restore(answer);
         }
-        help_window(ctx, &mut self.show_help);
-        let folder = self.scene_folder().map(std::path::Path::to_owned);
+        help_window(ctx, &mut self.view.show_help);
+        let folder = self.document.scene_folder().map(std::path::Path::to_owned);
         export_window(
             ctx,
-            &mut self.export,
-            &self.scene,
+            &mut self.tools.export,
+            &self.document.scene,
             folder.as_deref(),
             ViewportLook {
-                settings: &self.preview_settings,
-                isolation: &self.isolation,
+                settings: &self.view.preview_settings,
+                isolation: &self.view.isolation,
             },
             &mut self.commands,
         );
-        compare_window(ctx, &mut self.compare, &mut self.commands);
+        compare_window(ctx, &mut self.tools.compare, &mut self.commands);
         bug_gallery_window(
             ctx,
-            &mut self.bug_gallery,
-            &self.scene,
-            self.path.as_deref().and_then(std::path::Path::parent),
+            &mut self.tools.bug_gallery,
+            &self.document.scene,
+            self.document
+                .path
+                .as_deref()
+                .and_then(std::path::Path::parent),
             &mut self.commands,
         );
         self.file_dialog_ui(ctx);
-        if let Some(pixel) = self.looking.inspected {
+        if let Some(pixel) = self.view.looking.inspected {
             let view = InspectorView {
                 pixel,
-                inspection: self.looking.inspection(),
-                current: self.looking.inspections_current(
-                    &self.scene,
-                    self.preview_settings.switches,
-                    &self.isolation,
+                inspection: self.view.looking.inspection(),
+                current: self.view.looking.inspections_current(
+                    &self.document.scene,
+                    self.view.preview_settings.switches,
+                    &self.view.isolation,
                 ),
-                ray_paths: &self.looking.ray_paths,
-                anchor: self.looking.anchor,
-                compared: self.compare.pixel_values(pixel),
+                ray_paths: &self.view.looking.ray_paths,
+                anchor: self.view.looking.anchor,
+                compared: self.tools.compare.pixel_values(pixel),
             };
             pixel_inspector_ui(ctx, &view, &mut self.commands);
         }
-        if self.preview_settings.show_convergence
-            && let Some(preview) = &self.preview
+        if self.view.preview_settings.show_convergence
+            && let Some(preview) = &self.view.preview
         {
             convergence_plot_ui(
                 ctx,
                 preview.convergence(),
-                &self.preview_settings,
+                &self.view.preview_settings,
                 &mut self.commands,
             );
         }
-        if let Some(action) = self.pending.clone()
+        if let Some(action) = self.tools.pending.clone()
             && let Some(answer) = discard_modal(ctx, &action)
         {
-            self.pending = None;
+            self.tools.pending = None;
             self.answer_discard(action, answer, ctx);
         }
     }

@@ -24,7 +24,7 @@ struct Probes {
 /// How the editor looks at the scene; none of it is part of the scene.
 pub(super) struct Looking {
     /// The view camera, or camera view.
-    pub view: ViewCamera,
+    pub camera: ViewCamera,
     /// The size a free view renders at (the viewport's, from the last layout).
     pub free_size: (u32, u32),
     /// Views remembered per file.
@@ -45,7 +45,7 @@ impl Looking {
     /// Looking through `scene`'s camera, nothing inspected.
     pub fn new(scene: &Scene) -> Self {
         Self {
-            view: ViewCamera::through(&scene.camera),
+            camera: ViewCamera::through(&scene.camera),
             free_size: (scene.camera.width, scene.camera.height),
             memory: ViewMemory::default(),
             inspected: None,
@@ -59,7 +59,7 @@ impl Looking {
     /// A new document: camera view on its camera (or the view remembered for its file),
     /// nothing inspected or pinned.
     pub fn reset(&mut self, scene: &Scene, path: Option<&std::path::Path>) {
-        self.view = path
+        self.camera = path
             .and_then(|p| self.memory.get(p).cloned())
             .unwrap_or_else(|| ViewCamera::through(&scene.camera));
         self.inspected = None;
@@ -83,10 +83,10 @@ impl Looking {
     /// The scene the preview renders: `scene` itself in camera view, else a copy with
     /// the view camera at the free size.
     pub fn shown_scene<'s>(&'s mut self, scene: &'s Scene) -> &'s Scene {
-        if self.view.through_scene_camera {
+        if self.camera.through_scene_camera {
             return scene;
         }
-        let camera = self.view.shown(&scene.camera, self.free_size);
+        let camera = self.camera.shown(&scene.camera, self.free_size);
         let same_but_camera = self.shown.as_mut().is_some_and(|cached| {
             // Compared with the scene's own camera swapped in: no copy of the scene.
             let own = std::mem::replace(&mut cached.camera, scene.camera.clone());

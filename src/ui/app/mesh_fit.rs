@@ -50,18 +50,19 @@ impl EditorApp {
     /// Fits the mesh imported last once the preview knows its box (a command for this
     /// frame), unless the object was edited or removed meanwhile.
     pub(super) fn fit_imported_mesh(&mut self) {
-        let Some(pending) = &self.pending_fit else {
+        let Some(pending) = &self.document.pending_fit else {
             return;
         };
-        if self.scene.objects.get(pending.index) != Some(&pending.added) {
-            self.pending_fit = None;
+        if self.document.scene.objects.get(pending.index) != Some(&pending.added) {
+            self.document.pending_fit = None;
             return;
         }
         let Shape::Mesh { path } = &pending.added.shape else {
-            self.pending_fit = None;
+            self.document.pending_fit = None;
             return;
         };
         let Some(facts) = self
+            .view
             .preview
             .as_ref()
             .and_then(|p| p.mesh_facts().get(path).copied())
@@ -78,6 +79,6 @@ impl EditorApp {
                 size_text(&facts)
             )));
         }
-        self.pending_fit = None;
+        self.document.pending_fit = None;
     }
 }

@@ -12,58 +12,60 @@ impl EditorApp {
     /// (traced off the UI thread; `None` until the first is done, or when closed).
     #[must_use]
     pub fn inspection(&self) -> Option<&PixelInspection> {
-        self.looking.inspection()
+        self.view.looking.inspection()
     }
 
     /// The inspected pixel of the scene camera's image.
     #[must_use]
     pub fn inspected_pixel(&self) -> Option<(u32, u32)> {
-        self.looking.inspected
+        self.view.looking.inspected
     }
 
     /// The newest inspections of the inspected pixel, its row or column, and the pins.
     #[must_use]
     pub fn inspections(&self) -> &[PixelInspection] {
-        self.looking.inspections()
+        self.view.looking.inspections()
     }
 
     /// What the ray-path overlay draws, and the pinned pixels.
     #[must_use]
     pub fn ray_paths(&self) -> &RayPathSettings {
-        &self.looking.ray_paths
+        &self.view.looking.ray_paths
     }
 
     /// The view camera (or camera view).
     #[must_use]
     pub fn view_camera(&self) -> &ViewCamera {
-        &self.looking.view
+        &self.view.looking.camera
     }
 
     /// The camera the viewport shows, with the size of the image it renders.
     #[must_use]
     pub fn shown_camera(&self) -> crate::scene::Camera {
-        self.looking
-            .view
-            .shown(&self.scene.camera, self.looking.free_size)
+        self.view
+            .looking
+            .camera
+            .shown(&self.document.scene.camera, self.view.looking.free_size)
     }
 
     /// Whether picks and inspections are still being traced.
     #[must_use]
     pub fn is_probing(&self) -> bool {
-        self.looking.is_busy()
+        self.view.looking.is_busy()
     }
 
     /// Sets the views remembered per file (from eframe's storage) and brings back the
     /// one of the open file.
     #[must_use]
     pub fn with_view_memory(mut self, memory: ViewMemory) -> Self {
-        self.looking.memory = memory;
+        self.view.looking.memory = memory;
         if let Some(view) = self
+            .document
             .path
             .as_deref()
-            .and_then(|p| self.looking.memory.get(p))
+            .and_then(|p| self.view.looking.memory.get(p))
         {
-            self.looking.view = view.clone();
+            self.view.looking.camera = view.clone();
         }
         self
     }
@@ -71,9 +73,9 @@ impl EditorApp {
     /// The views remembered per file, with the open file's current view.
     #[must_use]
     pub fn view_memory(&self) -> ViewMemory {
-        let mut memory = self.looking.memory.clone();
-        if let Some(path) = &self.path {
-            memory.remember(path, &self.looking.view);
+        let mut memory = self.view.looking.memory.clone();
+        if let Some(path) = &self.document.path {
+            memory.remember(path, &self.view.looking.camera);
         }
         memory
     }
