@@ -19,7 +19,7 @@ use raylab::ui::Selection;
 fn dragging_the_x_arrow_moves_the_object_by_the_world_offset_under_the_cursor() {
     let mut harness = harness();
     select(&mut harness, "red ball");
-    let before = harness.state().scene().clone();
+    let before = harness.state().document().scene.clone();
     let origin = trs(&before, 1).translate;
     let length = ARROW_POINTS * world_per_point(&harness, origin);
     // Grab the x arrow at 70% of its length, let go where the point 1.25 units further
@@ -29,14 +29,14 @@ fn dragging_the_x_arrow_moves_the_object_by_the_world_offset_under_the_cursor() 
     let to = screen(&harness, grab + DVec3::X * 1.25);
     drag(&mut harness, from, to, Modifiers::NONE);
 
-    let moved = trs(harness.state().scene(), 1).translate;
+    let moved = trs(&harness.state().document().scene, 1).translate;
     assert!((moved.x - (origin.x + 1.25)).abs() < 2e-3, "{moved}");
     assert_eq!((moved.y, moved.z), (origin.y, origin.z), "only x changes");
-    assert_eq!(harness.state().selection(), &Selection::Object(1));
+    assert_eq!(&harness.state().document().selection, &Selection::Object(1));
 
     undo(&mut harness);
     assert_eq!(
-        harness.state().scene(),
+        &harness.state().document().scene,
         &before,
         "one undo reverts the drag"
     );
@@ -46,14 +46,14 @@ fn dragging_the_x_arrow_moves_the_object_by_the_world_offset_under_the_cursor() 
 fn shift_snaps_a_plane_drag_to_whole_units() {
     let mut harness = harness();
     select(&mut harness, "blue box");
-    let origin = trs(harness.state().scene(), 3).translate;
+    let origin = trs(&harness.state().document().scene, 3).translate;
     let length = ARROW_POINTS * world_per_point(&harness, origin);
     // The ground-plane handle (normal y) sits at 0.39 of the arrow length along x and z.
     let grab = origin + DVec3::new(0.39, 0.0, 0.39) * length;
     let from = screen(&harness, grab);
     let to = screen(&harness, grab + DVec3::new(-1.3, 0.0, 0.8));
     drag(&mut harness, from, to, Modifiers::SHIFT);
-    let moved = trs(harness.state().scene(), 3).translate;
+    let moved = trs(&harness.state().document().scene, 3).translate;
     assert_eq!(moved.x, (origin.x - 1.3).round(), "{moved}");
     assert_eq!(moved.z, (origin.z + 0.8).round(), "{moved}");
     assert_eq!(moved.y, origin.y, "the plane handle keeps the height");
@@ -65,13 +65,13 @@ fn the_scale_mode_button_and_a_scale_handle_drag() {
     select(&mut harness, "mirror ball");
     harness.get_by_label("Scale").click();
     harness.run();
-    let before = trs(harness.state().scene(), 2);
+    let before = trs(&harness.state().document().scene, 2);
     let length = ARROW_POINTS * world_per_point(&harness, before.translate);
     // The x handle's square at the end of the arrow, dragged to 1.5 times as far out.
     let from = screen(&harness, before.translate + DVec3::X * length);
     let to = screen(&harness, before.translate + DVec3::X * length * 1.5);
     drag(&mut harness, from, to, Modifiers::NONE);
-    let after = trs(harness.state().scene(), 2);
+    let after = trs(&harness.state().document().scene, 2);
     assert!(
         (after.scale.x - before.scale.x * 1.5).abs() < 5e-3,
         "{}",
@@ -85,8 +85,8 @@ fn the_scale_mode_button_and_a_scale_handle_drag() {
 fn dragging_the_rim_handle_sets_the_spotlight_angle() {
     let mut harness = harness();
     select(&mut harness, "Spot light 4");
-    assert_eq!(harness.state().selection(), &Selection::Light(3));
-    let before = harness.state().scene().clone();
+    assert_eq!(&harness.state().document().selection, &Selection::Light(3));
+    let before = harness.state().document().scene.clone();
     let Light::Spot {
         position,
         direction,
@@ -113,21 +113,21 @@ fn dragging_the_rim_handle_sets_the_spotlight_angle() {
         position: p,
         direction: d,
         ..
-    } = harness.state().scene().lights[3]
+    } = harness.state().document().scene.lights[3]
     else {
         panic!("still a spotlight");
     };
     assert!((after - 35.0).abs() < 0.05, "{after}");
     assert_eq!((p, d), (position, direction), "only the angle changes");
     undo(&mut harness);
-    assert_eq!(harness.state().scene(), &before);
+    assert_eq!(&harness.state().document().scene, &before);
 }
 
 #[test]
 fn dragging_the_tip_handle_re_aims_the_spotlight() {
     let mut harness = harness();
     select(&mut harness, "Spot light 4");
-    let scene = harness.state().scene().clone();
+    let scene = harness.state().document().scene.clone();
     let Light::Spot {
         position,
         direction,
@@ -148,7 +148,7 @@ fn dragging_the_tip_handle_re_aims_the_spotlight() {
     let from = screen(&harness, start_tip);
     let to = screen(&harness, target);
     drag(&mut harness, from, to, Modifiers::NONE);
-    let Light::Spot { direction: now, .. } = harness.state().scene().lights[3] else {
+    let Light::Spot { direction: now, .. } = harness.state().document().scene.lights[3] else {
         panic!("still a spotlight");
     };
     assert!((now.normalize() - wanted).length() < 2e-3, "{now}");
@@ -166,13 +166,13 @@ fn clicking_a_light_marker_selects_the_light() {
     harness.key_press(Key::F);
     harness.run();
     select(&mut harness, "Camera");
-    assert_eq!(harness.state().selection(), &Selection::Camera);
-    let Light::Point { position, .. } = harness.state().scene().lights[1] else {
+    assert_eq!(&harness.state().document().selection, &Selection::Camera);
+    let Light::Point { position, .. } = harness.state().document().scene.lights[1] else {
         panic!("light 2 is a point light");
     };
     let pos = screen(&harness, position);
     click_at(&mut harness, pos);
-    assert_eq!(harness.state().selection(), &Selection::Light(1));
+    assert_eq!(&harness.state().document().selection, &Selection::Light(1));
 }
 
 #[test]
@@ -192,7 +192,7 @@ fn an_arrow_that_runs_past_the_pictures_top_edge_is_drawn_and_grabbed_in_the_mar
             .set_value_accesskit(value);
         harness.run();
     }
-    let origin = trs(harness.state().scene(), 1).translate;
+    let origin = trs(&harness.state().document().scene, 1).translate;
     let length = ARROW_POINTS * world_per_point(&harness, origin);
     let grab = screen(&harness, origin + DVec3::Y * length * 0.8);
     let top = picture(&harness).min.y;
@@ -206,7 +206,7 @@ fn an_arrow_that_runs_past_the_pictures_top_edge_is_drawn_and_grabbed_in_the_mar
         grab + egui::vec2(0.0, 30.0),
         Modifiers::NONE,
     );
-    let moved = trs(harness.state().scene(), 1).translate;
+    let moved = trs(&harness.state().document().scene, 1).translate;
     assert!(
         moved.y < origin.y - 1e-3,
         "dragged down from the margin: {moved} from {origin}"

@@ -14,13 +14,13 @@ use raylab::ui::{EditorApp, Selection};
 
 /// The view camera's pose, as a camera.
 fn view_pose(harness: &Harness<'_, EditorApp>) -> raylab::scene::Camera {
-    harness.state().view_camera().pose(1, 1)
+    harness.state().view().looking.camera.pose(1, 1)
 }
 
 #[test]
 fn orbiting_on_empty_space_moves_the_view_and_a_click_still_picks() {
     let mut harness = harness();
-    let before = harness.state().scene().clone();
+    let before = harness.state().document().scene.clone();
     let picture = picture(&harness);
     // Near the top of the picture: sky, no handle.
     let from = picture.center_top() + Vec2::new(-150.0, 30.0);
@@ -32,14 +32,18 @@ fn orbiting_on_empty_space_moves_the_view_and_a_click_still_picks() {
     );
     let orbited = view_pose(&harness);
     assert!(
-        !harness.state().view_camera().through_scene_camera,
+        !harness.state().view().looking.camera.through_scene_camera,
         "left camera view"
     );
     assert_ne!(orbited.position, before.camera.position, "the drag orbited");
     let distance = |c: &raylab::scene::Camera| (c.position - c.look_at).length();
     assert!((distance(&orbited) - distance(&before.camera)).abs() < 1e-9);
     assert_eq!(orbited.look_at, before.camera.look_at);
-    assert_eq!(harness.state().scene(), &before, "the scene camera stays");
+    assert_eq!(
+        &harness.state().document().scene,
+        &before,
+        "the scene camera stays"
+    );
     assert!(!harness.state().is_dirty());
     undo(&mut harness);
     assert_eq!(
@@ -51,14 +55,18 @@ fn orbiting_on_empty_space_moves_the_view_and_a_click_still_picks() {
     // A click without a drag still picks the object under the cursor, seen from the view.
     let pos = screen(&harness, trs(&before, 3).translate);
     editor_harness::click_at(&mut harness, pos);
-    assert_eq!(harness.state().selection(), &Selection::Object(3));
-    assert_eq!(harness.state().scene(), &before, "a click edits nothing");
+    assert_eq!(&harness.state().document().selection, &Selection::Object(3));
+    assert_eq!(
+        &harness.state().document().scene,
+        &before,
+        "a click edits nothing"
+    );
 }
 
 #[test]
 fn shift_drag_pans_and_the_wheel_zooms_the_view() {
     let mut harness = harness();
-    let before = harness.state().scene().clone();
+    let before = harness.state().document().scene.clone();
     let picture = picture(&harness);
     let from = picture.center_top() + Vec2::new(-150.0, 30.0);
     drag(
@@ -96,7 +104,11 @@ fn shift_drag_pans_and_the_wheel_zooms_the_view() {
         (distance(&zoomed) - expected).abs() < 1e-9,
         "three steps in"
     );
-    assert_eq!(harness.state().scene(), &before, "the scene camera stays");
+    assert_eq!(
+        &harness.state().document().scene,
+        &before,
+        "the scene camera stays"
+    );
     assert!(!harness.state().is_dirty());
 }
 
@@ -104,7 +116,7 @@ fn shift_drag_pans_and_the_wheel_zooms_the_view() {
 fn f_frames_the_selection() {
     let mut harness = harness();
     select(&mut harness, "blue box");
-    let before = harness.state().scene().clone();
+    let before = harness.state().document().scene.clone();
     harness.key_press(Key::F);
     harness.run();
     let camera = view_pose(&harness);
@@ -119,7 +131,7 @@ fn f_frames_the_selection() {
     assert!((direction(&camera) - direction(&before.camera)).length() < 1e-9);
     assert!((camera.position - camera.look_at).length() < radius * 5.0);
     assert_eq!(
-        harness.state().scene(),
+        &harness.state().document().scene,
         &before,
         "framing moves the view only"
     );
@@ -131,7 +143,7 @@ fn w_e_r_switch_the_gizmo_and_rings_rotate() {
     select(&mut harness, "mirror ball");
     harness.key_press(Key::E);
     harness.run();
-    let before = trs(harness.state().scene(), 2);
+    let before = trs(&harness.state().document().scene, 2);
     let radius = 72.0 * world_per_point(&harness, before.translate);
     // The y ring (about world y for zero angles), grabbed between +x and +z where no
     // other ring passes, turned a quarter towards -z.
@@ -140,7 +152,7 @@ fn w_e_r_switch_the_gizmo_and_rings_rotate() {
     let from = screen(&harness, c + DVec3::new(s, 0.0, s) * radius);
     let to = screen(&harness, c + DVec3::new(s, 0.0, -s) * radius);
     drag(&mut harness, from, to, Modifiers::NONE);
-    let after = trs(harness.state().scene(), 2);
+    let after = trs(&harness.state().document().scene, 2);
     assert!(
         (after.rotate_deg.y - 90.0).abs() < 0.1,
         "{}",
@@ -157,14 +169,14 @@ fn w_e_r_switch_the_gizmo_and_rings_rotate() {
         screen(&harness, grab + DVec3::X * 0.5),
     );
     drag(&mut harness, from, to, Modifiers::NONE);
-    assert!((trs(harness.state().scene(), 2).translate.x - (c.x + 0.5)).abs() < 2e-3);
+    assert!((trs(&harness.state().document().scene, 2).translate.x - (c.x + 0.5)).abs() < 2e-3);
 }
 
 #[test]
 fn a_middle_drag_pans_even_over_a_handle() {
     let mut harness = harness();
     select(&mut harness, "red ball");
-    let before = harness.state().scene().clone();
+    let before = harness.state().document().scene.clone();
     let origin = trs(&before, 1).translate;
     let length = ARROW_POINTS * world_per_point(&harness, origin);
     let from = screen(&harness, origin + DVec3::X * length * 0.7);
@@ -178,7 +190,7 @@ fn a_middle_drag_pans_even_over_a_handle() {
     );
     harness.run();
     assert_eq!(
-        harness.state().scene(),
+        &harness.state().document().scene,
         &before,
         "the object and the camera stay"
     );
@@ -192,7 +204,7 @@ fn a_middle_drag_pans_even_over_a_handle() {
 fn deleting_the_selection_mid_drag_ends_the_drag_without_editing_another_object() {
     let mut harness = harness();
     select(&mut harness, "red ball");
-    let before = harness.state().scene().clone();
+    let before = harness.state().document().scene.clone();
     let origin = trs(&before, 1).translate;
     let grab = origin + DVec3::X * ARROW_POINTS * world_per_point(&harness, origin) * 0.7;
     let (from, to) = (
@@ -222,7 +234,7 @@ fn deleting_the_selection_mid_drag_ends_the_drag_without_editing_another_object(
         modifiers: Modifiers::NONE,
     });
     harness.run();
-    let after = harness.state().scene();
+    let after = &harness.state().document().scene;
     assert_eq!(
         after.objects.len(),
         before.objects.len() - 1,

@@ -74,15 +74,19 @@ fn the_window_sits_beside_the_pixel_scrolls_from_its_title_and_opens_at_the_top(
     // A new pixel opens at the top, beside that pixel. It is an object's the window does
     // not cover (a click on the window would not reach the picture).
     let covered = window_rect(&harness).expand(4.0);
-    let other = (1..harness.state().scene().objects.len())
+    let other = (1..harness.state().document().scene.objects.len())
         .filter(|&i| i != 2)
         .map(|i| object_on_screen(&harness, i))
         .find(|p| picture(&harness).contains(*p) && !covered.contains(*p))
         .expect("an object beside the window");
-    let first = harness.state().inspected_pixel();
+    let first = harness.state().view().looking.inspected;
     click(&mut harness, other, Modifiers::ALT);
     harness.run_ok();
-    assert_ne!(harness.state().inspected_pixel(), first, "another pixel");
+    assert_ne!(
+        harness.state().view().looking.inspected,
+        first,
+        "another pixel"
+    );
     assert!(
         (final_colour_offset(&harness) - top).abs() < 1.0,
         "back at the top"
@@ -95,7 +99,7 @@ fn the_window_sits_beside_the_pixel_scrolls_from_its_title_and_opens_at_the_top(
 #[test]
 fn every_light_is_listed_with_why_it_adds_nothing() {
     let mut harness = harness("lights", false);
-    let scene = harness.state().scene().clone();
+    let scene = harness.state().document().scene.clone();
     let world = World::new(&scene).unwrap();
     // A pixel of the floor in the blue box's shadow, where the spotlight does not reach.
     let wanted = (0..scene.camera.height)
@@ -122,7 +126,7 @@ fn every_light_is_listed_with_why_it_adds_nothing() {
         );
     click(&mut harness, pos, Modifiers::ALT);
     wait_for_probes(&mut harness);
-    assert_eq!(harness.state().inspected_pixel(), Some(wanted));
+    assert_eq!(harness.state().view().looking.inspected, Some(wanted));
     // Each light is named in the window as well as in the outliner.
     for label in [
         "Ambient light 1",
@@ -154,15 +158,19 @@ fn a_window_the_user_moved_stays_put_and_fits_the_screen() {
         "{moved:?} runs off {screen:?}"
     );
     // Another pixel: the window stays where the user put it.
-    let other = (1..harness.state().scene().objects.len())
+    let other = (1..harness.state().document().scene.objects.len())
         .filter(|&i| i != 2)
         .map(|i| object_on_screen(&harness, i))
         .find(|p| picture(&harness).contains(*p) && !moved.expand(4.0).contains(*p))
         .expect("an object the window does not cover");
-    let first = harness.state().inspected_pixel();
+    let first = harness.state().view().looking.inspected;
     click(&mut harness, other, Modifiers::ALT);
     harness.run_ok();
-    assert_ne!(harness.state().inspected_pixel(), first, "another pixel");
+    assert_ne!(
+        harness.state().view().looking.inspected,
+        first,
+        "another pixel"
+    );
     let after = window_rect(&harness);
     assert!(
         (after.min - moved.min).length() < 1.0,

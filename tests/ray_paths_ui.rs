@@ -19,14 +19,14 @@ use view_harness::{
 
 /// Inspects the pixel over scene object `index` (in camera view); returns the pixel.
 fn inspect_object(harness: &mut Harness<'_, EditorApp>, index: usize) -> (u32, u32) {
-    let origin = harness.state().scene().objects[index]
+    let origin = harness.state().document().scene.objects[index]
         .transform
         .world_from_object()
         .translation;
     let pixel = scene_pixel(harness, origin);
     let pos = object_on_screen(harness, index);
     click(harness, pos, Modifiers::ALT);
-    assert_eq!(harness.state().inspected_pixel(), Some(pixel));
+    assert_eq!(harness.state().view().looking.inspected, Some(pixel));
     // As a person would: the inspector window out of the way of the picture.
     move_inspector_away(harness);
     pixel
@@ -44,7 +44,7 @@ fn a_pin_keeps_a_pixels_rays_and_row_mode_traces_the_row() {
     let ball = inspect_object(&mut harness, 1);
     assert_eq!(drawn_pixels(&segments(&harness)), vec![ball]);
     press(&mut harness, "Pin");
-    assert_eq!(harness.state().ray_paths().pinned, vec![ball]);
+    assert_eq!(harness.state().view().looking.ray_paths.pinned, vec![ball]);
     harness.get_by_label("Unpin");
 
     let boxed = inspect_object(&mut harness, 3);
@@ -58,7 +58,7 @@ fn a_pin_keeps_a_pixels_rays_and_row_mode_traces_the_row() {
     );
 
     press(&mut harness, "rays of the row");
-    assert_eq!(harness.state().ray_paths().span, RaySpan::Row);
+    assert_eq!(harness.state().view().looking.ray_paths.span, RaySpan::Row);
     let traced: Vec<(u32, u32)> = harness
         .state()
         .inspections()
@@ -73,8 +73,8 @@ fn a_pin_keeps_a_pixels_rays_and_row_mode_traces_the_row() {
     assert!(traced.contains(&ball), "pins stay");
 
     press(&mut harness, "Clear pins");
-    assert!(harness.state().ray_paths().pinned.is_empty());
-    assert!(!harness.state().scene().objects.is_empty() && !harness.state().is_dirty());
+    assert!(harness.state().view().looking.ray_paths.pinned.is_empty());
+    assert!(!harness.state().document().scene.objects.is_empty() && !harness.state().is_dirty());
 }
 
 /// Which end of a segment a point is measured from.
@@ -123,7 +123,7 @@ fn hovering_a_segment_shows_its_numbers_and_each_kind_can_be_hidden() {
     let ball = inspect_object(&mut harness, 1);
     // Look at the rays from the side: the camera ray is a line, not a point.
     orbit(&mut harness, Vec2::new(140.0, 30.0));
-    assert!(!harness.state().view_camera().through_scene_camera);
+    assert!(!harness.state().view().looking.camera.through_scene_camera);
 
     // Near its hit: the camera ray starts at the scene camera, maybe off the picture.
     let primary = point_on(
@@ -136,7 +136,7 @@ fn hovering_a_segment_shows_its_numbers_and_each_kind_can_be_hidden() {
     let (x, y) = ball;
     harness.get_by_label(&format!("primary ray · pixel ({x}, {y}) · depth 0"));
     harness.get_by_label_contains("hits red ball at t");
-    let camera = harness.state().scene().camera.position;
+    let camera = harness.state().document().scene.camera.position;
     let origin = format!("origin ({:.4}, {:.4}, {:.4})", camera.x, camera.y, camera.z);
     harness.get_by_label(&origin);
 
@@ -151,7 +151,7 @@ fn hovering_a_segment_shows_its_numbers_and_each_kind_can_be_hidden() {
     harness.get_by_label_contains("towards");
 
     toggle(&mut harness, "shadow rays");
-    assert!(!harness.state().ray_paths().shadow);
+    assert!(!harness.state().view().looking.ray_paths.shadow);
     assert!(
         segments(&harness).iter().all(|s| !matches!(
             s.segment.kind,
@@ -175,9 +175,9 @@ fn hovering_a_segment_shows_its_numbers_and_each_kind_can_be_hidden() {
         "only the mirror rays are left"
     );
     toggle(&mut harness, "shadow rays");
-    assert!(harness.state().ray_paths().shadow);
+    assert!(harness.state().view().looking.ray_paths.shadow);
     assert_eq!(
-        harness.state().scene().camera.position,
+        harness.state().document().scene.camera.position,
         camera,
         "looking is not editing"
     );

@@ -38,9 +38,9 @@ fn open_gallery(harness: &mut Harness<'_, EditorApp>) {
     // The spinner repaints while the gallery renders: step, not run.
     harness.step();
     step_until(harness, "the bug gallery", |app| {
-        !app.bug_gallery().is_running()
+        !app.tools().bug_gallery.is_running()
     });
-    assert_eq!(harness.state().bug_gallery().error(), None);
+    assert_eq!(harness.state().tools().bug_gallery.error(), None);
 }
 
 #[test]
@@ -49,7 +49,8 @@ fn clicking_a_gallery_picture_compares_the_scene_with_it_and_the_diff_names_its_
     open_gallery(&mut harness);
     let labels: Vec<String> = harness
         .state()
-        .bug_gallery()
+        .tools()
+        .bug_gallery
         .thumbnails()
         .iter()
         .map(|t| t.label.clone())
@@ -70,16 +71,20 @@ fn clicking_a_gallery_picture_compares_the_scene_with_it_and_the_diff_names_its_
     harness.get_by_label(&thumbnail_label("shadows=0")).click();
     harness.run();
     step_until(&mut harness, "the comparison", |app| {
-        !app.compare().is_running()
+        !app.tools().compare.is_running()
     });
     let app = harness.state();
-    assert_eq!(app.compare().error(), None);
-    let compared = app.compare().compared().expect("the comparison is shown");
+    assert_eq!(app.tools().compare.error(), None);
+    let compared = app
+        .tools()
+        .compare
+        .compared()
+        .expect("the comparison is shown");
     assert_eq!(
         compared.source,
         OtherSource::Planted("shadows=0".to_owned())
     );
-    let scaled = gallery_scene(app.scene().clone(), None);
+    let scaled = gallery_scene(app.document().scene.clone(), None);
     let planted = parse_bugs("shadows=0", &scaled).unwrap();
     let top = compared
         .comparison
@@ -92,7 +97,7 @@ fn clicking_a_gallery_picture_compares_the_scene_with_it_and_the_diff_names_its_
         "the top explanation does not name the planted bug: {top:?}"
     );
     // The explanation is in the view, where a student reads it.
-    let scene = app.scene().clone();
+    let scene = app.document().scene.clone();
     harness.get_by_label(&explanation_label(0, &top, &scene));
     harness.get_by_label_contains("bug gallery: shadows=0");
 }
@@ -101,7 +106,7 @@ fn clicking_a_gallery_picture_compares_the_scene_with_it_and_the_diff_names_its_
 fn an_edit_marks_the_gallery_stale_until_refresh_renders_it_again() {
     let mut harness = harness();
     open_gallery(&mut harness);
-    let before = harness.state().bug_gallery().thumbnails()[0]
+    let before = harness.state().tools().bug_gallery.thumbnails()[0]
         .picture
         .clone();
     assert!(
@@ -111,7 +116,7 @@ fn an_edit_marks_the_gallery_stale_until_refresh_renders_it_again() {
             .is_disabled()
     );
 
-    let mut camera = harness.state().scene().camera.clone();
+    let mut camera = harness.state().document().scene.camera.clone();
     camera.fov_deg += 10.0;
     harness
         .state_mut()
@@ -121,8 +126,9 @@ fn an_edit_marks_the_gallery_stale_until_refresh_renders_it_again() {
     assert!(
         harness
             .state()
-            .bug_gallery()
-            .is_stale(harness.state().scene())
+            .tools()
+            .bug_gallery
+            .is_stale(&harness.state().document().scene)
     );
     assert!(
         harness
@@ -135,11 +141,11 @@ fn an_edit_marks_the_gallery_stale_until_refresh_renders_it_again() {
     harness.get_by_label("Refresh").click();
     harness.step();
     step_until(&mut harness, "the refreshed gallery", |app| {
-        !app.bug_gallery().is_running()
+        !app.tools().bug_gallery.is_running()
     });
     let app = harness.state();
-    assert!(!app.bug_gallery().is_stale(app.scene()));
-    assert_ne!(app.bug_gallery().thumbnails()[0].picture, before);
+    assert!(!app.tools().bug_gallery.is_stale(&app.document().scene));
+    assert_ne!(app.tools().bug_gallery.thumbnails()[0].picture, before);
     assert!(
         !harness
             .get_by_label(OWN_PICTURE_LABEL)

@@ -78,7 +78,7 @@ fn compare_through_the_window(harness: &mut Harness<'_, EditorApp>, path: &Path)
 fn wait_for_comparison(harness: &mut Harness<'_, EditorApp>) {
     for _ in 0..3000 {
         harness.step();
-        if !harness.state().compare().is_running() {
+        if !harness.state().tools().compare.is_running() {
             harness.run();
             return;
         }
@@ -89,7 +89,7 @@ fn wait_for_comparison(harness: &mut Harness<'_, EditorApp>) {
 
 /// The screen point over the centre of image pixel `p` in the first frame.
 fn screen_of_pixel(harness: &Harness<'_, EditorApp>, mode: CompareMode, p: u32) -> Pos2 {
-    let c = harness.state().compare().comparison().unwrap();
+    let c = harness.state().tools().compare.comparison().unwrap();
     let (x, y) = (p % c.width, p / c.width);
     let label = format!("{COMPARE_PICTURE_LABEL}: {}", mode.label());
     let outer = harness.get_by_label(&label).rect();
@@ -113,17 +113,19 @@ fn a_comparison_from_a_path_shows_every_mode_and_its_explanations_select_and_hig
     compare_through_the_window(&mut harness, &theirs);
     let app = harness.state();
     assert!(
-        app.compare().error().is_none(),
+        app.tools().compare.error().is_none(),
         "{:?}",
-        app.compare().error()
+        app.tools().compare.error()
     );
     let c = app
-        .compare()
+        .tools()
+        .compare
         .comparison()
         .expect("the comparison is shown")
         .clone();
     let ball = app
-        .scene()
+        .document()
+        .scene
         .objects
         .iter()
         .position(|o| o.name == "red ball")
@@ -140,7 +142,7 @@ fn a_comparison_from_a_path_shows_every_mode_and_its_explanations_select_and_hig
     for mode in CompareMode::ALL {
         harness.get_by_label(mode.label()).click();
         harness.run();
-        assert_eq!(harness.state().compare().mode, mode);
+        assert_eq!(harness.state().tools().compare.mode, mode);
         harness.get_by_label(&format!("{COMPARE_PICTURE_LABEL}: {}", mode.label()));
         assert_eq!(
             harness.get_by_label("Close comparison").rect(),
@@ -160,22 +162,39 @@ fn a_comparison_from_a_path_shows_every_mode_and_its_explanations_select_and_hig
     harness.get_by_label_contains(&detail);
     assert!(harness.query_by_label_contains("sure:").is_none());
     // Clicking the top explanation selects the ball and highlights its pixels.
-    assert!(harness.state().compare().highlighted_pixels().is_empty());
-    let scene = harness.state().scene().clone();
+    assert!(
+        harness
+            .state()
+            .tools()
+            .compare
+            .highlighted_pixels()
+            .is_empty()
+    );
+    let scene = harness.state().document().scene.clone();
     harness
         .get_by_label(&explanation_label(0, top, &scene))
         .click();
     harness.run();
     let app = harness.state();
-    assert_eq!(app.selection(), &Selection::Object(ball));
-    assert_eq!(app.compare().highlighted(), Some(0));
-    assert_eq!(app.compare().highlighted_pixels(), top.pixels.as_slice());
+    assert_eq!(&app.document().selection, &Selection::Object(ball));
+    assert_eq!(app.tools().compare.highlighted(), Some(0));
+    assert_eq!(
+        app.tools().compare.highlighted_pixels(),
+        top.pixels.as_slice()
+    );
     // Clicking it again clears the highlight.
     harness
         .get_by_label(&explanation_label(0, top, &scene))
         .click();
     harness.run();
-    assert!(harness.state().compare().highlighted_pixels().is_empty());
+    assert!(
+        harness
+            .state()
+            .tools()
+            .compare
+            .highlighted_pixels()
+            .is_empty()
+    );
 
     // Scrolling over the picture zooms about the pointer.
     let pos = screen_of_pixel(&harness, CompareMode::Flip, top.pixels[0]);
@@ -191,15 +210,15 @@ fn a_comparison_from_a_path_shows_every_mode_and_its_explanations_select_and_hig
         harness.step();
     }
     assert!(
-        harness.state().compare().view.zoom > 2.0,
+        harness.state().tools().compare.view.zoom > 2.0,
         "{:?}",
-        harness.state().compare().view
+        harness.state().tools().compare.view
     );
 
     // Close comparison: the live viewport is back.
     harness.get_by_label("Close comparison").click();
     harness.run();
-    assert!(!harness.state().compare().is_showing());
+    assert!(!harness.state().tools().compare.is_showing());
     harness.get_by_label(raylab::ui::VIEWPORT_LABEL);
 }
 
@@ -209,7 +228,13 @@ fn clicking_a_compared_pixel_shows_both_pictures_values_in_the_inspector() {
     let theirs = halved_ball_png(&dir);
     let mut harness = harness();
     compare_through_the_window(&mut harness, &theirs);
-    let c = harness.state().compare().comparison().unwrap().clone();
+    let c = harness
+        .state()
+        .tools()
+        .compare
+        .comparison()
+        .unwrap()
+        .clone();
     let p = c.explanations[0].pixels[c.explanations[0].pixels.len() / 2];
     let pos = screen_of_pixel(&harness, CompareMode::Swipe, p);
     click_at(&mut harness, pos);
@@ -251,7 +276,8 @@ fn a_wrong_size_picture_is_a_clear_error_and_a_dropped_png_compares() {
     compare_through_the_window(&mut harness, &small);
     let error = harness
         .state()
-        .compare()
+        .tools()
+        .compare
         .error()
         .expect("an error")
         .to_owned();
@@ -260,14 +286,14 @@ fn a_wrong_size_picture_is_a_clear_error_and_a_dropped_png_compares() {
         "{error}"
     );
     harness.get_by_label_contains("10x7");
-    assert!(!harness.state().compare().is_showing());
+    assert!(!harness.state().tools().compare.is_showing());
 
     // Dropping a PNG on the window compares with it.
     let theirs = halved_ball_png(&dir);
     drop_file(&mut harness, &theirs);
     wait_for_comparison(&mut harness);
-    assert!(harness.state().compare().error().is_none());
-    let compared = harness.state().compare().compared().expect("shown");
+    assert!(harness.state().tools().compare.error().is_none());
+    let compared = harness.state().tools().compare.compared().expect("shown");
     assert_eq!(compared.source, OtherSource::File(theirs));
 }
 
@@ -300,14 +326,20 @@ fn every_explanation_reads_without_scrolling_the_list() {
 
     let mut harness = harness();
     compare_through_the_window(&mut harness, &theirs);
-    let c = harness.state().compare().comparison().unwrap().clone();
+    let c = harness
+        .state()
+        .tools()
+        .compare
+        .comparison()
+        .unwrap()
+        .clone();
     assert!(
         c.explanations.len() >= 5,
         "{} explanations",
         c.explanations.len()
     );
     let window = harness.ctx.content_rect();
-    let scene = harness.state().scene().clone();
+    let scene = harness.state().document().scene.clone();
     let row_of = |i: usize| {
         harness
             .get_by_label(&explanation_label(i, &c.explanations[i], &scene))
@@ -335,9 +367,9 @@ fn a_scene_with_meshes_compares_with_the_meshes_read_beside_it() {
     use raylab::ui::{Command, SceneEdit};
 
     let mut harness = editor_harness::harness_on_example("mesh.ron");
-    assert_eq!(harness.state().scene().objects[1].name, "knot");
+    assert_eq!(harness.state().document().scene.objects[1].name, "knot");
     // A small picture keeps the test quick; the size is the scene's, as a user sets it.
-    let mut camera = harness.state().scene().camera.clone();
+    let mut camera = harness.state().document().scene.camera.clone();
     (camera.width, camera.height) = (64, 48);
     harness
         .state_mut()
@@ -345,7 +377,7 @@ fn a_scene_with_meshes_compares_with_the_meshes_read_beside_it() {
     harness.run();
 
     // Their picture: what `raylab render` gives, the meshes read from the scene's folder.
-    let scene = harness.state().scene().clone();
+    let scene = harness.state().document().scene.clone();
     let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
     let meshes = MeshStore::build(&read_scene_meshes(&scene, &folder).unwrap());
     let world = World::with_meshes(&scene, &meshes).unwrap();
@@ -362,11 +394,15 @@ fn a_scene_with_meshes_compares_with_the_meshes_read_beside_it() {
     compare_through_the_window(&mut harness, &theirs);
     let app = harness.state();
     assert_eq!(
-        app.compare().error(),
+        app.tools().compare.error(),
         None,
         "the comparison of a mesh scene runs"
     );
-    let c = app.compare().comparison().expect("the comparison is shown");
+    let c = app
+        .tools()
+        .compare
+        .comparison()
+        .expect("the comparison is shown");
     for mesh in ["knot", "pyramid"] {
         let index = scene.objects.iter().position(|o| o.name == mesh).unwrap();
         assert!(

@@ -50,7 +50,7 @@ fn export_course_scene_writes_the_course_format_and_shows_what_is_lost() {
     // The 2016 framework has point lights only: refused by name, nothing written.
     menu(&mut harness, "Export Course Scene (2016)…");
     assert_eq!(
-        harness.state().file_dialogs().open_purpose(),
+        harness.state().tools().file_dialogs.open_purpose(),
         Some(DialogPurpose::ExportCourse(Dialect::Framework2016))
     );
     harness.get_by_label("Save").click();
@@ -63,7 +63,7 @@ fn export_course_scene_writes_the_course_format_and_shows_what_is_lost() {
     // The 2020 dialect says it all, but not the render conventions: a warning says so.
     menu(&mut harness, "Export Course Scene…");
     assert_eq!(
-        harness.state().file_dialogs().open_purpose(),
+        harness.state().tools().file_dialogs.open_purpose(),
         Some(DialogPurpose::ExportCourse(Dialect::Framework2020))
     );
     harness.get_by_label("Save").click();
@@ -71,7 +71,7 @@ fn export_course_scene_writes_the_course_format_and_shows_what_is_lost() {
     harness
         .get_by_label_contains("Exported with warnings: render settings: the render conventions");
     let back = import_legacy_file(&path).expect("the export imports").scene;
-    let scene = harness.state().scene();
+    let scene = &harness.state().document().scene;
     assert_eq!(back.objects, scene.objects);
     assert_eq!(back.materials, scene.materials);
     assert_eq!(back.lights.len(), scene.lights.len());

@@ -55,11 +55,11 @@ fn menu(harness: &mut Harness<'_, EditorApp>, entry: &str) {
 fn save_as_of_an_untitled_scene_without_native_dialogs_writes_the_file() {
     let dir = temp_dir("dialog-save-as");
     let mut harness = harness_in(&dir);
-    assert!(harness.state().file_dialogs().uses_in_app());
+    assert!(harness.state().tools().file_dialogs.uses_in_app());
     untitled_and_edited(&mut harness);
     menu(&mut harness, "Save As…");
     assert_eq!(
-        harness.state().file_dialogs().open_purpose(),
+        harness.state().tools().file_dialogs.open_purpose(),
         Some(DialogPurpose::SaveSceneAs)
     );
     // The name is suggested; the user types another one, without the extension.
@@ -72,11 +72,14 @@ fn save_as_of_an_untitled_scene_without_native_dialogs_writes_the_file() {
     harness.run();
 
     let path = dir.join("my scene.ron");
-    assert_eq!(&load_scene(&path).unwrap(), harness.state().scene());
+    assert_eq!(
+        &load_scene(&path).unwrap(),
+        &harness.state().document().scene
+    );
     assert_eq!(harness.state().path(), Some(path.as_path()));
     assert!(!harness.state().is_dirty());
     assert_eq!(harness.state().title(), "my scene.ron — raylab");
-    assert_eq!(harness.state().file_dialogs().open_purpose(), None);
+    assert_eq!(harness.state().tools().file_dialogs.open_purpose(), None);
 }
 
 #[test]
@@ -92,7 +95,10 @@ fn save_in_the_quit_question_saves_an_untitled_scene_then_quits() {
     harness.get_by_label("Save").click();
     harness.run();
     let path = dir.join("untitled.ron");
-    assert_eq!(&load_scene(&path).unwrap(), harness.state().scene());
+    assert_eq!(
+        &load_scene(&path).unwrap(),
+        &harness.state().document().scene
+    );
     assert!(harness.state().is_closing());
 }
 
@@ -128,7 +134,7 @@ fn discard_in_the_new_question_drops_the_changes() {
     harness.get_by_label("Save");
     harness.get_by_label("Discard").click();
     harness.run();
-    assert_eq!(harness.state().scene(), &new_scene());
+    assert_eq!(&harness.state().document().scene, &new_scene());
 }
 
 #[test]
@@ -143,7 +149,7 @@ fn open_and_export_browse_use_the_in_app_dialog() {
     harness.run();
     harness.get_by_label("Open").click();
     harness.run();
-    assert_eq!(harness.state().scene(), &scene);
+    assert_eq!(&harness.state().document().scene, &scene);
     assert_eq!(
         harness.state().path(),
         Some(dir.join("other.ron").as_path())
@@ -154,14 +160,14 @@ fn open_and_export_browse_use_the_in_app_dialog() {
     harness.get_by_label("Browse…").click();
     harness.run();
     assert_eq!(
-        harness.state().file_dialogs().open_purpose(),
+        harness.state().tools().file_dialogs.open_purpose(),
         Some(DialogPurpose::ExportPng)
     );
     harness.get_by_label("Save").click();
     harness.run();
     // The export proposes the scene's name in the last export folder, else the user's
     // pictures or home folder: never beside the scene (issue 51, point 5).
-    let proposed = std::path::PathBuf::from(&harness.state().export().path);
+    let proposed = std::path::PathBuf::from(&harness.state().tools().export.path);
     assert_eq!(
         proposed.file_name(),
         Some(std::ffi::OsStr::new("other.png"))
@@ -186,7 +192,7 @@ fn compare_with_images_browse_uses_the_in_app_dialog_and_fills_the_path() {
     harness.get_by_label("Browse…").click();
     harness.run();
     assert_eq!(
-        harness.state().file_dialogs().open_purpose(),
+        harness.state().tools().file_dialogs.open_purpose(),
         Some(DialogPurpose::CompareImage),
         "never a blocking native call that may show nothing"
     );
@@ -195,7 +201,7 @@ fn compare_with_images_browse_uses_the_in_app_dialog_and_fills_the_path() {
     harness.get_by_label("Open").click();
     harness.run();
     assert_eq!(
-        harness.state().compare().path_text,
+        harness.state().tools().compare.path_text,
         dir.join("theirs.png").display().to_string()
     );
 }
@@ -238,7 +244,7 @@ fn a_file_name_typed_into_the_open_dialog_is_the_file_opened() {
         harness.state().path(),
         Some(dir.join("typed.ron").as_path())
     );
-    assert_eq!(harness.state().scene(), &scene);
+    assert_eq!(&harness.state().document().scene, &scene);
     // A typed name that is not there: a message, and the open scene stays.
     menu(&mut harness, "Open…");
     type_name(&mut harness, "nothing.ron");

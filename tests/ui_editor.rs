@@ -15,7 +15,7 @@ use raylab::ui::files::{default_scene, new_scene, save_scene_to};
 use raylab::ui::{Command, EditorApp, EditorOptions, Selection, VIEWPORT_LABEL};
 
 fn translate(app: &EditorApp, index: usize) -> DVec3 {
-    match app.scene().objects[index].transform {
+    match app.document().scene.objects[index].transform {
         Transform::Trs(trs) => trs.translate,
         Transform::Matrix(_) => panic!("expected translate/rotate/scale"),
     }
@@ -24,7 +24,7 @@ fn translate(app: &EditorApp, index: usize) -> DVec3 {
 #[test]
 fn opens_the_default_scene_with_a_clean_title() {
     let harness = harness();
-    assert_eq!(harness.state().scene(), &default_scene());
+    assert_eq!(&harness.state().document().scene, &default_scene());
     assert!(!harness.state().is_dirty());
     assert_eq!(harness.state().title(), "default scene — raylab");
     harness.get_by_label("gold cone");
@@ -38,11 +38,11 @@ fn clicking_an_outliner_row_selects_it_and_the_inspector_follows() {
     harness.get_by_label("translate x");
     harness.get_by_label("Camera").click();
     harness.run();
-    assert_eq!(harness.state().selection(), &Selection::Camera);
+    assert_eq!(&harness.state().document().selection, &Selection::Camera);
     harness.get_by_label("fov");
     harness.get_by_label("Point light 2").click();
     harness.run();
-    assert_eq!(harness.state().selection(), &Selection::Light(1));
+    assert_eq!(&harness.state().document().selection, &Selection::Light(1));
     harness.get_by_label("intensity");
 }
 
@@ -80,7 +80,7 @@ fn an_inspector_edit_is_undone_and_redone_with_the_shortcuts() {
 fn a_whole_drag_is_one_undo_step() {
     let mut harness = harness();
     select_red_ball(&mut harness);
-    let before = harness.state().scene().clone();
+    let before = harness.state().document().scene.clone();
     let start = harness.get_by_label("scale y").rect().center();
     harness.event(Event::PointerMoved(start));
     harness.event(Event::PointerButton {
@@ -102,19 +102,19 @@ fn a_whole_drag_is_one_undo_step() {
         modifiers: Modifiers::NONE,
     });
     harness.run();
-    let dragged = harness.state().scene().clone();
+    let dragged = harness.state().document().scene.clone();
     assert_ne!(dragged, before, "the drag changed the scale");
 
     harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     harness.run();
     assert_eq!(
-        harness.state().scene(),
+        &harness.state().document().scene,
         &before,
         "one undo reverts the whole drag"
     );
     harness.key_press_modifiers(Modifiers::COMMAND, Key::Y);
     harness.run();
-    assert_eq!(harness.state().scene(), &dragged);
+    assert_eq!(&harness.state().document().scene, &dragged);
 }
 
 #[test]
@@ -124,27 +124,27 @@ fn objects_and_lights_are_added_duplicated_and_deleted() {
     harness.run();
     harness.get_by_label("Cone").click();
     harness.run();
-    let objects = harness.state().scene().objects.len();
+    let objects = harness.state().document().scene.objects.len();
     assert_eq!(objects, 7);
-    assert_eq!(harness.state().selection(), &Selection::Object(6));
-    assert_eq!(harness.state().scene().objects[6].name, "Cone");
+    assert_eq!(&harness.state().document().selection, &Selection::Object(6));
+    assert_eq!(harness.state().document().scene.objects[6].name, "Cone");
 
     harness.key_press_modifiers(Modifiers::COMMAND, Key::D);
     harness.run();
-    assert_eq!(harness.state().scene().objects.len(), 8);
+    assert_eq!(harness.state().document().scene.objects.len(), 8);
     harness.get_by_role_and_label(egui::Role::Button, "Cone 2");
 
     harness.key_press(Key::Delete);
     harness.run();
     harness.key_press(Key::Delete);
     harness.run();
-    assert_eq!(harness.state().scene().objects.len(), 6);
+    assert_eq!(harness.state().document().scene.objects.len(), 6);
 
     harness.get_by_label("+ Add light").click();
     harness.run();
     harness.get_by_label("Spot light").click();
     harness.run();
-    assert_eq!(harness.state().scene().lights.len(), 5);
+    assert_eq!(harness.state().document().scene.lights.len(), 5);
     harness.get_by_label("Spot light 5");
     harness.get_by_label("angle");
 
@@ -152,14 +152,14 @@ fn objects_and_lights_are_added_duplicated_and_deleted() {
     harness.run();
     harness.get_by_label("Delete").click();
     harness.run();
-    assert_eq!(harness.state().scene().lights.len(), 4);
+    assert_eq!(harness.state().document().scene.lights.len(), 4);
 
     // Every edit can be undone, back to the file as loaded.
     for _ in 0..8 {
         harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
         harness.run();
     }
-    assert_eq!(harness.state().scene(), &default_scene());
+    assert_eq!(&harness.state().document().scene, &default_scene());
 }
 
 #[test]
@@ -173,15 +173,18 @@ fn renaming_an_object_in_the_inspector() {
     // While typing, Delete belongs to the text field, not to the selection.
     harness.key_press(Key::Delete);
     harness.run();
-    assert_eq!(harness.state().scene().objects.len(), 6);
+    assert_eq!(harness.state().document().scene.objects.len(), 6);
     // Click elsewhere to leave the field; the rename is one undo step.
     harness.get_by_label("Camera").click();
     harness.run();
-    assert_eq!(harness.state().scene().objects[1].name, "red ball!");
+    assert_eq!(
+        harness.state().document().scene.objects[1].name,
+        "red ball!"
+    );
     harness.get_by_label("red ball!");
     harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     harness.run();
-    assert_eq!(harness.state().scene().objects[1].name, "red ball");
+    assert_eq!(harness.state().document().scene.objects[1].name, "red ball");
 }
 
 #[test]
@@ -195,10 +198,13 @@ fn an_object_cannot_be_renamed_to_nothing_and_says_so() {
     harness.key_press(Key::Backspace);
     harness.run();
     // While typing, the field may be empty; the object keeps its name.
-    assert_eq!(harness.state().scene().objects[1].name, "red ball");
+    assert_eq!(harness.state().document().scene.objects[1].name, "red ball");
     harness.get_by_label("object name").type_text("blue ball");
     harness.run();
-    assert_eq!(harness.state().scene().objects[1].name, "blue ball");
+    assert_eq!(
+        harness.state().document().scene.objects[1].name,
+        "blue ball"
+    );
     // Emptied and left: the name stays, and the status line says why.
     harness.get_by_label("object name").focus();
     harness.run();
@@ -207,7 +213,10 @@ fn an_object_cannot_be_renamed_to_nothing_and_says_so() {
     harness.run();
     harness.get_by_label("Camera").click();
     harness.run();
-    assert_eq!(harness.state().scene().objects[1].name, "blue ball");
+    assert_eq!(
+        harness.state().document().scene.objects[1].name,
+        "blue ball"
+    );
     harness.get_by_label_contains("An object needs a name");
 }
 
@@ -232,7 +241,7 @@ fn a_material_rename_follows_its_objects() {
     harness.run();
     harness.get_by_label("Camera").click();
     harness.run();
-    let scene = harness.state().scene();
+    let scene = &harness.state().document().scene;
     assert!(scene.materials.contains_key("gold leaf"));
     assert_eq!(scene.objects[5].material, "gold leaf");
 }
@@ -262,14 +271,14 @@ fn a_matrix_transform_is_read_only_until_reset_to_translate_rotate_scale() {
         harness.query_by_label("translate x").is_none(),
         "no editable fields"
     );
-    let before = harness.state().scene().objects[0]
+    let before = harness.state().document().scene.objects[0]
         .transform
         .world_from_object();
     harness
         .get_by_label("Reset to translate/rotate/scale")
         .click();
     harness.run();
-    let transform = harness.state().scene().objects[0].transform;
+    let transform = harness.state().document().scene.objects[0].transform;
     assert!(matches!(transform, Transform::Trs(_)));
     assert!(transform.world_from_object().abs_diff_eq(before, 1e-12));
     harness.get_by_label("translate x");
@@ -286,7 +295,7 @@ fn clicking_the_viewport_picks_the_object_under_the_cursor() {
         app.preview().is_some_and(|p| p.shows_full_resolution())
     });
     let picture = harness.get_by_label(VIEWPORT_LABEL).rect();
-    let scene = harness.state().scene().clone();
+    let scene = harness.state().document().scene.clone();
     let camera =
         raylab::trace::PinholeCamera::new(&scene.camera, scene.camera.width, scene.camera.height);
     let centre = scene.objects[3].transform.world_from_object().translation;
@@ -297,7 +306,7 @@ fn clicking_the_viewport_picks_the_object_under_the_cursor() {
     );
     click_at(&mut harness, pos);
     assert_eq!(
-        harness.state().selection(),
+        &harness.state().document().selection,
         &Selection::Object(3),
         "the blue box"
     );
@@ -305,5 +314,9 @@ fn clicking_the_viewport_picks_the_object_under_the_cursor() {
         &mut harness,
         picture.min + Vec2::new(picture.width() * 0.5, 4.0),
     );
-    assert_eq!(harness.state().selection(), &Selection::None, "the sky");
+    assert_eq!(
+        &harness.state().document().selection,
+        &Selection::None,
+        "the sky"
+    );
 }

@@ -32,15 +32,18 @@ fn export_writes_a_png_and_keeps_the_render_when_the_file_cannot_be_written() {
     set_export_path(&mut harness, &bad);
     harness.get_by_label("Render and save").click();
     harness.run_ok();
-    step_until(&mut harness, "the export", |app| !app.export().is_running());
-    let status = harness.state().export().status.clone().unwrap();
+    step_until(&mut harness, "the export", |app| {
+        !app.tools().export.is_running()
+    });
+    let status = harness.state().tools().export.status.clone().unwrap();
     assert!(
         status.as_ref().is_err_and(|e| e.contains("cannot write")),
         "{status:?}"
     );
     let kept = harness
         .state()
-        .export()
+        .tools()
+        .export
         .kept_image()
         .expect("the render is kept");
     assert_eq!((kept.width, kept.height), (64, 48));
@@ -49,10 +52,12 @@ fn export_writes_a_png_and_keeps_the_render_when_the_file_cannot_be_written() {
     set_export_path(&mut harness, &good);
     harness.get_by_label("Save kept render").click();
     harness.run_ok();
-    step_until(&mut harness, "the write", |app| !app.export().is_running());
+    step_until(&mut harness, "the write", |app| {
+        !app.tools().export.is_running()
+    });
     let png = image::open(&good).expect("a PNG was written");
     assert_eq!((png.width(), png.height()), (64, 48));
-    assert!(harness.state().export().kept_image().is_none());
+    assert!(harness.state().tools().export.kept_image().is_none());
 }
 
 fn set_export_path(harness: &mut Harness<'_, EditorApp>, path: &Path) {
@@ -86,11 +91,13 @@ fn a_running_export_can_be_cancelled_and_writes_nothing() {
     set_export_path(&mut harness, &path);
     harness.get_by_label("Render and save").click();
     harness.run_ok();
-    assert!(harness.state().export().is_running());
+    assert!(harness.state().tools().export.is_running());
     harness.get_by_label("Cancel").click();
     harness.run_ok();
-    step_until(&mut harness, "the cancel", |app| !app.export().is_running());
-    let status = harness.state().export().status.clone();
+    step_until(&mut harness, "the cancel", |app| {
+        !app.tools().export.is_running()
+    });
+    let status = harness.state().tools().export.status.clone();
     assert_eq!(status, Some(Err("export cancelled".to_owned())));
     assert!(!path.exists());
 }
@@ -124,11 +131,14 @@ fn the_window_stays_put_when_its_status_line_appears() {
     let field = harness.get_by_label("export path").rect();
     harness.get_by_label("Render and save").click();
     harness.run_ok();
-    step_until(&mut harness, "the export", |app| !app.export().is_running());
+    step_until(&mut harness, "the export", |app| {
+        !app.tools().export.is_running()
+    });
     assert!(
         harness
             .state()
-            .export()
+            .tools()
+            .export
             .status
             .as_ref()
             .is_some_and(Result::is_err)
@@ -147,7 +157,7 @@ fn width_and_height_keep_the_aspect_ratio_until_unlinked() {
         .set_value_accesskit(200.0);
     harness.run();
     let size = |h: &Harness<'_, EditorApp>| {
-        let o = h.state().export().settings.clone().unwrap();
+        let o = h.state().tools().export.settings.clone().unwrap();
         (o.width, o.height)
     };
     assert_eq!(size(&harness), (200, 150), "the default scene is 4:3");
@@ -166,7 +176,7 @@ fn as_the_viewport_shows_it_exports_the_switches_view_and_hidden_objects_on_scre
     let dir = temp_dir("export-shown");
     let path = dir.join("shown.png");
     let mut harness = harness();
-    let mut shown = *harness.state().preview_settings();
+    let mut shown = harness.state().view().preview_settings;
     shown.switches.set(Term::Diffuse, false);
     shown.view = View::Depth;
     harness.state_mut().push(Command::SetPreviewSettings(shown));
@@ -178,9 +188,11 @@ fn as_the_viewport_shows_it_exports_the_switches_view_and_hidden_objects_on_scre
     harness.run();
     harness.get_by_label("Render and save").click();
     harness.run_ok();
-    step_until(&mut harness, "the export", |app| !app.export().is_running());
+    step_until(&mut harness, "the export", |app| {
+        !app.tools().export.is_running()
+    });
 
-    let scene = harness.state().scene().clone();
+    let scene = harness.state().document().scene.clone();
     let options = RenderOptions {
         width: 40,
         height: 30,
@@ -225,15 +237,17 @@ fn a_scene_with_meshes_exports_with_the_meshes_the_preview_reads() {
     export_window_at(&mut harness, 48, 36, &path);
     harness.get_by_label("Render and save").click();
     harness.run_ok();
-    step_until(&mut harness, "the export", |app| !app.export().is_running());
-    let status = harness.state().export().status.clone();
+    step_until(&mut harness, "the export", |app| {
+        !app.tools().export.is_running()
+    });
+    let status = harness.state().tools().export.status.clone();
     assert!(
         status.as_ref().is_some_and(Result::is_ok),
         "the export of a mesh scene succeeds: {status:?}"
     );
 
     // What `raylab render` gives: the meshes read from the scene's folder.
-    let scene = harness.state().scene().clone();
+    let scene = harness.state().document().scene.clone();
     let folder = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
     let meshes = MeshStore::build(&raylab::scene::read_scene_meshes(&scene, &folder).unwrap());
     let world = World::with_meshes(&scene, &meshes).unwrap();
@@ -260,7 +274,7 @@ fn the_export_proposes_the_last_export_folder_else_pictures_or_home_never_the_sc
     let mut harness = editor_harness::harness_on_example("glass.ron");
     harness.state_mut().push(Command::ShowExport);
     harness.run();
-    let proposed = std::path::PathBuf::from(&harness.state().export().path);
+    let proposed = std::path::PathBuf::from(&harness.state().tools().export.path);
     assert_eq!(proposed.file_name().unwrap(), "glass.png");
     assert_eq!(proposed.parent(), pictures_or_home().as_deref());
     assert_ne!(
@@ -274,12 +288,14 @@ fn the_export_proposes_the_last_export_folder_else_pictures_or_home_never_the_sc
     export_window_at(&mut harness, 16, 12, &dir.join("first.png"));
     harness.get_by_label("Render and save").click();
     harness.run_ok();
-    step_until(&mut harness, "the export", |app| !app.export().is_running());
+    step_until(&mut harness, "the export", |app| {
+        !app.tools().export.is_running()
+    });
     editor_harness::open_example(&mut harness, "csg.ron");
     harness.state_mut().push(Command::ShowExport);
     harness.run();
     assert_eq!(
-        std::path::PathBuf::from(&harness.state().export().path),
+        std::path::PathBuf::from(&harness.state().tools().export.path),
         dir.join("csg.png")
     );
 }
@@ -330,7 +346,7 @@ fn a_path_too_long_for_its_field_shows_its_end_until_it_is_edited() {
         "{shown:?} is the end of {path:?}"
     );
     assert_eq!(
-        harness.state().export().path,
+        harness.state().tools().export.path,
         path,
         "the path itself is whole"
     );

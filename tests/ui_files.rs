@@ -26,7 +26,7 @@ fn a_file_that_fails_to_load_shows_its_line_and_keeps_the_scene() {
         .get_by_label("translate x")
         .set_value_accesskit(1.25);
     harness.run();
-    let edited = harness.state().scene().clone();
+    let edited = harness.state().document().scene.clone();
 
     harness.state_mut().push(Command::Open(path.clone()));
     harness.run();
@@ -35,7 +35,7 @@ fn a_file_that_fails_to_load_shows_its_line_and_keeps_the_scene() {
     harness.run();
 
     assert_eq!(
-        harness.state().scene(),
+        &harness.state().document().scene,
         &edited,
         "the open scene is untouched"
     );
@@ -68,21 +68,24 @@ fn save_then_open_round_trips_and_clears_the_unsaved_marker() {
     assert!(!harness.state().is_dirty());
     assert_eq!(harness.state().path(), Some(path.as_path()));
     assert_eq!(harness.state().title(), "edited.ron — raylab");
-    assert_eq!(&load_scene(&path).unwrap(), harness.state().scene());
+    assert_eq!(
+        &load_scene(&path).unwrap(),
+        &harness.state().document().scene
+    );
     let Ok(raylab::ui::files::Opened::Scene(opened)) = open_scene(&path) else {
         panic!("a saved scene opens as a scene");
     };
-    assert_eq!(opened.as_ref(), harness.state().scene());
+    assert_eq!(opened.as_ref(), &harness.state().document().scene);
     assert_eq!(
         harness.state().recent().paths()[0],
         std::fs::canonicalize(&path).unwrap()
     );
 
-    let saved = harness.state().scene().clone();
+    let saved = harness.state().document().scene.clone();
     let mut other = self::harness();
     other.state_mut().push(Command::Open(path.clone()));
     other.run();
-    assert_eq!(other.state().scene(), &saved);
+    assert_eq!(&other.state().document().scene, &saved);
     assert_eq!(other.state().title(), "edited.ron — raylab");
 }
 
@@ -106,7 +109,7 @@ fn saving_into_a_missing_folder_shows_the_error_and_stays_unsaved() {
     harness.get_by_label_contains("cannot write");
     assert!(harness.state().is_dirty());
     assert_eq!(harness.state().path(), None);
-    assert!(save_scene_to(harness.state().scene(), &path).is_err());
+    assert!(save_scene_to(&harness.state().document().scene, &path).is_err());
     assert!(!path.exists());
 }
 
@@ -116,13 +119,13 @@ fn new_asks_before_dropping_changes() {
     select_red_ball(&mut harness);
     harness.get_by_label("translate y").set_value_accesskit(3.0);
     harness.run();
-    let edited = harness.state().scene().clone();
+    let edited = harness.state().document().scene.clone();
 
     harness.key_press_modifiers(Modifiers::COMMAND, Key::N);
     harness.run();
     harness.get_by_label("Cancel").click();
     harness.run();
-    assert_eq!(harness.state().scene(), &edited);
+    assert_eq!(&harness.state().document().scene, &edited);
 
     harness.get_by_label("File").click();
     harness.run();
@@ -130,7 +133,7 @@ fn new_asks_before_dropping_changes() {
     harness.run();
     harness.get_by_label("Discard").click();
     harness.run();
-    assert_eq!(harness.state().scene(), &new_scene());
+    assert_eq!(&harness.state().document().scene, &new_scene());
     assert_eq!(harness.state().title(), "untitled — raylab");
 }
 
@@ -146,10 +149,10 @@ fn dropping_a_ron_file_opens_it_and_other_files_are_refused() {
     // (A .png or .ppm is compared with: tests/ui_compare.rs.)
     drop_file(&mut harness, &dir.join("notes.txt"));
     assert!(harness.state().error().unwrap().contains(".ron"));
-    assert_eq!(harness.state().scene(), &default_scene());
+    assert_eq!(&harness.state().document().scene, &default_scene());
 
     drop_file(&mut harness, &path);
-    assert_eq!(harness.state().scene(), &scene);
+    assert_eq!(&harness.state().document().scene, &scene);
     assert_eq!(harness.state().path(), Some(path.as_path()));
 }
 
@@ -169,7 +172,7 @@ fn closing_the_window_with_unsaved_changes_asks_first() {
     harness.run();
     assert_eq!(harness.state().pending_discard(), None);
     assert_eq!(
-        harness.state().scene().objects.len(),
+        harness.state().document().scene.objects.len(),
         7,
         "nothing was dropped"
     );
@@ -194,9 +197,9 @@ fn import_legacy_goes_through_the_adapter_and_keeps_the_scene_on_failure() {
     harness.run();
     let expected = raylab::ui::files::import_legacy(&path);
     match expected {
-        Ok((scene, _, _)) => assert_eq!(harness.state().scene(), &scene),
+        Ok((scene, _, _)) => assert_eq!(&harness.state().document().scene, &scene),
         Err(error) => {
-            assert_eq!(harness.state().scene(), &default_scene());
+            assert_eq!(&harness.state().document().scene, &default_scene());
             let shown = harness.state().error().expect("the error is shown");
             assert!(shown.contains(&error), "{shown}");
         }
@@ -210,7 +213,7 @@ fn import_legacy_replaces_the_scene_with_the_imported_one() {
     let mut harness = harness();
     harness.state_mut().push(Command::ImportLegacy(path));
     harness.run();
-    assert_eq!(harness.state().scene(), &imported.scene);
+    assert_eq!(&harness.state().document().scene, &imported.scene);
     // The status line names the imported file, not the last file saved.
     harness.get_by_label_contains("full.txt (not saved yet)");
     // ... and which framework's dialect was read.
@@ -247,19 +250,25 @@ fn ctrl_s_saves_to_the_open_file_and_recent_files_reopen_it() {
     harness.key_press_modifiers(Modifiers::COMMAND, Key::S);
     harness.run();
     assert!(!harness.state().is_dirty());
-    assert_eq!(&load_scene(&path).unwrap(), harness.state().scene());
+    assert_eq!(
+        &load_scene(&path).unwrap(),
+        &harness.state().document().scene
+    );
 
     // File > New, then File > Open Recent > scene.ron brings it back.
     harness.state_mut().push(Command::New);
     harness.run();
-    assert_eq!(harness.state().scene(), &new_scene());
+    assert_eq!(&harness.state().document().scene, &new_scene());
     harness.get_by_label("File").click();
     harness.run();
     harness.get_by_label("Open Recent").click();
     harness.run();
     harness.get_by_label("scene.ron").click();
     harness.run();
-    assert_eq!(&load_scene(&path).unwrap(), harness.state().scene());
+    assert_eq!(
+        &load_scene(&path).unwrap(),
+        &harness.state().document().scene
+    );
 }
 
 #[test]
@@ -291,7 +300,7 @@ fn a_recent_file_that_fails_to_open_stays_in_the_list_marked() {
     save_scene_to(&new_scene(), &path).unwrap();
     harness.get_by_label("away.ron (could not open)").click();
     harness.run();
-    assert_eq!(harness.state().scene(), &new_scene());
+    assert_eq!(&harness.state().document().scene, &new_scene());
     assert!(!harness.state().recent().has_failed(&listed));
 }
 
@@ -309,7 +318,10 @@ fn open_on_a_course_text_scene_imports_it_and_other_files_get_a_plain_message() 
         harness.state_mut().push(Command::Open(path.clone()));
         harness.run();
         assert_eq!(harness.state().error(), None);
-        assert_eq!(harness.state().scene().objects, imported.scene.objects);
+        assert_eq!(
+            harness.state().document().scene.objects,
+            imported.scene.objects
+        );
         harness.get_by_label_contains("(not saved yet)");
     }
     // A README is neither: the message says what raylab opens, not a parser's words alone.

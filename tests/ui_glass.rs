@@ -19,22 +19,28 @@ fn the_material_inspector_edits_transmission_and_ior_in_one_undo_step_each() {
     harness.run();
     harness.get_by_label("ior").set_value_accesskit(1.33);
     harness.run();
-    assert_eq!(harness.state().scene().materials["glass"].ior, 1.33);
+    assert_eq!(
+        harness.state().document().scene.materials["glass"].ior,
+        1.33
+    );
     // Out of range: held to the validator's largest index.
     harness.get_by_label("ior").set_value_accesskit(1e6);
     harness.run();
     assert_eq!(
-        harness.state().scene().materials["glass"].ior,
+        harness.state().document().scene.materials["glass"].ior,
         raylab::scene::MAX_IOR
     );
     harness.state_mut().push(Command::Undo);
     harness.run();
-    assert_eq!(harness.state().scene().materials["glass"].ior, 1.33);
+    assert_eq!(
+        harness.state().document().scene.materials["glass"].ior,
+        1.33
+    );
     harness
         .get_by_label("transmission r")
         .set_value_accesskit(0.5);
     harness.run();
-    let glass = &harness.state().scene().materials["glass"];
+    let glass = &harness.state().document().scene.materials["glass"];
     assert_eq!(glass.transmission, DVec3::new(0.5, 0.95, 0.94));
 }
 
@@ -51,7 +57,7 @@ fn the_light_inspector_edits_a_point_lights_radius_and_shadow_rays() {
     harness.run();
     let Light::Point {
         radius, samples, ..
-    } = harness.state().scene().lights[1]
+    } = harness.state().document().scene.lights[1]
     else {
         panic!("light 1 of glass.ron is a point light");
     };
@@ -70,7 +76,8 @@ fn the_toolbar_switches_the_transmission_term() {
     assert!(
         harness
             .state()
-            .preview_settings()
+            .view()
+            .preview_settings
             .switches
             .is_on(Term::Transmission)
     );
@@ -79,7 +86,8 @@ fn the_toolbar_switches_the_transmission_term() {
     assert!(
         !harness
             .state()
-            .preview_settings()
+            .view()
+            .preview_settings
             .switches
             .is_on(Term::Transmission)
     );

@@ -38,14 +38,21 @@ fn an_imported_obj_is_a_mesh_object_named_after_its_file_in_one_undo_step() {
         native_dialogs: NativeDialogs::Given(dialog),
         ..EditorOptions::default()
     });
-    let before = harness.state().scene().clone();
+    let before = harness.state().document().scene.clone();
     harness.state_mut().push(Command::ImportObjDialog);
     harness.run();
     step_until(&mut harness, "the import", |app| {
-        app.scene().objects.len() == before.objects.len() + 1
+        app.document().scene.objects.len() == before.objects.len() + 1
     });
     assert_eq!(asked.lock().unwrap()[0].purpose, DialogPurpose::ImportObj);
-    let added = harness.state().scene().objects.last().unwrap().clone();
+    let added = harness
+        .state()
+        .document()
+        .scene
+        .objects
+        .last()
+        .unwrap()
+        .clone();
     assert_eq!(added.name, "pyramid");
     // The default scene has no folder: the path is written in full.
     assert_eq!(
@@ -55,12 +62,16 @@ fn an_imported_obj_is_a_mesh_object_named_after_its_file_in_one_undo_step() {
         }
     );
     assert_eq!(
-        harness.state().selection(),
+        &harness.state().document().selection,
         &raylab::ui::Selection::Object(before.objects.len())
     );
     harness.state_mut().push(Command::Undo);
     harness.run();
-    assert_eq!(harness.state().scene(), &before, "one undo takes it away");
+    assert_eq!(
+        &harness.state().document().scene,
+        &before,
+        "one undo takes it away"
+    );
 }
 
 #[test]
@@ -78,7 +89,7 @@ fn a_mesh_beside_the_scene_is_written_relative_to_the_scenes_folder() {
         .state_mut()
         .push(Command::ImportObj(scenes().join("pyramid.obj")));
     harness.run();
-    let added = harness.state().scene().objects.last().unwrap();
+    let added = harness.state().document().scene.objects.last().unwrap();
     assert_eq!(
         added.shape,
         Shape::Mesh {
@@ -180,7 +191,7 @@ fn harness_with_preview() -> egui_kittest::Harness<'static, raylab::ui::EditorAp
 
 /// The object added last, as its translate/rotate/scale.
 fn last_trs(app: &raylab::ui::EditorApp) -> raylab::scene::Trs {
-    match app.scene().objects.last().unwrap().transform {
+    match app.document().scene.objects.last().unwrap().transform {
         raylab::scene::Transform::Trs(trs) => trs,
         raylab::scene::Transform::Matrix(_) => panic!("an import places by translate/rotate/scale"),
     }
@@ -189,12 +200,12 @@ fn last_trs(app: &raylab::ui::EditorApp) -> raylab::scene::Trs {
 #[test]
 fn an_imported_obj_gets_a_material_of_its_own() {
     let mut harness = harness_with_preview();
-    let before = harness.state().scene().clone();
+    let before = harness.state().document().scene.clone();
     harness
         .state_mut()
         .push(Command::ImportObj(scenes().join("pyramid.obj")));
     harness.run();
-    let scene = harness.state().scene();
+    let scene = &harness.state().document().scene;
     let added = scene.objects.last().unwrap();
     assert!(
         !before.materials.contains_key(&added.material),
@@ -223,12 +234,12 @@ fn an_imported_obj_is_fitted_to_a_unit_box_as_its_own_undo_step() {
     let fitted = last_trs(harness.state());
     harness.get_by_label_contains("2.00 × 1.40 × 2.00");
     harness.get_by_label("2.000 × 1.400 × 2.000"); // the inspector's Size row
-    let objects = harness.state().scene().objects.len();
+    let objects = harness.state().document().scene.objects.len();
     harness.state_mut().push(Command::Undo);
     harness.run();
     let placed = last_trs(harness.state());
     assert_eq!(
-        harness.state().scene().objects.len(),
+        harness.state().document().scene.objects.len(),
         objects,
         "the mesh stays"
     );
@@ -284,7 +295,15 @@ fn a_mesh_imported_before_the_first_save_is_saved_relative_to_the_scene() {
     });
     harness.state_mut().push(Command::ImportObj(obj.clone()));
     harness.run();
-    let Shape::Mesh { path } = &harness.state().scene().objects.last().unwrap().shape else {
+    let Shape::Mesh { path } = &harness
+        .state()
+        .document()
+        .scene
+        .objects
+        .last()
+        .unwrap()
+        .shape
+    else {
         panic!("a mesh");
     };
     assert_eq!(path, obj.to_str().unwrap(), "no folder yet: in full");

@@ -64,7 +64,7 @@ fn shift_click(harness: &mut Harness<'_, EditorApp>, label: &str) {
 }
 
 fn isolation(harness: &Harness<'_, EditorApp>) -> Isolation {
-    harness.state().isolation().clone()
+    harness.state().view().isolation.clone()
 }
 
 fn set(items: &[usize]) -> BTreeSet<usize> {
@@ -88,7 +88,7 @@ fn cli_image(scene: &Scene, flags: &[&str]) -> Image {
 /// The screen position of scene object `index`'s origin in the viewport.
 fn object_on_screen(harness: &Harness<'_, EditorApp>, index: usize) -> Pos2 {
     let picture = harness.get_by_label(VIEWPORT_LABEL).rect();
-    let scene = harness.state().scene();
+    let scene = &harness.state().document().scene;
     let camera = PinholeCamera::new(&scene.camera, scene.camera.width, scene.camera.height);
     let origin = scene.objects[index]
         .transform
@@ -120,7 +120,7 @@ fn outliner_toggles_isolate_without_editing_and_the_final_frame_equals_the_cli()
     };
     assert_eq!(isolation(&harness), expected);
     assert!(!harness.state().is_dirty(), "isolation is not a scene edit");
-    assert_eq!(harness.state().scene(), &small_scene());
+    assert_eq!(&harness.state().document().scene, &small_scene());
     let preview = harness.state().preview().unwrap();
     assert!(preview.generation() > before, "the preview restarted");
     assert_eq!(preview.submitted_options().unwrap().isolation, expected);
@@ -181,12 +181,12 @@ fn a_hidden_object_is_not_picked_and_light_markers_carry_mute_and_solo() {
     let mut harness = harness_on(&path, false);
     let ball = object_on_screen(&harness, 1);
     click_at(&mut harness, ball);
-    assert_eq!(harness.state().selection(), &Selection::Object(1));
+    assert_eq!(&harness.state().document().selection, &Selection::Object(1));
     click(&mut harness, "hide red ball");
     click(&mut harness, "Camera");
     click_at(&mut harness, ball);
     assert_eq!(
-        harness.state().selection(),
+        &harness.state().document().selection,
         &Selection::Object(0),
         "the click goes through the hidden ball to the floor"
     );
@@ -227,7 +227,7 @@ fn switches_follow_a_delete_and_its_undo_and_are_remembered_per_file() {
         .state_mut()
         .push(Command::Edit(SceneEdit::DeleteSelected));
     harness.run_ok();
-    assert_eq!(harness.state().scene().lights.len(), 3);
+    assert_eq!(harness.state().document().scene.lights.len(), 3);
     assert_eq!(
         isolation(&harness).muted_lights,
         set(&[2]),
@@ -236,7 +236,7 @@ fn switches_follow_a_delete_and_its_undo_and_are_remembered_per_file() {
     harness.get_by_label("mute Spot light 3");
     harness.state_mut().push(Command::Undo);
     harness.run_ok();
-    assert_eq!(harness.state().scene(), &small_scene());
+    assert_eq!(&harness.state().document().scene, &small_scene());
     assert_eq!(isolation(&harness).muted_lights, set(&[3]));
     let kept = isolation(&harness);
     assert_eq!(kept.hidden_objects, set(&[4]));
@@ -267,7 +267,7 @@ fn the_pixel_inspector_names_what_is_left_out() {
     let mut harness = harness_on(&path, false);
     click(&mut harness, "mute Point light 2");
     click(&mut harness, "hide mirror ball");
-    let scene = harness.state().scene().clone();
+    let scene = harness.state().document().scene.clone();
     let camera = PinholeCamera::new(&scene.camera, scene.camera.width, scene.camera.height);
     let p = camera.project(scene.objects[3].transform.world_from_object().translation);
     let p = p.unwrap();
@@ -276,7 +276,7 @@ fn the_pixel_inspector_names_what_is_left_out() {
         .push(Command::InspectPixel(Some((p.x as u32, p.y as u32))));
     harness.run_ok();
     let inspection = harness.state().inspection().unwrap();
-    assert_eq!(&inspection.isolation, harness.state().isolation());
+    assert_eq!(&inspection.isolation, &harness.state().view().isolation);
     let pixel = inspection.result.as_ref().unwrap();
     assert_eq!(pixel.bounces[0].hit.as_ref().unwrap().object, "blue box");
     assert_eq!(pixel.lights_off, ["Point light 2"]);

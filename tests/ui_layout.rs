@@ -99,7 +99,7 @@ fn a_long_status_message_is_cut_short_and_never_runs_over_the_counts() {
 fn a_preview_that_is_not_the_full_picture_says_so_and_why() {
     let mut harness = harness();
     assert!(harness.query_by_label_contains(NOT_FULL_PICTURE).is_none());
-    let mut settings = *harness.state().preview_settings();
+    let mut settings = harness.state().view().preview_settings;
     settings.switches.set(Term::Diffuse, false);
     settings.view = View::Depth;
     harness
@@ -138,7 +138,7 @@ fn drag(harness: &mut Harness<'_, EditorApp>, from: Pos2, to: Pos2) {
 /// (6 units along the camera ray there); returns its index and the light placed.
 fn put_point_light_at(harness: &mut Harness<'_, EditorApp>, screen: Pos2) -> (usize, Light) {
     let picture = harness.get_by_label(VIEWPORT_LABEL).rect();
-    let scene = harness.state().scene().clone();
+    let scene = harness.state().document().scene.clone();
     let (w, h) = (scene.camera.width, scene.camera.height);
     let image_point = DVec2::new(
         f64::from((screen.x - picture.min.x) / picture.width()) * f64::from(w),
@@ -167,18 +167,18 @@ fn a_light_marker_under_the_gizmo_buttons_does_not_take_their_presses() {
     let rotate = harness.get_by_label("Rotate").rect().center();
     // Put the point light where it is drawn right under the Rotate button.
     put_point_light_at(&mut harness, rotate);
-    let placed = harness.state().scene().clone();
+    let placed = harness.state().document().scene.clone();
 
     harness.get_by_label("Rotate").click();
     harness.run();
     assert_eq!(
-        harness.state().selection(),
+        &harness.state().document().selection,
         &Selection::None,
         "no light picked"
     );
     drag(&mut harness, rotate, rotate + Vec2::new(60.0, 25.0));
     assert_eq!(
-        harness.state().scene(),
+        &harness.state().document().scene,
         &placed,
         "a press on the button neither drags the light nor orbits the camera"
     );
@@ -187,7 +187,7 @@ fn a_light_marker_under_the_gizmo_buttons_does_not_take_their_presses() {
 #[test]
 fn a_lights_mute_and_solo_buttons_stay_on_top_of_the_not_the_full_picture_marker() {
     let mut harness = harness();
-    let mut settings = *harness.state().preview_settings();
+    let mut settings = harness.state().view().preview_settings;
     settings.switches.set(Term::Diffuse, false);
     harness
         .state_mut()
@@ -216,7 +216,7 @@ fn a_lights_mute_and_solo_buttons_stay_on_top_of_the_not_the_full_picture_marker
     );
     mute.click();
     harness.run();
-    let muted = &harness.state().isolation().muted_lights;
+    let muted = &harness.state().view().isolation.muted_lights;
     assert!(muted.contains(&index), "the click reached the M button");
 }
 
@@ -233,7 +233,7 @@ fn selecting_anything_keeps_the_inspector_width_and_the_picture_still() {
         let mut harness = editor_harness(EditorOptions::default(), size, 64);
         open_example(&mut harness, "more_shapes.ron");
         let before = layout_marks(&harness);
-        let scene = harness.state().scene().clone();
+        let scene = harness.state().document().scene.clone();
         let mut selections = vec![Selection::Camera, Selection::Render];
         selections.extend((0..scene.objects.len()).map(Selection::Object));
         selections.extend((0..scene.lights.len()).map(Selection::Light));
@@ -318,7 +318,7 @@ fn the_debug_views_carry_a_legend_and_the_lit_picture_none() {
     let mut harness = harness();
     harness.run();
     assert!(harness.query_by_label_contains("depth: near").is_none());
-    let first = harness.state().scene().objects[0].name.clone();
+    let first = harness.state().document().scene.objects[0].name.clone();
     let named_before = harness.get_all_by_label(&first).count();
     for (view, line) in [
         (View::Depth, "depth: near"),
@@ -331,7 +331,7 @@ fn the_debug_views_carry_a_legend_and_the_lit_picture_none() {
         let label = format!("view {}", raylab::ui::state::view_label(view));
         harness.get_by_label(&label).click();
         harness.run();
-        assert_eq!(harness.state().preview_settings().view, view);
+        assert_eq!(harness.state().view().preview_settings.view, view);
         harness.get_by_label_contains(line);
     }
     // The object-id legend names the scene's objects.

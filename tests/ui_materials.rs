@@ -17,10 +17,10 @@ fn a_shared_material_says_so_and_can_be_made_unique_in_one_undo_step() {
     harness.get_by_label("pipe").click();
     harness.run();
     harness.get_by_label_contains("\u{201c}clay\u{201d} is shared by 3 objects");
-    let before = harness.state().scene().clone();
+    let before = harness.state().document().scene.clone();
     harness.get_by_label("Make unique").click();
     harness.run();
-    let scene = harness.state().scene();
+    let scene = &harness.state().document().scene;
     let pipe = scene.objects.iter().find(|o| o.name == "pipe").unwrap();
     assert_eq!(pipe.material, "clay (pipe)");
     assert_eq!(scene.materials["clay (pipe)"], scene.materials["clay"]);
@@ -30,7 +30,7 @@ fn a_shared_material_says_so_and_can_be_made_unique_in_one_undo_step() {
     );
     harness.state_mut().push(Command::Undo);
     harness.run();
-    assert_eq!(harness.state().scene(), &before);
+    assert_eq!(&harness.state().document().scene, &before);
     // A material only one object uses (the floor's) says nothing.
     harness
         .state_mut()
@@ -45,18 +45,22 @@ fn undo_keeps_the_selection_where_the_item_still_is() {
     let mut harness = open_more_shapes();
     harness.get_by_label("pipe").click();
     harness.run();
-    let selected = harness.state().selection().clone();
+    let selected = harness.state().document().selection.clone();
     harness.get_by_label("translate x").set_value_accesskit(1.5);
     harness.run();
     harness.state_mut().push(Command::Undo);
     harness.run();
-    assert_eq!(harness.state().selection(), &selected, "undo of a move");
+    assert_eq!(
+        &harness.state().document().selection,
+        &selected,
+        "undo of a move"
+    );
     harness.get_by_label("Make unique").click();
     harness.run();
     harness.state_mut().push(Command::Undo);
     harness.run();
     assert_eq!(
-        harness.state().selection(),
+        &harness.state().document().selection,
         &selected,
         "undo of make unique"
     );

@@ -43,7 +43,7 @@ fn the_window_keeps_working_while_a_native_save_dialog_is_open() {
         dialog_folder: Some(dir.clone()),
         ..EditorOptions::default()
     });
-    assert!(!harness.state().file_dialogs().uses_in_app());
+    assert!(!harness.state().tools().file_dialogs.uses_in_app());
     harness.state_mut().push(Command::New);
     harness.run();
     harness
@@ -54,7 +54,7 @@ fn the_window_keeps_working_while_a_native_save_dialog_is_open() {
     harness.key_press_modifiers(Modifiers::COMMAND | Modifiers::SHIFT, Key::S);
     harness.run();
     assert_eq!(
-        harness.state().file_dialogs().open_purpose(),
+        harness.state().tools().file_dialogs.open_purpose(),
         Some(DialogPurpose::SaveSceneAs)
     );
     assert_eq!(
@@ -70,7 +70,8 @@ fn the_window_keeps_working_while_a_native_save_dialog_is_open() {
     assert!(
         harness
             .state()
-            .preview_settings()
+            .view()
+            .preview_settings
             .switches
             .is_on(Term::Diffuse)
     );
@@ -81,12 +82,20 @@ fn the_window_keeps_working_while_a_native_save_dialog_is_open() {
     assert!(
         !harness
             .state()
-            .preview_settings()
+            .view()
+            .preview_settings
             .switches
             .is_on(Term::Diffuse),
         "the click reached the editor while the dialog was open"
     );
-    assert!(harness.state().file_dialogs().open_purpose().is_some());
+    assert!(
+        harness
+            .state()
+            .tools()
+            .file_dialogs
+            .open_purpose()
+            .is_some()
+    );
 
     // The user picks a name: the scene is written there.
     let picked = dir.join("picked.ron");
@@ -98,7 +107,7 @@ fn the_window_keeps_working_while_a_native_save_dialog_is_open() {
     let saved = load_scene(&picked).unwrap();
     assert_eq!(saved.objects.len(), 1);
     assert_eq!(saved.objects[0].shape, Shape::Cube);
-    assert_eq!(harness.state().file_dialogs().open_purpose(), None);
+    assert_eq!(harness.state().tools().file_dialogs.open_purpose(), None);
 }
 
 #[test]
@@ -131,7 +140,7 @@ fn a_dialog_opens_in_the_folder_a_file_was_last_picked_from() {
     harness.state_mut().push(Command::ImportLegacyDialog);
     harness.run();
     step_until(&mut harness, "the import", |app| {
-        app.scene().objects.len() > 1 && app.file_dialogs().open_purpose().is_none()
+        app.document().scene.objects.len() > 1 && app.tools().file_dialogs.open_purpose().is_none()
     });
     assert_eq!(harness.state().path(), None, "an import is untitled");
     harness.state_mut().push(Command::OpenDialog);

@@ -55,7 +55,7 @@ fn type_keys(
     end: Key,
     value: impl Fn(&Scene) -> f64,
 ) {
-    let before = value(harness.state().scene());
+    let before = value(&harness.state().document().scene);
     harness.get_by_label(label).click();
     harness.run();
     harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
@@ -92,7 +92,7 @@ fn type_keys(
             "{label}: nothing is judged while typing {typed:?}"
         );
         assert_eq!(
-            value(harness.state().scene()),
+            value(&harness.state().document().scene),
             before,
             "{label}: typing {typed:?}"
         );
@@ -198,7 +198,7 @@ fn every_kind_of_number_field_takes_what_was_typed_when_the_edit_ends() {
         for (text, expected) in ["0.3", ".3", "-0.5", "1e-3"].iter().zip(case.expected) {
             let mut harness = harness();
             (case.show)(&mut harness);
-            let before = (case.value)(harness.state().scene());
+            let before = (case.value)(&harness.state().document().scene);
             type_keys(
                 &mut harness,
                 case.label,
@@ -206,7 +206,7 @@ fn every_kind_of_number_field_takes_what_was_typed_when_the_edit_ends() {
                 Key::Enter,
                 case.value,
             );
-            let after = (case.value)(harness.state().scene());
+            let after = (case.value)(&harness.state().document().scene);
             assert_eq!(
                 after,
                 expected.unwrap_or(before),
@@ -231,12 +231,12 @@ fn backspace_over_the_whole_text_then_return_keeps_the_value_and_says_why() {
     for case in cases() {
         let mut harness = harness();
         (case.show)(&mut harness);
-        let before = (case.value)(harness.state().scene());
+        let before = (case.value)(&harness.state().document().scene);
         // Click, Ctrl+A, then backspace over everything: an empty field.
         let strokes = [Stroke::Backspace; 3];
         type_keys(&mut harness, case.label, &strokes, Key::Enter, case.value);
         assert_eq!(
-            (case.value)(harness.state().scene()),
+            (case.value)(&harness.state().document().scene),
             before,
             "{}",
             case.label
@@ -254,5 +254,5 @@ fn tab_ends_the_edit_as_return_does() {
     let mut harness = harness();
     red_ball(&mut harness);
     type_keys(&mut harness, "scale x", &chars("0.3"), Key::Tab, scale_x);
-    assert_eq!(scale_x(harness.state().scene()), 0.3);
+    assert_eq!(scale_x(&harness.state().document().scene), 0.3);
 }

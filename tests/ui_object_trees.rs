@@ -14,7 +14,8 @@ use raylab::ui::{Command, Selection};
 fn die_index(harness: &egui_kittest::Harness<'_, raylab::ui::EditorApp>) -> usize {
     harness
         .state()
-        .scene()
+        .document()
+        .scene
         .objects
         .iter()
         .position(|o| o.name == "die")
@@ -37,9 +38,12 @@ fn a_part_is_shown_selected_edited_and_undone_and_its_breadcrumb_selects_the_par
         .get_by_role_and_label(egui::Role::Button, "pip 6.2")
         .click();
     harness.run();
-    assert_eq!(harness.state().selection(), &Selection::Part(vec![die, 3]));
+    assert_eq!(
+        &harness.state().document().selection,
+        &Selection::Part(vec![die, 3])
+    );
     harness.get_by_label("in its parent's space");
-    let before = harness.state().scene().clone();
+    let before = harness.state().document().scene.clone();
     harness.get_by_label("object name").focus();
     harness.run();
     harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
@@ -53,7 +57,7 @@ fn a_part_is_shown_selected_edited_and_undone_and_its_breadcrumb_selects_the_par
         .state_mut()
         .push(Command::Select(Selection::Part(vec![die, 3])));
     harness.run();
-    let scene = harness.state().scene();
+    let scene = &harness.state().document().scene;
     assert_eq!(
         object_at(&scene.objects, &[die, 3]).unwrap().name,
         "six two"
@@ -61,13 +65,16 @@ fn a_part_is_shown_selected_edited_and_undone_and_its_breadcrumb_selects_the_par
     assert_eq!(scene.objects.len(), before.objects.len());
     harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     harness.run();
-    assert_eq!(harness.state().scene(), &before, "one undo step");
+    assert_eq!(&harness.state().document().scene, &before, "one undo step");
     // The breadcrumb's link selects the parent.
     harness
         .get_by_role_and_label(egui::Role::Link, "die")
         .click();
     harness.run();
-    assert_eq!(harness.state().selection(), &Selection::Object(die));
+    assert_eq!(
+        &harness.state().document().selection,
+        &Selection::Object(die)
+    );
     harness.get_by_label("operator");
 }
 
@@ -75,14 +82,14 @@ fn a_part_is_shown_selected_edited_and_undone_and_its_breadcrumb_selects_the_par
 fn ctrl_g_groups_the_selected_object_and_ungroup_puts_it_back() {
     let mut harness = harness_on_example("csg.ron");
     let die = die_index(&harness);
-    let before = harness.state().scene().clone();
+    let before = harness.state().document().scene.clone();
     harness
         .state_mut()
         .push(Command::Select(Selection::Object(die)));
     harness.run();
     harness.key_press_modifiers(Modifiers::COMMAND, Key::G);
     harness.run();
-    let scene = harness.state().scene();
+    let scene = &harness.state().document().scene;
     let Shape::Group { children } = &scene.objects[die].shape else {
         panic!("grouped: {:?}", scene.objects[die].shape);
     };
@@ -91,18 +98,21 @@ fn ctrl_g_groups_the_selected_object_and_ungroup_puts_it_back() {
         * children[0].transform.world_from_object();
     assert!(placed.abs_diff_eq(before.objects[die].transform.world_from_object(), 1e-12));
     assert_eq!(children[0].shape, before.objects[die].shape);
-    assert_eq!(harness.state().selection(), &Selection::Object(die));
+    assert_eq!(
+        &harness.state().document().selection,
+        &Selection::Object(die)
+    );
     harness.get_by_label("Ungroup").click();
     harness.run();
     assert_eq!(
-        harness.state().scene(),
+        &harness.state().document().scene,
         &before,
         "the group at rest unwraps exactly"
     );
     harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     harness.run();
     assert!(matches!(
-        harness.state().scene().objects[die].shape,
+        harness.state().document().scene.objects[die].shape,
         Shape::Group { .. }
     ));
 }
@@ -112,7 +122,8 @@ fn ctrl_click_picks_several_objects_and_subtract_makes_one_csg_of_them() {
     let mut harness = harness_on_example("csg.ron");
     let names = |h: &egui_kittest::Harness<'_, raylab::ui::EditorApp>| -> Vec<String> {
         h.state()
-            .scene()
+            .document()
+            .scene
             .objects
             .iter()
             .map(|o| o.name.clone())
@@ -128,7 +139,7 @@ fn ctrl_click_picks_several_objects_and_subtract_makes_one_csg_of_them() {
         .click_modifiers(Modifiers::COMMAND);
     harness.run();
     assert_eq!(
-        harness.state().selection(),
+        &harness.state().document().selection,
         &Selection::Several(vec![vec![3], vec![1]])
     );
     harness.get_by_label("2 objects");
@@ -136,7 +147,7 @@ fn ctrl_click_picks_several_objects_and_subtract_makes_one_csg_of_them() {
     harness.get_by_label("Subtract").click();
     harness.run();
     assert_eq!(names(&harness), ["floor", "difference", "die"]);
-    let Shape::Csg { operands, .. } = &harness.state().scene().objects[1].shape else {
+    let Shape::Csg { operands, .. } = &harness.state().document().scene.objects[1].shape else {
         panic!("a CSG node");
     };
     assert_eq!(operands[0].name, "hollow cube");
@@ -156,7 +167,7 @@ fn a_part_is_hidden_from_its_own_row_and_the_toolbar_names_it() {
     harness.run();
     harness.get_by_label("hide pip 6.1").click();
     harness.run();
-    let isolation = harness.state().isolation().clone();
+    let isolation = harness.state().view().isolation.clone();
     assert_eq!(
         isolation.hidden_parts,
         std::collections::BTreeSet::from([vec![die, 2]])
@@ -166,5 +177,5 @@ fn a_part_is_hidden_from_its_own_row_and_the_toolbar_names_it() {
     harness.get_by_label_contains("hidden die/pip 6.1");
     harness.get_by_label("hide pip 6.1").click();
     harness.run();
-    assert!(harness.state().isolation().is_none());
+    assert!(harness.state().view().isolation.is_none());
 }

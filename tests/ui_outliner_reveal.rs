@@ -20,8 +20,8 @@ fn a_pick_scrolls_the_outliner_to_the_picked_row() {
     // Back at the top of the list (the new objects scrolled it down).
     harness.state_mut().push(Command::Select(Selection::Camera));
     harness.run();
-    let last = harness.state().scene().objects.len() - 1;
-    let name = harness.state().scene().objects[last].name.clone();
+    let last = harness.state().document().scene.objects.len() - 1;
+    let name = harness.state().document().scene.objects[last].name.clone();
     let window = harness.ctx.content_rect();
     // The outliner's row (the inspector, on the right, may name the object too).
     let row_rect = |harness: &egui_kittest::Harness<'_, raylab::ui::EditorApp>| {

@@ -46,7 +46,7 @@ fn harness_sized(name: &str, size: Vec2) -> Harness<'static, EditorApp> {
     };
     let mut harness = editor_harness(options, size, 64);
     harness.run_ok();
-    assert_eq!(harness.state().scene(), &small_scene());
+    assert_eq!(&harness.state().document().scene, &small_scene());
     harness
 }
 
@@ -111,7 +111,7 @@ fn toolbar_switches_restart_the_preview_and_its_final_frame_equals_the_cli() {
         !harness.state().is_dirty(),
         "a toolbar switch is not a scene edit"
     );
-    assert_eq!(harness.state().scene(), &scene);
+    assert_eq!(&harness.state().document().scene, &scene);
     assert_final_frame_is(
         &mut harness,
         &cli_image(&scene, &[Term::Diffuse], None, View::Beauty),
@@ -150,7 +150,7 @@ fn toolbar_switches_restart_the_preview_and_its_final_frame_equals_the_cli() {
         &mut harness,
         &cli_image(&scene, &[Term::Diffuse, Term::Shadows], None, View::Normal),
     );
-    let settings = *harness.state().preview_settings();
+    let settings = harness.state().view().preview_settings;
     assert_eq!(
         settings.render_options(&scene),
         options,
@@ -167,7 +167,7 @@ fn the_nan_guard_shows_zero_non_finite_samples() {
         "off by default"
     );
     toggle(&mut harness, "NaN guard");
-    assert!(harness.state().preview_settings().nan_guard);
+    assert!(harness.state().view().preview_settings.nan_guard);
     harness.get_by_label("0 non-finite samples");
     let frame = harness.state().preview().unwrap().frame().unwrap();
     assert_eq!(frame.non_finite_samples, 0);
@@ -182,7 +182,7 @@ fn the_nan_guard_shows_zero_non_finite_samples() {
 /// The screen position of the centre of scene object `index` in the viewport.
 fn object_on_screen(harness: &Harness<'_, EditorApp>, index: usize) -> Pos2 {
     let picture = harness.get_by_label(VIEWPORT_LABEL).rect();
-    let scene = harness.state().scene();
+    let scene = &harness.state().document().scene;
     let camera = PinholeCamera::new(&scene.camera, scene.camera.width, scene.camera.height);
     let centre = scene.objects[index]
         .transform
@@ -202,7 +202,8 @@ fn inspecting_a_pixel_shows_its_object_and_terms_that_add_up_to_its_colour() {
     toggle(&mut harness, "Inspect");
     let ball = harness
         .state()
-        .scene()
+        .document()
+        .scene
         .objects
         .iter()
         .position(|o| o.name == "red ball")
@@ -210,7 +211,7 @@ fn inspecting_a_pixel_shows_its_object_and_terms_that_add_up_to_its_colour() {
     let pos = object_on_screen(&harness, ball);
     click_at(&mut harness, pos);
     assert_eq!(
-        harness.state().selection(),
+        &harness.state().document().selection,
         &Selection::None,
         "inspect does not select"
     );
@@ -225,7 +226,10 @@ fn inspecting_a_pixel_shows_its_object_and_terms_that_add_up_to_its_colour() {
         .as_ref()
         .expect("the ray hits the ball");
     assert_eq!(hit.object, "red ball");
-    assert_eq!(hit.material, harness.state().scene().objects[ball].material);
+    assert_eq!(
+        hit.material,
+        harness.state().document().scene.objects[ball].material
+    );
     // The window shows the object's name (the outliner row is the other "red ball").
     assert!(harness.get_all_by_label("red ball").count() >= 2);
     harness.get_by_label(raylab::ui::FINAL_COLOUR_LABEL);
@@ -239,7 +243,7 @@ fn inspecting_a_pixel_shows_its_object_and_terms_that_add_up_to_its_colour() {
     }
     assert_eq!(pixel.report.bounces[0].colour, pixel.report.unclamped);
     // The inspected pixel is the image's pixel: same numbers as the one-sample render.
-    let scene = harness.state().scene().clone();
+    let scene = harness.state().document().scene.clone();
     let world = World::new(&scene).unwrap();
     let options = raylab::trace::RenderOptions {
         samples_per_pixel: 1,
@@ -269,7 +273,7 @@ fn an_alt_click_inspects_without_the_toggle() {
     let pos = object_on_screen(&harness, 3);
     click_with(&mut harness, pos, Modifiers::ALT);
     assert_eq!(
-        harness.state().selection(),
+        &harness.state().document().selection,
         &Selection::None,
         "alt-click does not select"
     );
@@ -278,7 +282,7 @@ fn an_alt_click_inspects_without_the_toggle() {
         .hit
         .as_ref()
         .unwrap();
-    assert_eq!(hit.object, harness.state().scene().objects[3].name);
+    assert_eq!(hit.object, harness.state().document().scene.objects[3].name);
 }
 
 #[test]
@@ -286,7 +290,7 @@ fn the_convergence_plot_shows_the_estimated_error_of_each_anti_aliasing_pass() {
     let mut harness = harness("convergence");
     wait_for_final(&mut harness);
     toggle(&mut harness, "Convergence");
-    assert!(harness.state().preview_settings().show_convergence);
+    assert!(harness.state().view().preview_settings.show_convergence);
     harness.get_by_label("Estimated remaining error");
     // Restart so the curve follows a fresh generation from its first pass.
     toggle(&mut harness, "reflection");
@@ -324,7 +328,7 @@ fn a_narrow_viewport_scrolls_the_toolbar_to_its_last_toggle() {
     toggle.scroll_to_me();
     harness.run_ok();
     toggle_at_visible(&mut harness, "Convergence");
-    assert!(harness.state().preview_settings().show_convergence);
+    assert!(harness.state().view().preview_settings.show_convergence);
 }
 
 /// Clicks a toggle after scrolling it into view.

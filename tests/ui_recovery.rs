@@ -26,7 +26,7 @@ fn unsaved_work_of_a_killed_editor_is_offered_and_restored() {
     harness.get_by_label("Restore").click();
     harness.run();
     assert!(!harness.state().has_restore_offer());
-    assert_eq!(harness.state().scene(), &lost);
+    assert_eq!(&harness.state().document().scene, &lost);
     assert!(harness.state().is_dirty(), "restored edits are unsaved");
     // The offer was used up: a new editor in the same folder offers nothing.
     assert!(RecoveryStore::new(dir).orphans().is_empty());

@@ -10,7 +10,7 @@ use raylab::scene::Shape;
 use raylab::ui::Command;
 
 fn shape_of(harness: &egui_kittest::Harness<'_, raylab::ui::EditorApp>, name: &str) -> Shape {
-    let scene = harness.state().scene();
+    let scene = &harness.state().document().scene;
     let object = scene.objects.iter().find(|o| o.name == name).unwrap();
     object.shape.clone()
 }
@@ -22,11 +22,15 @@ fn open_more_shapes() -> egui_kittest::Harness<'static, raylab::ui::EditorApp> {
 #[test]
 fn a_torus_minor_radius_is_a_field_held_to_the_validators_rule() {
     let mut harness = open_more_shapes();
-    let before = harness.state().scene().clone();
+    let before = harness.state().document().scene.clone();
     harness.get_by_label("spindle").click();
     harness.run();
     harness.get_by_label("minor radius");
-    assert_eq!(harness.state().scene(), &before, "showing is not editing");
+    assert_eq!(
+        &harness.state().document().scene,
+        &before,
+        "showing is not editing"
+    );
 
     harness
         .get_by_label("minor radius")
@@ -87,7 +91,7 @@ fn choosing_the_kind_an_object_is_keeps_its_parameter_and_another_kind_starts_fr
 #[test]
 fn the_add_menu_offers_all_eight_unit_shapes() {
     let mut harness = harness();
-    let count = harness.state().scene().objects.len();
+    let count = harness.state().document().scene.objects.len();
     harness.get_by_label("+ Add object").click();
     harness.run();
     for shape in Shape::ALL {
@@ -95,7 +99,7 @@ fn the_add_menu_offers_all_eight_unit_shapes() {
     }
     harness.get_by_label("Torus").click();
     harness.run();
-    let scene = harness.state().scene();
+    let scene = &harness.state().document().scene;
     assert_eq!(scene.objects.len(), count + 1);
     assert_eq!(scene.objects[count].shape, Shape::Torus { minor: 0.25 });
 }

@@ -47,7 +47,7 @@ const EDGE_SCENE: &str = r#"Scene(
 
 /// Every outliner row's label, in outliner order (a name may repeat: object and material).
 fn outliner_labels(app: &EditorApp) -> Vec<String> {
-    let scene = app.scene();
+    let scene = &app.document().scene;
     let mut labels: Vec<String> = vec!["Camera".into(), "Render settings".into()];
     labels.extend(scene.objects.iter().map(|o| o.name.clone()));
     labels.extend(scene.materials.keys().cloned());
@@ -86,7 +86,7 @@ fn opening_every_panel_on_a_scene_at_the_contracts_edges_changes_nothing() {
     let mut harness = editor_harness(EditorOptions::default(), Vec2::new(1280.0, 800.0), 64);
     harness.state_mut().push(Command::Open(path));
     harness.run();
-    assert_eq!(format!("{:?}", harness.state().scene()), bits);
+    assert_eq!(format!("{:?}", &harness.state().document().scene), bits);
 
     let labels = outliner_labels(harness.state());
     for (position, label) in labels.iter().enumerate() {
@@ -98,11 +98,15 @@ fn opening_every_panel_on_a_scene_at_the_contracts_edges_changes_nothing() {
             .unwrap_or_else(|| panic!("an outliner row {label}"))
             .click();
         harness.run();
-        assert_ne!(harness.state().selection(), &Selection::None, "{label}");
+        assert_ne!(
+            &harness.state().document().selection,
+            &Selection::None,
+            "{label}"
+        );
         open_every_swatch(&mut harness);
         let app = harness.state();
         assert_eq!(
-            format!("{:?}", app.scene()),
+            format!("{:?}", &app.document().scene),
             bits,
             "showing {label} edited the scene"
         );
@@ -120,7 +124,7 @@ fn a_field_takes_values_beyond_its_drag_range_and_refuses_what_the_validator_ref
     harness.get_by_label("scale x").set_value_accesskit(-2.5);
     harness.get_by_label("rotate z").set_value_accesskit(725.0);
     harness.run();
-    let transform = harness.state().scene().objects[1].transform;
+    let transform = harness.state().document().scene.objects[1].transform;
     let raylab::scene::Transform::Trs(trs) = transform else {
         panic!("expected translate/rotate/scale");
     };
@@ -130,7 +134,8 @@ fn a_field_takes_values_beyond_its_drag_range_and_refuses_what_the_validator_ref
     // A zero scale would make the transform singular: the field keeps its value.
     harness.get_by_label("scale x").set_value_accesskit(0.0);
     harness.run();
-    let raylab::scene::Transform::Trs(trs) = harness.state().scene().objects[1].transform else {
+    let raylab::scene::Transform::Trs(trs) = harness.state().document().scene.objects[1].transform
+    else {
         panic!("expected translate/rotate/scale");
     };
     assert_eq!(trs.scale.x, -2.5);
@@ -139,13 +144,16 @@ fn a_field_takes_values_beyond_its_drag_range_and_refuses_what_the_validator_ref
     harness.run();
     harness.get_by_label("samples").set_value_accesskit(65536.0);
     harness.run();
-    assert_eq!(harness.state().scene().render.samples_per_pixel, 65536);
+    assert_eq!(
+        harness.state().document().scene.render.samples_per_pixel,
+        65536
+    );
     harness
         .get_by_label("max depth")
         .set_value_accesskit(f64::from(raylab::scene::MAX_DEPTH));
     harness.run();
     assert_eq!(
-        harness.state().scene().render.max_depth,
+        harness.state().document().scene.render.max_depth,
         raylab::scene::MAX_DEPTH
     );
 
@@ -158,7 +166,14 @@ fn a_field_takes_values_beyond_its_drag_range_and_refuses_what_the_validator_ref
     harness.run();
     harness.get_by_label("angle").set_value_accesskit(150.0);
     harness.run();
-    let spot = harness.state().scene().lights.last().unwrap().clone();
+    let spot = harness
+        .state()
+        .document()
+        .scene
+        .lights
+        .last()
+        .unwrap()
+        .clone();
     assert!(
         matches!(spot, raylab::scene::Light::Spot { angle_deg, .. } if angle_deg == 150.0),
         "{spot:?}"
@@ -168,10 +183,10 @@ fn a_field_takes_values_beyond_its_drag_range_and_refuses_what_the_validator_ref
     harness.get_by_label("shininess").set_value_accesskit(0.0);
     harness.run();
     assert_eq!(
-        harness.state().scene().materials["red plastic"].shininess,
+        harness.state().document().scene.materials["red plastic"].shininess,
         0.0
     );
-    raylab::scene::validate(harness.state().scene()).unwrap();
+    raylab::scene::validate(&harness.state().document().scene).unwrap();
 }
 
 /// Types `text` into the number field `label` as a person does: click (the field turns
@@ -191,15 +206,19 @@ fn a_typed_value_the_field_does_not_take_is_said_in_the_status_line() {
     let mut harness = editor_harness(EditorOptions::default(), Vec2::new(1280.0, 800.0), 64);
     harness.get_by_label("red ball").click();
     harness.run();
-    let before = harness.state().scene().clone();
+    let before = harness.state().document().scene.clone();
     type_into(&mut harness, "scale x", "nan");
-    assert_eq!(harness.state().scene(), &before, "NaN is not taken");
+    assert_eq!(
+        &harness.state().document().scene,
+        &before,
+        "NaN is not taken"
+    );
     // The status line says so.
     harness.get_by_label_contains("is not a finite number: the field keeps");
     type_into(&mut harness, "scale x", "0");
     harness.get_by_label_contains("0 is not taken here (not 0)");
     assert_eq!(
-        harness.state().scene(),
+        &harness.state().document().scene,
         &before,
         "a zero scale is not taken"
     );

@@ -24,16 +24,20 @@ fn undo(harness: &mut Harness<'_, EditorApp>) {
 #[test]
 fn orbiting_leaves_the_scene_unmodified_and_renders_the_view_at_the_viewport_size() {
     let mut harness = harness("orbit", true);
-    let before = harness.state().scene().clone();
+    let before = harness.state().document().scene.clone();
     assert!(
-        harness.state().view_camera().through_scene_camera,
+        harness.state().view().looking.camera.through_scene_camera,
         "files open in camera view"
     );
     orbit(&mut harness, Vec2::new(120.0, 20.0));
     let app = harness.state();
-    assert!(!app.view_camera().through_scene_camera);
-    assert_ne!(app.view_camera().position, before.camera.position);
-    assert_eq!(app.scene(), &before, "the scene camera did not move");
+    assert!(!app.view().looking.camera.through_scene_camera);
+    assert_ne!(app.view().looking.camera.position, before.camera.position);
+    assert_eq!(
+        &app.document().scene,
+        &before,
+        "the scene camera did not move"
+    );
     assert!(
         !app.is_dirty() && !app.title().contains('*'),
         "{}",
@@ -57,9 +61,13 @@ fn orbiting_leaves_the_scene_unmodified_and_renders_the_view_at_the_viewport_siz
     );
 
     undo(&mut harness);
-    assert_eq!(harness.state().scene(), &before, "nothing to undo");
+    assert_eq!(
+        &harness.state().document().scene,
+        &before,
+        "nothing to undo"
+    );
     assert!(
-        !harness.state().view_camera().through_scene_camera,
+        !harness.state().view().looking.camera.through_scene_camera,
         "the view stays"
     );
 }
@@ -70,8 +78,8 @@ fn camera_view_shows_the_scene_camera_and_its_final_frame_equals_render() {
     orbit(&mut harness, Vec2::new(-90.0, 10.0));
     harness.key_press(Key::Num0);
     harness.run_ok();
-    assert!(harness.state().view_camera().through_scene_camera);
-    let scene = harness.state().scene().clone();
+    assert!(harness.state().view().looking.camera.through_scene_camera);
+    let scene = harness.state().document().scene.clone();
     assert_eq!(harness.state().shown_camera(), scene.camera);
     wait_for_final(&mut harness);
     let frame = harness.state().preview().unwrap().frame().unwrap();
@@ -97,18 +105,18 @@ fn camera_view_shows_the_scene_camera_and_its_final_frame_equals_render() {
     // The button goes back to the view camera where it was.
     harness.get_by_label(CAMERA_VIEW_LABEL).click();
     harness.run_ok();
-    assert!(!harness.state().view_camera().through_scene_camera);
+    assert!(!harness.state().view().looking.camera.through_scene_camera);
 }
 
 #[test]
 fn setting_the_scene_camera_from_the_view_is_one_undo_step() {
     let mut harness = harness("set-camera", false);
-    let before = harness.state().scene().clone();
+    let before = harness.state().document().scene.clone();
     orbit(&mut harness, Vec2::new(100.0, -15.0));
-    let view = harness.state().view_camera().clone();
+    let view = harness.state().view().looking.camera.clone();
     harness.key_press_modifiers(Modifiers::COMMAND | Modifiers::ALT, Key::Num0);
     harness.run_ok();
-    let camera = harness.state().scene().camera.clone();
+    let camera = harness.state().document().scene.camera.clone();
     assert_eq!(
         (camera.position, camera.look_at),
         (view.position, view.look_at)
@@ -119,12 +127,12 @@ fn setting_the_scene_camera_from_the_view_is_one_undo_step() {
     );
     assert!(harness.state().is_dirty());
     assert!(
-        harness.state().view_camera().through_scene_camera,
+        harness.state().view().looking.camera.through_scene_camera,
         "looking through it now"
     );
     undo(&mut harness);
     assert_eq!(
-        harness.state().scene(),
+        &harness.state().document().scene,
         &before,
         "one undo restores the camera"
     );
@@ -133,7 +141,7 @@ fn setting_the_scene_camera_from_the_view_is_one_undo_step() {
 #[test]
 fn the_scene_camera_is_drawn_from_the_view_selectable_and_movable() {
     let mut harness = harness("frustum", false);
-    let before = harness.state().scene().clone();
+    let before = harness.state().document().scene.clone();
     // Step back and to the side so the scene camera is in view.
     orbit(&mut harness, Vec2::new(210.0, 20.0));
     let centre = picture(&harness).center();
@@ -156,14 +164,14 @@ fn the_scene_camera_is_drawn_from_the_view_selectable_and_movable() {
     );
     let at = screen(&harness, eye);
     click(&mut harness, at, Modifiers::NONE);
-    assert_eq!(harness.state().selection(), &Selection::Camera);
+    assert_eq!(&harness.state().document().selection, &Selection::Camera);
 
     // The move gizmo at the eye: drag the x arrow by one world unit.
     let length = 84.0 * view(&harness).world_per_point(eye);
     let grab = eye + DVec3::X * length * 0.7;
     let (from, to) = (screen(&harness, grab), screen(&harness, grab + DVec3::X));
     drag(&mut harness, from, to, Modifiers::NONE);
-    let moved = harness.state().scene().camera.clone();
+    let moved = harness.state().document().scene.camera.clone();
     assert!(
         (moved.position - (eye + DVec3::X)).length() < 5e-3,
         "{}",
@@ -174,7 +182,11 @@ fn the_scene_camera_is_drawn_from_the_view_selectable_and_movable() {
         "the camera keeps its aim"
     );
     undo(&mut harness);
-    assert_eq!(harness.state().scene(), &before, "one undo for the drag");
+    assert_eq!(
+        &harness.state().document().scene,
+        &before,
+        "one undo for the drag"
+    );
 }
 
 #[test]
@@ -182,29 +194,32 @@ fn the_view_is_remembered_per_file() {
     let path = scene_file("memory");
     let mut harness = harness_on(path.clone(), false, ViewMemory::default());
     orbit(&mut harness, Vec2::new(60.0, 25.0));
-    let view = harness.state().view_camera().clone();
+    let view = harness.state().view().looking.camera.clone();
     let memory = harness.state().view_memory();
     assert_eq!(memory.get(&path), Some(&view));
     let reopened = harness_on(path, false, memory.clone());
     assert_eq!(
-        reopened.state().view_camera(),
+        &reopened.state().view().looking.camera,
         &view,
         "the same file, the same view"
     );
     let other = harness_on(scene_file("memory-other"), false, memory);
     assert!(
-        other.state().view_camera().through_scene_camera,
+        other.state().view().looking.camera.through_scene_camera,
         "another file: camera view"
     );
     // Nothing of the view is in the scene file.
-    assert_eq!(reopened.state().scene(), other.state().scene());
+    assert_eq!(
+        &reopened.state().document().scene,
+        &other.state().document().scene
+    );
 }
 
 #[test]
 fn leaving_camera_view_starts_from_where_the_scene_camera_is_now() {
     let mut harness = harness("leave_camera_view", false);
     // The scene camera moves (an edit) while camera view is on...
-    let mut camera = harness.state().scene().camera.clone();
+    let mut camera = harness.state().document().scene.camera.clone();
     camera.position += glam::DVec3::new(2.0, 1.0, -1.5);
     harness
         .state_mut()
@@ -217,7 +232,7 @@ fn leaving_camera_view_starts_from_where_the_scene_camera_is_now() {
         .state_mut()
         .push(raylab::ui::Command::ToggleCameraView);
     harness.run();
-    let view = harness.state().view_camera();
+    let view = &harness.state().view().looking.camera;
     assert!(!view.through_scene_camera);
     assert_eq!(
         (view.position, view.look_at, view.fov_deg),

@@ -3,21 +3,15 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::scene::Scene;
-use crate::trace::Isolation;
-use crate::ui::bug_gallery::BugGallery;
-use crate::ui::commands::{Command, Selection};
-use crate::ui::compare::CompareSession;
+use crate::ui::commands::Command;
 use crate::ui::document::autosave::Autosave;
 use crate::ui::document::confirm::DiscardAction;
-use crate::ui::document::export::ExportState;
 use crate::ui::document::file_dialog::FileDialogs;
 use crate::ui::document::files;
 use crate::ui::document::native_dialogs::NativeDialogs;
 use crate::ui::document::recent::RecentFiles;
 use crate::ui::panels::status_bar::StatusMessage;
 use crate::ui::screenshot::ScreenshotHook;
-use crate::ui::state::PreviewSettings;
 use crate::ui::state::keep_in_range;
 use crate::ui::stored::Stored;
 use crate::ui::viewport::isolation_memory::IsolationMemory;
@@ -34,6 +28,7 @@ mod view;
 mod view_state;
 
 pub use document::Document;
+pub use looking::Looking;
 pub use tools::Tools;
 pub use view::View;
 
@@ -125,16 +120,23 @@ impl EditorApp {
         self.commands.push(command);
     }
 
-    /// The scene being edited.
+    /// The document: the scene, its file, undo history and selection. Read only: the
+    /// scene changes through commands ([`Self::push`]), which also record undo.
     #[must_use]
-    pub fn scene(&self) -> &Scene {
-        &self.document.scene
+    pub fn document(&self) -> &Document {
+        &self.document
     }
 
-    /// What the inspector shows.
+    /// How the document is shown: preview settings, view camera, isolation.
     #[must_use]
-    pub fn selection(&self) -> &Selection {
-        &self.document.selection
+    pub fn view(&self) -> &View {
+        &self.view
+    }
+
+    /// The tool windows and dialogs: export, compare, bug gallery, file dialogs.
+    #[must_use]
+    pub fn tools(&self) -> &Tools {
+        &self.tools
     }
 
     /// The scene's file, if it has one.
@@ -179,12 +181,6 @@ impl EditorApp {
         self.allow_close
     }
 
-    /// The file dialogs (which one is open, the in-app preference).
-    #[must_use]
-    pub fn file_dialogs(&self) -> &FileDialogs {
-        &self.tools.file_dialogs
-    }
-
     /// The action waiting for a "discard unsaved changes?" answer.
     #[must_use]
     pub fn pending_discard(&self) -> Option<&DiscardAction> {
@@ -198,28 +194,10 @@ impl EditorApp {
         format!("{}{marker} — raylab", self.document.file_label())
     }
 
-    /// The export window's state.
-    #[must_use]
-    pub fn export(&self) -> &ExportState {
-        &self.tools.export
-    }
-
     /// The preview, when running.
     #[must_use]
     pub fn preview(&self) -> Option<&PreviewLink> {
         self.view.preview.as_ref()
-    }
-
-    /// The toolbar's settings.
-    #[must_use]
-    pub fn preview_settings(&self) -> &PreviewSettings {
-        &self.view.preview_settings
-    }
-
-    /// Lights muted or solo and objects hidden, by scene index.
-    #[must_use]
-    pub fn isolation(&self) -> &Isolation {
-        &self.view.isolation
     }
 
     /// Installs the per-file isolation memory of an earlier run (read from eframe's
@@ -240,18 +218,6 @@ impl EditorApp {
             memory.remember(path, &self.view.isolation);
         }
         memory
-    }
-
-    /// The comparison with another renderer's picture.
-    #[must_use]
-    pub fn compare(&self) -> &CompareSession {
-        &self.tools.compare
-    }
-
-    /// The Bug gallery window's state.
-    #[must_use]
-    pub fn bug_gallery(&self) -> &BugGallery {
-        &self.tools.bug_gallery
     }
 
     /// Recent files.

@@ -22,7 +22,7 @@ use std::path::PathBuf;
 
 use stored::Stored;
 
-pub use app::{EditorApp, EditorOptions};
+pub use app::{Document, EditorApp, EditorOptions, Looking, Tools, View};
 pub use commands::{Command, LightKind, SceneEdit, Selection};
 pub use document::confirm::DiscardAction;
 pub use document::export::ExportState;
@@ -120,7 +120,8 @@ pub fn run(scene: Option<PathBuf>) -> Result<(), String> {
                 ));
             }
             if let Some(label) = std::env::var_os(SCREENSHOT_SELECT_ENV)
-                && let Some(selection) = selection_by_label(app.scene(), &label.to_string_lossy())
+                && let Some(selection) =
+                    selection_by_label(&app.document().scene, &label.to_string_lossy())
             {
                 app.push(Command::Select(selection));
             }

@@ -48,7 +48,7 @@ pub fn open_example(harness: &mut Harness<'_, EditorApp>, name: &str) {
 pub fn select_red_ball(harness: &mut Harness<'_, EditorApp>) {
     harness.get_by_label("red ball").click();
     harness.run();
-    assert_eq!(harness.state().selection(), &Selection::Object(1));
+    assert_eq!(&harness.state().document().selection, &Selection::Object(1));
 }
 
 /// Steps the harness until `done` holds, sleeping between steps (bounded).

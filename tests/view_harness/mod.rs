@@ -86,7 +86,7 @@ pub fn screen(harness: &Harness<'_, EditorApp>, p_world: DVec3) -> Pos2 {
 
 /// Where scene object `index`'s origin is on screen.
 pub fn object_on_screen(harness: &Harness<'_, EditorApp>, index: usize) -> Pos2 {
-    let origin = harness.state().scene().objects[index]
+    let origin = harness.state().document().scene.objects[index]
         .transform
         .world_from_object()
         .translation;
@@ -95,7 +95,7 @@ pub fn object_on_screen(harness: &Harness<'_, EditorApp>, index: usize) -> Pos2 
 
 /// The scene camera's pixel that sees world point `p`.
 pub fn scene_pixel(harness: &Harness<'_, EditorApp>, p: DVec3) -> (u32, u32) {
-    let camera = &harness.state().scene().camera;
+    let camera = &harness.state().document().scene.camera;
     let q = PinholeCamera::new(camera, camera.width, camera.height)
         .project(p)
         .unwrap();
@@ -107,10 +107,10 @@ pub fn segments(harness: &Harness<'_, EditorApp>) -> Vec<ScreenSegment> {
     let app = harness.state();
     screen_segments(
         &view(harness),
-        app.scene(),
+        &app.document().scene,
         app.inspections(),
-        app.ray_paths(),
-        app.inspected_pixel(),
+        &app.view().looking.ray_paths,
+        app.view().looking.inspected,
     )
 }
 

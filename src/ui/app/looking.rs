@@ -22,7 +22,7 @@ struct Probes {
 }
 
 /// How the editor looks at the scene; none of it is part of the scene.
-pub(super) struct Looking {
+pub struct Looking {
     /// The view camera, or camera view.
     pub camera: ViewCamera,
     /// The size a free view renders at (the viewport's, from the last layout).
@@ -43,7 +43,7 @@ pub(super) struct Looking {
 
 impl Looking {
     /// Looking through `scene`'s camera, nothing inspected.
-    pub fn new(scene: &Scene) -> Self {
+    pub(crate) fn new(scene: &Scene) -> Self {
         Self {
             camera: ViewCamera::through(&scene.camera),
             free_size: (scene.camera.width, scene.camera.height),
@@ -58,7 +58,7 @@ impl Looking {
 
     /// A new document: camera view on its camera (or the view remembered for its file),
     /// nothing inspected or pinned.
-    pub fn reset(&mut self, scene: &Scene, path: Option<&std::path::Path>) {
+    pub(crate) fn reset(&mut self, scene: &Scene, path: Option<&std::path::Path>) {
         self.camera = path
             .and_then(|p| self.memory.get(p).cloned())
             .unwrap_or_else(|| ViewCamera::through(&scene.camera));
@@ -68,7 +68,7 @@ impl Looking {
     }
 
     /// Starts the probes if they are not running; they repaint `ctx` when done.
-    pub fn start(&mut self, ctx: &egui::Context) {
+    pub(crate) fn start(&mut self, ctx: &egui::Context) {
         if self.probes.is_none() {
             let cache = Arc::new(WorldCache::default());
             let ctx = ctx.clone();
@@ -82,7 +82,7 @@ impl Looking {
 
     /// The scene the preview renders: `scene` itself in camera view, else a copy with
     /// the view camera at the free size.
-    pub fn shown_scene<'s>(&'s mut self, scene: &'s Scene) -> &'s Scene {
+    pub(crate) fn shown_scene<'s>(&'s mut self, scene: &'s Scene) -> &'s Scene {
         if self.camera.through_scene_camera {
             return scene;
         }
@@ -108,14 +108,14 @@ impl Looking {
     }
 
     /// Casts a click's ray off the UI thread, past the hidden objects.
-    pub fn pick(&mut self, scene: &Scene, isolation: &Isolation, request: PickRequest) {
+    pub(crate) fn pick(&mut self, scene: &Scene, isolation: &Isolation, request: PickRequest) {
         if let Some(probes) = &mut self.probes {
             probes.picks.ask(scene, isolation, request);
         }
     }
 
     /// Takes finished answers: the command a pick asks for (or why it found nothing).
-    pub fn poll(&mut self, scene: &Scene) -> Option<Result<crate::ui::Command, String>> {
+    pub(crate) fn poll(&mut self, scene: &Scene) -> Option<Result<crate::ui::Command, String>> {
         let probes = self.probes.as_mut()?;
         probes.inspections.poll();
         probes.picks.poll(scene)
@@ -123,7 +123,7 @@ impl Looking {
 
     /// Asks for the inspected and pinned pixels of `scene` with `switches` and
     /// `isolation` if they are not what was last asked.
-    pub fn sync_inspections(
+    pub(crate) fn sync_inspections(
         &mut self,
         scene: &Scene,
         switches: TermSwitches,

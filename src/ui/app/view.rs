@@ -18,7 +18,7 @@ pub struct View {
     /// The toolbar's switches, view and overlays.
     pub preview_settings: PreviewSettings,
     /// The view camera, the inspected and pinned pixels, the probes.
-    pub(super) looking: Looking,
+    pub looking: Looking,
     /// Lights muted or solo, objects hidden, by scene index (remembered per file).
     pub isolation: Isolation,
     /// The isolation of every file that has some, for the next time it opens.

@@ -2,8 +2,6 @@
 //! pixels and their inspections, the ray-path settings, the views remembered per file.
 
 use super::EditorApp;
-use crate::ui::state::RayPathSettings;
-use crate::ui::state::ViewCamera;
 use crate::ui::viewport::pixel_inspector::PixelInspection;
 use crate::ui::viewport::view_memory::ViewMemory;
 
@@ -15,28 +13,10 @@ impl EditorApp {
         self.view.looking.inspection()
     }
 
-    /// The inspected pixel of the scene camera's image.
-    #[must_use]
-    pub fn inspected_pixel(&self) -> Option<(u32, u32)> {
-        self.view.looking.inspected
-    }
-
     /// The newest inspections of the inspected pixel, its row or column, and the pins.
     #[must_use]
     pub fn inspections(&self) -> &[PixelInspection] {
         self.view.looking.inspections()
-    }
-
-    /// What the ray-path overlay draws, and the pinned pixels.
-    #[must_use]
-    pub fn ray_paths(&self) -> &RayPathSettings {
-        &self.view.looking.ray_paths
-    }
-
-    /// The view camera (or camera view).
-    #[must_use]
-    pub fn view_camera(&self) -> &ViewCamera {
-        &self.view.looking.camera
     }
 
     /// The camera the viewport shows, with the size of the image it renders.
