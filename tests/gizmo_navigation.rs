@@ -44,7 +44,7 @@ fn orbiting_on_empty_space_moves_the_view_and_a_click_still_picks() {
         &before,
         "the scene camera stays"
     );
-    assert!(!harness.state().is_dirty());
+    assert!(!harness.state().document().is_dirty());
     undo(&mut harness);
     assert_eq!(
         view_pose(&harness),
@@ -109,7 +109,7 @@ fn shift_drag_pans_and_the_wheel_zooms_the_view() {
         &before,
         "the scene camera stays"
     );
-    assert!(!harness.state().is_dirty());
+    assert!(!harness.state().document().is_dirty());
 }
 
 #[test]

@@ -74,7 +74,10 @@ fn a_pin_keeps_a_pixels_rays_and_row_mode_traces_the_row() {
 
     press(&mut harness, "Clear pins");
     assert!(harness.state().view().looking.ray_paths.pinned.is_empty());
-    assert!(!harness.state().document().scene.objects.is_empty() && !harness.state().is_dirty());
+    assert!(
+        !harness.state().document().scene.objects.is_empty()
+            && !harness.state().document().is_dirty()
+    );
 }
 
 /// Which end of a segment a point is measured from.

@@ -28,7 +28,7 @@ fn an_untouched_import_is_no_change_and_the_title_names_its_file() {
     let mut harness = harness();
     harness.state_mut().push(Command::Open(dir.join("a.txt")));
     harness.run();
-    assert!(!harness.state().is_dirty(), "nothing was edited");
+    assert!(!harness.state().document().is_dirty(), "nothing was edited");
     assert_eq!(harness.state().title(), "a.txt (imported) — raylab");
     // Opening another asks nothing.
     harness.state_mut().push(Command::Open(dir.join("c.ron")));
@@ -40,7 +40,7 @@ fn an_untouched_import_is_no_change_and_the_title_names_its_file() {
         .state_mut()
         .push(Command::ImportLegacy(dir.join("b.txt")));
     harness.run();
-    assert!(!harness.state().is_dirty());
+    assert!(!harness.state().document().is_dirty());
     assert_eq!(harness.state().title(), "b.txt (imported) — raylab");
     // An edit is a change, marked and asked about.
     harness

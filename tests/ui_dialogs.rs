@@ -32,7 +32,7 @@ fn untitled_and_edited(harness: &mut Harness<'_, EditorApp>) {
         .state_mut()
         .push(Command::Edit(SceneEdit::AddObject(Shape::Sphere)));
     harness.run();
-    assert!(harness.state().is_dirty());
+    assert!(harness.state().document().is_dirty());
     assert_eq!(harness.state().path(), None);
 }
 
@@ -77,7 +77,7 @@ fn save_as_of_an_untitled_scene_without_native_dialogs_writes_the_file() {
         &harness.state().document().scene
     );
     assert_eq!(harness.state().path(), Some(path.as_path()));
-    assert!(!harness.state().is_dirty());
+    assert!(!harness.state().document().is_dirty());
     assert_eq!(harness.state().title(), "my scene.ron — raylab");
     assert_eq!(harness.state().tools().file_dialogs.open_purpose(), None);
 }
@@ -113,7 +113,7 @@ fn a_cancelled_save_dialog_cancels_the_quit() {
     harness.get_by_label("Cancel").click();
     harness.run();
     assert!(!harness.state().is_closing());
-    assert!(harness.state().is_dirty());
+    assert!(harness.state().document().is_dirty());
     assert_eq!(harness.state().error(), None);
     assert!(
         std::fs::read_dir(&dir).unwrap().next().is_none(),

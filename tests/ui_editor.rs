@@ -25,7 +25,7 @@ fn translate(app: &EditorApp, index: usize) -> DVec3 {
 fn opens_the_default_scene_with_a_clean_title() {
     let harness = harness();
     assert_eq!(&harness.state().document().scene, &default_scene());
-    assert!(!harness.state().is_dirty());
+    assert!(!harness.state().document().is_dirty());
     assert_eq!(harness.state().title(), "default scene — raylab");
     harness.get_by_label("gold cone");
     harness.get_by_label("Spot light 4");
@@ -54,14 +54,14 @@ fn an_inspector_edit_is_undone_and_redone_with_the_shortcuts() {
     harness.get_by_label("translate x").set_value_accesskit(2.5);
     harness.run();
     assert_eq!(translate(harness.state(), 1).x, 2.5);
-    assert!(harness.state().is_dirty());
+    assert!(harness.state().document().is_dirty());
     assert_eq!(harness.state().title(), "default scene* — raylab");
 
     harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     harness.run();
     assert_eq!(translate(harness.state(), 1), before);
     assert!(
-        !harness.state().is_dirty(),
+        !harness.state().document().is_dirty(),
         "undo back to the file clears the marker"
     );
 

@@ -61,11 +61,11 @@ fn save_then_open_round_trips_and_clears_the_unsaved_marker() {
         raylab::scene::Shape::Cylinder,
     )));
     harness.run();
-    assert!(harness.state().is_dirty());
+    assert!(harness.state().document().is_dirty());
 
     harness.state_mut().push(Command::SaveAs(path.clone()));
     harness.run();
-    assert!(!harness.state().is_dirty());
+    assert!(!harness.state().document().is_dirty());
     assert_eq!(harness.state().path(), Some(path.as_path()));
     assert_eq!(harness.state().title(), "edited.ron — raylab");
     assert_eq!(
@@ -107,7 +107,7 @@ fn saving_into_a_missing_folder_shows_the_error_and_stays_unsaved() {
         .to_owned();
     assert!(error.contains("cannot write"), "{error}");
     harness.get_by_label_contains("cannot write");
-    assert!(harness.state().is_dirty());
+    assert!(harness.state().document().is_dirty());
     assert_eq!(harness.state().path(), None);
     assert!(save_scene_to(&harness.state().document().scene, &path).is_err());
     assert!(!path.exists());
@@ -180,7 +180,7 @@ fn closing_the_window_with_unsaved_changes_asks_first() {
     // Without unsaved changes the window closes without asking.
     harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     harness.run();
-    assert!(!harness.state().is_dirty());
+    assert!(!harness.state().document().is_dirty());
     close_window(&mut harness);
     assert_eq!(harness.state().pending_discard(), None);
 }
@@ -246,10 +246,10 @@ fn ctrl_s_saves_to_the_open_file_and_recent_files_reopen_it() {
     select_red_ball(&mut harness);
     harness.get_by_label("scale x").set_value_accesskit(1.5);
     harness.run();
-    assert!(harness.state().is_dirty());
+    assert!(harness.state().document().is_dirty());
     harness.key_press_modifiers(Modifiers::COMMAND, Key::S);
     harness.run();
-    assert!(!harness.state().is_dirty());
+    assert!(!harness.state().document().is_dirty());
     assert_eq!(
         &load_scene(&path).unwrap(),
         &harness.state().document().scene

@@ -317,6 +317,9 @@ fn a_mesh_imported_before_the_first_save_is_saved_relative_to_the_scene() {
             path: "models/pyramid.obj".to_owned()
         }
     );
-    assert!(!harness.state().is_dirty(), "the scene is what was saved");
+    assert!(
+        !harness.state().document().is_dirty(),
+        "the scene is what was saved"
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }

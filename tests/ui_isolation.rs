@@ -119,7 +119,10 @@ fn outliner_toggles_isolate_without_editing_and_the_final_frame_equals_the_cli()
         hidden_parts: std::collections::BTreeSet::new(),
     };
     assert_eq!(isolation(&harness), expected);
-    assert!(!harness.state().is_dirty(), "isolation is not a scene edit");
+    assert!(
+        !harness.state().document().is_dirty(),
+        "isolation is not a scene edit"
+    );
     assert_eq!(&harness.state().document().scene, &small_scene());
     let preview = harness.state().preview().unwrap();
     assert!(preview.generation() > before, "the preview restarted");
@@ -211,7 +214,7 @@ fn a_hidden_object_is_not_picked_and_light_markers_carry_mute_and_solo() {
             .query_by_label("mute Point light 2 (marker)")
             .is_none()
     );
-    assert!(!harness.state().is_dirty());
+    assert!(!harness.state().document().is_dirty());
 }
 
 #[test]
@@ -258,7 +261,7 @@ fn switches_follow_a_delete_and_its_undo_and_are_remembered_per_file() {
     later.state_mut().set_isolation_memory(memory);
     later.run_ok();
     assert_eq!(isolation(&later), kept);
-    assert!(!later.state().is_dirty());
+    assert!(!later.state().document().is_dirty());
 }
 
 #[test]

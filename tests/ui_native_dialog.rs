@@ -103,7 +103,7 @@ fn the_window_keeps_working_while_a_native_save_dialog_is_open() {
     step_until(&mut harness, "the save to the picked file", |app| {
         app.path() == Some(picked.as_path())
     });
-    assert!(!harness.state().is_dirty());
+    assert!(!harness.state().document().is_dirty());
     let saved = load_scene(&picked).unwrap();
     assert_eq!(saved.objects.len(), 1);
     assert_eq!(saved.objects[0].shape, Shape::Cube);

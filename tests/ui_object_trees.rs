@@ -173,7 +173,10 @@ fn a_part_is_hidden_from_its_own_row_and_the_toolbar_names_it() {
         std::collections::BTreeSet::from([vec![die, 2]])
     );
     assert!(isolation.hidden_objects.is_empty());
-    assert!(!harness.state().is_dirty(), "hiding is not a scene edit");
+    assert!(
+        !harness.state().document().is_dirty(),
+        "hiding is not a scene edit"
+    );
     harness.get_by_label_contains("hidden die/pip 6.1");
     harness.get_by_label("hide pip 6.1").click();
     harness.run();

@@ -108,7 +108,7 @@ fn toolbar_switches_restart_the_preview_and_its_final_frame_equals_the_cli() {
     assert!(options.switches.is_on(Term::Specular));
     assert!(preview.generation() > before, "the preview restarted");
     assert!(
-        !harness.state().is_dirty(),
+        !harness.state().document().is_dirty(),
         "a toolbar switch is not a scene edit"
     );
     assert_eq!(&harness.state().document().scene, &scene);

@@ -27,7 +27,10 @@ fn unsaved_work_of_a_killed_editor_is_offered_and_restored() {
     harness.run();
     assert!(!harness.state().has_restore_offer());
     assert_eq!(&harness.state().document().scene, &lost);
-    assert!(harness.state().is_dirty(), "restored edits are unsaved");
+    assert!(
+        harness.state().document().is_dirty(),
+        "restored edits are unsaved"
+    );
     // The offer was used up: a new editor in the same folder offers nothing.
     assert!(RecoveryStore::new(dir).orphans().is_empty());
 }
@@ -47,14 +50,14 @@ fn unsaved_edits_reach_the_recovery_file_and_leave_it_on_save() {
     harness.run();
     harness.key_press(Key::Delete);
     harness.run();
-    assert!(harness.state().is_dirty());
+    assert!(harness.state().document().is_dirty());
     assert!(own.exists(), "the unsaved edit was written at once");
     harness
         .state_mut()
         .push(Command::SaveAs(dir.join("saved.ron")));
     harness.run();
     harness.run();
-    assert!(!harness.state().is_dirty());
+    assert!(!harness.state().document().is_dirty());
     assert!(!own.exists(), "nothing left to recover after a save");
 }
 

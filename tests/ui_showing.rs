@@ -110,8 +110,14 @@ fn opening_every_panel_on_a_scene_at_the_contracts_edges_changes_nothing() {
             bits,
             "showing {label} edited the scene"
         );
-        assert!(!app.can_undo(), "showing {label} left an undo step");
-        assert!(!app.is_dirty(), "showing {label} marked the scene modified");
+        assert!(
+            !app.document().can_undo(),
+            "showing {label} left an undo step"
+        );
+        assert!(
+            !app.document().is_dirty(),
+            "showing {label} marked the scene modified"
+        );
         assert!(!app.title().contains('*'), "{}", app.title());
     }
 }

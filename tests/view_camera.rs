@@ -39,7 +39,7 @@ fn orbiting_leaves_the_scene_unmodified_and_renders_the_view_at_the_viewport_siz
         "the scene camera did not move"
     );
     assert!(
-        !app.is_dirty() && !app.title().contains('*'),
+        !app.document().is_dirty() && !app.title().contains('*'),
         "{}",
         app.title()
     );
@@ -125,7 +125,7 @@ fn setting_the_scene_camera_from_the_view_is_one_undo_step() {
         (camera.width, camera.height),
         (before.camera.width, before.camera.height)
     );
-    assert!(harness.state().is_dirty());
+    assert!(harness.state().document().is_dirty());
     assert!(
         harness.state().view().looking.camera.through_scene_camera,
         "looking through it now"

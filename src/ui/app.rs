@@ -145,18 +145,6 @@ impl EditorApp {
         self.document.path.as_deref()
     }
 
-    /// Whether the scene differs from its file.
-    #[must_use]
-    pub fn is_dirty(&self) -> bool {
-        self.document.is_dirty()
-    }
-
-    /// Whether Undo would do something (an edit was made since the scene was opened).
-    #[must_use]
-    pub fn can_undo(&self) -> bool {
-        self.document.can_undo()
-    }
-
     /// The error shown in the error area, if any.
     #[must_use]
     pub fn error(&self) -> Option<&str> {
@@ -190,7 +178,7 @@ impl EditorApp {
     /// The window title: file name, `*` when unsaved.
     #[must_use]
     pub fn title(&self) -> String {
-        let marker = if self.is_dirty() { "*" } else { "" };
+        let marker = if self.document.is_dirty() { "*" } else { "" };
         format!("{}{marker} — raylab", self.document.file_label())
     }
 
