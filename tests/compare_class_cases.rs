@@ -206,3 +206,25 @@ fn the_last_light_skipped_and_the_ambient_per_light_are_named_as_loop_bugs() {
     );
     assert!(first.summary.contains("last object"), "{}", first.summary);
 }
+
+#[test]
+fn a_point_light_without_its_falloff_is_named() {
+    let scene = example("default.ron");
+    let point = scene
+        .lights
+        .iter()
+        .position(|l| matches!(l, Light::Point { .. }))
+        .expect("default.ron has a point light");
+    let c = diff(
+        &scene,
+        &planted(&scene, &format!("spot-no-falloff@{point}")),
+    );
+    let first = &c.explanations[0];
+    assert_eq!(
+        first.cause,
+        Cause::Spot(SpotBug::NoFalloff),
+        "{:#?}",
+        c.text_lines()
+    );
+    assert_eq!(first.light, Some(point), "{:#?}", c.text_lines());
+}
