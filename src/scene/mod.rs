@@ -26,7 +26,7 @@ pub use error::SceneError;
 pub use file::{
     load_scene, parse_scene, save_scene, scene_to_ron, write_atomically, write_atomically_with,
 };
-pub use light::{Light, LightKind};
+pub use light::{Light, LightKind, LightSource};
 pub use mesh_file::{MeshData, load_obj, load_obj_watched, mesh_objects, read_scene_meshes};
 pub use model::{Camera, FORMAT_VERSION, Material, Object, RenderSettings, Scene};
 pub use obj_reader::LoadWatch;
