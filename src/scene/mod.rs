@@ -10,6 +10,7 @@ pub mod examples;
 mod file;
 pub mod legacy;
 mod light;
+mod light_file;
 pub mod mesh_file;
 mod model;
 mod obj_reader;

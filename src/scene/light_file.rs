@@ -2,18 +2,31 @@
 //! (`SCENE_FORMAT.md`) writes them. [`Light`] reads and writes through this form, so its
 //! [`LightSource`] changes nothing in the files. `#[serde(flatten)]` cannot do this: RON
 //! writes a flattened struct as a map, and flatten does not work with
-//! `deny_unknown_fields`.
+//! `deny_unknown_fields`. The impls are here, not derived on [`Light`] with
+//! `#[serde(from, into)]`, so that `light` does not import this module back.
 
 use glam::DVec3;
-use serde::{Deserialize, Serialize};
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
-use super::{Light, LightSource};
+use super::light::{Light, LightSource};
+
+impl Serialize for Light {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        LightFile::from(self.clone()).serialize(serializer)
+    }
+}
+
+impl<'de> Deserialize<'de> for Light {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        LightFile::deserialize(deserializer).map(Light::from)
+    }
+}
 
 /// [`Light`] in the file's layout; named `Light` for serde so messages name the type as
 /// before.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[serde(rename = "Light", deny_unknown_fields)]
-pub(super) enum LightFile {
+enum LightFile {
     Ambient {
         colour: DVec3,
         #[serde(default = "default_intensity")]

@@ -2,17 +2,14 @@
 //! [`LightSource`].
 
 use glam::DVec3;
-use serde::{Deserialize, Serialize};
-
-mod file_form;
 
 /// A light. Strength is `colour * intensity`; point and spot lights fall off as 1/d^2.
 ///
 /// Files hold the fields of each kind side by side (`Point(position: .., colour: ..,
 /// radius: ..)`, see `SCENE_FORMAT.md`); in memory a Point's and a Spot's shared fields
-/// are one [`LightSource`]. `file_form` converts, so files read and write as before.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(from = "file_form::LightFile", into = "file_form::LightFile")]
+/// are one [`LightSource`]. Its `Serialize` and `Deserialize` are in `light_file`, which
+/// converts, so files read and write as before.
+#[derive(Clone, Debug, PartialEq)]
 pub enum Light {
     /// Adds `ka * colour * intensity` everywhere.
     Ambient {
