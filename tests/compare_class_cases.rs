@@ -24,8 +24,10 @@ fn example(name: &str) -> raylab::scene::Scene {
     scene
 }
 
-#[test]
-fn a_missing_light_beside_a_mirror_is_a_missing_light_not_a_convention() {
+/// `default.ron` rendered by the test shader at `spp` samples with its directional
+/// light left out, diffed: the comparison and its report. The diff
+/// must name the light first, as missing.
+fn missing_directional_light(spp: u32) -> (raylab::compare::Comparison, String) {
     let scene = example("default.ron");
     let directional = scene
         .lights
@@ -34,7 +36,7 @@ fn a_missing_light_beside_a_mirror_is_a_missing_light_not_a_convention() {
         .unwrap();
     let other = render(
         &scene,
-        1,
+        spp,
         &Bugs {
             drop_light: Some(directional),
             ..Bugs::default()
@@ -45,6 +47,13 @@ fn a_missing_light_beside_a_mirror_is_a_missing_light_not_a_convention() {
     let first = &c.explanations[0];
     assert_eq!(first.cause, Cause::Factor, "{report}");
     assert_eq!(first.light, Some(directional), "{report}");
+    (c, report)
+}
+
+#[test]
+fn a_missing_light_beside_a_mirror_is_a_missing_light_not_a_convention() {
+    let (c, report) = missing_directional_light(1);
+    let first = &c.explanations[0];
     assert!(first.factor < 0.05, "{report}");
     assert!(
         c.explanations
@@ -131,25 +140,8 @@ fn a_correct_anti_aliased_render_draws_no_verdict_but_sampling() {
 
 #[test]
 fn a_bug_under_anti_aliasing_is_still_named() {
-    let scene = example("default.ron");
-    let directional = scene
-        .lights
-        .iter()
-        .position(|l| matches!(l, Light::Directional { .. }))
-        .unwrap();
-    let other = render(
-        &scene,
-        4,
-        &Bugs {
-            drop_light: Some(directional),
-            ..Bugs::default()
-        },
-    );
-    let c = diff(&scene, &other);
-    let report = c.text_lines().join("\n");
-    let first = &c.explanations[0];
-    assert_eq!(first.cause, Cause::Factor, "{report}");
-    assert_eq!(first.light, Some(directional), "{report}");
+    let (c, report) = missing_directional_light(4);
+    assert!(c.explanations[0].factor < 0.05, "{report}");
 }
 
 /// The scene's picture with `bugs` planted (as `raylab render --bug` takes them).
@@ -205,4 +197,26 @@ fn the_last_light_skipped_and_the_ambient_per_light_are_named_as_loop_bugs() {
         c.text_lines()
     );
     assert!(first.summary.contains("last object"), "{}", first.summary);
+}
+
+#[test]
+fn a_point_light_without_its_falloff_is_named() {
+    let scene = example("default.ron");
+    let point = scene
+        .lights
+        .iter()
+        .position(|l| matches!(l, Light::Point { .. }))
+        .expect("default.ron has a point light");
+    let c = diff(
+        &scene,
+        &planted(&scene, &format!("spot-no-falloff@{point}")),
+    );
+    let first = &c.explanations[0];
+    assert_eq!(
+        first.cause,
+        Cause::Spot(SpotBug::NoFalloff),
+        "{:#?}",
+        c.text_lines()
+    );
+    assert_eq!(first.light, Some(point), "{:#?}", c.text_lines());
 }

@@ -10,7 +10,9 @@ use std::path::Path;
 
 use one_sample::diff;
 use raylab::compare::{Comparison, ExplainedTerm, OtherImage};
-use raylab::scene::{ClampConvention, Conventions, Light, MirrorConvention, Scene, load_scene};
+use raylab::scene::{
+    ClampConvention, Conventions, Light, LightSource, MirrorConvention, Scene, load_scene,
+};
 use raylab::trace::{RenderOptions, RenderProgress, World, render};
 
 fn small_default() -> Scene {
@@ -62,7 +64,14 @@ fn every_ray_clamped_as_the_skeleton_does_is_named_clamp_each_ray() {
     let mut scene = small_default();
     for light in &mut scene.lights {
         match light {
-            Light::Point { intensity, .. } | Light::Spot { intensity, .. } => *intensity *= 4.0,
+            Light::Point {
+                source: LightSource { intensity, .. },
+                ..
+            }
+            | Light::Spot {
+                source: LightSource { intensity, .. },
+                ..
+            } => *intensity *= 4.0,
             _ => {}
         }
     }

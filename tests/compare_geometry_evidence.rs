@@ -13,7 +13,7 @@ mod one_sample;
 use glam::DVec3;
 use one_sample::diff;
 use raylab::compare::{Comparison, ExplainedTerm};
-use raylab::scene::{Light, Scene, Transform};
+use raylab::scene::{Light, LightSource, Scene, Transform};
 use shader::{Bugs, lab_scene, render};
 
 fn assert_no_geometry(label: &str, c: &Comparison) {
@@ -40,17 +40,11 @@ fn spot_lab(angle_deg: Option<f64>) -> Scene {
             position,
             direction: DVec3::new(0.3, -1.0, -0.6),
             angle_deg,
-            colour: DVec3::ONE,
-            intensity: 30.0,
-            radius: 0.0,
-            samples: 1,
+            source: LightSource::point(DVec3::ONE, 30.0),
         },
         None => Light::Point {
             position,
-            colour: DVec3::ONE,
-            intensity: 30.0,
-            radius: 0.0,
-            samples: 1,
+            source: LightSource::point(DVec3::ONE, 30.0),
         },
     };
     scene

@@ -7,7 +7,7 @@
 mod shader;
 
 use raylab::compare::{Cause, CompareOptions, Comparison, ExplainedTerm, compare};
-use raylab::scene::{Light, Scene};
+use raylab::scene::{Light, LightSource, Scene};
 use raylab::trace::{RenderOptions, RenderProgress, Term, World, render};
 use shader::{Bugs, lab_scene, render as render_with};
 
@@ -176,7 +176,11 @@ fn a_cone_normal_without_its_z_part_is_named() {
 fn colour_clamped_before_the_reflection_is_named_as_the_course_clamp_where_they_agree() {
     // A brighter point light, so the mirror ball sees surfaces brighter than 1.
     let mut scene = lab_scene();
-    if let Light::Point { intensity, .. } = &mut scene.lights[1] {
+    if let Light::Point {
+        source: LightSource { intensity, .. },
+        ..
+    } = &mut scene.lights[1]
+    {
         *intensity *= 2.5;
     }
     let bugs = Bugs {

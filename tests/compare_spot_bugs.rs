@@ -19,7 +19,7 @@ use glam::DVec3;
 use one_sample::{diff as diff_with, first_beyond_conventions};
 use own_render::own_render;
 use raylab::compare::{Comparison, OtherImage};
-use raylab::scene::{Light, Scene, parse_scene};
+use raylab::scene::{Light, LightSource, Scene, parse_scene};
 use shader::{Bugs, render as render_with};
 
 /// A floor, a ball, and two spot lights (scene indices 1 and 2) after an ambient light.
@@ -74,8 +74,9 @@ fn changed(mut scene: Scene, index: usize, change: impl FnOnce(&mut Light)) -> S
 fn no_cone(light: &mut Light) {
     let Light::Spot {
         position,
-        colour,
-        intensity,
+        source: LightSource {
+            colour, intensity, ..
+        },
         ..
     } = *light
     else {
@@ -83,10 +84,7 @@ fn no_cone(light: &mut Light) {
     };
     *light = Light::Point {
         position,
-        colour,
-        intensity,
-        radius: 0.0,
-        samples: 1,
+        source: LightSource::point(colour, intensity),
     };
 }
 

@@ -15,7 +15,8 @@ use glam::DVec3;
 use proptest::prelude::*;
 use raylab::scene::legacy::{Dialect, import_legacy, write_course_scene};
 use raylab::scene::{
-    Camera, Conventions, Light, Material, Object, RenderSettings, Scene, Shape, Transform, Trs,
+    Camera, Conventions, Light, LightSource, Material, Object, RenderSettings, Scene, Shape,
+    Transform, Trs,
 };
 use raylab::trace::{RenderOptions, RenderProgress, World, render};
 
@@ -130,10 +131,7 @@ fn light(dialect: Dialect) -> BoxedStrategy<Light> {
         (point(6.0), colour(2.0), 0.1..20.0f64).prop_map(|(position, colour, intensity)| {
             Light::Point {
                 position,
-                colour,
-                intensity,
-                radius: 0.0,
-                samples: 1,
+                source: LightSource::point(colour, intensity),
             }
         });
     match dialect {
@@ -163,10 +161,12 @@ fn light(dialect: Dialect) -> BoxedStrategy<Light> {
                             position,
                             direction,
                             angle_deg,
-                            colour,
-                            intensity: 3.0,
-                            radius,
-                            samples: if radius > 0.0 { samples } else { 1 },
+                            source: LightSource {
+                                colour,
+                                intensity: 3.0,
+                                radius,
+                                samples: if radius > 0.0 { samples } else { 1 },
+                            },
                         })
                     },
                 ),

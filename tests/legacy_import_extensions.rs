@@ -9,7 +9,9 @@ use std::path::{Path, PathBuf};
 use common::legacy::{assert_one_error, errors_of_text, import_text, trs};
 use glam::DVec3;
 use raylab::scene::legacy::{Dialect, LegacyImport, import_legacy, import_legacy_file};
-use raylab::scene::{Conventions, CsgOp, Light, Object, Shape, parse_scene, scene_to_ron};
+use raylab::scene::{
+    Conventions, CsgOp, Light, LightSource, Object, Shape, parse_scene, scene_to_ron,
+};
 
 fn ext_path(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -131,10 +133,12 @@ fn the_2020_dialect_with_every_students_extension() {
         scene.lights[1],
         Light::Point {
             position: DVec3::new(0.0, 4.0, -4.0),
-            colour: DVec3::splat(20.0),
-            intensity: 1.0,
-            radius: 0.5,
-            samples: 16,
+            source: LightSource {
+                colour: DVec3::splat(20.0),
+                intensity: 1.0,
+                radius: 0.5,
+                samples: 16,
+            },
         }
     );
     let glass = &scene.materials["glass"];
@@ -272,7 +276,13 @@ fn unknown_kinds_keywords_and_blocks_are_skipped_and_the_rest_imports() {
     .scene
     .lights[0];
     assert!(
-        matches!(light, Light::Spot { samples: 1024, .. }),
+        matches!(
+            light,
+            Light::Spot {
+                source: LightSource { samples: 1024, .. },
+                ..
+            }
+        ),
         "{light:?}"
     );
 }

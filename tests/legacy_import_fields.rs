@@ -9,7 +9,7 @@ use common::legacy::{
     material, trs,
 };
 use glam::DVec3;
-use raylab::scene::{Light, MAX_DEPTH, Shape, Transform, validate};
+use raylab::scene::{Light, LightSource, MAX_DEPTH, Shape, Transform, validate};
 
 #[test]
 fn full_scene_render_settings_and_camera() {
@@ -48,10 +48,7 @@ fn full_scene_lights_in_file_order_with_intensity_one() {
             },
             Light::Point {
                 position: DVec3::new(1.0, 5.0, -2.0),
-                colour: DVec3::splat(10.0),
-                intensity: 1.0,
-                radius: 0.0,
-                samples: 1,
+                source: LightSource::point(DVec3::splat(10.0), 1.0),
             },
             Light::Directional {
                 direction: DVec3::new(0.0, -1.0, 0.0),
@@ -62,10 +59,7 @@ fn full_scene_lights_in_file_order_with_intensity_one() {
                 position: DVec3::new(0.0, 5.0, 0.0),
                 direction: DVec3::new(0.0, -1.0, 1e-3),
                 angle_deg: 30.0,
-                colour: DVec3::new(20.0, 18.0, 16.0),
-                intensity: 1.0,
-                radius: 0.0,
-                samples: 1,
+                source: LightSource::point(DVec3::new(20.0, 18.0, 16.0), 1.0),
             },
         ]
     );
@@ -347,10 +341,7 @@ fn a_spot_light_without_angle_is_an_unlit_spot_with_a_warning() {
             position: DVec3::new(0.0, 3.0, 0.0),
             direction: DVec3::NEG_Y,
             angle_deg: 45.0,
-            colour: DVec3::splat(50.0),
-            intensity: 0.0,
-            radius: 0.0,
-            samples: 1,
+            source: LightSource::point(DVec3::splat(50.0), 0.0),
         }
     );
     validate(&import.scene).expect("valid");
@@ -363,7 +354,7 @@ fn wide_spot_angles_and_a_zero_exponent_import_as_written() {
         let scene = import_text(&text).scene;
         let expected: f64 = angle.parse().unwrap();
         assert!(
-            matches!(scene.lights[0], Light::Spot { angle_deg, intensity, .. } if angle_deg == expected && intensity == 1.0),
+            matches!(scene.lights[0], Light::Spot { angle_deg, source: LightSource { intensity, .. }, .. } if angle_deg == expected && intensity == 1.0),
             "{:?}",
             scene.lights
         );

@@ -157,10 +157,10 @@ proptest! {
         let per_axis = fsaa.min(256);
         prop_assert_eq!(u64::from(import.scene.render.samples_per_pixel), per_axis * per_axis);
         prop_assert!(import.scene.render.samples_per_pixel <= MAX_SAMPLES_PER_PIXEL);
-        let raylab::scene::Light::Point { samples: got, .. } = import.scene.lights[0] else {
+        let raylab::scene::Light::Point { source: light, .. } = import.scene.lights[0] else {
             panic!("{:?}", import.scene.lights);
         };
-        prop_assert_eq!(u64::from(got), samples.min(u64::from(MAX_LIGHT_SAMPLES)));
+        prop_assert_eq!(u64::from(light.samples), samples.min(u64::from(MAX_LIGHT_SAMPLES)));
         let capped = usize::from(fsaa > 256) + usize::from(samples > u64::from(MAX_LIGHT_SAMPLES));
         let warned = import.warnings.iter().filter(|w| w.contains("at most")).count();
         prop_assert_eq!(warned, capped, "{:?}", import.warnings);

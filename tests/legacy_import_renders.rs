@@ -7,7 +7,7 @@ mod common;
 use common::legacy::{import_file, import_text, legacy_text, render_scene};
 use common::trace;
 use glam::{DAffine3, DVec2, DVec3, Vec3};
-use raylab::scene::{Light, parse_scene, scene_to_ron};
+use raylab::scene::{Light, LightSource, parse_scene, scene_to_ron};
 use raylab::trace::{PinholeCamera, Ray, RenderOptions, Term, TermSwitches, World, inspect_pixel};
 
 #[test]
@@ -276,7 +276,11 @@ fn a_spot_light_without_angle_lights_nothing() {
     assert_eq!(image.pixels, render_scene(&without_spot).pixels);
     // The comparison can tell: with its intensity back, the spot lights the floor.
     let mut lit = scene.clone();
-    if let Some(Light::Spot { intensity, .. }) = lit.lights.get_mut(1) {
+    if let Some(Light::Spot {
+        source: LightSource { intensity, .. },
+        ..
+    }) = lit.lights.get_mut(1)
+    {
         *intensity = 1.0;
     }
     assert_ne!(render_scene(&lit).pixels, image.pixels);

@@ -4,7 +4,7 @@ mod common;
 
 use common::*;
 use glam::DVec3;
-use raylab::scene::{Light, Material, Shape};
+use raylab::scene::{Light, LightSource, Material, Shape};
 use raylab::trace::{Ray, Term, TermSwitches};
 
 fn unit_sphere_scene(material: Material) -> raylab::scene::Scene {
@@ -181,10 +181,7 @@ fn spot_light_lights_inside_its_cone_only() {
         position: DVec3::new(0.0, 4.0, 0.0),
         direction: -DVec3::Y,
         angle_deg: 30.0,
-        colour: DVec3::ONE,
-        intensity: 20.0,
-        radius: 0.0,
-        samples: 1,
+        source: LightSource::point(DVec3::ONE, 20.0),
     });
     // At x = 2: d^2 = 20, n.l = 4 / sqrt(20).
     let expected = 20.0 / 20.0 * (4.0 / 20f64.sqrt());
@@ -209,10 +206,7 @@ fn a_180_degree_spot_lights_every_direction_even_straight_behind_it() {
         position: DVec3::new(0.0, 4.0, 0.0),
         direction: DVec3::Y,
         angle_deg,
-        colour: DVec3::ONE,
-        intensity: 16.0,
-        radius: 0.0,
-        samples: 1,
+        source: LightSource::point(DVec3::ONE, 16.0),
     };
     let mut scene = floor_scene();
     scene.lights.push(spot(180.0));
@@ -244,10 +238,7 @@ fn every_light_kind_is_shadowed_by_a_blocker_and_unshadowed_without_shadows() {
             position: DVec3::new(0.0, 6.0, 0.0),
             direction: -DVec3::Y,
             angle_deg: 20.0,
-            colour: DVec3::ONE,
-            intensity: 36.0,
-            radius: 0.0,
-            samples: 1,
+            source: LightSource::point(DVec3::ONE, 36.0),
         },
     ];
     for light in lights {

@@ -6,7 +6,7 @@ mod common;
 use common::*;
 use glam::DVec3;
 use proptest::prelude::*;
-use raylab::scene::{Light, Material, Scene, Shape};
+use raylab::scene::{Light, LightSource, Material, Scene, Shape};
 use raylab::trace::{
     RenderOptions, RenderProgress, Term, TermSwitches, View, World, render_samples,
 };
@@ -42,10 +42,7 @@ fn light_strategy() -> impl Strategy<Value = Light> {
         (vec3(-8.0..8.0), colour.clone(), 0.0..100.0f64).prop_map(
             |(position, colour, intensity)| Light::Point {
                 position,
-                colour,
-                intensity,
-                radius: 0.0,
-                samples: 1,
+                source: LightSource::point(colour, intensity),
             }
         ),
         (vec3(-1.0..1.0), colour.clone()).prop_filter_map(
@@ -65,10 +62,7 @@ fn light_strategy() -> impl Strategy<Value = Light> {
                     position,
                     direction,
                     angle_deg,
-                    colour,
-                    intensity: 20.0,
-                    radius: 0.0,
-                    samples: 1,
+                    source: LightSource::point(colour, 20.0),
                 })
             }
         ),

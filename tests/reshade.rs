@@ -7,7 +7,7 @@ mod common;
 mod reshade_harness;
 
 use glam::DVec3;
-use raylab::scene::{Light, Scene, Transform};
+use raylab::scene::{Light, LightSource, Scene, Transform};
 use raylab::trace::{Isolation, RenderOptions, RetraceReason, Reuse, Term, View};
 use reshade_harness::{NOTHING, SCENES, Shot, assert_same_pass, edit_chain, example, set_colour};
 
@@ -66,9 +66,15 @@ fn material_switch_view_and_light_colour_edits_trace_nothing() {
                     for light in &mut s.lights {
                         match light {
                             Light::Ambient { intensity, .. }
-                            | Light::Point { intensity, .. }
+                            | Light::Point {
+                                source: LightSource { intensity, .. },
+                                ..
+                            }
                             | Light::Directional { intensity, .. }
-                            | Light::Spot { intensity, .. } => *intensity *= 0.5,
+                            | Light::Spot {
+                                source: LightSource { intensity, .. },
+                                ..
+                            } => *intensity *= 0.5,
                         }
                         set_colour(light, DVec3::new(0.2, 0.9, 0.4));
                     }
@@ -148,7 +154,10 @@ fn a_re_shaded_pass_counts_a_non_finite_sample_in_its_pixel() {
     let edits = [
         base.edited(|s, _| s.materials.get_mut("white").unwrap().ambient *= 3.0),
         base.edited(|s, _| match &mut s.lights[1] {
-            Light::Point { intensity, .. } => *intensity = 1.0,
+            Light::Point {
+                source: LightSource { intensity, .. },
+                ..
+            } => *intensity = 1.0,
             _ => unreachable!("the second light is the point light"),
         }),
         base.clone(),
@@ -355,14 +364,18 @@ fn a_sphere_lights_new_size_count_or_place_recasts_its_rays_only() {
         .scene
         .lights
         .iter()
-        .position(|l| matches!(l, Light::Spot { radius, .. } if *radius > 0.0))
+        .position(|l| matches!(l, Light::Spot { source: LightSource { radius, .. }, .. } if *radius > 0.0))
         .expect("the example's soft spot");
     let with = |change: fn(&mut Light)| base.edited(|s, _| change(&mut s.lights[index]));
     let edits = [
         (
             "twice the radius",
             with(|l| {
-                if let Light::Spot { radius, .. } = l {
+                if let Light::Spot {
+                    source: LightSource { radius, .. },
+                    ..
+                } = l
+                {
                     *radius *= 2.0
                 }
             }),
@@ -370,7 +383,11 @@ fn a_sphere_lights_new_size_count_or_place_recasts_its_rays_only() {
         (
             "4 rays, not 16",
             with(|l| {
-                if let Light::Spot { samples, .. } = l {
+                if let Light::Spot {
+                    source: LightSource { samples, .. },
+                    ..
+                } = l
+                {
                     *samples = 4
                 }
             }),

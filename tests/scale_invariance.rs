@@ -6,7 +6,9 @@
 use std::path::Path;
 
 use glam::DVec3;
-use raylab::scene::{Light, Scene, Transform, affine_from_rows, load_scene, rows_from_affine};
+use raylab::scene::{
+    Light, LightSource, Scene, Transform, affine_from_rows, load_scene, rows_from_affine,
+};
 use raylab::trace::{RenderOptions, RenderProgress, World, render};
 
 /// The scene with every length multiplied by `scale` and then moved by `offset`; point
@@ -35,12 +37,11 @@ fn scaled_and_moved(scene: &Scene, scale: f64, offset: DVec3) -> Scene {
         match light {
             Light::Point {
                 position,
-                intensity,
-                ..
+                source: LightSource { intensity, .. },
             }
             | Light::Spot {
                 position,
-                intensity,
+                source: LightSource { intensity, .. },
                 ..
             } => {
                 *position = place(*position);

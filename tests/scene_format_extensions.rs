@@ -3,8 +3,8 @@
 //! scene, leaves old files unchanged, and each bad value is refused by name.
 
 use raylab::scene::{
-    ClampConvention, Conventions, CsgOp, Light, MirrorConvention, Quantise, Scene, Shape,
-    parse_scene, scene_to_ron,
+    ClampConvention, Conventions, CsgOp, Light, LightSource, MirrorConvention, Quantise, Scene,
+    Shape, parse_scene, scene_to_ron,
 };
 
 const TREES: &str = r#"
@@ -125,7 +125,10 @@ fn defaults_of_the_new_fields_are_not_written() {
     scene.render.conventions = Conventions::default();
     scene.lights.truncate(1);
     if let Light::Point {
-        radius, samples, ..
+        source: LightSource {
+            radius, samples, ..
+        },
+        ..
     } = &mut scene.lights[0]
     {
         *radius = 0.0;

@@ -308,8 +308,8 @@ fn every_explanation_reads_without_scrolling_the_list() {
         material.ambient *= 2.0;
         material.mirror *= 0.5;
     }
-    if let raylab::scene::Light::Point { intensity, .. } = &mut scene.lights[1] {
-        *intensity *= 0.6;
+    if let raylab::scene::Light::Point { source, .. } = &mut scene.lights[1] {
+        source.intensity *= 0.6;
     }
     if let raylab::scene::Light::Directional { intensity, .. } = &mut scene.lights[2] {
         *intensity *= 1.8;

@@ -6,7 +6,7 @@ mod editor_harness;
 
 use egui_kittest::kittest::Queryable;
 use glam::DVec3;
-use raylab::scene::Light;
+use raylab::scene::{Light, LightSource};
 use raylab::trace::Term;
 use raylab::ui::{Command, Selection};
 
@@ -56,7 +56,10 @@ fn the_light_inspector_edits_a_point_lights_radius_and_shadow_rays() {
     harness.get_by_label("shadow rays").set_value_accesskit(8.0);
     harness.run();
     let Light::Point {
-        radius, samples, ..
+        source: LightSource {
+            radius, samples, ..
+        },
+        ..
     } = harness.state().document().scene.lights[1]
     else {
         panic!("light 1 of glass.ron is a point light");

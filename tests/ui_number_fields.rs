@@ -9,7 +9,7 @@ use editor_harness::harness;
 use egui::{Event, Key, Modifiers};
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
-use raylab::scene::{Light, LightKind, Scene, Transform};
+use raylab::scene::{Light, LightKind, LightSource, Scene, Transform};
 use raylab::ui::{Command, EditorApp, SceneEdit};
 
 /// A key to press in a field.
@@ -143,7 +143,9 @@ fn scale_x(scene: &Scene) -> f64 {
 fn spot(scene: &Scene) -> (f64, f64) {
     match scene.lights.last() {
         Some(Light::Spot {
-            angle_deg, radius, ..
+            angle_deg,
+            source: LightSource { radius, .. },
+            ..
         }) => (*angle_deg, *radius),
         other => panic!("expected the new spot light: {other:?}"),
     }

@@ -6,7 +6,7 @@ use std::time::Instant;
 use glam::DVec3;
 use serde::Serialize;
 
-use crate::scene::{Light, Material, Object, Scene, Shape, Transform, Trs};
+use crate::scene::{Light, LightSource, Material, Object, Scene, Shape, Transform, Trs};
 use crate::trace::{Acceleration, RenderOptions, RenderProgress, World, render};
 
 /// One object count, both ways.
@@ -78,10 +78,7 @@ pub fn crowd(count: usize) -> Scene {
         },
         Light::Point {
             position: DVec3::new(3.0, 8.0, 6.0),
-            colour: DVec3::ONE,
-            intensity: 80.0,
-            radius: 0.0,
-            samples: 1,
+            source: LightSource::point(DVec3::ONE, 80.0),
         },
     ];
     scene.camera.position = DVec3::new(0.0, 7.0, 9.0);

@@ -10,7 +10,7 @@ use std::time::Instant;
 use crate::compare::plant::{parse_bugs, plant};
 use crate::compare::{CompareOptions, OtherImage, compare};
 use crate::scene::legacy::import_legacy;
-use crate::scene::{Light, Scene, parse_scene};
+use crate::scene::{Light, LightSource, Scene, parse_scene};
 use crate::trace::{MeshStore, RenderOptions, RenderProgress, World, render};
 
 /// The course scene like the corpus's slowest pair (issue 50).
@@ -58,7 +58,11 @@ pub fn diff_scene() -> Scene {
 pub fn diff_time(runs: u32) -> Result<(f64, String), String> {
     let scene = diff_scene();
     let mut dimmed = scene.clone();
-    if let Some(Light::Point { intensity, .. }) = dimmed.lights.get_mut(1) {
+    if let Some(Light::Point {
+        source: LightSource { intensity, .. },
+        ..
+    }) = dimmed.lights.get_mut(1)
+    {
         *intensity *= 0.5;
     }
     let world = World::new(&dimmed).map_err(|e| e.to_string())?;

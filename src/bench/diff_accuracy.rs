@@ -236,6 +236,17 @@ pub fn candidate_bugs(scene: &Scene, rng: &mut fastrand::Rng) -> Vec<PlantedBug>
             add(Plant::Spot(b), Site::Light(pick(rng, &spots)));
         }
     }
+    let points: Vec<usize> = lit
+        .iter()
+        .copied()
+        .filter(|&l| matches!(scene.lights[l], Light::Point { .. }))
+        .collect();
+    if !points.is_empty() {
+        add(
+            Plant::Spot(SpotBug::NoFalloff),
+            Site::Light(pick(rng, &points)),
+        );
+    }
     add(Plant::OneSided, Site::Everywhere);
     add(Plant::MissingPart(Part::Caps), Site::Everywhere);
     if scene.objects.len() > 1 {

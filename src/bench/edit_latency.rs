@@ -10,7 +10,7 @@ use glam::DVec3;
 use serde::Serialize;
 
 use crate::preview::{Pass, PreviewRequest, PreviewWorker, median};
-use crate::scene::{Light, Scene, Transform};
+use crate::scene::{Light, LightSource, Scene, Transform};
 use crate::trace::Term;
 
 /// Median milliseconds from an edit's submit to its first full-resolution frame.
@@ -66,9 +66,15 @@ fn apply(kind: EditKind, request: &mut PreviewRequest, flip: bool) -> Result<(),
             match (kind, light) {
                 (
                     EditKind::LightColour,
-                    Light::Point { colour, .. }
+                    Light::Point {
+                        source: LightSource { colour, .. },
+                        ..
+                    }
                     | Light::Directional { colour, .. }
-                    | Light::Spot { colour, .. },
+                    | Light::Spot {
+                        source: LightSource { colour, .. },
+                        ..
+                    },
                 ) => {
                     *colour = if flip {
                         DVec3::new(1.0, 0.6, 0.4)

@@ -7,7 +7,9 @@ use std::collections::BTreeMap;
 
 use glam::DVec3;
 
-use crate::scene::{Camera, Light, Material, Object, RenderSettings, Scene, Shape, Transform, Trs};
+use crate::scene::{
+    Camera, Light, LightSource, Material, Object, RenderSettings, Scene, Shape, Transform, Trs,
+};
 
 /// The random scene of `seed`, `width` x `height` pixels.
 #[must_use]
@@ -123,10 +125,10 @@ pub fn random_scene(seed: u64, width: u32, height: u32) -> Scene {
         let light = match rng.u32(0..3) {
             0 => Light::Point {
                 position,
-                colour: colour(&mut rng, 0.5, 1.0),
-                intensity: position.length_squared() * (0.4 + 0.6 * rng.f64()),
-                radius: 0.0,
-                samples: 1,
+                source: LightSource::point(
+                    colour(&mut rng, 0.5, 1.0),
+                    position.length_squared() * (0.4 + 0.6 * rng.f64()),
+                ),
             },
             1 => Light::Directional {
                 direction: DVec3::new(rng.f64() - 0.5, -1.0, rng.f64() - 0.5),
@@ -137,10 +139,10 @@ pub fn random_scene(seed: u64, width: u32, height: u32) -> Scene {
                 position,
                 direction: DVec3::new(0.0, 0.7, 0.0) - position,
                 angle_deg: 15.0 + 35.0 * rng.f64(),
-                colour: colour(&mut rng, 0.5, 1.0),
-                intensity: position.length_squared() * (0.5 + rng.f64()),
-                radius: 0.0,
-                samples: 1,
+                source: LightSource::point(
+                    colour(&mut rng, 0.5, 1.0),
+                    position.length_squared() * (0.5 + rng.f64()),
+                ),
             },
         };
         scene.lights.push(light);

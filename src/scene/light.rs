@@ -1,35 +1,29 @@
-//! Lights: the four kinds of the contract, with the sphere lights' radius and samples.
+//! Lights: the four kinds of the contract; a Point's and a Spot's shared fields in one
+//! [`LightSource`].
 
 use glam::DVec3;
-use serde::{Deserialize, Serialize};
 
 /// A light. Strength is `colour * intensity`; point and spot lights fall off as 1/d^2.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+///
+/// Files hold the fields of each kind side by side (`Point(position: .., colour: ..,
+/// radius: ..)`, see `SCENE_FORMAT.md`); in memory a Point's and a Spot's shared fields
+/// are one [`LightSource`]. Its `Serialize` and `Deserialize` are in `light_file`, which
+/// converts, so files read and write as before.
+#[derive(Clone, Debug, PartialEq)]
 pub enum Light {
     /// Adds `ka * colour * intensity` everywhere.
     Ambient {
         /// Light colour (linear RGB, may exceed 1).
         colour: DVec3,
         /// Multiplier of `colour`.
-        #[serde(default = "default_intensity")]
         intensity: f64,
     },
     /// A point light.
     Point {
         /// World position.
         position: DVec3,
-        /// Light colour (linear RGB, may exceed 1).
-        colour: DVec3,
-        /// Multiplier of `colour`.
-        #[serde(default = "default_intensity")]
-        intensity: f64,
-        /// Radius of the light's sphere; 0 (the default) is a point.
-        #[serde(default, skip_serializing_if = "is_zero")]
-        radius: f64,
-        /// Shadow rays per shading point for a sphere light; default 1.
-        #[serde(default = "default_samples", skip_serializing_if = "is_one")]
-        samples: u32,
+        /// What it emits, and the size of the sphere it emits from.
+        source: LightSource,
     },
     /// A light at infinity; `direction` is the way the light travels.
     Directional {
@@ -38,7 +32,6 @@ pub enum Light {
         /// Light colour (linear RGB, may exceed 1).
         colour: DVec3,
         /// Multiplier of `colour`.
-        #[serde(default = "default_intensity")]
         intensity: f64,
     },
     /// A point light restricted to a cone with a hard edge.
@@ -50,34 +43,36 @@ pub enum Light {
         /// Half-angle of the cone in degrees, in (0, 180]: 90 lights a half-space, 180
         /// every direction.
         angle_deg: f64,
-        /// Light colour (linear RGB, may exceed 1).
-        colour: DVec3,
-        /// Multiplier of `colour`.
-        #[serde(default = "default_intensity")]
-        intensity: f64,
-        /// As for a point light: 0 (the default) is a point, more a sphere.
-        #[serde(default, skip_serializing_if = "is_zero")]
-        radius: f64,
-        /// As for a point light: shadow rays per shading point; default 1.
-        #[serde(default = "default_samples", skip_serializing_if = "is_one")]
-        samples: u32,
+        /// What it emits, and the size of the sphere it emits from.
+        source: LightSource,
     },
 }
 
-fn default_intensity() -> f64 {
-    1.0
+/// The fields a Point and a Spot light share: what the light emits (`colour *
+/// intensity`) and the sphere it emits from (`radius`, sampled by `samples` shadow rays).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightSource {
+    /// Light colour (linear RGB, may exceed 1).
+    pub colour: DVec3,
+    /// Multiplier of `colour`; default 1 in files.
+    pub intensity: f64,
+    /// Radius of the light's sphere; 0 (the default) is a point.
+    pub radius: f64,
+    /// Shadow rays per shading point for a sphere light; default 1.
+    pub samples: u32,
 }
 
-fn default_samples() -> u32 {
-    1
-}
-
-fn is_zero(value: &f64) -> bool {
-    *value == 0.0
-}
-
-fn is_one(value: &u32) -> bool {
-    *value == 1
+impl LightSource {
+    /// A source of no size (radius 0, one shadow ray) emitting `colour * intensity`.
+    #[must_use]
+    pub fn point(colour: DVec3, intensity: f64) -> Self {
+        Self {
+            colour,
+            intensity,
+            radius: 0.0,
+            samples: 1,
+        }
+    }
 }
 
 /// The four kinds of light, without their values: for menus, messages and importers.
@@ -150,15 +145,12 @@ impl Light {
             Light::Ambient {
                 colour, intensity, ..
             }
-            | Light::Point {
-                colour, intensity, ..
-            }
             | Light::Directional {
                 colour, intensity, ..
-            }
-            | Light::Spot {
-                colour, intensity, ..
             } => (colour, intensity),
+            Light::Point { source, .. } | Light::Spot { source, .. } => {
+                (source.colour, source.intensity)
+            }
         }
     }
 
@@ -167,12 +159,9 @@ impl Light {
     #[must_use]
     pub fn sphere(&self) -> Option<(f64, u32)> {
         match *self {
-            Light::Point {
-                radius, samples, ..
+            Light::Point { source, .. } | Light::Spot { source, .. } if source.radius > 0.0 => {
+                Some((source.radius, source.samples))
             }
-            | Light::Spot {
-                radius, samples, ..
-            } if radius > 0.0 => Some((radius, samples)),
             _ => None,
         }
     }

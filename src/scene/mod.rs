@@ -10,6 +10,7 @@ pub mod examples;
 mod file;
 pub mod legacy;
 mod light;
+mod light_file;
 pub mod mesh_file;
 mod model;
 mod obj_reader;
@@ -26,7 +27,7 @@ pub use error::SceneError;
 pub use file::{
     load_scene, parse_scene, save_scene, scene_to_ron, write_atomically, write_atomically_with,
 };
-pub use light::{Light, LightKind};
+pub use light::{Light, LightKind, LightSource};
 pub use mesh_file::{MeshData, load_obj, load_obj_watched, mesh_objects, read_scene_meshes};
 pub use model::{Camera, FORMAT_VERSION, Material, Object, RenderSettings, Scene};
 pub use obj_reader::LoadWatch;

@@ -11,7 +11,7 @@ use std::collections::BTreeMap;
 
 use glam::DVec3;
 use raylab::scene::{
-    Camera, Light, Material, Object, RenderSettings, Scene, Shape, Transform, Trs,
+    Camera, Light, LightSource, Material, Object, RenderSettings, Scene, Shape, Transform, Trs,
 };
 use raylab::trace::{NoRecorder, Ray, RayCounts, TermSwitches, Tracer, View, World};
 
@@ -84,10 +84,7 @@ pub fn floor(y: f64, half_size: f64) -> Object {
 pub fn point_light(position: DVec3, intensity: f64) -> Light {
     Light::Point {
         position,
-        colour: DVec3::ONE,
-        intensity,
-        radius: 0.0,
-        samples: 1,
+        source: LightSource::point(DVec3::ONE, intensity),
     }
 }
 

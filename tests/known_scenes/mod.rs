@@ -4,7 +4,7 @@
 use std::collections::BTreeMap;
 
 use glam::DVec3;
-use raylab::scene::{Light, Material, Scene, Shape};
+use raylab::scene::{Light, LightSource, Material, Scene, Shape};
 
 use crate::common::{bare_scene, object, point_light};
 
@@ -52,10 +52,7 @@ pub fn mirror_scene() -> Scene {
             position: DVec3::new(0.0, 0.0, 3.0),
             direction: DVec3::Y,
             angle_deg: 10.0,
-            colour: DVec3::ONE,
-            intensity: 10.0,
-            radius: 0.0,
-            samples: 1,
+            source: LightSource::point(DVec3::ONE, 10.0),
         },
     ];
     scene.render.background = DVec3::new(0.1, 0.2, 0.3);

@@ -5,7 +5,7 @@
 
 use glam::DVec3;
 use raylab::scene::examples::EXAMPLE_SCENES;
-use raylab::scene::{Light, Scene, parse_scene};
+use raylab::scene::{Light, LightSource, Scene, parse_scene};
 use raylab::trace::{
     CachedPass, HitCache, RayCounts, RenderOptions, RenderProgress, SampleSums, World,
     render_one_sample_cached, render_samples,
@@ -157,8 +157,14 @@ pub const NOTHING: RayCounts = RayCounts {
 pub fn set_colour(light: &mut Light, to: DVec3) {
     match light {
         Light::Ambient { colour, .. }
-        | Light::Point { colour, .. }
+        | Light::Point {
+            source: LightSource { colour, .. },
+            ..
+        }
         | Light::Directional { colour, .. }
-        | Light::Spot { colour, .. } => *colour = to,
+        | Light::Spot {
+            source: LightSource { colour, .. },
+            ..
+        } => *colour = to,
     }
 }

@@ -85,10 +85,7 @@ impl SpotBug {
             position,
             direction,
             angle_deg,
-            colour,
-            intensity,
-            radius,
-            samples,
+            source,
         } = *light
         else {
             return None;
@@ -97,20 +94,11 @@ impl SpotBug {
             position,
             direction,
             angle_deg,
-            colour,
-            intensity,
-            radius,
-            samples,
+            source,
         };
         let changed = match self {
             SpotBug::NoFalloff => return None,
-            SpotBug::NoCone | SpotBug::NoConeNoFalloff => Light::Point {
-                position,
-                colour,
-                intensity,
-                radius,
-                samples,
-            },
+            SpotBug::NoCone | SpotBug::NoConeNoFalloff => Light::Point { position, source },
             // The half angle whose cosine is cos(angle_deg radians), in [0, 180].
             SpotBug::AngleRadians => spot(angle_deg.cos().clamp(-1.0, 1.0).acos().to_degrees()),
             SpotBug::FullAngle => spot(angle_deg / 2.0),
@@ -248,16 +236,14 @@ pub fn no_falloff_change(terms: DVec3, distance_squared: f64) -> DVec3 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scene::LightSource;
 
     fn spot(angle_deg: f64) -> Light {
         Light::Spot {
             position: DVec3::Y,
             direction: -DVec3::Y,
             angle_deg,
-            colour: DVec3::ONE,
-            intensity: 1.0,
-            radius: 0.0,
-            samples: 1,
+            source: LightSource::point(DVec3::ONE, 1.0),
         }
     }
 

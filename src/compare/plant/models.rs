@@ -316,7 +316,12 @@ impl PlantedBug {
             }
             Plant::Normal(b) => e.cause == Cause::Normal(b),
             Plant::Highlight(b) => e.cause == Cause::Highlight(b),
-            Plant::Clamp(b) => e.cause == Cause::Clamp(b),
+            Plant::Clamp(b) => {
+                e.cause == Cause::Clamp(b)
+                    || (b == ClampBug::EveryRay
+                        && matches!(e.cause, Cause::Conventions { .. })
+                        && e.cause.name().contains("clamp-each-ray"))
+            }
             Plant::ShadowTest(b) => e.cause == Cause::ShadowTest(b),
             Plant::Spot(b) => e.cause == Cause::Spot(b),
             Plant::OneSided | Plant::MissingPart(Part::Back) => e.cause.name() == "one-sided",
@@ -324,6 +329,14 @@ impl PlantedBug {
             Plant::MissingObject => e.cause.name() == "missing-object",
             Plant::ExtraObject => e.cause.name() == "extra-object",
             Plant::DifferentScene => e.cause.name() == "different-scene",
+            // Every ray's colour clamped is one picture whether it is read as the
+            // course's convention or as the bug that clamps each reflected ray (the
+            // camera ray's clamp is the pixel's): either name is right.
+            Plant::ClampAt(ClampConvention::EachRay)
+                if e.cause == Cause::Clamp(ClampBug::EveryRay) =>
+            {
+                true
+            }
             Plant::Mirror(_) | Plant::ClampAt(_) | Plant::NoDepthLimit => {
                 matches!(e.cause, Cause::Conventions { .. })
                     && e.cause.name().contains(self.plant.name().as_str())

@@ -403,7 +403,12 @@ impl Recorder for SampleRecorder<'_, '_> {
         let Some(sample) = world_light.sample(hit.p) else {
             return;
         };
-        if matches!(world_light, WorldLight::Spot { .. }) {
+        // A point light's fall-off left out is the same change as a spot's: the channel
+        // is the light's, whatever its kind ("spot-no-falloff" names both).
+        if matches!(
+            world_light,
+            WorldLight::Spot { .. } | WorldLight::Point { .. }
+        ) {
             let change =
                 no_falloff_change(record.diffuse + record.specular, sample.distance_squared);
             let channel = self.channel(Kind::Spot(SpotBug::NoFalloff, index), object);

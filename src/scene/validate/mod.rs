@@ -7,7 +7,7 @@ mod failure;
 mod objects;
 
 use super::error::SceneError;
-use super::light::Light;
+use super::light::{Light, LightSource};
 use super::model::{Camera, Material, RenderSettings, Scene};
 use failure::{invalid, prefixed};
 
@@ -165,16 +165,16 @@ fn check_light(light: &Light) -> Result<(), SceneError> {
     check_intensity(light.intensity())?;
     match *light {
         Light::Ambient { .. } => Ok(()),
-        Light::Point { position, .. } => {
+        Light::Point { position, source } => {
             finite_vec("position", position)?;
-            check_sphere(light)
+            check_sphere(source)
         }
         Light::Directional { direction, .. } => check_direction(direction),
         Light::Spot {
             position,
             direction,
             angle_deg,
-            ..
+            source,
         } => {
             finite_vec("position", position)?;
             check_direction(direction)?;
@@ -185,22 +185,16 @@ fn check_light(light: &Light) -> Result<(), SceneError> {
                      (0, {MAX_SPOT_ANGLE_DEG}] degrees"
                 ));
             }
-            check_sphere(light)
+            check_sphere(source)
         }
     }
 }
 
 /// A sphere light's radius and shadow-ray count (both ignored on a point).
-fn check_sphere(light: &Light) -> Result<(), SceneError> {
-    let (Light::Point {
+fn check_sphere(source: LightSource) -> Result<(), SceneError> {
+    let LightSource {
         radius, samples, ..
-    }
-    | Light::Spot {
-        radius, samples, ..
-    }) = *light
-    else {
-        return Ok(());
-    };
+    } = source;
     finite("radius", radius)?;
     if radius < 0.0 {
         return invalid(format!("radius is {radius}; it cannot be negative"));

@@ -185,6 +185,7 @@ fn at_distance(p: DVec3, position: DVec3, strength: DVec3) -> Option<LightSample
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scene::LightSource;
 
     #[test]
     fn the_falloff_over_the_sampled_distance_is_the_sampled_radiance_bit_for_bit() {
@@ -245,10 +246,7 @@ mod tests {
             position: DVec3::new(0.0, 1.0, 0.0),
             direction: DVec3::new(0.0, -3.0, 0.0),
             angle_deg: 45.0,
-            colour: DVec3::ONE,
-            intensity: 1.0,
-            radius: 0.0,
-            samples: 1,
+            source: LightSource::point(DVec3::ONE, 1.0),
         });
         assert!(light.sample(DVec3::new(0.99, 0.0, 0.0)).is_some());
         assert!(light.sample(DVec3::new(1.01, 0.0, 0.0)).is_none());
@@ -263,10 +261,7 @@ mod tests {
             position: DVec3::ZERO,
             direction: DVec3::new(0.0, 2.0, 0.0),
             angle_deg,
-            colour: DVec3::ONE,
-            intensity: 1.0,
-            radius: 0.0,
-            samples: 1,
+            source: LightSource::point(DVec3::ONE, 1.0),
         })
     }
 
@@ -300,18 +295,12 @@ mod tests {
             position: DVec3::ZERO,
             direction: DVec3::NEG_Y,
             angle_deg: 45.0,
-            colour: DVec3::ONE,
-            intensity: 0.0,
-            radius: 0.0,
-            samples: 1,
+            source: LightSource::point(DVec3::ONE, 0.0),
         });
         assert_eq!(dark.sample(DVec3::NEG_Y), None);
         let black = WorldLight::new(&Light::Point {
             position: DVec3::ZERO,
-            colour: DVec3::ZERO,
-            intensity: 3.0,
-            radius: 0.0,
-            samples: 1,
+            source: LightSource::point(DVec3::ZERO, 3.0),
         });
         assert_eq!(black.sample(DVec3::X), None);
     }

@@ -11,7 +11,7 @@ use crate::scene::tree::{
     unwrap_group, wrap_node, wrap_nodes,
 };
 use crate::scene::{
-    Camera, CsgOp, Light, LightKind, Material, Object, RenderSettings, Scene, Shape,
+    Camera, CsgOp, Light, LightKind, LightSource, Material, Object, RenderSettings, Scene, Shape,
 };
 
 /// A change to the scene (and the selection that follows it).
@@ -217,10 +217,7 @@ fn new_light(kind: LightKind) -> Light {
         },
         LightKind::Point => Light::Point {
             position: DVec3::new(2.0, 5.0, 3.0),
-            colour,
-            intensity: 20.0,
-            radius: 0.0,
-            samples: 1,
+            source: LightSource::point(colour, 20.0),
         },
         LightKind::Directional => Light::Directional {
             direction: DVec3::new(-1.0, -2.0, -1.0),
@@ -231,10 +228,7 @@ fn new_light(kind: LightKind) -> Light {
             position: DVec3::new(0.0, 5.0, 0.0),
             direction: DVec3::new(0.0, -1.0, 0.0),
             angle_deg: 25.0,
-            colour,
-            intensity: 20.0,
-            radius: 0.0,
-            samples: 1,
+            source: LightSource::point(colour, 20.0),
         },
     }
 }

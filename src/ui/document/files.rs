@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use glam::DVec3;
 
-use crate::scene::{Light, Scene, save_scene, write_atomically};
+use crate::scene::{Light, LightSource, Scene, save_scene, write_atomically};
 use crate::trace::Image;
 
 pub use crate::scene::examples::{DEFAULT_SCENE_RON, default_scene};
@@ -26,10 +26,7 @@ pub fn new_scene() -> Scene {
         },
         Light::Point {
             position: DVec3::new(-4.0, 6.0, 5.0),
-            colour: DVec3::ONE,
-            intensity: 40.0,
-            radius: 0.0,
-            samples: 1,
+            source: LightSource::point(DVec3::ONE, 40.0),
         },
     ];
     scene

@@ -9,7 +9,7 @@
 use super::super::error::LegacyError;
 use super::super::syntax::{At, Item, LightSetting};
 use super::converter::Converter;
-use crate::scene::{Light, LightKind, Scene};
+use crate::scene::{Light, LightKind, LightSource, Scene};
 
 /// The half-angle given to a spot light that had no `Angle`. It is imported with
 /// intensity 0, so the angle changes nothing until someone raises the intensity; then it
@@ -67,6 +67,12 @@ impl Converter<'_> {
             }
         }
         let colour = self.need(colour, "Colour", broken, at);
+        let source = |colour, intensity| LightSource {
+            colour,
+            intensity,
+            radius,
+            samples,
+        };
         let light = match kind {
             LightKind::Ambient => colour.map(|colour| Light::Ambient {
                 colour,
@@ -76,10 +82,7 @@ impl Converter<'_> {
                 let position = self.need(location, "Location", broken, at);
                 colour.zip(position).map(|(colour, position)| Light::Point {
                     position,
-                    colour,
-                    intensity: 1.0,
-                    radius,
-                    samples,
+                    source: source(colour, 1.0),
                 })
             }
             LightKind::Directional => {
@@ -119,10 +122,7 @@ impl Converter<'_> {
                             position,
                             direction,
                             angle_deg,
-                            colour,
-                            intensity,
-                            radius,
-                            samples,
+                            source: source(colour, intensity),
                         })
                     }
                     _ => None,

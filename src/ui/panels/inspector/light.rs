@@ -21,16 +21,10 @@ pub(super) fn light_ui(ui: &mut Ui, index: usize, light: &Light, commands: &mut 
     grid_ui(ui, "light", |ui| {
         let (colour, intensity) = match &mut edited {
             Light::Ambient { colour, intensity } => (colour, intensity),
-            Light::Point {
-                position,
-                colour,
-                intensity,
-                radius,
-                samples,
-            } => {
+            Light::Point { position, source } => {
                 vec3_row_ui(ui, "position", position, placement_speed, any);
-                sphere_rows_ui(ui, radius, samples);
-                (colour, intensity)
+                sphere_rows_ui(ui, &mut source.radius, &mut source.samples);
+                (&mut source.colour, &mut source.intensity)
             }
             Light::Directional {
                 direction,
@@ -44,16 +38,13 @@ pub(super) fn light_ui(ui: &mut Ui, index: usize, light: &Light, commands: &mut 
                 position,
                 direction,
                 angle_deg,
-                colour,
-                intensity,
-                radius,
-                samples,
+                source,
             } => {
                 vec3_row_ui(ui, "position", position, placement_speed, any);
                 vec3_row_ui(ui, "direction", direction, 0.01, any);
                 number_row_ui(ui, "angle", angle_deg, 0.2, SPOT_ANGLE_DEG);
-                sphere_rows_ui(ui, radius, samples);
-                (colour, intensity)
+                sphere_rows_ui(ui, &mut source.radius, &mut source.samples);
+                (&mut source.colour, &mut source.intensity)
             }
         };
         strength_rows_ui(ui, colour, intensity, intensity_speed);
