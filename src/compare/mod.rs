@@ -124,19 +124,16 @@ fn compare_scene(
         Quantise::Round => Encoding::LinearRound,
         Quantise::Truncate => Encoding::LinearTruncate,
     };
+    let raylab = components.image();
+    let raylab_rgb = report::rgb_of(&raylab);
     // Where the other picture samples pixels otherwise than raylab, its edges may be
     // any blend of their sides (`fit::SamplingSpread`); elsewhere pixel for pixel.
-    let spread = if spp > 1
-        || samples_otherwise(
-            &own_bytes(&components),
-            &other.rgb,
-            &outline(&components),
-            width,
-        ) {
-        SamplingSpread::of(&components.beauty, width)
-    } else {
-        SamplingSpread::none(components.beauty.len())
-    };
+    let spread =
+        if spp > 1 || samples_otherwise(&raylab_rgb, &other.rgb, &components.outline(), width) {
+            SamplingSpread::of(&components.beauty, width)
+        } else {
+            SamplingSpread::none(components.beauty.len())
+        };
     let rounded = Target::new(other, expected, &spread);
     let mut state = FitState::new(components.beauty.clone(), &rounded);
     let total = state.total;
@@ -185,8 +182,6 @@ fn compare_scene(
     });
     let unexplained_share = explained.unexplained_share;
 
-    let raylab = components.image();
-    let raylab_rgb = report::rgb_of(&raylab);
     let own = Comparison {
         width,
         height,
@@ -217,31 +212,6 @@ fn compare_scene(
         }
     }
     Ok(own)
-}
-
-/// raylab's picture as bytes (rounded), to compare outlines with the other picture's.
-fn own_bytes(components: &Components) -> Vec<[u8; 3]> {
-    components
-        .beauty
-        .iter()
-        .map(|p| p.map(|v| (v.clamp(0.0, 1.0) * 255.0).round() as u8))
-        .collect()
-}
-
-/// Whether each pixel lies where raylab's objects (or an object and the background)
-/// meet: a 4-neighbour has another object's label.
-fn outline(components: &Components) -> Vec<bool> {
-    let (w, h) = (components.width as usize, components.height as usize);
-    let label = |p: usize| components.object_label(p);
-    (0..w * h)
-        .map(|p| {
-            let (x, y) = (p % w, p / w);
-            (x > 0 && label(p - 1) != label(p))
-                || (x + 1 < w && label(p + 1) != label(p))
-                || (y > 0 && label(p - w) != label(p))
-                || (y + 1 < h && label(p + w) != label(p))
-        })
-        .collect()
 }
 
 /// What a reading leaves unexplained, as a share of the whole difference: what no

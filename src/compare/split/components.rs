@@ -79,6 +79,24 @@ impl Components {
         }
     }
 
+    /// Whether each pixel lies on an outline of raylab's objects (or of an object and
+    /// the background): its samples saw more than one, or a 4-neighbour shows another.
+    #[must_use]
+    pub fn outline(&self) -> Vec<bool> {
+        let (w, h) = (self.width as usize, self.height as usize);
+        (0..w * h)
+            .map(|p| {
+                let (x, y) = (p % w, p / w);
+                let here = self.object_label(p);
+                self.mixed[p]
+                    || (x > 0 && self.object_label(p - 1) != here)
+                    || (x + 1 < w && self.object_label(p + 1) != here)
+                    || (y > 0 && self.object_label(p - w) != here)
+                    || (y + 1 < h && self.object_label(p + w) != here)
+            })
+            .collect()
+    }
+
     /// raylab's picture as the renderer's [`Image`].
     #[must_use]
     pub fn image(&self) -> Image {

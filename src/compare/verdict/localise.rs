@@ -45,19 +45,7 @@ const SHADING_CONFIDENCE: f64 = 0.35;
 fn near_outline(components: &Components) -> Vec<bool> {
     let (w, h) = (i64::from(components.width), i64::from(components.height));
     // Outlines of objects, as raylab's object-id view shows them.
-    let label = |x: i64, y: i64| components.object_label((y * w + x) as usize);
-    let mut edge = vec![false; components.labels.len()];
-    for y in 0..h {
-        for x in 0..w {
-            let here = label(x, y);
-            let p = (y * w + x) as usize;
-            edge[p] = components.mixed[p]
-                || [(1, 0), (0, 1), (-1, 0), (0, -1)].iter().any(|&(dx, dy)| {
-                    let (nx, ny) = (x + dx, y + dy);
-                    nx >= 0 && ny >= 0 && nx < w && ny < h && label(nx, ny) != here
-                });
-        }
-    }
+    let edge = components.outline();
     let mut near = vec![false; edge.len()];
     for y in 0..h {
         for x in 0..w {
