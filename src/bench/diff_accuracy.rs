@@ -16,8 +16,8 @@ use serde::Serialize;
 
 use crate::compare::plant::{Plant, PlantedBug, Site, plant};
 use crate::compare::{
-    ClampBug, CompareOptions, Encoding, Explanation, HIGH_CONFIDENCE, NormalBug, OtherImage, Part,
-    ShadowBug, SpecularBug, SpotBug, compare_with_meshes,
+    ClampBug, CompareOptions, Encoding, Explanation, HIGH_CONFIDENCE, MIN_ERROR, NormalBug,
+    OtherImage, Part, ShadowBug, SpecularBug, SpotBug, compare_with_meshes,
 };
 use crate::scene::{ClampConvention, Light, MirrorConvention, Scene};
 use crate::trace::{MeshStore, RenderProgress, Term};
@@ -278,7 +278,8 @@ pub struct Plan {
 }
 
 /// Runs the cases of `scene` (named `name`) and adds them to `report`. A planted picture
-/// that equals raylab's own (the bug has nothing to act on) is not a case.
+/// that equals raylab's own (the bug has nothing to act on), or one of several bugs that
+/// one of them hides, is not a case.
 ///
 /// # Errors
 /// The scene does not compile.
@@ -321,24 +322,72 @@ pub fn run_scene(
             }
         }
     }
+    // Bugs that make the same picture as another candidate cannot be told apart by any
+    // diff: naming either names both.
+    let alone: Vec<Option<OtherImage>> = candidates
+        .iter()
+        .map(|b| plant(scene, meshes, std::slice::from_ref(b), 1, &progress).ok())
+        .collect();
+    let twins_of = |bug: &PlantedBug| -> Vec<PlantedBug> {
+        let Some(i) = candidates.iter().position(|c| c == bug) else {
+            return Vec::new();
+        };
+        (0..candidates.len())
+            .filter(|&j| j != i && alone[j].is_some() && alone[j] == alone[i])
+            .map(|j| candidates[j].clone())
+            .collect()
+    };
     for bugs in cases {
         let Ok(picture) = plant(scene, meshes, &bugs, 1, &progress) else {
             continue;
         };
-        if picture == own {
+        if !shows(&own, &picture) || !each_bug_shows(scene, meshes, &bugs, &picture) {
             continue;
         }
-        report.add(diff_case(name, scene, meshes, &bugs, &picture)?);
+        let twins: Vec<Vec<PlantedBug>> = bugs.iter().map(&twins_of).collect();
+        report.add(diff_case(name, scene, meshes, (&bugs, &twins), &picture)?);
     }
     // Correct pictures: raylab's own at other sample counts, and in the other encoding.
     for spp in [2, 4] {
         let mut more = scene.clone();
         more.render.samples_per_pixel = spp;
         let picture = plant(&more, meshes, &[], spp, &progress).map_err(|e| e.to_string())?;
-        report.add(diff_case(name, scene, meshes, &[], &picture)?);
+        report.add(diff_case(name, scene, meshes, (&[], &[]), &picture)?);
     }
-    report.add(diff_case(name, scene, meshes, &[], &own)?);
+    report.add(diff_case(name, scene, meshes, (&[], &[]), &own)?);
     Ok(())
+}
+
+/// Whether `picture` differs from `own` by at least what the diff calls a difference
+/// ([`MIN_ERROR`]: four channels a full 8-bit level outside their bytes, a byte standing
+/// for half a level either side). Less is rounding noise no diff can name.
+fn shows(own: &OtherImage, picture: &OtherImage) -> bool {
+    let outside: f64 = own
+        .rgb
+        .iter()
+        .zip(&picture.rgb)
+        .flat_map(|(a, b)| (0..3).map(move |i| f64::from(a[i].abs_diff(b[i]))))
+        .map(|levels| ((levels - 0.5).max(0.0) / 255.0).powi(2))
+        .sum();
+    outside >= MIN_ERROR
+}
+
+/// Whether each of `bugs` shows in `picture`: planted without it, the picture differs
+/// ([`shows`]). A bug with nothing to act on, or hidden by another (a depth limit with
+/// reflections off), leaves no trace to name.
+fn each_bug_shows(
+    scene: &Scene,
+    meshes: &MeshStore,
+    bugs: &[PlantedBug],
+    picture: &OtherImage,
+) -> bool {
+    bugs.len() < 2
+        || (0..bugs.len()).all(|i| {
+            let mut others = bugs.to_vec();
+            others.remove(i);
+            plant(scene, meshes, &others, 1, &RenderProgress::default())
+                .is_ok_and(|without| shows(&without, picture))
+        })
 }
 
 /// Whether two bugs cannot be told apart when planted together (both encodings, both a
@@ -347,12 +396,14 @@ fn exclusive(a: Plant, b: Plant) -> bool {
     matches!((a, b), (Plant::Encoding(_), Plant::Encoding(_)))
 }
 
-/// The diff of `picture` against `scene` at 1 sample per pixel, read against `bugs`.
+/// The diff of `picture` against `scene` at 1 sample per pixel, read against `bugs`
+/// (each named by its explanation, or by one of its twins': bugs whose picture alone is
+/// the same).
 fn diff_case(
     name: &str,
     scene: &Scene,
     meshes: &MeshStore,
-    bugs: &[PlantedBug],
+    (bugs, twins): (&[PlantedBug], &[Vec<PlantedBug>]),
     picture: &OtherImage,
 ) -> Result<CaseResult, String> {
     let options = CompareOptions {
@@ -362,9 +413,14 @@ fn diff_case(
         compare_with_meshes(scene, meshes, picture, &options, &RenderProgress::default())
             .map_err(|e| format!("{name}: {e}"))?;
     let explanations: &[Explanation] = &comparison.explanations;
-    let ranks = bugs
-        .iter()
-        .map(|bug| explanations.iter().position(|e| bug.is_named_by(e)))
+    let names = |i: usize, e: &Explanation| {
+        bugs[i].is_named_by(e)
+            || twins
+                .get(i)
+                .is_some_and(|t| t.iter().any(|b| b.is_named_by(e)))
+    };
+    let ranks = (0..bugs.len())
+        .map(|i| explanations.iter().position(|e| names(i, e)))
         .collect();
     Ok(CaseResult {
         scene: name.to_owned(),
@@ -379,7 +435,7 @@ fn diff_case(
             .map(|e| Verdict {
                 confidence: e.confidence,
                 claims: claims_a_bug(e.cause.name()),
-                right: bugs.iter().any(|b| b.is_named_by(e)),
+                right: (0..bugs.len()).any(|i| names(i, e)),
             })
             .collect(),
     })
