@@ -47,8 +47,8 @@ use crate::trace::{MeshStore, RenderProgress, World};
 
 use catalogue::MISS;
 use fit::{
-    BetterConventions, FitState, SamplingSpread, Target, better_conventions, detect_encoding,
-    samples_otherwise,
+    BetterConventions, FitState, Floor, SamplingSpread, Target, better_conventions,
+    detect_encoding, samples_otherwise,
 };
 use verdict::{Explained, explain, summary};
 
@@ -137,9 +137,8 @@ fn compare_scene(
     let rounded = Target::new(other, expected, &spread);
     let mut state = FitState::new(components.beauty.clone(), &rounded);
     let total = state.total;
-    let floor = (MIN_STEP_SHARE * total)
-        .max(MIN_ERROR)
-        .max(NOISE_SHARE * rounded.sampling_noise(&state.error));
+    let exact_floor = MIN_ERROR.max(NOISE_SHARE * rounded.sampling_noise(&state.error));
+    let floor = (MIN_STEP_SHARE * total).max(exact_floor);
     let mut explanations = Vec::new();
     let encoding = detect_encoding(&components.beauty, &other.rgb);
     let target = if encoding == expected {
@@ -165,7 +164,11 @@ fn compare_scene(
         explanations: explanations.clone(),
     });
     let explained = if total >= MIN_ERROR {
-        explain(&components, scene, &world, &target, &state, (total, floor))
+        let floors = Floor {
+            any: floor,
+            exact: exact_floor,
+        };
+        explain(&components, scene, &world, &target, &state, (total, floors))
     } else {
         Explained {
             explanations: Vec::new(),

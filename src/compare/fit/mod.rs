@@ -14,5 +14,5 @@ pub use conventions::{BetterConventions, NO_LIMIT_DEPTH, better_conventions, con
 pub use encoding::{Encoding, detect as detect_encoding};
 pub use groups::{Group, Groups};
 pub use sampling::{SamplingSpread, samples_otherwise};
-pub use search::{MIN_ERROR, MIN_STEP_SHARE, Step, search};
+pub use search::{Floor, MIN_ERROR, MIN_STEP_SHARE, Step, search};
 pub use target::{FitState, NOISE_SHARE, OFF_LEVELS, Target};

@@ -23,6 +23,23 @@ pub const MIN_STEP_SHARE: f64 = 0.005;
 /// A difference smaller than this is no difference.
 pub const MIN_ERROR: f64 = 4.0 / (255.0 * 255.0);
 
+/// A step smaller than the share floor is kept when it leaves at most this share of the
+/// error it found on the pixels it changes: a bug that acts on a few pixels (acne on
+/// one object, a dim light's term) and makes them right is named whatever else the
+/// picture holds.
+const EXACT_LEFT: f64 = 0.1;
+
+/// What a step must remove to be kept.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Floor {
+    /// Any step: a share of the whole difference (and at least [`MIN_ERROR`] and the
+    /// sampling's noise).
+    pub any: f64,
+    /// A step that makes its own pixels right ([`EXACT_LEFT`]): [`MIN_ERROR`] and the
+    /// sampling's noise only.
+    pub exact: f64,
+}
+
 /// Rounds of the search at most.
 pub const MAX_STEPS: usize = 16;
 
@@ -203,14 +220,14 @@ fn rank(
 }
 
 /// Runs the search on `state` (changed in place), keeping steps that lower the error by
-/// at least `floor`.
+/// at least `floor.any`, or by `floor.exact` where they make their pixels right.
 #[must_use]
 pub fn search(
     components: &Components,
     groups: &Groups,
     target: &Target,
     state: &mut FitState,
-    floor: f64,
+    floor: Floor,
 ) -> Vec<Step> {
     let norms = groups.norms(components, target);
     // Each channel's scale so far: 1 for raylab's terms, 0 for the bugs and shadows.
@@ -219,18 +236,20 @@ pub fn search(
         .collect();
     let mut steps = Vec::new();
     let mut correlations = groups.correlations(components, target, state);
-    while steps.len() < MAX_STEPS && state.total > floor {
+    while steps.len() < MAX_STEPS && state.total > floor.exact {
         let ranked = rank(groups, &correlations, &norms, &scale);
         let mut accepted = None;
         for &(index, c, _) in ranked.iter().take(TRIES_PER_ROUND) {
             let group = &groups.list[index];
             let change = change_of(components, group, c);
             let before = state.total;
+            let found: f64 = change.pixels.iter().map(|&(p, _)| state.error[p]).sum();
             for &(p, d) in &change.pixels {
                 state.add(target, p, d);
             }
             let gain = before - state.total;
-            if gain >= floor {
+            let left: f64 = change.pixels.iter().map(|&(p, _)| state.error[p]).sum();
+            if gain >= floor.any || (gain >= floor.exact && left <= EXACT_LEFT * found) {
                 accepted = Some((index, c, gain, change));
                 break;
             }

@@ -10,7 +10,7 @@ use super::summary::{extra_object_summary, summary};
 use super::verdicts::explain_steps;
 use crate::compare::catalogue::Part;
 use crate::compare::extras::{ExtraObject, Palette, confirm_shadows, find_extra_objects};
-use crate::compare::fit::{FitState, Groups, Target, search};
+use crate::compare::fit::{FitState, Floor, Groups, Target, search};
 use crate::compare::split::Components;
 use crate::scene::Scene;
 use crate::trace::World;
@@ -32,7 +32,7 @@ pub fn explain(
     world: &World,
     target: &Target,
     start: &FitState,
-    (total, floor): (f64, f64),
+    (total, floor): (f64, Floor),
 ) -> Explained {
     let nodes = &components.nodes;
     let parts: Vec<_> = nodes
@@ -44,7 +44,10 @@ pub fn explain(
     let mut state = start.clone();
     let mut steps = search(components, &groups, target, &mut state, floor);
     let palette = Palette::new(world, scene.objects.len());
-    let mut extras = find_extra_objects(components, &palette, target, &state);
+    let mut extras = find_extra_objects(components, &palette, target, &state, None);
+    if extras.is_empty() {
+        extras = find_extra_objects(components, &palette, target, &state, Some(start));
+    }
     // Their pixels out of the fit, which runs again: no factor of what lies behind them
     // bends to them. Then their shadows, against the model fitted without them (which
     // holds any second bug).
