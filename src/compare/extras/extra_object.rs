@@ -30,7 +30,7 @@
 use rayon::prelude::*;
 
 use super::regions::{Grid, PixelBox};
-use super::relit::{Palette, is_relit};
+use super::relit::{Palette, is_relit, lit_as_raylab};
 use super::shape_guess::{ShapeGuess, guess};
 use crate::compare::catalogue::Kind;
 use crate::compare::catalogue::MISS;
@@ -39,6 +39,10 @@ use crate::compare::split::Components;
 
 /// Regions smaller than this are no object.
 const MIN_PIXELS: usize = 12;
+
+/// An object found the stricter way ([`find`] with `start`) is at least this many
+/// pixels across either way.
+const MIN_ACROSS: u32 = 4;
 
 /// An object raylab does not draw stands out: half its pixels differ by at least this
 /// many 8-bit levels (a moved shadow or a reflection on a dull mirror differs less).
@@ -157,6 +161,15 @@ fn on_mirror(components: &Components, p: usize) -> bool {
     reflected > 0.5 * components.beauty[p].iter().sum::<f64>()
 }
 
+/// Whether a spot light's cone bugs change pixel `p`: the cone's edge may lie elsewhere
+/// in the other picture.
+fn in_spot_reach(components: &Components, p: usize) -> bool {
+    components
+        .pixel(p)
+        .iter()
+        .any(|e| matches!(components.space.decode(e.channel).0, Kind::Spot(..)))
+}
+
 /// What the other picture does along a region's outline.
 struct Outline {
     /// Pixel pairs across it where raylab sees one surface on both sides.
@@ -179,10 +192,13 @@ impl Outline {
     /// Whether the region looks like an object's: sharp where raylab's picture is
     /// smooth, and not a surface of raylab's reaching further (an outline moved).
     fn is_an_object(&self) -> bool {
+        // A moved outline's sliver crosses raylab's outline along about half of its
+        // own; an object lying across a few pixels of another's edge does not.
+        let crosses_much = self.crossing >= MIN_EDGE_PAIRS
+            && self.crossing as f64 >= MAX_CONTINUED * self.one_surface as f64;
         self.one_surface >= MIN_EDGE_PAIRS
             && self.edge_share() >= MIN_EDGE_SHARE
-            && (self.crossing < MIN_EDGE_PAIRS
-                || (self.continued as f64) < MAX_CONTINUED * self.crossing as f64)
+            && (!crosses_much || (self.continued as f64) < MAX_CONTINUED * self.crossing as f64)
     }
 }
 
@@ -222,12 +238,20 @@ fn outline(components: &Components, target: &Target, grid: Grid, region: &[u32])
 
 /// The objects the other picture draws and raylab does not, after a search left
 /// `state`; the strongest first.
+///
+/// With `start` (raylab's own picture against the target), the evidence is read the
+/// stricter way instead: a pixel off both after the search and in raylab's own picture,
+/// that no switching of raylab's lights gives ([`lit_as_raylab`]) and that is not
+/// raylab's own colour with lights taken away. For scenes of several coloured lights,
+/// where every colour is some lighting, and where the first search bent a factor of
+/// the whole picture towards the object (leaving every pixel a little off).
 #[must_use]
 pub fn find(
     components: &Components,
     palette: &Palette,
     target: &Target,
     state: &FitState,
+    start: Option<&FitState>,
 ) -> Vec<ExtraObject> {
     let grid = Grid {
         width: components.width,
@@ -236,12 +260,26 @@ pub fn find(
     let off = (OFF_LEVELS / 255.0).powi(2);
     let evidence: Vec<bool> = (0..state.error.len())
         .into_par_iter()
-        .map(|p| {
-            state.error[p] >= off
-                && !is_relit(components, palette, target, p, RELIT_TOLERANCE)
-                && !shadow_like(components, target, state.model[p], p)
+        .map(|p| match start {
+            None => {
+                state.error[p] >= off
+                    && !is_relit(components, palette, target, p, RELIT_TOLERANCE)
+                    && !shadow_like(components, target, state.model[p], p)
+            }
+            Some(start) => {
+                state.error[p] >= off
+                    && start.error[p] >= off
+                    && !lit_as_raylab(components, target, p, RELIT_TOLERANCE)
+                    && !shadow_like(components, target, start.model[p], p)
+                    // Where a spot's cone reaches, a wider cone lights the surface
+                    // brighter, with any strength: the wider test there.
+                    && !(in_spot_reach(components, p)
+                        && (0..3).all(|c| target.middle[p][c] >= start.model[p][c])
+                        && is_relit(components, palette, target, p, RELIT_TOLERANCE))
+            }
         })
         .collect();
+    let measured = start.unwrap_or(state);
     // (region, edge share, on a mirror, its error)
     let mut candidates = Vec::new();
     for region in grid.regions(&evidence) {
@@ -249,7 +287,15 @@ pub fn find(
             continue;
         }
         let outline = outline(components, target, grid, &region);
-        if !outline.is_an_object() || median_levels(&region, state) < OBJECT_LEVELS {
+        if !outline.is_an_object() || median_levels(&region, measured) < OBJECT_LEVELS {
+            continue;
+        }
+        // Read the stricter way, a region must also be an object's size across: a
+        // sliver along an outline is that outline drawn elsewhere.
+        if start.is_some()
+            && PixelBox::of(&region, grid.width)
+                .is_none_or(|b| b.x1 - b.x0 + 1 < MIN_ACROSS || b.y1 - b.y0 + 1 < MIN_ACROSS)
+        {
             continue;
         }
         let mirrored = region

@@ -192,6 +192,63 @@ pub fn is_relit(
             ))
 }
 
+/// Lights beyond this many are tried one at a time in [`lit_as_raylab`].
+const ALL_STATES_UP_TO: usize = 4;
+
+/// Whether the other picture at `p` is within `tolerance` of raylab's own surface there
+/// with each light at raylab's strength, switched off, as shadowed, or unshadowed (a
+/// shadow gained or lost), or of raylab's picture without one of the objects the pixel
+/// sees. Stricter than [`is_relit`], which lets every light take any strength: in a
+/// scene of several coloured lights that cone holds nearly every colour, an object
+/// raylab does not draw included.
+#[must_use]
+pub fn lit_as_raylab(components: &Components, target: &Target, p: usize, tolerance: f64) -> bool {
+    let space = components.space;
+    let beauty = DVec3::from_array(components.beauty[p]);
+    let mut shadowed = vec![DVec3::ZERO; space.lights];
+    let mut unshadowed_extra = vec![DVec3::ZERO; space.lights];
+    let mut missing = Vec::new();
+    for entry in components.pixel(p) {
+        let value = DVec3::new(
+            f64::from(entry.value[0]),
+            f64::from(entry.value[1]),
+            f64::from(entry.value[2]),
+        );
+        match space.decode(entry.channel).0 {
+            Kind::Diffuse(l) | Kind::Specular(l) => shadowed[l] += value,
+            Kind::Shadow(l) => unshadowed_extra[l] += value,
+            Kind::Missing(_) | Kind::NodeMissing => missing.push(value),
+            _ => {}
+        }
+    }
+    if missing
+        .iter()
+        .any(|&change| outside(target, p, beauty + change) < tolerance)
+    {
+        return true;
+    }
+    let base = beauty - shadowed.iter().copied().sum::<DVec3>();
+    // Each light's three states: off, as raylab shadows it, unshadowed.
+    let state = |l: usize, s: usize| match s {
+        0 => DVec3::ZERO,
+        1 => shadowed[l],
+        _ => shadowed[l] + unshadowed_extra[l],
+    };
+    let lights = space.lights;
+    if lights <= ALL_STATES_UP_TO {
+        (0..3usize.pow(lights as u32)).any(|code| {
+            let colour = (0..lights).fold(base, |sum, l| {
+                sum + state(l, code / 3usize.pow(l as u32) % 3)
+            });
+            outside(target, p, colour) < tolerance
+        })
+    } else {
+        (0..lights).any(|l| {
+            (0..3).any(|s| outside(target, p, beauty - shadowed[l] + state(l, s)) < tolerance)
+        })
+    }
+}
+
 impl Palette {
     /// Whether the other picture at `p` is within `tolerance` of some lighting of scene
     /// object `object`'s materials.
