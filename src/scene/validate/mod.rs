@@ -160,33 +160,28 @@ fn check_material(material: &Material) -> Result<(), SceneError> {
     Ok(())
 }
 
+/// Each field checked once, whichever kinds hold it, in the order a Spot lists them.
 fn check_light(light: &Light) -> Result<(), SceneError> {
     non_negative_colour("colour", light.colour())?;
     check_intensity(light.intensity())?;
+    if let Light::Point { position, .. } | Light::Spot { position, .. } = *light {
+        finite_vec("position", position)?;
+    }
+    if let Light::Directional { direction, .. } | Light::Spot { direction, .. } = *light {
+        check_direction(direction)?;
+    }
+    if let Light::Spot { angle_deg, .. } = *light {
+        finite("angle_deg", angle_deg)?;
+        if !(angle_deg > 0.0 && angle_deg <= MAX_SPOT_ANGLE_DEG) {
+            return invalid(format!(
+                "angle_deg is {angle_deg}; a spot light's half-angle must be in \
+                 (0, {MAX_SPOT_ANGLE_DEG}] degrees"
+            ));
+        }
+    }
     match *light {
-        Light::Ambient { .. } => Ok(()),
-        Light::Point { position, source } => {
-            finite_vec("position", position)?;
-            check_sphere(source)
-        }
-        Light::Directional { direction, .. } => check_direction(direction),
-        Light::Spot {
-            position,
-            direction,
-            angle_deg,
-            source,
-        } => {
-            finite_vec("position", position)?;
-            check_direction(direction)?;
-            finite("angle_deg", angle_deg)?;
-            if !(angle_deg > 0.0 && angle_deg <= MAX_SPOT_ANGLE_DEG) {
-                return invalid(format!(
-                    "angle_deg is {angle_deg}; a spot light's half-angle must be in \
-                     (0, {MAX_SPOT_ANGLE_DEG}] degrees"
-                ));
-            }
-            check_sphere(source)
-        }
+        Light::Point { source, .. } | Light::Spot { source, .. } => check_sphere(source),
+        Light::Ambient { .. } | Light::Directional { .. } => Ok(()),
     }
 }
 
