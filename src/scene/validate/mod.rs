@@ -233,3 +233,65 @@ fn check_light_strength(light: &Light) -> Result<(), SceneError> {
         light.intensity()
     ))
 }
+
+#[cfg(test)]
+mod tests {
+    use glam::DVec3;
+
+    use super::check_light;
+    use crate::scene::{Light, LightSource};
+
+    /// Why `light` is refused, or a panic where it passes.
+    fn refusal(light: &Light) -> String {
+        check_light(light).expect_err("refused").to_string()
+    }
+
+    #[test]
+    fn each_light_field_is_checked_on_every_kind_that_holds_it_in_file_order() {
+        let nan = DVec3::new(0.0, f64::NAN, 0.0);
+        let source = LightSource::point(DVec3::ONE, 1.0);
+        let spot = |position, direction, angle_deg, source| Light::Spot {
+            position,
+            direction,
+            angle_deg,
+            source,
+        };
+        let wide = LightSource {
+            radius: -1.0,
+            ..source
+        };
+        let down = -DVec3::Y;
+        for (light, field) in [
+            (
+                Light::Point {
+                    position: nan,
+                    source,
+                },
+                "position",
+            ),
+            (spot(nan, DVec3::ZERO, 0.0, wide), "position"),
+            (spot(DVec3::ZERO, DVec3::ZERO, 0.0, wide), "direction"),
+            (spot(DVec3::ZERO, down, 0.0, wide), "angle_deg"),
+            (spot(DVec3::ZERO, down, 20.0, wide), "radius"),
+            (
+                Light::Point {
+                    position: DVec3::ZERO,
+                    source: wide,
+                },
+                "radius",
+            ),
+            (
+                Light::Directional {
+                    direction: DVec3::ZERO,
+                    colour: DVec3::ONE,
+                    intensity: 1.0,
+                },
+                "direction",
+            ),
+        ] {
+            let message = refusal(&light);
+            assert!(message.contains(field), "{light:?}: {message}");
+        }
+        assert!(check_light(&spot(DVec3::ZERO, down, 20.0, source)).is_ok());
+    }
+}
