@@ -9,6 +9,7 @@ pub mod compare;
 pub mod document;
 pub mod gizmo;
 pub mod panels;
+mod scene_job;
 mod screenshot;
 mod shortcuts;
 pub mod state;

@@ -160,33 +160,28 @@ fn check_material(material: &Material) -> Result<(), SceneError> {
     Ok(())
 }
 
+/// Each field checked once, whichever kinds hold it, in the order a Spot lists them.
 fn check_light(light: &Light) -> Result<(), SceneError> {
     non_negative_colour("colour", light.colour())?;
     check_intensity(light.intensity())?;
+    if let Light::Point { position, .. } | Light::Spot { position, .. } = *light {
+        finite_vec("position", position)?;
+    }
+    if let Light::Directional { direction, .. } | Light::Spot { direction, .. } = *light {
+        check_direction(direction)?;
+    }
+    if let Light::Spot { angle_deg, .. } = *light {
+        finite("angle_deg", angle_deg)?;
+        if !(angle_deg > 0.0 && angle_deg <= MAX_SPOT_ANGLE_DEG) {
+            return invalid(format!(
+                "angle_deg is {angle_deg}; a spot light's half-angle must be in \
+                 (0, {MAX_SPOT_ANGLE_DEG}] degrees"
+            ));
+        }
+    }
     match *light {
-        Light::Ambient { .. } => Ok(()),
-        Light::Point { position, source } => {
-            finite_vec("position", position)?;
-            check_sphere(source)
-        }
-        Light::Directional { direction, .. } => check_direction(direction),
-        Light::Spot {
-            position,
-            direction,
-            angle_deg,
-            source,
-        } => {
-            finite_vec("position", position)?;
-            check_direction(direction)?;
-            finite("angle_deg", angle_deg)?;
-            if !(angle_deg > 0.0 && angle_deg <= MAX_SPOT_ANGLE_DEG) {
-                return invalid(format!(
-                    "angle_deg is {angle_deg}; a spot light's half-angle must be in \
-                     (0, {MAX_SPOT_ANGLE_DEG}] degrees"
-                ));
-            }
-            check_sphere(source)
-        }
+        Light::Point { source, .. } | Light::Spot { source, .. } => check_sphere(source),
+        Light::Ambient { .. } | Light::Directional { .. } => Ok(()),
     }
 }
 
@@ -237,4 +232,66 @@ fn check_light_strength(light: &Light) -> Result<(), SceneError> {
         light.colour(),
         light.intensity()
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use glam::DVec3;
+
+    use super::check_light;
+    use crate::scene::{Light, LightSource};
+
+    /// Why `light` is refused, or a panic where it passes.
+    fn refusal(light: &Light) -> String {
+        check_light(light).expect_err("refused").to_string()
+    }
+
+    #[test]
+    fn each_light_field_is_checked_on_every_kind_that_holds_it_in_file_order() {
+        let nan = DVec3::new(0.0, f64::NAN, 0.0);
+        let source = LightSource::point(DVec3::ONE, 1.0);
+        let spot = |position, direction, angle_deg, source| Light::Spot {
+            position,
+            direction,
+            angle_deg,
+            source,
+        };
+        let wide = LightSource {
+            radius: -1.0,
+            ..source
+        };
+        let down = -DVec3::Y;
+        for (light, field) in [
+            (
+                Light::Point {
+                    position: nan,
+                    source,
+                },
+                "position",
+            ),
+            (spot(nan, DVec3::ZERO, 0.0, wide), "position"),
+            (spot(DVec3::ZERO, DVec3::ZERO, 0.0, wide), "direction"),
+            (spot(DVec3::ZERO, down, 0.0, wide), "angle_deg"),
+            (spot(DVec3::ZERO, down, 20.0, wide), "radius"),
+            (
+                Light::Point {
+                    position: DVec3::ZERO,
+                    source: wide,
+                },
+                "radius",
+            ),
+            (
+                Light::Directional {
+                    direction: DVec3::ZERO,
+                    colour: DVec3::ONE,
+                    intensity: 1.0,
+                },
+                "direction",
+            ),
+        ] {
+            let message = refusal(&light);
+            assert!(message.contains(field), "{light:?}: {message}");
+        }
+        assert!(check_light(&spot(DVec3::ZERO, down, 20.0, source)).is_ok());
+    }
 }

@@ -38,23 +38,10 @@ pub(super) struct Visibility {
 
 impl Tracer<'_> {
     /// The object blocking the shadow ray from `hit` (at `to.depth`) to light
-    /// `to.index`, if any. The ray itself is made only if `rays` has to cast it.
+    /// `to.index`, if any; `off_centre`: the ray aims at a point of a sphere light other
+    /// than the light's position. The ray itself is made only if `rays` has to cast it.
     #[inline]
-    pub(super) fn shadow_blocker(
-        &self,
-        hit: &SurfacePoint,
-        sample: &LightSample,
-        to: LightAt,
-        rays: &mut impl RaySource,
-        counts: &mut RayCounts,
-    ) -> Option<usize> {
-        self.shadow_ray_blocker(hit, sample, to, false, rays, counts)
-    }
-
-    /// As [`Self::shadow_blocker`]; `off_centre`: the ray aims at a point of a sphere
-    /// light other than the light's position.
-    #[inline]
-    fn shadow_ray_blocker(
+    fn shadow_blocker(
         &self,
         hit: &SurfacePoint,
         sample: &LightSample,
@@ -91,7 +78,7 @@ impl Tracer<'_> {
         let (Some(sphere), Some(centre)) =
             (self.world.light_spheres[to.index], sample.light_position)
         else {
-            let blocker = self.shadow_blocker(hit, sample, to, rays, counts);
+            let blocker = self.shadow_blocker(hit, sample, to, false, rays, counts);
             let fraction = if blocker.is_some() { 0.0 } else { 1.0 };
             return Visibility {
                 fraction,
@@ -129,7 +116,7 @@ impl Tracer<'_> {
                     to_light: (target - hit.p).normalize_or_zero(),
                     ..*sample
                 };
-                let blocker = self.shadow_ray_blocker(hit, &toward, to, true, rays, counts);
+                let blocker = self.shadow_blocker(hit, &toward, to, true, rays, counts);
                 match blocker {
                     None => clear += 1,
                     Some(_) => first_blocker = first_blocker.or(blocker),

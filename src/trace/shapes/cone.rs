@@ -5,7 +5,7 @@ use glam::{DVec2, DVec3};
 
 use super::bounds::Aabb;
 use super::caps::{cap_point_at, cap_t, disc_cap};
-use super::hit::{ConvexEnds, ShapeHit, gamma, in_range, nearer};
+use super::hit::{ConvexEnds, ConvexSolid, ShapeHit, gamma, in_range, nearer};
 use super::quadratic::{difference_of_products, solve_quadratic, sorted};
 use crate::trace::ray::Ray;
 
@@ -91,46 +91,32 @@ fn side_point(ray: &Ray, t: f64) -> ShapeHit {
     }
 }
 
-/// Both crossings of the whole line (entry, exit), for CSG: the solid is convex, so they
-/// are the first and last of its surface points along the line (one point twice where
-/// the line only touches it).
-pub(crate) fn crossings(ray: &Ray, out: &mut Vec<ShapeHit>) {
-    ends(ray).crossings(|k, t| candidate_hit(ray, k, t), out);
-}
+/// The unit cone as a convex solid: its crossings of a whole line, for CSG.
+pub(crate) struct Cone;
 
-/// The ends of the whole line's span (`crossings`' two `t`s without their points), for
-/// CSG leaves that work out a surface point only for the crossing a query answers with.
-#[inline]
-pub(crate) fn line_span(ray: &Ray) -> Option<[f64; 2]> {
-    ends(ray).span()
-}
+impl ConvexSolid for Cone {
+    const NAME: &'static str = "cone";
 
-/// Crossing `k` of the line (0 the entry, 1 the exit), as [`crossings`] gives it; the
-/// line must cross the cone ([`line_span`] is `Some`).
-pub(crate) fn crossing_of_line(ray: &Ray, k: usize) -> ShapeHit {
-    let (which, t) = ends(ray).end(k).expect("a line that crosses the cone");
-    candidate_hit(ray, which, t)
-}
-
-/// Where the line enters and leaves, picked from where it meets each surface: the side's
-/// two roots on the upper nappe, then the cap on its disc.
-fn ends(ray: &Ray) -> ConvexEnds {
-    let mut ts = [None; 3];
-    if let Some(roots) = side_roots(ray) {
-        for (slot, t) in ts.iter_mut().zip(roots) {
-            *slot = (0.0..=1.0).contains(&ray.at(t).z).then_some(t);
+    /// Where the line enters and leaves, picked from where it meets each surface: the side's
+    /// two roots on the upper nappe, then the cap on its disc.
+    fn ends(ray: &Ray) -> ConvexEnds {
+        let mut ts = [None; 3];
+        if let Some(roots) = side_roots(ray) {
+            for (slot, t) in ts.iter_mut().zip(roots) {
+                *slot = (0.0..=1.0).contains(&ray.at(t).z).then_some(t);
+            }
         }
+        ts[2] = cap_t(ray, 1.0);
+        ConvexEnds::of(&ts)
     }
-    ts[2] = cap_t(ray, 1.0);
-    ConvexEnds::of(&ts)
-}
 
-/// The surface point of candidate `k` of [`ends`], at its `t`.
-fn candidate_hit(ray: &Ray, k: usize, t: f64) -> ShapeHit {
-    if k < 2 {
-        return side_point(ray, t);
+    /// The surface point of candidate `k` of [`Self::ends`], at its `t`.
+    fn candidate_hit(ray: &Ray, k: usize, t: f64) -> ShapeHit {
+        if k < 2 {
+            return side_point(ray, t);
+        }
+        cap_point_at(ray, t, 1.0, 1.0).expect("on the cap's disc, as `ends` found")
     }
-    cap_point_at(ray, t, 1.0, 1.0).expect("on the cap's disc, as `ends` found")
 }
 
 /// The closest hit with `t` in (0, t_max): side or cap. At the cap rim both agree.

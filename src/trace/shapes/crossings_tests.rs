@@ -8,20 +8,19 @@ use proptest::prelude::*;
 use super::{
     Primitive, ShapeHit, crossings, in_range, intersect, line_crossing, line_span, starts_inside,
 };
+use crate::scene::Shape;
 use crate::trace::ray::Ray;
 
-const SHAPES: [Primitive; 10] = [
-    Primitive::Sphere,
-    Primitive::Plane,
-    Primitive::Cube,
-    Primitive::Cylinder,
-    Primitive::Cone,
-    Primitive::Octahedron,
-    Primitive::Torus { minor: 0.25 },
-    Primitive::Torus { minor: 1.0 },
-    Primitive::Torus { minor: 1.7 },
-    Primitive::Tube { inner: 0.6 },
-];
+/// Every unit shape as the editor makes it ([`Shape::ALL`]), and the torus whose hole
+/// closes, the one that crosses its axis, and a thinner tube.
+fn shapes() -> impl Iterator<Item = Primitive> {
+    let units = Shape::ALL.iter().filter_map(Primitive::of);
+    units.chain([
+        Primitive::Torus { minor: 1.0 },
+        Primitive::Torus { minor: 1.7 },
+        Primitive::Tube { inner: 0.6 },
+    ])
+}
 
 fn vector(range: f64) -> impl Strategy<Value = DVec3> {
     (-range..range, -range..range, -range..range).prop_map(|(x, y, z)| DVec3::new(x, y, z))
@@ -39,7 +38,7 @@ fn contains(shape: Primitive, p: DVec3) -> bool {
         Primitive::Octahedron => p.abs().element_sum() <= 1.0,
         Primitive::Torus { minor } => (r2.sqrt() - 1.0).hypot(p.z) <= minor,
         Primitive::Tube { inner } => r2 <= 1.0 && r2 >= inner * inner && p.z.abs() <= 1.0,
-        Primitive::Mesh => unreachable!("meshes are not among SHAPES"),
+        Primitive::Mesh => unreachable!("meshes are not among the shapes tested"),
     }
 }
 
@@ -50,7 +49,7 @@ proptest! {
         dir in vector(1.0).prop_filter("a direction", |d| d.length() > 0.1),
     ) {
         let ray = Ray::new(origin, dir);
-        for shape in SHAPES {
+        for shape in shapes() {
             let mut out: Vec<ShapeHit> = Vec::new();
             crossings(shape, &ray, &mut out);
             prop_assert!(out.windows(2).all(|w| w[0].t <= w[1].t), "{shape:?} ascends");

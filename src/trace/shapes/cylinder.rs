@@ -4,7 +4,7 @@ use glam::{DVec2, DVec3};
 
 use super::bounds::Aabb;
 use super::caps::{cap_point_at, cap_t, disc_cap};
-use super::hit::{ConvexEnds, ShapeHit, gamma, in_range, nearer};
+use super::hit::{ConvexEnds, ConvexSolid, ShapeHit, gamma, in_range, nearer};
 use super::quadratic::unit_ball_roots;
 use crate::trace::ray::Ray;
 
@@ -47,48 +47,35 @@ fn side_point(ray: &Ray, t: f64) -> ShapeHit {
     }
 }
 
-/// Both crossings of the whole line (entry, exit), for CSG: the solid is convex, so they
-/// are the first and last of its surface points along the line.
-pub(crate) fn crossings(ray: &Ray, out: &mut Vec<ShapeHit>) {
-    ends(ray).crossings(|k, t| candidate_hit(ray, k, t), out);
-}
+/// The unit cylinder as a convex solid: its crossings of a whole line, for CSG.
+pub(crate) struct Cylinder;
 
-/// The ends of the whole line's span (`crossings`' two `t`s without their points), for
-/// CSG leaves that work out a surface point only for the crossing a query answers with.
-#[inline]
-pub(crate) fn line_span(ray: &Ray) -> Option<[f64; 2]> {
-    ends(ray).span()
-}
+impl ConvexSolid for Cylinder {
+    const NAME: &'static str = "cylinder";
 
-/// Crossing `k` of the line (0 the entry, 1 the exit), as [`crossings`] gives it; the
-/// line must cross the cylinder ([`line_span`] is `Some`).
-pub(crate) fn crossing_of_line(ray: &Ray, k: usize) -> ShapeHit {
-    let (which, t) = ends(ray).end(k).expect("a line that crosses the cylinder");
-    candidate_hit(ray, which, t)
-}
-
-/// Where the line enters and leaves, picked from where it meets each surface: the side's
-/// two roots within the height range, then the top and the bottom cap on their discs.
-fn ends(ray: &Ray) -> ConvexEnds {
-    let mut ts = [None; 4];
-    if let Some(roots) = side_roots(ray) {
-        for (slot, t) in ts.iter_mut().zip(roots) {
-            *slot = (ray.at(t).z.abs() <= 1.0).then_some(t);
+    /// Where the line enters and leaves, picked from where it meets each surface: the side's
+    /// two roots within the height range, then the top and the bottom cap on their discs.
+    fn ends(ray: &Ray) -> ConvexEnds {
+        let mut ts = [None; 4];
+        if let Some(roots) = side_roots(ray) {
+            for (slot, t) in ts.iter_mut().zip(roots) {
+                *slot = (ray.at(t).z.abs() <= 1.0).then_some(t);
+            }
         }
+        ts[2] = cap_t(ray, 1.0);
+        ts[3] = cap_t(ray, -1.0);
+        ConvexEnds::of(&ts)
     }
-    ts[2] = cap_t(ray, 1.0);
-    ts[3] = cap_t(ray, -1.0);
-    ConvexEnds::of(&ts)
-}
 
-/// The surface point of candidate `k` of [`ends`], at its `t`.
-fn candidate_hit(ray: &Ray, k: usize, t: f64) -> ShapeHit {
-    let (z_cap, normal_z) = match k {
-        0 | 1 => return side_point(ray, t),
-        2 => (1.0, 1.0),
-        _ => (-1.0, -1.0),
-    };
-    cap_point_at(ray, t, z_cap, normal_z).expect("on the cap's disc, as `ends` found")
+    /// The surface point of candidate `k` of [`Self::ends`], at its `t`.
+    fn candidate_hit(ray: &Ray, k: usize, t: f64) -> ShapeHit {
+        let (z_cap, normal_z) = match k {
+            0 | 1 => return side_point(ray, t),
+            2 => (1.0, 1.0),
+            _ => (-1.0, -1.0),
+        };
+        cap_point_at(ray, t, z_cap, normal_z).expect("on the cap's disc, as `ends` found")
+    }
 }
 
 /// The closest hit with `t` in (0, t_max): side or either cap. At a cap rim both agree.

@@ -53,7 +53,7 @@ pub(crate) fn nearer(a: Option<ShapeHit>, b: Option<ShapeHit>) -> Option<ShapeHi
 /// points: per surface (a side root, a cap) the `t` where the line meets it, or `None`.
 /// They are the smallest and largest `t` (the earlier candidate where two tie), and only
 /// those two ever get a surface point: the cylinder's and the cone's `crossings`, and
-/// the two-`t` spans of CSG leaves, all read them from here.
+/// the two-`t` spans of CSG leaves, all read them from here (through [`ConvexSolid`]).
 pub(crate) struct ConvexEnds {
     /// The entry's and the exit's candidate and `t`, if the line meets the solid.
     ends: Option<[(usize, f64); 2]>,
@@ -93,5 +93,44 @@ impl ConvexEnds {
         if let Some(ends) = self.ends {
             out.extend(ends.map(|(c, t)| point(c, t)));
         }
+    }
+}
+
+/// A convex solid whose line crossings are picked by [`ConvexEnds`] from a few candidate
+/// surfaces (the cylinder's and the cone's side and caps): it says where the line meets
+/// each surface and makes the surface point of one; the three ways CSG asks for its
+/// crossings follow from those two, the same for every such solid.
+pub(crate) trait ConvexSolid {
+    /// What the solid is called in the panic of a line that misses it.
+    const NAME: &'static str;
+
+    /// Where the line enters and leaves, picked from where it meets each surface.
+    fn ends(ray: &Ray) -> ConvexEnds;
+
+    /// The surface point of candidate `k` of [`Self::ends`], at its `t`.
+    fn candidate_hit(ray: &Ray, k: usize, t: f64) -> ShapeHit;
+
+    /// Both crossings of the whole line (entry, exit), for CSG: the solid is convex, so
+    /// they are the first and last of its surface points along the line (one point twice
+    /// where the line only touches it).
+    fn crossings(ray: &Ray, out: &mut Vec<ShapeHit>) {
+        Self::ends(ray).crossings(|k, t| Self::candidate_hit(ray, k, t), out);
+    }
+
+    /// The ends of the whole line's span (`crossings`' two `t`s without their points),
+    /// for CSG leaves that work out a surface point only for the crossing a query
+    /// answers with.
+    #[inline]
+    fn line_span(ray: &Ray) -> Option<[f64; 2]> {
+        Self::ends(ray).span()
+    }
+
+    /// Crossing `k` of the line (0 the entry, 1 the exit), as [`Self::crossings`] gives
+    /// it; the line must cross the solid ([`Self::line_span`] is `Some`).
+    fn crossing_of_line(ray: &Ray, k: usize) -> ShapeHit {
+        let Some((which, t)) = Self::ends(ray).end(k) else {
+            panic!("a line that crosses the {}", Self::NAME);
+        };
+        Self::candidate_hit(ray, which, t)
     }
 }

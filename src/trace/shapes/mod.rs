@@ -33,6 +33,7 @@ mod crossings_tests;
 use glam::DVec3;
 
 pub use self::bounds::{Aabb, BoundingSphere};
+use self::hit::ConvexSolid;
 pub(crate) use self::hit::in_range;
 pub use self::hit::{ShapeHit, gamma};
 pub use self::mesh::{MeshStore, TriangleHit, TriangleMesh};
@@ -213,8 +214,8 @@ pub(crate) fn crossings(shape: Primitive, ray: &Ray, out: &mut Vec<ShapeHit>) {
         Primitive::Sphere => sphere::crossings(ray, out),
         Primitive::Plane => plane::crossings(ray, out),
         Primitive::Cube => cube::crossings(ray, out),
-        Primitive::Cylinder => cylinder::crossings(ray, out),
-        Primitive::Cone => cone::crossings(ray, out),
+        Primitive::Cylinder => cylinder::Cylinder::crossings(ray, out),
+        Primitive::Cone => cone::Cone::crossings(ray, out),
         Primitive::Octahedron => octahedron::crossings(ray, out),
         Primitive::Torus { minor } => torus::crossings(ray, out, minor),
         Primitive::Tube { inner } => tube::crossings(ray, out, inner),
@@ -233,8 +234,8 @@ pub(crate) fn line_span(shape: Primitive, ray: &Ray) -> Option<Option<[f64; 2]>>
     match shape {
         Primitive::Sphere => Some(sphere::line_span(ray)),
         Primitive::Cube => Some(cube::line_span(ray)),
-        Primitive::Cylinder => Some(cylinder::line_span(ray)),
-        Primitive::Cone => Some(cone::line_span(ray)),
+        Primitive::Cylinder => Some(cylinder::Cylinder::line_span(ray)),
+        Primitive::Cone => Some(cone::Cone::line_span(ray)),
         _ => None,
     }
 }
@@ -246,8 +247,8 @@ pub(crate) fn line_crossing(shape: Primitive, ray: &Ray, k: usize, t: f64) -> Sh
     match shape {
         Primitive::Sphere => sphere::crossing_at(ray, t),
         Primitive::Cube => cube::crossing_of_line(ray, k),
-        Primitive::Cylinder => cylinder::crossing_of_line(ray, k),
-        Primitive::Cone => cone::crossing_of_line(ray, k),
+        Primitive::Cylinder => cylinder::Cylinder::crossing_of_line(ray, k),
+        Primitive::Cone => cone::Cone::crossing_of_line(ray, k),
         _ => unreachable!("line_span is None for {shape:?}"),
     }
 }

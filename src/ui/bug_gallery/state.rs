@@ -9,10 +9,10 @@ use egui::TextureHandle;
 use super::meshes::read_meshes;
 use crate::compare::OtherImage;
 use crate::compare::plant::{gallery, gallery_bugs, gallery_scene};
-use crate::preview::BackgroundJob;
 use crate::scene::Scene;
-use crate::trace::MeshStore;
+use crate::trace::{MeshStore, RenderProgress};
 use crate::ui::compare::PictureToCompare;
+use crate::ui::scene_job::SceneJob;
 
 /// Samples per pixel of the gallery's pictures: one, as the course's tracers render.
 pub const GALLERY_SAMPLES: u32 = 1;
@@ -40,12 +40,8 @@ struct Made {
     left_out: Vec<String>,
 }
 
-/// A gallery being rendered.
-struct Running {
-    job: BackgroundJob<Result<Made, String>>,
-    scene: Scene,
-    bugs: usize,
-}
+/// A gallery being rendered, tagged with how many bugs it tries.
+type Running = SceneJob<Made, usize>;
 
 /// A gallery made, and the editor's scene it shows.
 struct Shown {
@@ -69,7 +65,7 @@ impl BugGallery {
     pub fn show(&mut self, scene: &Scene, folder: Option<&Path>, ctx: &egui::Context) {
         self.open = true;
         let current = |s: &Scene| s == scene;
-        let up_to_date = self.running.as_ref().is_some_and(|r| current(&r.scene))
+        let up_to_date = self.running.as_ref().is_some_and(|r| current(r.scene()))
             || self.shown.as_ref().is_some_and(|s| current(&s.scene));
         if !up_to_date {
             self.start(scene, folder, ctx);
@@ -81,44 +77,25 @@ impl BugGallery {
     pub fn start(&mut self, scene: &Scene, folder: Option<&Path>, ctx: &egui::Context) {
         self.running = None;
         self.error = None;
-        let (thread_scene, folder, repaint) =
-            (scene.clone(), folder.map(Path::to_owned), ctx.clone());
+        let (thread_scene, folder) = (scene.clone(), folder.map(Path::to_owned));
         let bugs = gallery_bugs(&gallery_scene(scene.clone(), None)).len();
-        let job = BackgroundJob::spawn(
-            "bug gallery",
-            move |progress| {
-                let made = make(&thread_scene, folder, progress);
-                (!progress.is_cancelled()).then_some(made)
-            },
-            move || repaint.request_repaint(),
-        );
-        match job {
-            Ok(job) => {
-                self.running = Some(Running {
-                    job,
-                    scene: scene.clone(),
-                    bugs,
-                });
-            }
+        let work = move |progress: &RenderProgress| {
+            let made = make(&thread_scene, folder, progress);
+            (!progress.is_cancelled()).then_some(made)
+        };
+        match SceneJob::spawn("bug gallery", scene, bugs, work, ctx) {
+            Ok(job) => self.running = Some(job),
             Err(error) => self.error = Some(error),
         }
     }
 
     /// Takes the outcome of a finished job.
     pub fn poll(&mut self) {
-        let Some(outcome) = self.running.as_ref().and_then(|r| r.job.try_result()) else {
+        let Some((outcome, scene, _)) = SceneJob::take_finished(&mut self.running) else {
             return;
         };
-        let Some(running) = self.running.take() else {
-            return;
-        };
-        match outcome.and_then(|made| made) {
-            Ok(made) => {
-                self.shown = Some(Shown {
-                    made,
-                    scene: running.scene,
-                });
-            }
+        match outcome {
+            Ok(made) => self.shown = Some(Shown { made, scene }),
             Err(error) => self.error = Some(format!("No gallery: {error}")),
         }
     }
@@ -126,7 +103,7 @@ impl BugGallery {
     /// Asks the gallery being made to stop (its end is reported as an error).
     pub fn cancel(&self) {
         if let Some(running) = &self.running {
-            running.job.cancel();
+            running.cancel();
         }
     }
 
@@ -139,13 +116,13 @@ impl BugGallery {
     /// Fraction done of the picture being rendered now, `None` when nothing runs.
     #[must_use]
     pub fn progress(&self) -> Option<f64> {
-        self.running.as_ref().map(|r| r.job.fraction())
+        self.running.as_ref().map(SceneJob::fraction)
     }
 
     /// How many bugs the gallery being made tries (each one picture, if it shows).
     #[must_use]
     pub fn bugs_to_try(&self) -> Option<usize> {
-        self.running.as_ref().map(|r| r.bugs)
+        self.running.as_ref().map(|r| *r.tag())
     }
 
     /// Why the last gallery could not be made.
@@ -196,11 +173,7 @@ impl BugGallery {
 }
 
 /// The gallery of `scene`: its meshes read, the scene at the gallery's size, the pictures.
-fn make(
-    scene: &Scene,
-    folder: Option<PathBuf>,
-    progress: &crate::trace::RenderProgress,
-) -> Result<Made, String> {
+fn make(scene: &Scene, folder: Option<PathBuf>, progress: &RenderProgress) -> Result<Made, String> {
     let meshes = read_meshes(scene, folder.as_deref())?;
     let scaled = gallery_scene(scene.clone(), None);
     let found = gallery(&scaled, &meshes, GALLERY_SAMPLES, progress)?;

@@ -9,9 +9,10 @@ use std::sync::Arc;
 use crate::compare::{
     CompareError, CompareOptions, Comparison, OtherImage, PixelValues, compare_with_meshes,
 };
-use crate::preview::{BackgroundJob, MeshCache};
+use crate::preview::MeshCache;
 use crate::scene::{LoadWatch, Scene};
-use crate::trace::MeshStore;
+use crate::trace::{MeshStore, RenderProgress};
+use crate::ui::scene_job::SceneJob;
 
 use super::mode::{CompareMode, Side};
 use super::textures::CompareTextures;
@@ -68,12 +69,8 @@ pub struct PictureToCompare {
     pub label: String,
 }
 
-/// A running comparison.
-struct Running {
-    job: BackgroundJob<Result<Comparison, String>>,
-    source: OtherSource,
-    scene: Scene,
-}
+/// A running comparison, tagged with where its other picture came from.
+type Running = SceneJob<Comparison, OtherSource>;
 
 /// A comparison's failure as the job reports it: the message for the user, none when
 /// it was cancelled.
@@ -177,32 +174,19 @@ impl CompareSession {
         &mut self,
         source: OtherSource,
         scene: &Scene,
-        work: impl FnOnce(&crate::trace::RenderProgress) -> Result<Comparison, Option<String>>
-        + Send
-        + 'static,
+        work: impl FnOnce(&RenderProgress) -> Result<Comparison, Option<String>> + Send + 'static,
         ctx: &egui::Context,
     ) {
         self.running = None;
         self.error = None;
         self.window_open = true;
-        let repaint = ctx.clone();
-        let job = BackgroundJob::spawn(
-            "comparison",
-            move |progress| match work(progress) {
-                Ok(comparison) => Some(Ok(comparison)),
-                Err(None) => None,
-                Err(Some(error)) => Some(Err(error)),
-            },
-            move || repaint.request_repaint(),
-        );
-        match job {
-            Ok(job) => {
-                self.running = Some(Running {
-                    job,
-                    source,
-                    scene: scene.clone(),
-                });
-            }
+        let work = move |progress: &RenderProgress| match work(progress) {
+            Ok(comparison) => Some(Ok(comparison)),
+            Err(None) => None,
+            Err(Some(error)) => Some(Err(error)),
+        };
+        match SceneJob::spawn("comparison", scene, source, work, ctx) {
+            Ok(job) => self.running = Some(job),
             Err(error) => self.error = Some(error),
         }
     }
@@ -210,18 +194,15 @@ impl CompareSession {
     /// Takes the outcome of a finished job: the comparison is shown, an error is kept
     /// for the window (which stays open to show it).
     pub fn poll(&mut self) {
-        let Some(outcome) = self.running.as_ref().and_then(|r| r.job.try_result()) else {
+        let Some((outcome, scene, source)) = SceneJob::take_finished(&mut self.running) else {
             return;
         };
-        let Some(running) = self.running.take() else {
-            return;
-        };
-        match outcome.and_then(|result| result) {
+        match outcome {
             Ok(comparison) => {
                 self.compared = Some(Compared {
                     comparison,
-                    source: running.source,
-                    scene: running.scene,
+                    source,
+                    scene,
                     textures: None,
                 });
                 self.highlighted = None;
@@ -239,14 +220,14 @@ impl CompareSession {
     /// Asks the running comparison to stop (its end is reported as an error).
     pub fn cancel(&self) {
         if let Some(running) = &self.running {
-            running.job.cancel();
+            running.cancel();
         }
     }
 
     /// Fraction done of the running comparison, `None` when none runs.
     #[must_use]
     pub fn progress(&self) -> Option<f64> {
-        self.running.as_ref().map(|r| r.job.fraction())
+        self.running.as_ref().map(SceneJob::fraction)
     }
 
     /// Whether a comparison is running.

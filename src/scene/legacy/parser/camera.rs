@@ -28,7 +28,13 @@ pub(super) fn parse_camera(
     } else {
         None
     };
-    let (transforms, _) = decode(header.body, TRANSFORM_WORDS, word, errors, transform_step);
+    let (transforms, _) = decode(
+        header.body,
+        &[TRANSFORM_WORDS],
+        word,
+        errors,
+        transform_step,
+    );
     Some(ParsedBlock {
         block: Block::Camera {
             focal_length: focal_length?,

@@ -144,7 +144,7 @@ pub(super) fn present<T>(items: Vec<Item<Option<T>>>) -> Vec<Item<T>> {
 /// decoded items and the keywords that failed (as the grammar spells them).
 pub(super) fn decode<T>(
     body: &[Token<'_>],
-    words: &[Word],
+    words: &[&[Word]],
     block: &Token<'_>,
     errors: &mut Diagnostics,
     decode_entry: fn(&Entry<'_, '_>, &mut Diagnostics) -> Option<T>,
@@ -178,11 +178,19 @@ pub(super) fn decode<T>(
 
 /// Splits a block body into keyword entries, and the tokens that are no keyword of this
 /// block (each skipped with the numbers after it).
-fn entries<'t, 'a>(body: &'t [Token<'a>], words: &[Word]) -> Vec<Result<Entry<'t, 'a>, Token<'a>>> {
+fn entries<'t, 'a>(
+    body: &'t [Token<'a>],
+    words: &[&[Word]],
+) -> Vec<Result<Entry<'t, 'a>, Token<'a>>> {
     let mut out = Vec::new();
     let mut i = 0;
     while let Some(token) = body.get(i) {
-        let word = words.iter().copied().find(|w| token.is(w.name()));
+        let word = words
+            .iter()
+            .copied()
+            .flatten()
+            .copied()
+            .find(|w| token.is(w.name()));
         let mut j = i + 1;
         // A keyword that takes a name, or a block word (from a missing `End`) with its
         // type, takes the next token whatever it looks like.
@@ -209,9 +217,9 @@ fn entries<'t, 'a>(body: &'t [Token<'a>], words: &[Word]) -> Vec<Result<Entry<'t
     out
 }
 
-fn unknown_keyword(token: &Token<'_>, words: &[Word], block: &Token<'_>) -> LegacyError {
+fn unknown_keyword(token: &Token<'_>, words: &[&[Word]], block: &Token<'_>) -> LegacyError {
     let block_name = block_word(block).unwrap_or("this");
-    let expected: Vec<&str> = words.iter().map(|w| w.name()).collect();
+    let expected: Vec<&str> = words.iter().copied().flatten().map(|w| w.name()).collect();
     let mut message = format!(
         "unknown keyword in this {block_name} block (expected {})",
         expected.join(", ")

@@ -43,7 +43,7 @@ pub(super) fn parse_light(
         ));
     }
     let numbers_ok = no_numbers(&header, errors);
-    let (settings, broken) = decode(header.body, LIGHT_WORDS, word, errors, light_setting);
+    let (settings, broken) = decode(header.body, &[LIGHT_WORDS], word, errors, light_setting);
     numbers_ok.then_some(())?;
     Some(ParsedBlock {
         block: Block::Light {

@@ -12,8 +12,8 @@ use super::header::{header, no_numbers};
 use super::values::{colour, non_negative, numbers};
 use crate::scene::MAX_IOR;
 
-/// The keywords of a Material block.
-const MATERIAL_WORDS: &[Word] = &[
+/// The keywords of a Material block, which an Object block takes too.
+pub(super) const MATERIAL_WORDS: &[Word] = &[
     Word::Colour,
     Word::Ambient,
     Word::Diffuse,
@@ -31,7 +31,7 @@ pub(super) fn parse_material(
 ) -> Option<ParsedBlock> {
     let header = header(word, rest, "a name: `Material NAME`", errors)?;
     let numbers_ok = no_numbers(&header, errors);
-    let (edits, _) = decode(header.body, MATERIAL_WORDS, word, errors, surface_edit);
+    let (edits, _) = decode(header.body, &[MATERIAL_WORDS], word, errors, surface_edit);
     numbers_ok.then_some(())?;
     Some(ParsedBlock {
         block: Block::Material {

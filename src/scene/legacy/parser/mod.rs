@@ -101,7 +101,7 @@ fn parse_block(
     let (first, rest) = tokens.split_first()?;
     match block_word(first) {
         Some("Scene") => {
-            let (settings, _) = decode(rest, scene::SCENE_WORDS, first, errors, scene::setting);
+            let (settings, _) = decode(rest, &[scene::SCENE_WORDS], first, errors, scene::setting);
             Some(ParsedBlock {
                 block: Block::Scene(entries::present(settings)),
                 at: at(first),
@@ -173,6 +173,20 @@ mod tests {
         assert_eq!(warning.line, Some(3));
         assert!(warning.message.contains("`Shiny`"), "{warning}");
         assert_eq!(blocks.len(), 1);
+    }
+
+    #[test]
+    fn a_missing_end_lists_the_blocks_keywords_in_order() {
+        let (_, errors) = parse_text("Object Sphere\n  Colour 1 0 0\nObject Cube\nEnd");
+        let [error] = errors.as_slice() else {
+            panic!("{errors:?}")
+        };
+        assert_eq!(
+            error.message,
+            "unknown keyword in this Object block (expected Material, Colour, Ambient, \
+             Diffuse, Specular, Mirror, Opacity, RefractiveIndex, Translate, Rotate, Scale, \
+             Scale3, DisableBoundingBox); is the `End` of the Object block at line 1 missing?"
+        );
     }
 
     #[test]

@@ -8,26 +8,18 @@ use super::super::syntax::{ObjectKind, ObjectNode, ObjectSetting};
 use super::at_token::{at, error};
 use super::entries::{Entry, Word, decode, present};
 use super::header::{header, no_numbers};
-use super::material::surface_edit;
-use super::transform::transform_step;
+use super::material::{MATERIAL_WORDS, surface_edit};
+use super::transform::{TRANSFORM_WORDS, transform_step};
 use super::values::{name, number};
 use crate::scene::Shape;
 
-/// The keywords of an Object block (and of a tree node's own keywords).
-pub(super) const OBJECT_WORDS: &[Word] = &[
-    Word::Material,
-    Word::Colour,
-    Word::Ambient,
-    Word::Diffuse,
-    Word::Specular,
-    Word::Mirror,
-    Word::Opacity,
-    Word::RefractiveIndex,
-    Word::Translate,
-    Word::Rotate,
-    Word::Scale,
-    Word::Scale3,
-    Word::DisableBoundingBox,
+/// The keywords of an Object block (and of a tree node's own keywords): its material,
+/// the Material block's keywords (overrides), the transforms, and its own flag.
+pub(super) const OBJECT_WORDS: &[&[Word]] = &[
+    &[Word::Material],
+    MATERIAL_WORDS,
+    TRANSFORM_WORDS,
+    &[Word::DisableBoundingBox],
 ];
 
 /// The largest `Tube R`: the hole's radius sqrt(R / 2) must stay below 1.

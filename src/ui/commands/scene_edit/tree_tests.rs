@@ -13,12 +13,28 @@ fn csg_scene() -> Scene {
     crate::scene::load_scene(&path).expect("example")
 }
 
-fn die(scene: &Scene) -> usize {
+/// Where the top-level object named `name` is in the scene's list.
+fn index_of(scene: &Scene, name: &str) -> usize {
     scene
         .objects
         .iter()
-        .position(|o| o.name == "die")
-        .expect("die")
+        .position(|o| o.name == name)
+        .unwrap_or_else(|| panic!("no {name}"))
+}
+
+fn die(scene: &Scene) -> usize {
+    index_of(scene, "die")
+}
+
+/// Applies `edit`, which must succeed.
+fn apply(edit: SceneEdit, scene: &mut Scene, selection: &mut Selection) {
+    edit.apply(scene, selection).unwrap();
+}
+
+/// Applies `edit`, which must be refused with a message that says `why`.
+fn assert_refused(edit: SceneEdit, scene: &mut Scene, selection: &mut Selection, why: &str) {
+    let error = edit.apply(scene, selection).unwrap_err();
+    assert!(error.contains(why), "{error}");
 }
 
 /// Where each leaf of the scene is, in the world.
@@ -52,9 +68,7 @@ fn grouping_then_ungrouping_a_moved_group_leaves_every_leaf_where_it_was() {
     let mut scene = csg_scene();
     let before = leaf_placements(&scene);
     let mut selection = Selection::Object(die(&scene));
-    SceneEdit::GroupSelected
-        .apply(&mut scene, &mut selection)
-        .unwrap();
+    apply(SceneEdit::GroupSelected, &mut scene, &mut selection);
     let group_path = selection.node_path().unwrap();
     let group = object_at(&scene.objects, &group_path).unwrap();
     assert!(matches!(group.shape, Shape::Group { .. }), "{selection:?}");
@@ -66,13 +80,13 @@ fn grouping_then_ungrouping_a_moved_group_leaves_every_leaf_where_it_was() {
         rotate_deg: DVec3::new(0.0, 40.0, 10.0),
         scale: DVec3::splat(1.5),
     });
-    SceneEdit::SetObject(group_path[0], moved)
-        .apply(&mut scene, &mut selection)
-        .unwrap();
+    apply(
+        SceneEdit::SetObject(group_path[0], moved),
+        &mut scene,
+        &mut selection,
+    );
     let grouped = leaf_placements(&scene);
-    SceneEdit::UngroupSelected
-        .apply(&mut scene, &mut selection)
-        .unwrap();
+    apply(SceneEdit::UngroupSelected, &mut scene, &mut selection);
     let die = object_at(&scene.objects, &selection.node_path().unwrap()).unwrap();
     assert_eq!(die.name, "die");
     assert!(
@@ -88,17 +102,13 @@ fn grouping_then_ungrouping_a_moved_group_leaves_every_leaf_where_it_was() {
 fn ungrouping_a_non_uniformly_scaled_group_of_a_turned_child_keeps_it_as_a_matrix() {
     let mut scene = csg_scene();
     let mut selection = Selection::Object(die(&scene));
-    SceneEdit::GroupSelected
-        .apply(&mut scene, &mut selection)
-        .unwrap();
+    apply(SceneEdit::GroupSelected, &mut scene, &mut selection);
     let index = selection.node_path().unwrap()[0];
     if let Transform::Trs(trs) = &mut scene.objects[index].transform {
         trs.scale = DVec3::new(2.0, 1.0, 1.0);
     }
     let grouped = leaf_placements(&scene);
-    SceneEdit::UngroupSelected
-        .apply(&mut scene, &mut selection)
-        .unwrap();
+    apply(SceneEdit::UngroupSelected, &mut scene, &mut selection);
     let die = &scene.objects[index];
     // A sheared product has no scale-rotate-translate form.
     assert!(matches!(die.transform, Transform::Matrix(_)));
@@ -113,15 +123,15 @@ fn parts_are_added_duplicated_and_deleted_in_place_and_a_csg_keeps_one_operand()
     let die = die(&scene);
     let operands = scene.objects[die].shape.children().len();
     let mut selection = Selection::Object(die);
-    SceneEdit::AddOperand(Shape::Cube)
-        .apply(&mut scene, &mut selection)
-        .unwrap();
+    apply(
+        SceneEdit::AddOperand(Shape::Cube),
+        &mut scene,
+        &mut selection,
+    );
     assert_eq!(selection, Selection::Part(vec![die, operands]));
     let added = object_at(&scene.objects, &[die, operands]).unwrap();
     assert_eq!((added.name.as_str(), added.material.as_str()), ("Cube", ""));
-    SceneEdit::DuplicateSelected
-        .apply(&mut scene, &mut selection)
-        .unwrap();
+    apply(SceneEdit::DuplicateSelected, &mut scene, &mut selection);
     assert_eq!(selection, Selection::Part(vec![die, operands + 1]));
     assert_eq!(
         object_at(&scene.objects, &[die, operands + 1])
@@ -129,40 +139,35 @@ fn parts_are_added_duplicated_and_deleted_in_place_and_a_csg_keeps_one_operand()
             .name,
         "Cube 2"
     );
-    SceneEdit::DeleteSelected
-        .apply(&mut scene, &mut selection)
-        .unwrap();
-    SceneEdit::DeleteSelected
-        .apply(&mut scene, &mut selection)
-        .unwrap();
+    apply(SceneEdit::DeleteSelected, &mut scene, &mut selection);
+    apply(SceneEdit::DeleteSelected, &mut scene, &mut selection);
     assert_eq!(scene.objects[die].shape.children().len(), operands);
     // A CSG node of one operand keeps it.
-    let lens = scene.objects.iter().position(|o| o.name == "lens").unwrap();
+    let lens = index_of(&scene, "lens");
     let mut selection = Selection::Part(vec![lens, 0]);
-    SceneEdit::DeleteSelected
-        .apply(&mut scene, &mut selection)
-        .unwrap();
+    apply(SceneEdit::DeleteSelected, &mut scene, &mut selection);
     let mut selection = Selection::Part(vec![lens, 0]);
-    let error = SceneEdit::DeleteSelected
-        .apply(&mut scene, &mut selection)
-        .unwrap_err();
-    assert!(error.contains("at least one operand"), "{error}");
+    assert_refused(
+        SceneEdit::DeleteSelected,
+        &mut scene,
+        &mut selection,
+        "at least one operand",
+    );
 }
 
 #[test]
 fn a_material_used_only_inside_a_tree_is_not_deleted_and_renames_reach_inside() {
     let mut scene = csg_scene();
     let mut selection = Selection::Material("pip".to_owned());
-    let error = SceneEdit::DeleteSelected
-        .apply(&mut scene, &mut selection)
-        .unwrap_err();
-    assert!(error.contains("pip"), "{error}");
-    SceneEdit::RenameMaterial {
-        from: "pip".to_owned(),
-        to: "dot".to_owned(),
-    }
-    .apply(&mut scene, &mut selection)
-    .unwrap();
+    assert_refused(SceneEdit::DeleteSelected, &mut scene, &mut selection, "pip");
+    apply(
+        SceneEdit::RenameMaterial {
+            from: "pip".to_owned(),
+            to: "dot".to_owned(),
+        },
+        &mut scene,
+        &mut selection,
+    );
     crate::scene::validate(&scene).expect("every reference renamed");
     let die = die(&scene);
     assert_eq!(
@@ -174,16 +179,14 @@ fn a_material_used_only_inside_a_tree_is_not_deleted_and_renames_reach_inside() 
 #[test]
 fn a_cube_becomes_a_die_by_subtracting_added_spheres_and_the_scene_still_renders() {
     let mut scene = crate::ui::document::files::default_scene();
-    let cube = scene
-        .objects
-        .iter()
-        .position(|o| o.name == "blue box")
-        .unwrap();
+    let cube = index_of(&scene, "blue box");
     let box_before = scene.objects[cube].clone();
     let mut selection = Selection::Object(cube);
-    SceneEdit::CsgSelected(CsgOp::Difference)
-        .apply(&mut scene, &mut selection)
-        .unwrap();
+    apply(
+        SceneEdit::CsgSelected(CsgOp::Difference),
+        &mut scene,
+        &mut selection,
+    );
     assert_eq!(selection, Selection::Object(cube));
     let node = &scene.objects[cube];
     assert_eq!(node.name, "difference");
@@ -204,9 +207,11 @@ fn a_cube_becomes_a_die_by_subtracting_added_spheres_and_the_scene_still_renders
     );
     for _ in 0..2 {
         let mut at_node = Selection::Object(cube);
-        SceneEdit::AddOperand(Shape::Sphere)
-            .apply(&mut scene, &mut at_node)
-            .unwrap();
+        apply(
+            SceneEdit::AddOperand(Shape::Sphere),
+            &mut scene,
+            &mut at_node,
+        );
     }
     let operands = scene.objects[cube].shape.children();
     assert_eq!(operands.len(), 3);
@@ -250,12 +255,14 @@ fn a_dragged_node_moves_into_a_tree_or_beside_a_leaf_and_stays_where_it_was() {
     let before = placed(&scene, &pip);
     let mut selection = Selection::None;
     // Out of the turned, scaled die, beside the floor at the top level.
-    SceneEdit::MoveNode {
-        from: vec![die, 5],
-        onto: vec![0],
-    }
-    .apply(&mut scene, &mut selection)
-    .unwrap();
+    apply(
+        SceneEdit::MoveNode {
+            from: vec![die, 5],
+            onto: vec![0],
+        },
+        &mut scene,
+        &mut selection,
+    );
     assert_eq!(selection, Selection::Object(1));
     assert_eq!(scene.objects[1].name, pip);
     let after = placed(&scene, &pip);
@@ -270,12 +277,14 @@ fn a_dragged_node_moves_into_a_tree_or_beside_a_leaf_and_stays_where_it_was() {
     // And back into the die (now one further down the list), as its last operand.
     let die = die + 1;
     let operands = scene.objects[die].shape.children().len();
-    SceneEdit::MoveNode {
-        from: vec![1],
-        onto: vec![die],
-    }
-    .apply(&mut scene, &mut selection)
-    .unwrap();
+    apply(
+        SceneEdit::MoveNode {
+            from: vec![1],
+            onto: vec![die],
+        },
+        &mut scene,
+        &mut selection,
+    );
     assert_eq!(selection, Selection::Part(vec![die - 1, operands]));
     assert!(placed(&scene, &pip).0.abs_diff_eq(before.0, 1e-9));
     crate::trace::World::new(&scene).expect("compiles");
@@ -286,41 +295,49 @@ fn a_node_cannot_go_inside_itself_and_a_csg_keeps_its_last_operand() {
     let mut scene = csg_scene();
     let die = die(&scene);
     let mut selection = Selection::None;
-    let error = SceneEdit::MoveNode {
-        from: vec![die],
-        onto: vec![die, 0],
-    }
-    .apply(&mut scene, &mut selection)
-    .unwrap_err();
-    assert!(error.contains("inside itself"), "{error}");
-    let lens = scene.objects.iter().position(|o| o.name == "lens").unwrap();
-    SceneEdit::MoveNode {
-        from: vec![lens, 1],
-        onto: vec![die],
-    }
-    .apply(&mut scene, &mut selection)
-    .unwrap();
-    let error = SceneEdit::MoveNode {
-        from: vec![lens, 0],
-        onto: vec![die],
-    }
-    .apply(&mut scene, &mut selection)
-    .unwrap_err();
-    assert!(error.contains("at least one operand"), "{error}");
+    assert_refused(
+        SceneEdit::MoveNode {
+            from: vec![die],
+            onto: vec![die, 0],
+        },
+        &mut scene,
+        &mut selection,
+        "inside itself",
+    );
+    let lens = index_of(&scene, "lens");
+    apply(
+        SceneEdit::MoveNode {
+            from: vec![lens, 1],
+            onto: vec![die],
+        },
+        &mut scene,
+        &mut selection,
+    );
+    assert_refused(
+        SceneEdit::MoveNode {
+            from: vec![lens, 0],
+            onto: vec![die],
+        },
+        &mut scene,
+        &mut selection,
+        "at least one operand",
+    );
 }
 
 #[test]
 fn several_objects_of_one_list_combine_into_one_node_where_the_first_stood() {
     let mut scene = csg_scene();
     let die = die(&scene);
-    let lens = scene.objects.iter().position(|o| o.name == "lens").unwrap();
+    let lens = index_of(&scene, "lens");
     let before_die = placed(&scene, "pip 6.1");
     let count = scene.objects.len();
     // Picked die first: it is the first operand.
     let mut selection = Selection::several(vec![vec![die], vec![lens]]);
-    SceneEdit::CsgSelected(CsgOp::Difference)
-        .apply(&mut scene, &mut selection)
-        .unwrap();
+    apply(
+        SceneEdit::CsgSelected(CsgOp::Difference),
+        &mut scene,
+        &mut selection,
+    );
     assert_eq!(scene.objects.len(), count - 1);
     let at = die.min(lens);
     assert_eq!(selection, Selection::Object(at));
@@ -334,28 +351,21 @@ fn several_objects_of_one_list_combine_into_one_node_where_the_first_stood() {
     crate::trace::World::new(&scene).expect("compiles");
     // Nodes from different lists are not combined.
     let mut mixed = Selection::several(vec![vec![0], vec![at, 0, 1]]);
-    let error = SceneEdit::GroupSelected
-        .apply(&mut scene, &mut mixed)
-        .unwrap_err();
-    assert!(error.contains("one list"), "{error}");
+    assert_refused(SceneEdit::GroupSelected, &mut scene, &mut mixed, "one list");
 }
 
 #[test]
 fn a_material_is_used_by_the_leaves_that_show_it_not_by_the_nodes_around_them() {
     let mut scene = crate::ui::document::files::default_scene();
-    let cube = scene
-        .objects
-        .iter()
-        .position(|o| o.name == "blue box")
-        .unwrap();
+    let cube = index_of(&scene, "blue box");
     let before = crate::ui::commands::material_users(&scene, "blue satin");
     let mut selection = Selection::Object(cube);
-    SceneEdit::GroupSelected
-        .apply(&mut scene, &mut selection)
-        .unwrap();
-    SceneEdit::AddOperand(Shape::Sphere)
-        .apply(&mut scene, &mut Selection::Object(cube))
-        .unwrap();
+    apply(SceneEdit::GroupSelected, &mut scene, &mut selection);
+    apply(
+        SceneEdit::AddOperand(Shape::Sphere),
+        &mut scene,
+        &mut Selection::Object(cube),
+    );
     // The group names it too, but only the box and the sphere that inherits it show it.
     assert_eq!(
         crate::ui::commands::material_users(&scene, "blue satin"),
@@ -367,25 +377,25 @@ fn a_material_is_used_by_the_leaves_that_show_it_not_by_the_nodes_around_them() 
 fn several_picked_objects_are_deleted_together_or_not_at_all() {
     let mut scene = csg_scene();
     let die = die(&scene);
-    let lens = scene.objects.iter().position(|o| o.name == "lens").unwrap();
+    let lens = index_of(&scene, "lens");
     let count = scene.objects.len();
     let pips = scene.objects[die].shape.children().len();
     let mut selection = Selection::several(vec![vec![lens], vec![die, 2], vec![die, 3]]);
-    SceneEdit::DeleteSelected
-        .apply(&mut scene, &mut selection)
-        .unwrap();
+    apply(SceneEdit::DeleteSelected, &mut scene, &mut selection);
     assert_eq!(selection, Selection::None);
     assert_eq!(scene.objects.len(), count - 1);
-    let die = scene.objects.iter().position(|o| o.name == "die").unwrap();
+    let die = index_of(&scene, "die");
     assert_eq!(scene.objects[die].shape.children().len(), pips - 2);
     // Both halves of a lens cannot go: the lens keeps its last operand, and nothing is
     // deleted.
     let mut scene = csg_scene();
     let before = scene.clone();
     let mut both = Selection::several(vec![vec![lens, 0], vec![lens, 1]]);
-    let error = SceneEdit::DeleteSelected
-        .apply(&mut scene, &mut both)
-        .unwrap_err();
-    assert!(error.contains("at least one operand"), "{error}");
+    assert_refused(
+        SceneEdit::DeleteSelected,
+        &mut scene,
+        &mut both,
+        "at least one operand",
+    );
     assert_eq!(scene, before);
 }
