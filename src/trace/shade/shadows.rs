@@ -117,13 +117,14 @@ impl Tracer<'_> {
         recorder: &mut R,
     ) -> Visibility {
         let seed = shading_seed(hit.p, to.index);
+        let disc = sphere.disc_seen_from(centre, hit.p);
         let mut cast = false;
         let (clear, first_blocker) = rays.sphere_rays_clear(to.node, to.index, |rays| {
             cast = true;
             let mut clear = 0u32;
             let mut first_blocker = None;
             for i in 0..sphere.samples {
-                let target = sphere.disc_point(centre, hit.p, i, seed);
+                let target = disc.point(i, seed);
                 let toward = LightSample {
                     light_position: Some(target),
                     to_light: (target - hit.p).normalize_or_zero(),

@@ -21,19 +21,44 @@ pub struct SphereLight {
 }
 
 impl SphereLight {
-    /// The point that shadow ray `index` of a shading point at `p` aims at: on the disc of
-    /// radius `radius` through `centre`, perpendicular to the line from `p`.
+    /// The disc this light shows a shading point at `p`: of radius `radius` through
+    /// `centre`, perpendicular to the line from `p`. Worked out once for all of the
+    /// point's shadow rays ([`LightDisc::point`]).
     #[must_use]
-    pub fn disc_point(&self, centre: DVec3, p: DVec3, index: u32, seed: u32) -> DVec3 {
+    pub fn disc_seen_from(&self, centre: DVec3, p: DVec3) -> LightDisc {
         let axis = (centre - p).normalize_or_zero();
         let (u, v) = if axis == DVec3::ZERO {
             (DVec3::X, DVec3::Y)
         } else {
             axis.any_orthonormal_pair()
         };
+        LightDisc {
+            centre,
+            radius: self.radius,
+            u,
+            v,
+        }
+    }
+}
+
+/// A sphere light's disc as one shading point sees it ([`SphereLight::disc_seen_from`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightDisc {
+    centre: DVec3,
+    radius: f64,
+    /// Two unit vectors spanning the disc's plane, perpendicular to each other.
+    u: DVec3,
+    v: DVec3,
+}
+
+impl LightDisc {
+    /// The point that shadow ray `index` of the shading point (its scramble `seed`:
+    /// [`shading_seed`]) aims at.
+    #[must_use]
+    pub fn point(&self, index: u32, seed: u32) -> DVec3 {
         let [x, y, _, _] = sobol_burley::sample_4d(index, 0, seed);
         let on_disc = concentric_disc(DVec2::new(f64::from(x), f64::from(y)));
-        centre + self.radius * (on_disc.x * u + on_disc.y * v)
+        self.centre + self.radius * (on_disc.x * self.u + on_disc.y * self.v)
     }
 }
 
@@ -88,9 +113,8 @@ mod tests {
         let (centre, p) = (DVec3::new(1.0, 4.0, -2.0), DVec3::new(0.0, 0.0, 0.0));
         let axis = (centre - p).normalize();
         let seed = shading_seed(p, 0);
-        let points: Vec<DVec3> = (0..64)
-            .map(|i| light.disc_point(centre, p, i, seed))
-            .collect();
+        let disc = light.disc_seen_from(centre, p);
+        let points: Vec<DVec3> = (0..64).map(|i| disc.point(i, seed)).collect();
         for q in &points {
             assert!((*q - centre).dot(axis).abs() < 1e-12, "in the disc's plane");
             assert!((*q - centre).length() <= 0.5 + 1e-12, "inside the disc");
