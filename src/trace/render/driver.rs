@@ -3,15 +3,10 @@
 
 use std::ops::Range;
 
-use super::samples::{camera_sample, sample_point};
 use super::tile_pass::TilePass;
 use super::tiles::{TileWork, render_tiles_with};
-use crate::trace::cull::TileCull;
-use crate::trace::film::{
-    Image, PinholeCamera, RenderOptions, RenderProgress, SampleSums, TileRect,
-};
+use crate::trace::film::{Image, RenderOptions, RenderProgress, SampleSums, TileRect};
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::shade::{LiveRays, Tracer};
 use crate::trace::world::{World, assert_compiled_for};
 
 /// Renders the samples `samples` (of `options.samples_per_pixel`) of every pixel and
@@ -55,32 +50,15 @@ pub fn render_samples_into(
         // Not even the culling set up (half a millisecond at 800x600).
         return None;
     }
-    let camera = PinholeCamera::new(&world.camera, width, height);
-    let tracer = Tracer::new(world, options.switches, options.view);
-    let count = options.samples_per_pixel;
-    let cull = TileCull::new(world, &camera, width, height);
-    let sample = |_: &mut TileRect, px: u32, py: u32, index: u32, rays: &mut RayCounts| {
-        let point = sample_point(px, py, index, count);
-        camera_sample(
-            &tracer,
-            &camera,
-            point,
-            &mut LiveRays::among(cull.candidates(point)),
-            rays,
-        )
-    };
     // Each batch (one sample of every pixel of a tile) traced depth by depth.
-    let pass = TilePass {
-        tracer: &tracer,
-        camera: &camera,
-        cull: &cull,
-        count,
-    };
+    let pass = TilePass::new(world, options);
     let work = TileWork {
         new_state: |_, rect| rect,
         whole: |_: &mut TileRect| None,
         batch: |rect: &mut TileRect, index| pass.tile(*rect, index),
-        sample: &sample,
+        sample: &|_: &mut TileRect, px, py, index, rays: &mut RayCounts| {
+            pass.sample(px, py, index, rays)
+        },
     };
     render_tiles_with(sums, samples, progress, &work).map(|(rays, _)| rays)
 }

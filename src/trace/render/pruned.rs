@@ -16,16 +16,12 @@ use rayon::prelude::*;
 
 use super::byte_interval::same_bytes;
 use super::driver::render_samples;
-use super::samples::{camera_sample, sample_point};
 use super::spawn_filter::PruneBelow;
 use super::tile_pass::TilePass;
 use super::tiles::{TileWork, render_tiles_with};
-use crate::trace::cull::TileCull;
-use crate::trace::film::{
-    PinholeCamera, RenderOptions, RenderProgress, SampleSums, TileRect, tile_count,
-};
+use crate::trace::film::{RenderOptions, RenderProgress, SampleSums, TileRect, tile_count};
 use crate::trace::ray_counts::RayCounts;
-use crate::trace::shade::{LiveRays, SubtreeBound, Tracer};
+use crate::trace::shade::SubtreeBound;
 use crate::trace::terms::View;
 use crate::trace::world::{World, assert_compiled_for};
 
@@ -75,21 +71,8 @@ pub fn render_pruned(
         return full(progress);
     };
     let (width, height) = (options.width, options.height);
-    let camera = PinholeCamera::new(&world.camera, width, height);
-    let tracer = Tracer::new(world, options.switches, options.view);
-    let cull = TileCull::new(world, &camera, width, height);
-    // A sample of a pixel traced in full, as the full render's pixel-by-pixel path.
-    let sample = |px: u32, py: u32, index: u32, rays: &mut RayCounts| {
-        let point = sample_point(px, py, index, count);
-        let mut live = LiveRays::among(cull.candidates(point));
-        camera_sample(&tracer, &camera, point, &mut live, rays)
-    };
-    let pass = TilePass {
-        tracer: &tracer,
-        camera: &camera,
-        cull: &cull,
-        count,
-    };
+    // The full render's pass: a sample traced alone is its pixel-by-pixel path.
+    let pass = TilePass::new(world, options);
     let work = TileWork {
         new_state: |_, rect: TileRect| {
             let pixels = (rect.w * rect.h) as usize;
@@ -100,7 +83,7 @@ pub fn render_pruned(
             pass.tile_with(*rect, index, &mut PruneBelow::new(&bound, budget, left_out))
         },
         sample: &|_: &mut (TileRect, Vec<DVec3>), px, py, index, rays: &mut RayCounts| {
-            sample(px, py, index, rays)
+            pass.sample(px, py, index, rays)
         },
     };
     let mut sums = SampleSums::unsummed(width, height);
@@ -136,7 +119,7 @@ pub fn render_pruned(
             let mut rays = RayCounts::default();
             let mut sum = DVec3::ZERO;
             for index in 0..count {
-                sum += sample(px, py, index, &mut rays);
+                sum += pass.sample(px, py, index, &mut rays);
             }
             (sum, rays)
         })

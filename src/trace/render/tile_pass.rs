@@ -16,7 +16,7 @@ use glam::{DVec2, DVec3};
 use super::samples::{camera_sample, sample_point};
 use super::spawn_filter::{SpawnFilter, TraceAll};
 use crate::trace::cull::{Candidates, TileCull};
-use crate::trace::film::{PinholeCamera, TileRect};
+use crate::trace::film::{PinholeCamera, RenderOptions, TileRect};
 use crate::trace::ray::Ray;
 use crate::trace::ray_counts::RayCounts;
 use crate::trace::shade::{
@@ -77,16 +77,37 @@ impl RaySource for KnownHit<'_> {
     }
 }
 
-/// What a plain render's tiles share.
-pub(crate) struct TilePass<'a> {
-    pub tracer: &'a Tracer<'a>,
-    pub camera: &'a PinholeCamera,
-    pub cull: &'a TileCull,
+/// What a render's tiles share: its camera, shader and culled sets, and where its samples
+/// fall; the full render and the pruned one trace through the same one.
+pub(crate) struct TilePass<'w> {
+    tracer: Tracer<'w>,
+    camera: PinholeCamera,
+    cull: TileCull,
     /// The pixel's sample count (where its samples fall).
-    pub count: u32,
+    count: u32,
 }
 
-impl TilePass<'_> {
+impl<'w> TilePass<'w> {
+    /// The pass of a render of `options` (size, sample count, switches and view) of `world`.
+    pub fn new(world: &'w World, options: &RenderOptions) -> Self {
+        let (width, height) = (options.width, options.height);
+        let camera = PinholeCamera::new(&world.camera, width, height);
+        Self {
+            tracer: Tracer::new(world, options.switches, options.view),
+            cull: TileCull::new(world, &camera, width, height),
+            camera,
+            count: options.samples_per_pixel,
+        }
+    }
+
+    /// Sample `index` of pixel `(px, py)` traced alone, its whole tree: the path of the
+    /// pixels a tile batch does not take, and of the pixels traced again in full.
+    pub fn sample(&self, px: u32, py: u32, index: u32, rays: &mut RayCounts) -> DVec3 {
+        let point = sample_point(px, py, index, self.count);
+        let mut live = LiveRays::among(self.cull.candidates(point));
+        camera_sample(&self.tracer, &self.camera, point, &mut live, rays)
+    }
+
     /// Sample `index` of every pixel of `rect` (row-major) and the rays traced, or `None`
     /// where the samples do not share one culled set (then they go pixel by pixel).
     pub fn tile(&self, rect: TileRect, index: u32) -> Option<(Vec<DVec3>, RayCounts)> {
@@ -256,7 +277,7 @@ impl TilePass<'_> {
             .zip(hits)
             .map(|((&point, ray), hit)| {
                 let mut source = KnownHit::new(0, ray, hit, among);
-                camera_sample(self.tracer, self.camera, point, &mut source, counts)
+                camera_sample(&self.tracer, &self.camera, point, &mut source, counts)
             })
             .collect()
     }
@@ -266,7 +287,7 @@ impl TilePass<'_> {
 mod tests {
     use super::*;
     use crate::scene::examples::EXAMPLE_SCENES;
-    use crate::trace::film::{RenderOptions, RenderProgress};
+    use crate::trace::film::RenderProgress;
     use crate::trace::render::{render_samples, render_samples_into};
     use crate::trace::terms::{Term, TermSwitches, View};
 
@@ -298,18 +319,14 @@ mod tests {
                 let one = render_samples(&world, &options, 1..2, &progress).unwrap();
                 let mut three = render_samples(&world, &options, 0..1, &progress).unwrap();
                 render_samples_into(&world, &options, 1..3, &mut three, &progress).unwrap();
-                let camera = PinholeCamera::new(&world.camera, 53, 37);
-                let tracer = Tracer::new(&world, switches, view);
-                let cull = TileCull::new(&world, &camera, 53, 37);
+                let pass = TilePass::new(&world, &options);
                 let mut rays = [RayCounts::default(), RayCounts::default()];
                 for (i, (one, three)) in one.sums.iter().zip(&three.sums).enumerate() {
                     let (px, py) = (i as u32 % 53, i as u32 / 53);
                     let mut sum = DVec3::ZERO;
                     for index in 0..3 {
-                        let point = sample_point(px, py, index, 3);
-                        let mut live = LiveRays::among(cull.candidates(point));
                         let counts = &mut rays[usize::from(index == 1)];
-                        let alone = camera_sample(&tracer, &camera, point, &mut live, counts);
+                        let alone = pass.sample(px, py, index, counts);
                         if index == 1 {
                             assert_eq!(*one, alone, "{name} {view:?} pixel ({px}, {py})");
                         }

@@ -13,7 +13,7 @@ use crate::trace::shapes::Primitive;
 use glam::DVec3;
 
 use crate::trace::world::{
-    LightSample, SphereLight, SurfacePoint, shading_seed, spawn_ray, spawn_ray_to,
+    LightSample, SobolScramble, SphereLight, SurfacePoint, shading_seed, spawn_ray, spawn_ray_to,
 };
 
 /// Which light a shadow ray goes to, from the hit of which ray of the tree (its depth,
@@ -103,14 +103,15 @@ impl Tracer<'_> {
         counts: &mut RayCounts,
         recorder: &mut R,
     ) -> Visibility {
-        let seed = shading_seed(hit.p, to.index);
+        let scramble = SobolScramble::new(shading_seed(hit.p, to.index));
+        let disc = sphere.disc_seen_from(centre, hit.p);
         let mut cast = false;
         let (clear, first_blocker) = rays.sphere_rays_clear(to.node, to.index, |rays| {
             cast = true;
             let mut clear = 0u32;
             let mut first_blocker = None;
             for i in 0..sphere.samples {
-                let target = sphere.disc_point(centre, hit.p, i, seed);
+                let target = disc.point(i, &scramble);
                 let toward = LightSample {
                     light_position: Some(target),
                     to_light: (target - hit.p).normalize_or_zero(),

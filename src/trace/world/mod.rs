@@ -23,4 +23,4 @@ pub use isolation::{IsolationError, check_indices};
 pub use lights::{LightSample, WorldLight, falloff};
 pub use object_set::ObjectSet;
 pub use spawn::{spawn_ray, spawn_ray_to};
-pub use sphere_light::{SphereLight, shading_seed};
+pub use sphere_light::{SobolScramble, SphereLight, shading_seed};

@@ -10,6 +10,9 @@
 //! converges to the soft shadow, while the same point always gets the same answer.
 
 use glam::{DVec2, DVec3};
+use sobol_burley::parts::{
+    Int4, hash, hash_int4, owen_scramble_int4_rev, owen_scramble_rev, sobol_int4_rev,
+};
 
 /// A light's sphere: its radius and how many shadow rays each shading point casts.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -21,19 +24,79 @@ pub struct SphereLight {
 }
 
 impl SphereLight {
-    /// The point that shadow ray `index` of a shading point at `p` aims at: on the disc of
-    /// radius `radius` through `centre`, perpendicular to the line from `p`.
+    /// The disc this light shows a shading point at `p`: of radius `radius` through
+    /// `centre`, perpendicular to the line from `p`. Worked out once for all of the
+    /// point's shadow rays ([`LightDisc::point`]).
     #[must_use]
-    pub fn disc_point(&self, centre: DVec3, p: DVec3, index: u32, seed: u32) -> DVec3 {
+    pub fn disc_seen_from(&self, centre: DVec3, p: DVec3) -> LightDisc {
         let axis = (centre - p).normalize_or_zero();
         let (u, v) = if axis == DVec3::ZERO {
             (DVec3::X, DVec3::Y)
         } else {
             axis.any_orthonormal_pair()
         };
-        let [x, y, _, _] = sobol_burley::sample_4d(index, 0, seed);
-        let on_disc = concentric_disc(DVec2::new(f64::from(x), f64::from(y)));
-        centre + self.radius * (on_disc.x * u + on_disc.y * v)
+        LightDisc {
+            centre,
+            radius: self.radius,
+            u,
+            v,
+        }
+    }
+}
+
+/// What [`sobol_burley::sample_4d`]`(index, 0, seed)` works out from the seed alone,
+/// worked out once for all of a shading point's shadow rays; the rest is that function's
+/// own code, so the points are its points bit for bit (tested below).
+#[derive(Clone, Copy, Debug)]
+pub struct SobolScramble {
+    /// The hash that shuffles the sample index.
+    index: u32,
+    /// The hashes that Owen-scramble each of the four dimensions of set 0.
+    dimensions: Int4,
+}
+
+impl SobolScramble {
+    /// The scramble of one shading point (its `seed`: [`shading_seed`]).
+    #[must_use]
+    pub fn new(seed: u32) -> Self {
+        // As `sample_4d` with dimension set 0 (which XORs in 0).
+        let seeds: Int4 = [seed.wrapping_mul(0x9c8f_2d3b); 4].into();
+        let lanes: Int4 = [0x912f_69ba, 0x174f_18ab, 0x691e_72ca, 0xb40c_c1b8].into();
+        Self {
+            index: hash(seed ^ 0x79c6_8e4a),
+            dimensions: hash_int4(seeds ^ lanes),
+        }
+    }
+
+    /// The first two dimensions of sample `index`, in [0, 1).
+    #[must_use]
+    pub fn square_point(&self, index: u32) -> DVec2 {
+        let shuffled = owen_scramble_rev(index.reverse_bits(), self.index);
+        let sobol = sobol_int4_rev(shuffled, 0);
+        let [x, y, _, _] = owen_scramble_int4_rev(sobol, self.dimensions)
+            .reverse_bits()
+            .to_f32_norm();
+        DVec2::new(f64::from(x), f64::from(y))
+    }
+}
+
+/// A sphere light's disc as one shading point sees it ([`SphereLight::disc_seen_from`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightDisc {
+    centre: DVec3,
+    radius: f64,
+    /// Two unit vectors spanning the disc's plane, perpendicular to each other.
+    u: DVec3,
+    v: DVec3,
+}
+
+impl LightDisc {
+    /// The point that shadow ray `index` of the shading point (its `scramble`:
+    /// [`SobolScramble::new`] of its [`shading_seed`]) aims at.
+    #[must_use]
+    pub fn point(&self, index: u32, scramble: &SobolScramble) -> DVec3 {
+        let on_disc = concentric_disc(scramble.square_point(index));
+        self.centre + self.radius * (on_disc.x * self.u + on_disc.y * self.v)
     }
 }
 
@@ -88,9 +151,9 @@ mod tests {
         let (centre, p) = (DVec3::new(1.0, 4.0, -2.0), DVec3::new(0.0, 0.0, 0.0));
         let axis = (centre - p).normalize();
         let seed = shading_seed(p, 0);
-        let points: Vec<DVec3> = (0..64)
-            .map(|i| light.disc_point(centre, p, i, seed))
-            .collect();
+        let disc = light.disc_seen_from(centre, p);
+        let scramble = SobolScramble::new(seed);
+        let points: Vec<DVec3> = (0..64).map(|i| disc.point(i, &scramble)).collect();
         for q in &points {
             assert!((*q - centre).dot(axis).abs() < 1e-12, "in the disc's plane");
             assert!((*q - centre).length() <= 0.5 + 1e-12, "inside the disc");
@@ -115,6 +178,25 @@ mod tests {
             (26..=38).contains(&inner),
             "{inner} of 64 in the inner half"
         );
+    }
+
+    #[test]
+    fn the_scrambled_points_are_sobol_burleys_own() {
+        let seeds = (0..4000u32)
+            .map(|i| i.wrapping_mul(0x9e37_79b9))
+            .chain([0, u32::MAX]);
+        for seed in seeds {
+            let scramble = SobolScramble::new(seed);
+            for index in 0..64 {
+                let [x, y, _, _] = sobol_burley::sample_4d(index, 0, seed);
+                let expected = DVec2::new(f64::from(x), f64::from(y));
+                assert_eq!(
+                    scramble.square_point(index),
+                    expected,
+                    "seed {seed} index {index}"
+                );
+            }
+        }
     }
 
     #[test]
