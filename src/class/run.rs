@@ -309,7 +309,7 @@ pub fn run_class(
     };
     std::thread::scope(|scope| {
         for _ in 0..rayon::current_num_threads().max(1) {
-            scope.spawn(&worker);
+            scope.spawn(worker);
         }
     });
     for (r, outcome) in outcomes.into_inner().unwrap_or_else(|e| e.into_inner()) {

@@ -47,8 +47,11 @@ pub struct BetterConventions {
 pub struct ConventionTrials {
     /// Each candidate's conventions and ray depth, and its picture (linear, unclamped,
     /// each pixel as `render` writes it, in f32).
-    candidates: Vec<((Conventions, u32), Vec<[f64; 3]>)>,
+    candidates: Vec<(Candidate, Vec<[f64; 3]>)>,
 }
+
+/// A candidate reading: conventions and a ray depth.
+type Candidate = (Conventions, u32);
 
 /// The pictures of `scene` under each other choice of mirror and clamp convention (the
 /// quantisation is the encoding's business and stays the scene's), and at
@@ -75,7 +78,7 @@ pub fn convention_trials(
     } else {
         std::slice::from_ref(&own.mirror)
     };
-    let mut candidates: Vec<(Conventions, u32)> = Vec::new();
+    let mut candidates: Vec<Candidate> = Vec::new();
     for &mirror in mirror_choices {
         for clamp in [ClampConvention::Pixel, ClampConvention::EachRay] {
             let candidate = Conventions {
@@ -148,7 +151,7 @@ pub fn better_conventions<'a>(
     if baseline.total < MIN_ERROR {
         return None;
     }
-    let mut best: Option<((Conventions, u32), FitState)> = None;
+    let mut best: Option<(Candidate, FitState)> = None;
     for (candidate, model) in &trials()?.candidates {
         let state = rendered(model.clone());
         if best.as_ref().is_none_or(|(_, b)| state.total < b.total) {
