@@ -13,7 +13,9 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use generated::{HIDDEN_IN_SHAPES, first_lit, generate, snapshot};
 use raylab::bench::class::{PlantedBug, render_with_bug};
 use raylab::class::{ClassOptions, ClassRun, Finding, Outcome, run_class, write_report};
-use raylab::trace::Term;
+use raylab::compare::{CompareOptions, OtherImage, compare_with_meshes};
+use raylab::scene::load_any_scene;
+use raylab::trace::{MeshStore, RenderProgress, Term};
 
 fn run(class: &generated::Class, report: &Path) -> ClassRun {
     run_class(
@@ -323,6 +325,67 @@ fn a_rerun_reuses_the_cache_and_a_changed_picture_costs_one_pair() {
     let copied = run(&class, &report);
     assert_eq!((copied.computed, copied.reused), (0, 7));
     assert!(findings(&copied, "bob", "spotlights").is_empty());
+}
+
+/// Each scene is prepared once and shared by its students' pairs: every compared pair's
+/// result is what `raylab diff` (one `compare_with_meshes` of that pair alone) finds.
+#[test]
+fn every_pair_of_a_shared_scene_is_what_a_separate_diff_finds() {
+    let class = generate("shared");
+    let run = run(&class, &class.root.join("report"));
+    let mut compared = 0;
+    for row in &run.rows {
+        let Outcome::Done { result, .. } = &row.outcome else {
+            continue;
+        };
+        let scene_path = &run.roster.scenes[row.scene].path;
+        let picture = &run.roster.students[row.student].renders[&row.scene];
+        let (scene, _) = load_any_scene(scene_path).unwrap();
+        let image = OtherImage::from_bytes(&std::fs::read(picture).unwrap(), picture).unwrap();
+        let alone = compare_with_meshes(
+            &scene,
+            &MeshStore::default(),
+            &image,
+            &CompareOptions::default(),
+            &RenderProgress::default(),
+        )
+        .unwrap();
+        let pair = picture.display();
+        assert_eq!(result.psnr_db.to_bits(), alone.psnr_db.to_bits(), "{pair}");
+        assert_eq!(
+            result.unexplained_share.to_bits(),
+            alone.unexplained_share.to_bits(),
+            "{pair}"
+        );
+        let alone_findings: Vec<_> = alone
+            .explanations
+            .iter()
+            .map(|e| {
+                (
+                    e.cause.name(),
+                    e.factor.to_bits(),
+                    e.share.to_bits(),
+                    &e.summary,
+                )
+            })
+            .collect();
+        let class_findings: Vec<_> = result
+            .findings
+            .iter()
+            .map(|f| {
+                (
+                    f.cause.as_str(),
+                    f.factor.to_bits(),
+                    f.share.to_bits(),
+                    &f.summary,
+                )
+            })
+            .collect();
+        assert_eq!(class_findings, alone_findings, "{pair}");
+        compared += 1;
+    }
+    // ann's three, bob's two, cat's and dan's `default`: three scenes shared by 2 or 3.
+    assert_eq!(compared, 7);
 }
 
 #[test]

@@ -5,7 +5,8 @@
 //!
 //! 1. [`roster`]: which render is of which scene (by file name), what matched nothing.
 //! 2. [`run`]: the pairs in parallel, reused from the [`cache`] where done before; one
-//!    [`pair`] is one comparison and its images.
+//!    [`pair`] is one comparison and its images, against its scene prepared once for
+//!    all of its pairs ([`shared`]).
 //! 3. [`feedback`], [`tables`], [`page`]: the words, class.csv and class.json, and
 //!    index.html.
 //!
@@ -17,6 +18,7 @@ pub mod page;
 pub mod pair;
 pub mod roster;
 pub mod run;
+pub mod shared;
 pub mod tables;
 
 use std::path::Path;

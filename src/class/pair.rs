@@ -7,7 +7,7 @@ use std::path::Path;
 use image::RgbImage;
 use serde::{Deserialize, Serialize};
 
-use crate::compare::{CompareOptions, Comparison, OtherImage, compare_with_meshes, report_png};
+use crate::compare::{Comparison, OtherImage, PreparedScene, compare_prepared, report_png};
 use crate::scene::Scene;
 use crate::trace::{MeshStore, RenderProgress};
 
@@ -113,25 +113,18 @@ impl Finding {
     }
 }
 
-/// Compares `picture` with raylab's picture of `scene` and writes the pair's images to
-/// `folder` (created if needed).
+/// Compares `picture` with raylab's picture of a prepared scene (shared by the scene's
+/// pairs) and writes the pair's images to `folder` (created if needed).
 ///
 /// # Errors
 /// The comparison's error (another size, a scene that does not render), or a write's.
 pub fn compare_pair(
-    scene: &LoadedScene,
+    scene: &PreparedScene,
     picture: &OtherImage,
-    options: &CompareOptions,
     folder: &Path,
 ) -> Result<PairResult, String> {
-    let comparison = compare_with_meshes(
-        &scene.scene,
-        &scene.meshes,
-        picture,
-        options,
-        &RenderProgress::default(),
-    )
-    .map_err(|e| e.to_string())?;
+    let comparison =
+        compare_prepared(scene, picture, &RenderProgress::default()).map_err(|e| e.to_string())?;
     // The report image's FLIP panel and the pair's figures share one computation.
     let flip = comparison.perceptual();
     std::fs::create_dir_all(folder)

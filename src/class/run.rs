@@ -1,9 +1,16 @@
-//! The run: every pair of a class compared in parallel on all cores (rayon over pairs;
-//! each comparison's own rayon work shares the same pool), finished pairs reused from
-//! the cache, a bad pair made a row with its error, and a stop asked for honoured
-//! between pairs so that what is done is kept.
+//! The run: every pair of a class compared in parallel on all cores, scene by scene so
+//! that each scene is prepared once for its pairs ([`SharedScenes`]), finished pairs
+//! reused from the cache, a bad pair made a row with its error, and a stop asked for
+//! honoured between pairs so that what is done is kept.
+//!
+//! The pairs run on plain threads, one per core of rayon's pool, taking the next pair in
+//! scene order; each comparison's own work (the split, the fit) runs on the pool. Not
+//! rayon jobs: a pair waits for its scene's preparation, and a rayon job waiting there
+//! could be handed another pair of the same scene to run meanwhile on its own thread,
+//! which would wait for itself.
 
 use std::path::{Path, PathBuf};
+use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use rayon::prelude::*;
@@ -11,7 +18,8 @@ use rayon::prelude::*;
 use super::cache::{cached, pair_folder, pair_key, store};
 use super::pair::{LoadedScene, PairResult, compare_pair};
 use super::roster::{Roster, roster};
-use crate::compare::{CompareOptions, OtherImage};
+use super::shared::SharedScenes;
+use crate::compare::{CompareOptions, OtherImage, check_size};
 use crate::scene::{load_any_scene, read_meshes_beside};
 use crate::trace::MeshStore;
 
@@ -135,9 +143,11 @@ fn check_folders(scenes: &Path, submissions: &Path, report: &Path) -> Result<(),
     Ok(())
 }
 
-/// One pair's work: read the picture, reuse a cached result or compare.
+/// One pair's work: read the picture, reuse a cached result or compare it with scene
+/// `index` (`scene`), prepared once in `shared`.
 fn run_pair(
-    scene: &LoadedScene,
+    (index, scene): (usize, &LoadedScene),
+    shared: &SharedScenes,
     picture: &Path,
     options: &ClassOptions,
     report: &Path,
@@ -161,10 +171,18 @@ fn run_pair(
         Ok(image) => image,
         Err(e) => return Outcome::Error(e.to_string()),
     };
+    // A picture of another size needs no preparation of its scene.
+    if let Err(e) = check_size(&scene.scene, &image) {
+        return Outcome::Error(e.to_string());
+    }
     let compare_options = CompareOptions {
         samples_per_pixel: options.samples_per_pixel,
     };
-    match compare_pair(scene, &image, &compare_options, &report.join(&folder)) {
+    let prepared = match shared.prepared(index, scene, &compare_options) {
+        Ok(prepared) => prepared,
+        Err(e) => return Outcome::Error(e),
+    };
+    match compare_pair(&prepared, &image, &report.join(&folder)) {
         Ok(result) => {
             if let Err(e) = store(report, &key, &result) {
                 return Outcome::Error(e);
@@ -242,26 +260,61 @@ pub fn run_class(
             });
         }
     }
-    let total = rows.iter().filter(|r| r.picture.is_some()).count();
+    // The pairs to run, scene by scene (each scene's preparation made once and dropped
+    // after its last pair); rows of a missing render have none.
+    let mut queue: Vec<usize> = (0..rows.len())
+        .filter(|&r| rows[r].picture.is_some())
+        .collect();
+    queue.sort_by_key(|&r| rows[r].scene);
+    let total = queue.len();
+    let mut per_scene = vec![0; roster.scenes.len()];
+    for &r in &queue {
+        per_scene[rows[r].scene] += 1;
+    }
+    let shared = SharedScenes::new(&per_scene);
+    let next = AtomicUsize::new(0);
     let done = AtomicUsize::new(0);
     let computed = AtomicUsize::new(0);
+    let outcomes = Mutex::new(Vec::with_capacity(total));
     progress(0, total);
-    rows.par_iter_mut()
-        .filter(|row| row.picture.is_some())
-        .for_each(|row| {
-            if stop.load(Ordering::Relaxed) {
+    let rows_read = &rows;
+    let worker = || {
+        while !stop.load(Ordering::Relaxed) {
+            let Some(&r) = queue.get(next.fetch_add(1, Ordering::Relaxed)) else {
                 return;
-            }
+            };
+            let row = &rows_read[r];
             let picture = &roster.students[row.student].renders[&row.scene];
-            row.outcome = match (&scenes_ready[row.scene], &scene_errors[row.scene]) {
-                (Some(scene), _) => run_pair(scene, picture, options, report, &computed),
+            let outcome = match (&scenes_ready[row.scene], &scene_errors[row.scene]) {
+                (Some(scene), _) => run_pair(
+                    (row.scene, scene),
+                    &shared,
+                    picture,
+                    options,
+                    report,
+                    &computed,
+                ),
                 (None, error) => Outcome::Error(format!(
                     "the scene does not load: {}",
                     error.as_deref().unwrap_or("?")
                 )),
             };
+            shared.pair_done(row.scene);
+            outcomes
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .push((r, outcome));
             progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
-        });
+        }
+    };
+    std::thread::scope(|scope| {
+        for _ in 0..rayon::current_num_threads().max(1) {
+            scope.spawn(worker);
+        }
+    });
+    for (r, outcome) in outcomes.into_inner().unwrap_or_else(|e| e.into_inner()) {
+        rows[r].outcome = outcome;
+    }
     let reused = rows
         .iter()
         .filter(|r| matches!(r.outcome, Outcome::Done { reused: true, .. }))

@@ -14,7 +14,8 @@
 //! | 6 | `report` | both pictures, the explanations | the [`Comparison`]: JSON, text, report PNG |
 //! | 7 | `plant` | the scene, bugs of the catalogue | pictures with those bugs (`raylab render --bug`, the gallery), and which explanation names each |
 //!
-//! This face runs them: [`compare`] splits raylab's picture, reads the other one under
+//! This face runs them: [`prepare`] splits raylab's picture once per scene
+//! ([`PreparedScene`]); [`compare_prepared`] reads each other picture under
 //! the right encoding (and, where they fit it better, the course's other conventions,
 //! comparing again under those), explains what is left and builds the [`Comparison`].
 //!
@@ -27,6 +28,7 @@ mod fit;
 mod other_image;
 pub mod perceptual;
 pub mod plant;
+mod prepared;
 pub mod report;
 mod split;
 mod verdict;
@@ -36,6 +38,7 @@ pub use error::CompareError;
 pub use extras::{PixelBox, ShapeGuess};
 pub use fit::{Encoding, MIN_ERROR, MIN_STEP_SHARE, NOISE_SHARE};
 pub use other_image::OtherImage;
+pub use prepared::PreparedScene;
 pub use report::{
     Comparison, PSNR_IDENTICAL_DB, PixelValues, difference_heatmap, report_png, write_report_png,
 };
@@ -43,9 +46,8 @@ pub use split::{Components, render_components};
 pub use verdict::{Cause, ExplainedTerm, Explanation, HIGH_CONFIDENCE};
 
 use crate::scene::{Quantise, Scene};
-use crate::trace::{MeshStore, RenderProgress, World};
+use crate::trace::{MeshStore, RenderProgress};
 
-use catalogue::MISS;
 use fit::{
     BetterConventions, FitState, Floor, SamplingSpread, Target, better_conventions,
     detect_encoding, samples_otherwise,
@@ -75,7 +77,8 @@ pub fn compare(
     compare_with_meshes(scene, &MeshStore::default(), other, options, progress)
 }
 
-/// As [`compare`], with the scene's mesh objects' triangles from `meshes`.
+/// As [`compare`], with the scene's mesh objects' triangles from `meshes`: the scene
+/// prepared ([`PreparedScene::new`]) and compared ([`compare_prepared`]).
 ///
 /// # Errors
 /// As [`compare`]; a mesh object whose file is not in `meshes` is a
@@ -87,6 +90,35 @@ pub fn compare_with_meshes(
     options: &CompareOptions,
     progress: &RenderProgress,
 ) -> Result<Comparison, CompareError> {
+    check_size(scene, other)?;
+    let prepared = prepare(scene, meshes, options, progress)?;
+    compare_prepared(&prepared, other, progress)
+}
+
+/// Prepares `scene` for comparisons with any number of pictures ([`compare_prepared`]):
+/// raylab's picture split into channels at the options' samples per pixel.
+///
+/// # Errors
+/// [`CompareError::Scene`] when the scene cannot be compiled, and
+/// [`CompareError::Cancelled`].
+pub fn prepare(
+    scene: &Scene,
+    meshes: &MeshStore,
+    options: &CompareOptions,
+    progress: &RenderProgress,
+) -> Result<PreparedScene, CompareError> {
+    let spp = options
+        .samples_per_pixel
+        .unwrap_or(scene.render.samples_per_pixel)
+        .max(1);
+    PreparedScene::new(scene, meshes, spp, progress)
+}
+
+/// [`CompareError::SizeMismatch`] when `other` is not `scene`'s size.
+///
+/// # Errors
+/// As said.
+pub fn check_size(scene: &Scene, other: &OtherImage) -> Result<(), CompareError> {
     let (width, height) = (scene.camera.width, scene.camera.height);
     if (other.width, other.height) != (width, height) {
         return Err(CompareError::SizeMismatch {
@@ -96,45 +128,56 @@ pub fn compare_with_meshes(
             scene_height: height,
         });
     }
-    let spp = options
-        .samples_per_pixel
-        .unwrap_or(scene.render.samples_per_pixel)
-        .max(1);
-    compare_scene(scene, meshes, other, spp, progress, true)
+    Ok(())
 }
 
-/// [`compare_with_meshes`] at `spp` samples; first trying the course's other
-/// conventions where `try_conventions` says so.
-fn compare_scene(
-    scene: &Scene,
-    meshes: &MeshStore,
+/// Compares `other` with raylab's picture of a prepared scene: the same [`Comparison`]
+/// as [`compare_with_meshes`] of that scene. What it prepares on the way (the
+/// conventions' trial renders, a split under adopted conventions) is kept in `prepared`
+/// for the next picture.
+///
+/// # Errors
+/// [`CompareError::SizeMismatch`] when `other` is not the scene's size,
+/// [`CompareError::Scene`] and [`CompareError::Cancelled`] from what it prepares.
+pub fn compare_prepared(
+    prepared: &PreparedScene,
     other: &OtherImage,
-    spp: u32,
+    progress: &RenderProgress,
+) -> Result<Comparison, CompareError> {
+    check_size(&prepared.scene, other)?;
+    compare_scene(prepared, other, progress, true)
+}
+
+/// [`compare_prepared`]; first trying the course's other conventions where
+/// `try_conventions` says so.
+fn compare_scene(
+    prepared: &PreparedScene,
+    other: &OtherImage,
     progress: &RenderProgress,
     try_conventions: bool,
 ) -> Result<Comparison, CompareError> {
+    let scene = &prepared.scene;
     let (width, height) = (scene.camera.width, scene.camera.height);
-    let world =
-        World::with_meshes(scene, meshes).map_err(|e| CompareError::Scene(e.to_string()))?;
-    let components = render_components(scene, &world, (width, height), spp, progress)
-        .ok_or(CompareError::Cancelled)?;
+    let spp = prepared.spp;
+    let components = &prepared.components;
+    let world = &prepared.world;
 
     // The scene's own encoding first: its error is the whole difference.
     let expected = match scene.render.conventions.quantise {
         Quantise::Round => Encoding::LinearRound,
         Quantise::Truncate => Encoding::LinearTruncate,
     };
-    let raylab = components.image();
-    let raylab_rgb = report::rgb_of(&raylab);
+    let raylab_rgb = &prepared.raylab_rgb;
     // Where the other picture samples pixels otherwise than raylab, its edges may be
     // any blend of their sides (`fit::SamplingSpread`); elsewhere pixel for pixel.
-    let spread =
-        if spp > 1 || samples_otherwise(&raylab_rgb, &other.rgb, &components.outline(), width) {
-            SamplingSpread::of(&components.beauty, width)
-        } else {
-            SamplingSpread::none(components.beauty.len())
-        };
-    let rounded = Target::new(other, expected, &spread);
+    let none;
+    let spread = if spp > 1 || samples_otherwise(raylab_rgb, &other.rgb, &prepared.outline, width) {
+        prepared.spread()
+    } else {
+        none = SamplingSpread::none(components.beauty.len());
+        &none
+    };
+    let rounded = Target::new(other, expected, spread);
     let mut state = FitState::new(components.beauty.clone(), &rounded);
     let total = state.total;
     let exact_floor = MIN_ERROR.max(NOISE_SHARE * rounded.sampling_noise(&state.error));
@@ -144,7 +187,7 @@ fn compare_scene(
     let target = if encoding == expected {
         rounded
     } else {
-        let target = Target::new(other, encoding, &spread);
+        let target = Target::new(other, encoding, spread);
         let decoded = FitState::new(components.beauty.clone(), &target);
         if state.total - decoded.total >= floor {
             explanations.push(encoding_explanation(
@@ -155,7 +198,7 @@ fn compare_scene(
         target
     };
     let better = if try_conventions && total >= MIN_ERROR {
-        better_conventions(scene, meshes, &components.beauty, &target, spp, progress)
+        better_conventions(&components.beauty, &target, || prepared.trials(progress))
     } else {
         None
     };
@@ -168,7 +211,7 @@ fn compare_scene(
             any: floor,
             exact: exact_floor,
         };
-        explain(&components, scene, &world, &target, &state, (total, floors))
+        explain(components, scene, world, &target, &state, (total, floors))
     } else {
         Explained {
             explanations: Vec::new(),
@@ -189,16 +232,13 @@ fn compare_scene(
         width,
         height,
         samples_per_pixel: spp,
-        psnr_db: report::psnr_db(&raylab_rgb, &other.rgb),
-        difference: report::difference(&raylab_rgb, &other.rgb),
-        raylab,
-        raylab_rgb,
+        psnr_db: report::psnr_db(raylab_rgb, &other.rgb),
+        difference: report::difference(raylab_rgb, &other.rgb),
+        raylab: prepared.raylab.clone(),
+        raylab_rgb: raylab_rgb.clone(),
         other: other.clone(),
         encoding,
-        objects: (0..components.labels.len())
-            .map(|p| components.object_label(p))
-            .map(|l| (l != MISS).then_some(l as usize))
-            .collect(),
+        objects: prepared.objects.clone(),
         object_names: scene.objects.iter().map(|o| o.name.clone()).collect(),
         explanations,
         unexplained_share,
@@ -209,7 +249,7 @@ fn compare_scene(
     // than the scene's own conventions do with their fit (a missing light is a missing
     // light, whatever mirrors the scene holds).
     if let (Some(better), Some(found)) = (better, found) {
-        let adopted = with_conventions(scene, meshes, other, spp, progress, &better, found)?;
+        let adopted = with_conventions(prepared, other, progress, &better, found)?;
         if unexplained_cost(&adopted, floor / total) < unexplained_cost(&own, floor / total) {
             return Ok(adopted);
         }
@@ -253,18 +293,15 @@ struct Found {
 /// encoding's as found, the convention's what it took away, and the rest (found again
 /// under the convention, its own encoding verdict dropped) scaled to what remained.
 fn with_conventions(
-    scene: &Scene,
-    meshes: &MeshStore,
+    prepared: &PreparedScene,
     other: &OtherImage,
-    spp: u32,
     progress: &RenderProgress,
     better: &BetterConventions,
     found: Found,
 ) -> Result<Comparison, CompareError> {
-    let mut adopted = scene.clone();
-    adopted.render.conventions = better.conventions;
-    adopted.render.max_depth = better.max_depth;
-    let mut comparison = compare_scene(&adopted, meshes, other, spp, progress, false)?;
+    let scene = &prepared.scene;
+    let adopted = prepared.adopted(better.conventions, better.max_depth, progress)?;
+    let mut comparison = compare_scene(&adopted, other, progress, false)?;
     let (before, after) = better.errors;
     let is_encoding = |e: &Explanation| e.term == ExplainedTerm::Encoding;
     let inner_encoding: f64 = comparison

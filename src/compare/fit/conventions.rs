@@ -40,35 +40,33 @@ pub struct BetterConventions {
     pub pixels: Vec<u32>,
 }
 
-/// Which mirror and clamp conventions explain `target` best, if better than the scene's
-/// by [`MIN_CONVENTION_SHARE`] of the difference (and by more than a step's floor). The
-/// quantisation is the encoding's business and stays the scene's. `own` is raylab's
-/// picture under the scene's conventions (the split's, linear, unclamped). `None` also
-/// when cancelled.
+/// raylab's pictures of a scene under the course's other conventions (and without a
+/// depth limit), made once per scene whatever picture it is compared with: the
+/// candidates [`better_conventions`] chooses from.
+#[derive(Clone, Debug, Default)]
+pub struct ConventionTrials {
+    /// Each candidate's conventions and ray depth, and its picture (linear, unclamped,
+    /// each pixel as `render` writes it, in f32).
+    candidates: Vec<(Candidate, Vec<[f64; 3]>)>,
+}
+
+/// A candidate reading: conventions and a ray depth.
+type Candidate = (Conventions, u32);
+
+/// The pictures of `scene` under each other choice of mirror and clamp convention (the
+/// quantisation is the encoding's business and stays the scene's), and at
+/// [`NO_LIMIT_DEPTH`] where mirrors and no glass make that differ. `None` when cancelled.
 ///
 /// The candidates share one trace: each camera sample's ray tree, traced to the deepest
 /// candidate's depth, folded under each (the pictures [`render`] would make of each).
 #[must_use]
-pub fn better_conventions(
+pub fn convention_trials(
     scene: &Scene,
     meshes: &MeshStore,
-    own_picture: &[[f64; 3]],
-    target: &Target,
     spp: u32,
     progress: &RenderProgress,
-) -> Option<BetterConventions> {
+) -> Option<ConventionTrials> {
     let own = scene.render.conventions;
-    // The picture `render` writes holds each pixel in f32.
-    let rendered = |pixels: Vec<[f64; 3]>| -> FitState { FitState::new(pixels, target) };
-    let baseline = rendered(
-        own_picture
-            .iter()
-            .map(|p| DVec3::from_array(*p).as_vec3().as_dvec3().to_array())
-            .collect(),
-    );
-    if baseline.total < MIN_ERROR {
-        return None;
-    }
     let depth = scene.render.max_depth;
     // Without mirrors the mirror convention changes nothing: no render for it.
     let mirrors = scene
@@ -80,7 +78,7 @@ pub fn better_conventions(
     } else {
         std::slice::from_ref(&own.mirror)
     };
-    let mut candidates: Vec<(Conventions, u32)> = Vec::new();
+    let mut candidates: Vec<Candidate> = Vec::new();
     for &mirror in mirror_choices {
         for clamp in [ClampConvention::Pixel, ClampConvention::EachRay] {
             let candidate = Conventions {
@@ -105,7 +103,10 @@ pub fn better_conventions(
     let deepest = candidates.iter().map(|c| c.1).max().unwrap_or(depth);
     let mut traced = scene.clone();
     traced.render.max_depth = deepest;
-    let world = World::with_meshes(&traced, meshes).ok()?;
+    // A scene that does not compile this deep has no candidates (none is better).
+    let Ok(world) = World::with_meshes(&traced, meshes) else {
+        return Some(ConventionTrials::default());
+    };
     let variants: Vec<Variant> = candidates
         .iter()
         .map(|&(conventions, max_depth)| Variant {
@@ -115,16 +116,46 @@ pub fn better_conventions(
         .collect();
     let size = (scene.camera.width, scene.camera.height);
     let pictures = render_variants(&world, size, spp, &variants, progress)?;
-    let mut best: Option<((Conventions, u32), FitState)> = None;
-    for (candidate, image) in candidates.into_iter().zip(pictures) {
-        let model = image
+    let pictures = pictures.into_iter().map(|image| {
+        image
             .pixels
             .iter()
             .map(|p| p.as_dvec3().to_array())
-            .collect();
-        let state = rendered(model);
+            .collect()
+    });
+    Some(ConventionTrials {
+        candidates: candidates.into_iter().zip(pictures).collect(),
+    })
+}
+
+/// Which mirror and clamp conventions explain `target` best, if better than the scene's
+/// by [`MIN_CONVENTION_SHARE`] of the difference (and by more than a step's floor). `own`
+/// is raylab's picture under the scene's conventions (the split's, linear, unclamped).
+/// `trials` gives the candidates' pictures ([`convention_trials`]); it is asked only
+/// when the scene's own conventions leave a difference, and `None` from it (cancelled)
+/// is `None` here.
+#[must_use]
+pub fn better_conventions<'a>(
+    own_picture: &[[f64; 3]],
+    target: &Target,
+    trials: impl FnOnce() -> Option<&'a ConventionTrials>,
+) -> Option<BetterConventions> {
+    // The picture `render` writes holds each pixel in f32.
+    let rendered = |pixels: Vec<[f64; 3]>| -> FitState { FitState::new(pixels, target) };
+    let baseline = rendered(
+        own_picture
+            .iter()
+            .map(|p| DVec3::from_array(*p).as_vec3().as_dvec3().to_array())
+            .collect(),
+    );
+    if baseline.total < MIN_ERROR {
+        return None;
+    }
+    let mut best: Option<(Candidate, FitState)> = None;
+    for (candidate, model) in &trials()?.candidates {
+        let state = rendered(model.clone());
         if best.as_ref().is_none_or(|(_, b)| state.total < b.total) {
-            best = Some((candidate, state));
+            best = Some((*candidate, state));
         }
     }
     let ((conventions, max_depth), state) = best?;

@@ -10,7 +10,10 @@ mod sampling;
 mod search;
 mod target;
 
-pub use conventions::{BetterConventions, NO_LIMIT_DEPTH, better_conventions, convention_names};
+pub use conventions::{
+    BetterConventions, ConventionTrials, NO_LIMIT_DEPTH, better_conventions, convention_names,
+    convention_trials,
+};
 pub use encoding::{Encoding, detect as detect_encoding};
 pub use groups::{Group, Groups};
 pub use sampling::{SamplingSpread, samples_otherwise};
