@@ -252,7 +252,7 @@ impl Groups {
     pub fn norms(&self, components: &Components, target: &Target) -> Vec<f64> {
         let pixels = components.labels.len();
         let chunk = 4096;
-        (0..pixels.div_ceil(chunk))
+        let chunks = (0..pixels.div_ceil(chunk))
             .into_par_iter()
             .map(|c| {
                 let mut norms = vec![0.0; self.list.len()];
@@ -278,13 +278,8 @@ impl Groups {
                 }
                 norms
             })
-            .reduce(
-                || vec![0.0; self.list.len()],
-                |mut a, b| {
-                    a.iter_mut().zip(b).for_each(|(x, y)| *x += y);
-                    a
-                },
-            )
+            .collect::<Vec<_>>();
+        sum_in_order(chunks, self.list.len())
     }
 
     /// Each group's inner product with the current residual.
@@ -308,7 +303,7 @@ fn channel_correlations(components: &Components, target: &Target, state: &FitSta
     let channels = components.space.count();
     let pixels = components.labels.len();
     let chunk = 8192;
-    (0..pixels.div_ceil(chunk))
+    let chunks = (0..pixels.div_ceil(chunk))
         .into_par_iter()
         .map(|c| {
             let mut sums = vec![0.0; channels];
@@ -325,11 +320,16 @@ fn channel_correlations(components: &Components, target: &Target, state: &FitSta
             }
             sums
         })
-        .reduce(
-            || vec![0.0; channels],
-            |mut a, b| {
-                a.iter_mut().zip(b).for_each(|(x, y)| *x += y);
-                a
-            },
-        )
+        .collect::<Vec<_>>();
+    sum_in_order(chunks, channels)
+}
+
+/// The element-wise sum of the chunks' sums, added in the chunks' order: the same bits
+/// whichever threads made them (a parallel `reduce` adds them in the order work was
+/// stolen, so the last bits followed the scheduling).
+fn sum_in_order(chunks: Vec<Vec<f64>>, len: usize) -> Vec<f64> {
+    chunks.into_iter().fold(vec![0.0; len], |mut sum, chunk| {
+        sum.iter_mut().zip(chunk).for_each(|(x, y)| *x += y);
+        sum
+    })
 }
