@@ -359,15 +359,17 @@ pub fn run_scene(
 }
 
 /// Whether `picture` differs from `own` by at least what the diff calls a difference
-/// ([`MIN_ERROR`]: four channels a full 8-bit level outside their bytes, a byte standing
-/// for half a level either side). Less is rounding noise no diff can name.
+/// ([`MIN_ERROR`]: four channels a full 8-bit level outside their bytes). A byte a level
+/// off may be rounding alone (a bug that moves a value across a rounding boundary moves
+/// it a hair), so a channel counts by how far it is beyond one level. Less is rounding
+/// noise no diff can name.
 fn shows(own: &OtherImage, picture: &OtherImage) -> bool {
     let outside: f64 = own
         .rgb
         .iter()
         .zip(&picture.rgb)
         .flat_map(|(a, b)| (0..3).map(move |i| f64::from(a[i].abs_diff(b[i]))))
-        .map(|levels| ((levels - 0.5).max(0.0) / 255.0).powi(2))
+        .map(|levels| ((levels - 1.0).max(0.0) / 255.0).powi(2))
         .sum();
     outside >= MIN_ERROR
 }
