@@ -219,6 +219,86 @@ fn rank(
     ranked
 }
 
+/// Whether a step that lowered the error by `gain`, leaving `left` of the `found` error
+/// on its pixels, is kept.
+fn kept(gain: f64, found: f64, left: f64, floor: Floor) -> bool {
+    gain >= floor.any || (gain >= floor.exact && left <= EXACT_LEFT * found)
+}
+
+/// Applies `group` at `c` to `state` and keeps it if [`kept`]; else undoes it.
+fn try_step(
+    components: &Components,
+    group: &Group,
+    c: f64,
+    target: &Target,
+    state: &mut FitState,
+    floor: Floor,
+) -> Option<(f64, Change)> {
+    let change = change_of(components, group, c);
+    let before = state.total;
+    let found: f64 = change.pixels.iter().map(|&(p, _)| state.error[p]).sum();
+    for &(p, d) in &change.pixels {
+        state.add(target, p, d);
+    }
+    let gain = before - state.total;
+    let left: f64 = change.pixels.iter().map(|&(p, _)| state.error[p]).sum();
+    if kept(gain, found, left, floor) {
+        return Some((gain, change));
+    }
+    for &(p, d) in &change.pixels {
+        state.add(target, p, d.map(|x| -x));
+    }
+    None
+}
+
+/// Where the other picture clips (255: only a lower bound), the linear fit gives a
+/// channel no weight, so a bug that makes the picture clip (a spot without its fall-off
+/// whitening a floor) correlates with nothing. When the ranked groups all fail, the spot
+/// light bugs not yet taken are ranked by how far they push raylab's picture up into the other's
+/// clipped channels, and the first few tried at weight 1 on the interval error, which
+/// knows a clipped channel is right anywhere above its bound.
+fn try_clipped(
+    components: &Components,
+    groups: &Groups,
+    target: &Target,
+    state: &mut FitState,
+    scale: &[f64],
+    floor: Floor,
+) -> Option<(usize, f64, f64, Change)> {
+    let mut push = vec![0.0f64; components.space.count()];
+    let mut any = false;
+    for (p, intervals) in target.intervals.iter().enumerate() {
+        for (k, &(lo, hi)) in intervals.iter().enumerate() {
+            let below = lo - state.model[p][k];
+            if hi.is_infinite() && lo.is_finite() && below > 0.0 {
+                any = true;
+                for entry in components.pixel(p) {
+                    push[entry.channel as usize] += below * f64::from(entry.value[k]).max(0.0);
+                }
+            }
+        }
+    }
+    if !any {
+        return None;
+    }
+    let mut ranked: Vec<(usize, f64)> = groups
+        .list
+        .iter()
+        .enumerate()
+        // A light that reaches further or stronger than raylab's: a spot's cone or
+        // fall-off bugs (a missing part is no reason for a picture to clip).
+        .filter(|(_, g)| matches!(g.family, Family::Spot(_)))
+        .filter(|(_, g)| scale_range(g, scale).1 == 0.0)
+        .map(|(i, g)| (i, g.members.iter().map(|&m| push[m as usize]).sum::<f64>()))
+        .filter(|&(_, push)| push > 0.0)
+        .collect();
+    ranked.sort_by(|a, b| b.1.total_cmp(&a.1));
+    ranked.iter().take(TRIES_PER_ROUND).find_map(|&(index, _)| {
+        try_step(components, &groups.list[index], 1.0, target, state, floor)
+            .map(|(gain, change)| (index, 1.0, gain, change))
+    })
+}
+
 /// Runs the search on `state` (changed in place), keeping steps that lower the error by
 /// at least `floor.any`, or by `floor.exact` where they make their pixels right.
 #[must_use]
@@ -240,22 +320,15 @@ pub fn search(
         let ranked = rank(groups, &correlations, &norms, &scale);
         let mut accepted = None;
         for &(index, c, _) in ranked.iter().take(TRIES_PER_ROUND) {
-            let group = &groups.list[index];
-            let change = change_of(components, group, c);
-            let before = state.total;
-            let found: f64 = change.pixels.iter().map(|&(p, _)| state.error[p]).sum();
-            for &(p, d) in &change.pixels {
-                state.add(target, p, d);
-            }
-            let gain = before - state.total;
-            let left: f64 = change.pixels.iter().map(|&(p, _)| state.error[p]).sum();
-            if gain >= floor.any || (gain >= floor.exact && left <= EXACT_LEFT * found) {
+            if let Some((gain, change)) =
+                try_step(components, &groups.list[index], c, target, state, floor)
+            {
                 accepted = Some((index, c, gain, change));
                 break;
             }
-            for &(p, d) in &change.pixels {
-                state.add(target, p, d.map(|x| -x));
-            }
+        }
+        if accepted.is_none() {
+            accepted = try_clipped(components, groups, target, state, &scale, floor);
         }
         let Some((index, c, gain, change)) = accepted else {
             break;
