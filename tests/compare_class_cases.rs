@@ -220,3 +220,63 @@ fn a_point_light_without_its_falloff_is_named() {
     );
     assert_eq!(first.light, Some(point), "{:#?}", c.text_lines());
 }
+
+/// Whether an explanation of `c` names `cause` (as the diff names causes).
+fn names(c: &raylab::compare::Comparison, cause: &str) -> bool {
+    c.explanations.iter().any(|e| e.cause.name() == cause)
+}
+
+#[test]
+fn a_bug_on_a_few_pixels_beside_a_larger_one_is_named() {
+    // Acne on the cylinder changes a handful of pixels; the second light's diffuse at
+    // half changes most of the picture. The acne's share of the whole is far below the
+    // search's share floor, but it makes its own pixels right.
+    let scene = example("shapes.ron");
+    let c = diff(
+        &scene,
+        &planted(&scene, "shadow-acne@cylinder,diffuse=0.5@1"),
+    );
+    let report = c.text_lines().join("\n");
+    assert!(names(&c, "shadow-acne"), "{report}");
+    assert!(names(&c, "factor"), "{report}");
+}
+
+/// The random scene of tuning seed 2 (`raylab bench --diff-accuracy --tuning`): a floor
+/// under a directional, a spot and a point light of several colours.
+fn coloured_lights_scene() -> raylab::scene::Scene {
+    raylab::bench::random_scene::random_scene(2, 200, 150)
+}
+
+#[test]
+fn an_extra_ball_under_several_coloured_lights_is_an_extra_object() {
+    // Every colour is some lighting of the floor under those lights, so the first
+    // reading called the ball "shading varies across 'floor'"; the stricter one finds it.
+    let scene = coloured_lights_scene();
+    let c = diff(&scene, &planted(&scene, "extra-object"));
+    let report = c.text_lines().join("\n");
+    assert_eq!(c.explanations[0].cause.name(), "extra-object", "{report}");
+}
+
+#[test]
+fn a_light_without_falloff_that_whitens_the_floor_is_named() {
+    // The point light without its fall-off clips most of the picture to white, where
+    // the linear fit sees nothing; the spot bugs are then tried on the clipped bytes.
+    let scene = coloured_lights_scene();
+    let point = scene
+        .lights
+        .iter()
+        .position(|l| matches!(l, Light::Point { .. }))
+        .expect("the scene has a point light");
+    let c = diff(
+        &scene,
+        &planted(&scene, &format!("spot-no-falloff@{point}")),
+    );
+    let first = &c.explanations[0];
+    assert_eq!(
+        first.cause,
+        Cause::Spot(SpotBug::NoFalloff),
+        "{:#?}",
+        c.text_lines()
+    );
+    assert_eq!(first.light, Some(point), "{:#?}", c.text_lines());
+}
