@@ -153,8 +153,9 @@ pub fn summary(e: &Explanation, scene: &Scene) -> String {
                     }
                 ),
                 Some(p) => format!(
-                    "{} of '{o}' are missing in the other image: what lies behind shows instead (weight {weight:.2}).",
-                    capitalised(p.describe())
+                    "{} of '{o}' {} missing in the other image: what lies behind shows instead (weight {weight:.2}).",
+                    capitalised(p.describe()),
+                    if p == Part::Caps { "are" } else { "is" }
                 ),
             }
         }
@@ -283,4 +284,47 @@ fn capitalised(text: &str) -> String {
     chars
         .next()
         .map_or_else(String::new, |c| c.to_uppercase().chain(chars).collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A missing part's sentence, for a scene of one plane, 'wall'.
+    fn missing_part_sentence(part: Part) -> String {
+        let mut scene = Scene::empty();
+        scene.objects.push(crate::scene::Object {
+            name: "wall".to_owned(),
+            shape: Shape::Plane,
+            transform: crate::scene::Transform::default(),
+            material: String::new(),
+        });
+        let e = Explanation {
+            term: ExplainedTerm::Geometry,
+            light: None,
+            object: Some(0),
+            object_name: Some("wall".to_owned()),
+            node: vec![0],
+            factor: 0.0,
+            share: 1.0,
+            pixels: Vec::new(),
+            bbox: None,
+            fits_as_well: Vec::new(),
+            cause: Cause::Missing(Some(part)),
+            confidence: 1.0,
+            summary: String::new(),
+        };
+        summary(&e, &scene)
+    }
+
+    #[test]
+    fn a_missing_part_takes_its_verb_in_number() {
+        let front = missing_part_sentence(Part::Front);
+        assert!(
+            front.starts_with("The front (normal side) of 'wall' is missing"),
+            "{front}"
+        );
+        let caps = missing_part_sentence(Part::Caps);
+        assert!(caps.starts_with("The caps of 'wall' are missing"), "{caps}");
+    }
 }
