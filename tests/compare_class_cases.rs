@@ -199,18 +199,15 @@ fn the_last_light_skipped_and_the_ambient_per_light_are_named_as_loop_bugs() {
     assert!(first.summary.contains("last object"), "{}", first.summary);
 }
 
-#[test]
-fn a_point_light_without_its_falloff_is_named() {
-    let scene = example("default.ron");
+/// Plants `spot-no-falloff` on `scene`'s point light and checks the diff names it first,
+/// on that light.
+fn point_light_falloff_is_named_first(scene: &raylab::scene::Scene) {
     let point = scene
         .lights
         .iter()
         .position(|l| matches!(l, Light::Point { .. }))
-        .expect("default.ron has a point light");
-    let c = diff(
-        &scene,
-        &planted(&scene, &format!("spot-no-falloff@{point}")),
-    );
+        .expect("the scene has a point light");
+    let c = diff(scene, &planted(scene, &format!("spot-no-falloff@{point}")));
     let first = &c.explanations[0];
     assert_eq!(
         first.cause,
@@ -219,6 +216,11 @@ fn a_point_light_without_its_falloff_is_named() {
         c.text_lines()
     );
     assert_eq!(first.light, Some(point), "{:#?}", c.text_lines());
+}
+
+#[test]
+fn a_point_light_without_its_falloff_is_named() {
+    point_light_falloff_is_named_first(&example("default.ron"));
 }
 
 /// Whether an explanation of `c` names `cause` (as the diff names causes).
@@ -261,22 +263,5 @@ fn an_extra_ball_under_several_coloured_lights_is_an_extra_object() {
 fn a_light_without_falloff_that_whitens_the_floor_is_named() {
     // The point light without its fall-off clips most of the picture to white, where
     // the linear fit sees nothing; the spot bugs are then tried on the clipped bytes.
-    let scene = coloured_lights_scene();
-    let point = scene
-        .lights
-        .iter()
-        .position(|l| matches!(l, Light::Point { .. }))
-        .expect("the scene has a point light");
-    let c = diff(
-        &scene,
-        &planted(&scene, &format!("spot-no-falloff@{point}")),
-    );
-    let first = &c.explanations[0];
-    assert_eq!(
-        first.cause,
-        Cause::Spot(SpotBug::NoFalloff),
-        "{:#?}",
-        c.text_lines()
-    );
-    assert_eq!(first.light, Some(point), "{:#?}", c.text_lines());
+    point_light_falloff_is_named_first(&coloured_lights_scene());
 }
