@@ -76,7 +76,7 @@ fn cone_colours(components: &Components, palette: &Palette, p: usize) -> (Vec<DV
     let lights = components.space.lights;
     let mut own = vec![DVec3::ZERO; 4 + 3 * lights];
     // What lies behind each object the pixel sees, as raylab would show it without.
-    let mut missing: Vec<((usize, bool), DVec3)> = Vec::new();
+    let mut missing: MissingByObject = Vec::new();
     for entry in components.pixel(p) {
         let value = DVec3::from_array(entry.value.map(f64::from));
         let slot = match components.space.decode(entry.channel) {
@@ -88,12 +88,7 @@ fn cone_colours(components: &Components, palette: &Palette, p: usize) -> (Vec<DV
             (Kind::Specular(l), _) => 4 + lights + l,
             (Kind::Shadow(l), _) => 4 + 2 * lights + l,
             (kind @ (Kind::Missing(_) | Kind::NodeMissing), Some(object)) => {
-                // A leaf's and an inner node's slots are numbered apart.
-                let object = (object, kind == Kind::NodeMissing);
-                match missing.iter_mut().find(|(o, _)| *o == object) {
-                    Some((_, sum)) => *sum += value,
-                    None => missing.push((object, value)),
-                }
+                add_missing(&mut missing, kind, object, value);
                 continue;
             }
             _ => continue,
@@ -128,6 +123,20 @@ fn cone_colours(components: &Components, palette: &Palette, p: usize) -> (Vec<DV
         }
     }
     (own, more)
+}
+
+/// What raylab's picture changes by at a pixel without each object it sees, summed by
+/// object: a leaf's and an inner node's slots are numbered apart.
+type MissingByObject = Vec<((usize, bool), DVec3)>;
+
+/// Adds a missing-part channel's `value` (of `kind`, on slot `object`) to its object's
+/// sum in `missing`.
+fn add_missing(missing: &mut MissingByObject, kind: Kind, object: usize, value: DVec3) {
+    let object = (object, kind == Kind::NodeMissing);
+    match missing.iter_mut().find(|(o, _)| *o == object) {
+        Some((_, sum)) => *sum += value,
+        None => missing.push((object, value)),
+    }
 }
 
 /// One unit vector per direction of `colours` (none for black).
@@ -207,23 +216,21 @@ pub fn lit_as_raylab(components: &Components, target: &Target, p: usize, toleran
     let beauty = DVec3::from_array(components.beauty[p]);
     let mut shadowed = vec![DVec3::ZERO; space.lights];
     let mut unshadowed_extra = vec![DVec3::ZERO; space.lights];
-    let mut missing = Vec::new();
+    let mut missing: MissingByObject = Vec::new();
     for entry in components.pixel(p) {
-        let value = DVec3::new(
-            f64::from(entry.value[0]),
-            f64::from(entry.value[1]),
-            f64::from(entry.value[2]),
-        );
-        match space.decode(entry.channel).0 {
-            Kind::Diffuse(l) | Kind::Specular(l) => shadowed[l] += value,
-            Kind::Shadow(l) => unshadowed_extra[l] += value,
-            Kind::Missing(_) | Kind::NodeMissing => missing.push(value),
+        let value = DVec3::from_array(entry.value.map(f64::from));
+        match space.decode(entry.channel) {
+            (Kind::Diffuse(l) | Kind::Specular(l), _) => shadowed[l] += value,
+            (Kind::Shadow(l), _) => unshadowed_extra[l] += value,
+            (kind @ (Kind::Missing(_) | Kind::NodeMissing), Some(object)) => {
+                add_missing(&mut missing, kind, object, value);
+            }
             _ => {}
         }
     }
     if missing
         .iter()
-        .any(|&change| outside(target, p, beauty + change) < tolerance)
+        .any(|&(_, change)| outside(target, p, beauty + change) < tolerance)
     {
         return true;
     }
