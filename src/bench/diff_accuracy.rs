@@ -328,8 +328,9 @@ pub fn run_scene(
         .iter()
         .map(|b| plant(scene, meshes, std::slice::from_ref(b), 1, &progress).ok())
         .collect();
+    let index_of = |bug: &PlantedBug| candidates.iter().position(|c| c == bug);
     let twins_of = |bug: &PlantedBug| -> Vec<PlantedBug> {
-        let Some(i) = candidates.iter().position(|c| c == bug) else {
+        let Some(i) = index_of(bug) else {
             return Vec::new();
         };
         (0..candidates.len())
@@ -338,7 +339,12 @@ pub fn run_scene(
             .collect()
     };
     for bugs in cases {
-        let Ok(picture) = plant(scene, meshes, &bugs, 1, &progress) else {
+        // A bug alone was planted above already.
+        let picture = match bugs.as_slice() {
+            [bug] => index_of(bug).and_then(|i| alone[i].clone()),
+            _ => plant(scene, meshes, &bugs, 1, &progress).ok(),
+        };
+        let Some(picture) = picture else {
             continue;
         };
         if !shows(&own, &picture) || !each_bug_shows(scene, meshes, &bugs, &picture) {
