@@ -10,13 +10,18 @@ mod one_sample;
 mod shader;
 
 use one_sample::diff;
-use raylab::compare::{Cause, ExplainedTerm, ShadowBug, SpotBug};
+use raylab::compare::{Cause, ClampBug, ExplainedTerm, ShadowBug, SpawnBug, SpotBug};
 use raylab::scene::{Light, load_scene};
 use raylab::trace::Term;
 use shader::{Bugs, render};
 
 fn example(name: &str) -> raylab::scene::Scene {
-    let path = format!("{}/scenes/{name}", env!("CARGO_MANIFEST_DIR"));
+    at_quarter_size(&format!("scenes/{name}"))
+}
+
+/// The scene at `path` (from the crate's folder) at a quarter of its size.
+fn at_quarter_size(path: &str) -> raylab::scene::Scene {
+    let path = format!("{}/{path}", env!("CARGO_MANIFEST_DIR"));
     let mut scene = load_scene(std::path::Path::new(&path)).unwrap();
     // A quarter of the size: the same picture, quicker.
     scene.camera.width /= 4;
@@ -264,4 +269,50 @@ fn a_light_without_falloff_that_whitens_the_floor_is_named() {
     // The point light without its fall-off clips most of the picture to white, where
     // the linear fit sees nothing; the spot bugs are then tried on the clipped bytes.
     point_light_falloff_is_named_first(&coloured_lights_scene());
+}
+
+#[test]
+fn a_mirror_ray_started_on_the_wrong_side_is_named() {
+    // The student's tracer starts each mirror ray 1e-4 under the surface it leaves: it
+    // meets that surface again from behind, so the ball and the floor reflect their own
+    // unlit insides. Read as the reflection term missing before the cause was known.
+    let scene = example("default.ron");
+    let other = render(
+        &scene,
+        1,
+        &Bugs {
+            mirror_wrong_side: true,
+            ..Bugs::default()
+        },
+    );
+    let c = diff(&scene, &other);
+    let report = c.text_lines().join("\n");
+    assert_eq!(
+        c.explanations[0].cause,
+        Cause::Spawn(SpawnBug::MirrorWrongSide),
+        "{report}"
+    );
+}
+
+#[test]
+fn reflections_kept_as_bytes_between_rays_are_named() {
+    // Each reflected ray's colour cut to floor(255 c) / 255: a level or less per bounce,
+    // up to three levels where mirrors face each other. The scene clamps each ray as
+    // the course does, so the clamp alone explains nothing.
+    let scene = at_quarter_size("tests/compare/facing_mirrors.ron");
+    let other = render(
+        &scene,
+        1,
+        &Bugs {
+            truncate_each_ray: true,
+            ..Bugs::default()
+        },
+    );
+    let c = diff(&scene, &other);
+    let report = c.text_lines().join("\n");
+    assert_eq!(
+        c.explanations[0].cause,
+        Cause::Clamp(ClampBug::TruncateEachRay),
+        "{report}"
+    );
 }

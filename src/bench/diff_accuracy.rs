@@ -17,7 +17,7 @@ use serde::Serialize;
 use crate::compare::plant::{Plant, PlantedBug, Site, plant};
 use crate::compare::{
     ClampBug, CompareOptions, Encoding, Explanation, HIGH_CONFIDENCE, MIN_ERROR, NormalBug,
-    OtherImage, Part, ShadowBug, SpecularBug, SpotBug, compare_with_meshes,
+    OtherImage, Part, ShadowBug, SpawnBug, SpecularBug, SpotBug, compare_with_meshes,
 };
 use crate::scene::{ClampConvention, Light, MirrorConvention, Scene};
 use crate::trace::{MeshStore, RenderProgress, Term};
@@ -230,6 +230,9 @@ pub fn candidate_bugs(scene: &Scene, rng: &mut fastrand::Rng) -> Vec<PlantedBug>
     }
     for b in ShadowBug::ALL {
         add(Plant::ShadowTest(b), object_site(rng));
+    }
+    for b in SpawnBug::ALL {
+        add(Plant::Spawn(b), Site::Everywhere);
     }
     if !spots.is_empty() {
         for b in SpotBug::ALL {

@@ -33,7 +33,7 @@ pub mod report;
 mod split;
 mod verdict;
 
-pub use catalogue::{ClampBug, Kind, NormalBug, Part, ShadowBug, SpecularBug, SpotBug};
+pub use catalogue::{ClampBug, Kind, NormalBug, Part, ShadowBug, SpawnBug, SpecularBug, SpotBug};
 pub use error::CompareError;
 pub use extras::{PixelBox, ShapeGuess};
 pub use fit::{Encoding, MIN_ERROR, MIN_STEP_SHARE, NOISE_SHARE};

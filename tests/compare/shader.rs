@@ -50,6 +50,10 @@ pub struct Bugs {
     pub spots_without_cone_or_falloff: bool,
     /// The shadow ray never meets the object it leaves (a tracer that skips it).
     pub no_self_shadow: bool,
+    /// The mirror ray starts at `p - 1e-4 n`, under the surface it leaves.
+    pub mirror_wrong_side: bool,
+    /// Each reflected ray's colour is kept as bytes: `floor(255 c) / 255` per channel.
+    pub truncate_each_ray: bool,
 }
 
 struct Shader<'a> {
@@ -183,12 +187,20 @@ impl Shader<'_> {
         }
         if depth < self.world.max_depth && material.mirror != DVec3::ZERO {
             let d = ray.dir;
-            let reflected = spawn_ray(&hit, d - 2.0 * d.dot(hit.n) * hit.n);
+            let dir = d - 2.0 * d.dot(hit.n) * hit.n;
+            let reflected = if self.bugs.mirror_wrong_side {
+                Ray::new(hit.p - 1e-4 * hit.n, dir)
+            } else {
+                spawn_ray(&hit, dir)
+            };
             let km = material.mirror;
             if self.bugs.mirror_blend {
                 colour *= DVec3::ONE - km;
             }
             colour += km * self.radiance(&reflected, depth + 1);
+        }
+        if self.bugs.truncate_each_ray && depth > 0 {
+            colour = (colour.clamp(DVec3::ZERO, DVec3::ONE) * 255.0).floor() / 255.0;
         }
         colour
     }

@@ -10,7 +10,7 @@ use crate::scene::Material;
 use crate::trace::SurfacePoint;
 use crate::trace::shapes::Primitive;
 use crate::trace::{LocalLight, phong_power};
-use crate::trace::{World, WorldObject};
+use crate::trace::{Ray, World, WorldObject};
 
 /// A wrong shading normal.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -183,18 +183,26 @@ impl SpecularBug {
     }
 }
 
-/// Colour clamped to [0, 1] before the final pixel.
+/// Colour clamped to [0, 1] (or cut to 8 bits) before the final pixel.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum ClampBug {
     /// Each ray's local colour is clamped before the reflection is added.
     LocalBeforeReflection,
     /// Each ray's whole colour is clamped before its mirror multiplies it.
     EveryRay,
+    /// Each reflected ray's colour is clamped and truncated to 8 bits per channel,
+    /// `floor(255 c) / 255`, before its mirror multiplies it (a colour kept as bytes
+    /// between rays). The camera ray's own colour is the encoding's to write.
+    TruncateEachRay,
 }
 
 impl ClampBug {
     /// Every clamping bug.
-    pub const ALL: [ClampBug; 2] = [ClampBug::LocalBeforeReflection, ClampBug::EveryRay];
+    pub const ALL: [ClampBug; 3] = [
+        ClampBug::LocalBeforeReflection,
+        ClampBug::EveryRay,
+        ClampBug::TruncateEachRay,
+    ];
 
     /// A short name for reports.
     #[must_use]
@@ -202,6 +210,7 @@ impl ClampBug {
         match self {
             ClampBug::LocalBeforeReflection => "clamp-before-reflection",
             ClampBug::EveryRay => "clamp-every-ray",
+            ClampBug::TruncateEachRay => "truncate-each-ray",
         }
     }
 
@@ -215,18 +224,24 @@ impl ClampBug {
             ClampBug::EveryRay => {
                 "each reflected ray's colour was clamped before the mirror scaled it"
             }
+            ClampBug::TruncateEachRay => {
+                "each reflected ray's colour was cut to 8 bits, floor(255 c) / 255 per channel, before the mirror scaled it"
+            }
         }
     }
 
     /// A ray's colour under the bug: `local` its own terms, `km` and `reflected` its
-    /// mirror term (the reflected colour as the bug computed it), if any.
+    /// mirror term (the reflected colour as the bug computed it), if any; `camera`
+    /// for the camera ray (whose colour the picture's encoding writes).
     #[must_use]
-    pub fn combine(self, local: DVec3, mirror: Option<(DVec3, DVec3)>) -> DVec3 {
+    pub fn combine(self, local: DVec3, mirror: Option<(DVec3, DVec3)>, camera: bool) -> DVec3 {
         let clamp = |c: DVec3| c.clamp(DVec3::ZERO, DVec3::ONE);
         let reflected = mirror.map_or(DVec3::ZERO, |(km, c)| km * c);
         match self {
             ClampBug::LocalBeforeReflection => clamp(local) + reflected,
             ClampBug::EveryRay => clamp(local + reflected),
+            ClampBug::TruncateEachRay if camera => clamp(local + reflected),
+            ClampBug::TruncateEachRay => (clamp(local + reflected) * 255.0).floor() / 255.0,
         }
     }
 }
@@ -276,6 +291,55 @@ impl ShadowBug {
         }
     }
 }
+
+/// A secondary ray started wrongly.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SpawnBug {
+    /// The mirror ray starts on the wrong side of the surface (`p - eps n`): it meets
+    /// the surface it leaves from behind, so a mirror shows its own inside (a sphere's
+    /// ambient, a plane's unlit back) instead of what it faces.
+    MirrorWrongSide,
+}
+
+impl SpawnBug {
+    /// Every spawning bug.
+    pub const ALL: [SpawnBug; 1] = [SpawnBug::MirrorWrongSide];
+
+    /// A short name for reports.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            SpawnBug::MirrorWrongSide => "mirror-ray-wrong-side",
+        }
+    }
+
+    /// What the bug is, as the end of a sentence.
+    #[must_use]
+    pub fn describe(self) -> &'static str {
+        match self {
+            SpawnBug::MirrorWrongSide => {
+                "its mirror rays started on the wrong side of the surface, so they met it again from behind"
+            }
+        }
+    }
+
+    /// The ray the bug starts at `hit` (seen along a ray with shading normal `hit.n`
+    /// facing it) in direction `dir`: moved off the surface against `hit.n` by a
+    /// distance a student's `eps` would be, large enough that the surface is met again
+    /// whatever the rounding of its hit.
+    #[must_use]
+    pub fn ray(self, hit: &SurfacePoint, dir: DVec3) -> Ray {
+        match self {
+            SpawnBug::MirrorWrongSide => {
+                let eps = WRONG_SIDE_EPS * (1.0 + hit.p.abs().max_element());
+                Ray::new(hit.p - eps * hit.n, dir)
+            }
+        }
+    }
+}
+
+/// A student's offset along the normal, relative to the point's size.
+const WRONG_SIDE_EPS: f64 = 1e-5;
 
 /// A part of a shape, which a renderer may fail to hit on its own.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -5,7 +5,7 @@
 //! inner node tried as missing has two channels of its own. Every channel is a
 //! per-pixel colour; the fit scales them.
 
-use super::bugs::{ClampBug, NormalBug, Part, ShadowBug, SpecularBug};
+use super::bugs::{ClampBug, NormalBug, Part, ShadowBug, SpawnBug, SpecularBug};
 use super::spot_bugs::SpotBug;
 
 /// What a channel holds. Light indices are positions in the world's list of
@@ -35,6 +35,8 @@ pub enum Kind {
     Clamp(ClampBug),
     /// The change of the object's lit terms under a shadow bug.
     ShadowTest(ShadowBug),
+    /// The change of the object's mirror term under a spawning bug.
+    Spawn(SpawnBug),
     /// The change of the pixels where a part of the object is seen, if it were missing.
     Missing(Part),
     /// The change of the pixels seeing the object under a bug of spot light `l`.
@@ -71,6 +73,8 @@ pub enum Family {
     Clamp(ClampBug),
     /// [`Kind::ShadowTest`] of one bug.
     ShadowTest(ShadowBug),
+    /// [`Kind::Spawn`] of one bug.
+    Spawn(SpawnBug),
     /// [`Kind::Missing`], any part, and [`Kind::ShadowCast`].
     Missing,
     /// [`Kind::Spot`] of one bug.
@@ -94,6 +98,7 @@ impl Kind {
             Kind::Highlight(b) => Family::Highlight(b),
             Kind::Clamp(b) => Family::Clamp(b),
             Kind::ShadowTest(b) => Family::ShadowTest(b),
+            Kind::Spawn(b) => Family::Spawn(b),
             Kind::Missing(_) | Kind::ShadowCast | Kind::NodeMissing | Kind::NodeShadowCast => {
                 Family::Missing
             }
@@ -154,6 +159,7 @@ impl ChannelSpace {
             + Part::ALL.len()
             + SpotBug::ALL.len() * self.lights
             + ShadowBug::ALL.len()
+            + SpawnBug::ALL.len()
     }
 
     /// How many channels there are.
@@ -201,6 +207,17 @@ impl ChannelSpace {
             Kind::ShadowTest(b) => {
                 FIXED + 3 * l + nb + sb + cb + Part::ALL.len() + SpotBug::ALL.len() * l + b as usize
             }
+            Kind::Spawn(b) => {
+                FIXED
+                    + 3 * l
+                    + nb
+                    + sb
+                    + cb
+                    + Part::ALL.len()
+                    + SpotBug::ALL.len() * l
+                    + ShadowBug::ALL.len()
+                    + b as usize
+            }
         };
         if let Some(i) = kind.light() {
             assert!(i < l, "light {i} of {l}");
@@ -230,6 +247,7 @@ impl ChannelSpace {
             SpecularBug::ALL.len(),
             ClampBug::ALL.len(),
         );
+        let shadow_tests = FIXED + 3 * l + nb + sb + cb + Part::ALL.len() + SpotBug::ALL.len() * l;
         let kind = match slot {
             0 => Kind::Ambient,
             1 => Kind::Reflection,
@@ -252,10 +270,10 @@ impl ChannelSpace {
                 let spot = s - FIXED - 3 * l - nb - sb - cb - Part::ALL.len();
                 Kind::Spot(SpotBug::ALL[spot / l], spot % l)
             }
-            s => Kind::ShadowTest(
-                ShadowBug::ALL
-                    [s - FIXED - 3 * l - nb - sb - cb - Part::ALL.len() - SpotBug::ALL.len() * l],
-            ),
+            s if s < shadow_tests + ShadowBug::ALL.len() => {
+                Kind::ShadowTest(ShadowBug::ALL[s - shadow_tests])
+            }
+            s => Kind::Spawn(SpawnBug::ALL[s - shadow_tests - ShadowBug::ALL.len()]),
         };
         (kind, Some(object))
     }

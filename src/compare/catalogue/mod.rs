@@ -10,9 +10,9 @@ mod nodes;
 mod retrace;
 mod spot_bugs;
 
-pub use bugs::{ClampBug, NormalBug, Part, ShadowBug, SpecularBug, local_terms};
+pub use bugs::{ClampBug, NormalBug, Part, ShadowBug, SpawnBug, SpecularBug, local_terms};
 pub use channels::{ChannelSpace, Family, Kind};
 pub use missing_nodes::{MissingNodes, Slot, TriedNode};
 pub use nodes::{MISS, Node, Nodes};
-pub use retrace::trace_again;
+pub use retrace::{trace_again, trace_again_at};
 pub use spot_bugs::{SpotBug, SpotWorld, cone_changes, no_falloff_change, spot_worlds};

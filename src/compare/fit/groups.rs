@@ -12,7 +12,7 @@ use super::target::{FitState, Target};
 use crate::compare::catalogue::Nodes;
 use crate::compare::catalogue::SpotBug;
 use crate::compare::catalogue::{ChannelSpace, Family, Kind};
-use crate::compare::catalogue::{ClampBug, NormalBug, Part, ShadowBug, SpecularBug};
+use crate::compare::catalogue::{ClampBug, NormalBug, Part, ShadowBug, SpawnBug, SpecularBug};
 use crate::compare::catalogue::{Slot, TriedNode};
 use crate::compare::split::Components;
 
@@ -171,6 +171,16 @@ impl Groups {
                     object,
                     None,
                     vec![Kind::ShadowTest(bug)],
+                    None,
+                );
+            }
+            for bug in SpawnBug::ALL {
+                add(
+                    Family::Spawn(bug),
+                    None,
+                    object,
+                    None,
+                    vec![Kind::Spawn(bug)],
                     None,
                 );
             }

@@ -16,7 +16,7 @@ use std::fmt;
 use glam::DVec3;
 
 use crate::compare::catalogue::{
-    ClampBug, Kind, NormalBug, Part, ShadowBug, Slot, SpecularBug, SpotBug,
+    ClampBug, Kind, NormalBug, Part, ShadowBug, Slot, SpawnBug, SpecularBug, SpotBug,
 };
 use crate::compare::error::CompareError;
 use crate::compare::fit::{Encoding, NO_LIMIT_DEPTH};
@@ -54,6 +54,8 @@ pub enum Plant {
     Clamp(ClampBug),
     /// Shadows tested wrongly.
     ShadowTest(ShadowBug),
+    /// Mirror rays started wrongly.
+    Spawn(SpawnBug),
     /// A spot light computed wrongly.
     Spot(SpotBug),
     /// Planes hit only from the front.
@@ -86,7 +88,7 @@ pub struct PlantedBug {
 }
 
 /// Every cause name `parse` knows, as `raylab render --help` lists them.
-pub const CAUSE_NAMES: [&str; 32] = [
+pub const CAUSE_NAMES: [&str; 34] = [
     "light-off",
     "normal-not-flipped",
     "normal-without-x",
@@ -99,6 +101,7 @@ pub const CAUSE_NAMES: [&str; 32] = [
     "no-max-before-power",
     "clamp-before-reflection",
     "clamp-every-ray",
+    "truncate-each-ray",
     "spot-no-cone",
     "spot-no-falloff",
     "spot-angle-radians",
@@ -107,6 +110,7 @@ pub const CAUSE_NAMES: [&str; 32] = [
     "no-self-shadow",
     "shadow-acne",
     "shadow-beyond-light",
+    "mirror-ray-wrong-side",
     "one-sided",
     "missing-caps",
     "missing-side",
@@ -132,6 +136,7 @@ impl Plant {
             Plant::Highlight(b) => b.name().to_owned(),
             Plant::Clamp(b) => b.name().to_owned(),
             Plant::ShadowTest(b) => b.name().to_owned(),
+            Plant::Spawn(b) => b.name().to_owned(),
             Plant::Spot(b) => b.name().to_owned(),
             Plant::OneSided => "one-sided".to_owned(),
             Plant::MissingPart(Part::Caps) => "missing-caps".to_owned(),
@@ -167,6 +172,7 @@ impl Plant {
         let clamp = ClampBug::ALL.map(Plant::Clamp);
         let spot = SpotBug::ALL.map(Plant::Spot);
         let shadow = ShadowBug::ALL.map(Plant::ShadowTest);
+        let spawn = SpawnBug::ALL.map(Plant::Spawn);
         let other = [
             Plant::LightOff,
             Plant::OneSided,
@@ -190,6 +196,7 @@ impl Plant {
             .or_else(|| by_name(&clamp))
             .or_else(|| by_name(&spot))
             .or_else(|| by_name(&shadow))
+            .or_else(|| by_name(&spawn))
             .or_else(|| by_name(&other))
     }
 
@@ -213,6 +220,7 @@ impl Plant {
                 "local colour clamped before the mirror"
             }
             Plant::Clamp(ClampBug::EveryRay) => "each reflected colour clamped",
+            Plant::Clamp(ClampBug::TruncateEachRay) => "each reflected colour kept as bytes",
             Plant::Spot(SpotBug::NoCone) => "the spot's cone test missing",
             Plant::Spot(SpotBug::NoFalloff) => "the spot's strength not divided by d^2",
             Plant::Spot(SpotBug::AngleRadians) => "cos(angle) with degrees as radians",
@@ -221,6 +229,7 @@ impl Plant {
             Plant::ShadowTest(ShadowBug::NoSelfShadow) => "the shadow ray skips its own object",
             Plant::ShadowTest(ShadowBug::Acne) => "the shadow ray starts on the surface",
             Plant::ShadowTest(ShadowBug::BeyondLight) => "any hit on the shadow ray counts",
+            Plant::Spawn(SpawnBug::MirrorWrongSide) => "the mirror ray starts at p - eps n",
             Plant::OneSided | Plant::MissingPart(Part::Back) => "a plane hit only when d.n < 0",
             Plant::MissingPart(_) => "one part of a shape never hit",
             Plant::MissingObject => "an object never hit",
@@ -247,6 +256,7 @@ impl Plant {
             | Plant::Highlight(_)
             | Plant::Clamp(_)
             | Plant::ShadowTest(_)
+            | Plant::Spawn(_)
             | Plant::OneSided
             | Plant::MissingPart(_)
             | Plant::MissingObject => Scope::Object,
@@ -323,6 +333,7 @@ impl PlantedBug {
                         && e.cause.name().contains("clamp-each-ray"))
             }
             Plant::ShadowTest(b) => e.cause == Cause::ShadowTest(b),
+            Plant::Spawn(b) => e.cause == Cause::Spawn(b),
             Plant::Spot(b) => e.cause == Cause::Spot(b),
             Plant::OneSided | Plant::MissingPart(Part::Back) => e.cause.name() == "one-sided",
             Plant::MissingPart(part) => e.cause == Cause::Missing(Some(part)),
@@ -563,6 +574,7 @@ fn is_channel_bug(plant: Plant) -> bool {
             | Plant::Highlight(_)
             | Plant::Clamp(_)
             | Plant::ShadowTest(_)
+            | Plant::Spawn(_)
             | Plant::Spot(_)
             | Plant::OneSided
             | Plant::MissingPart(_)
@@ -693,6 +705,7 @@ fn channel_weights(
             Plant::Highlight(b) => add(&mut weights, Kind::Highlight(b), leaves, 1.0),
             Plant::Clamp(b) => add(&mut weights, Kind::Clamp(b), leaves, 1.0),
             Plant::ShadowTest(b) => add(&mut weights, Kind::ShadowTest(b), leaves, 1.0),
+            Plant::Spawn(b) => add(&mut weights, Kind::Spawn(b), leaves, 1.0),
             Plant::Spot(b) => {
                 for l in lights_of(&bug.site)? {
                     add(&mut weights, Kind::Spot(b, l), leaves.clone(), 1.0);
@@ -855,6 +868,7 @@ pub fn gallery_bugs(scene: &Scene) -> Vec<PlantedBug> {
     bugs.extend(SpecularBug::ALL.map(|b| everywhere(Plant::Highlight(b))));
     bugs.extend(ClampBug::ALL.map(|b| everywhere(Plant::Clamp(b))));
     bugs.extend(ShadowBug::ALL.map(|b| everywhere(Plant::ShadowTest(b))));
+    bugs.extend(SpawnBug::ALL.map(|b| everywhere(Plant::Spawn(b))));
     if lit
         .iter()
         .any(|&l| matches!(scene.lights[l], Light::Spot { .. }))

@@ -18,8 +18,8 @@ use glam::DVec3;
 
 use super::context::Context;
 use crate::compare::catalogue::{
-    ClampBug, Kind, MISS, NormalBug, Part, ShadowBug, Slot, SpecularBug, SpotBug, cone_changes,
-    local_terms, no_falloff_change, trace_again,
+    ClampBug, Kind, MISS, NormalBug, Part, ShadowBug, Slot, SpawnBug, SpecularBug, SpotBug,
+    cone_changes, local_terms, no_falloff_change, trace_again, trace_again_at,
 };
 use crate::trace::shapes::Primitive;
 use crate::trace::{
@@ -63,6 +63,11 @@ struct Bounce {
     /// Whether a transmitted ray is on the path from the camera to this ray: its own
     /// transmission is then part of that ray's, already counted.
     through_glass: bool,
+    /// Whether a mirror ray is on the path from the camera to this ray: a spawning bug
+    /// of a mirror before it replaces this ray's whole picture, already counted.
+    through_mirror: bool,
+    /// 0 for the camera ray.
+    depth: u32,
     /// The leaf hit (what the channels are per).
     leaf: Option<usize>,
     /// The world object hit (a group's member, a CSG node): what its material and shape
@@ -131,12 +136,15 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
 
     /// Ray `node` starts, from the ray `from` names: its throughput is its parent's times
     /// the parent's km or kt.
-    fn begin(&mut self, node: u32, from: Option<(u32, Branch)>) {
+    fn begin(&mut self, node: u32, depth: u32, from: Option<(u32, Branch)>) {
         let node = node as usize;
         self.chain.truncate(node);
         let from = from.map(|(parent, branch)| (parent as usize, branch));
         let through_glass = from.is_some_and(|(parent, branch)| {
             branch.is_transmitted() || self.chain[parent].through_glass
+        });
+        let through_mirror = from.is_some_and(|(parent, branch)| {
+            branch == Branch::Mirror || self.chain[parent].through_mirror
         });
         let throughput = match from {
             None => DVec3::ONE,
@@ -159,6 +167,8 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
         self.chain.push(Bounce {
             mirror_child: None,
             through_glass,
+            through_mirror,
+            depth,
             leaf: None,
             world_object: None,
             hit: None,
@@ -358,8 +368,8 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
 }
 
 impl Recorder for SampleRecorder<'_, '_> {
-    fn started(&mut self, node: u32, _depth: u32, from: Option<(u32, Branch)>) {
-        self.begin(node, from);
+    fn started(&mut self, node: u32, depth: u32, from: Option<(u32, Branch)>) {
+        self.begin(node, depth, from);
     }
 
     fn hit(&mut self, node: u32, ray: &Ray, hit: &SurfacePoint) {
@@ -456,6 +466,7 @@ impl Recorder for SampleRecorder<'_, '_> {
         if let Some(object) = object {
             self.tally
                 .add(self.channel(Kind::Reflection, object), t * km * reflected);
+            self.mirror_spawned_wrongly(node as usize, km, reflected);
         }
     }
 
@@ -485,7 +496,7 @@ impl Recorder for SampleRecorder<'_, '_> {
                 .mirror
                 .zip(bounce.mirror_child)
                 .map(|((km, _), child)| (km, self.chain[child].clamped[i]));
-            self.chain[d].clamped[i] = bug.combine(local, mirror);
+            self.chain[d].clamped[i] = bug.combine(local, mirror, d == 0);
         }
         if d == 0
             && let Some(object) = bounce.leaf
@@ -521,6 +532,29 @@ impl Recorder for SampleRecorder<'_, '_> {
 }
 
 impl SampleRecorder<'_, '_> {
+    /// The change of the pixel were the mirror ray of ray `node` (which brought back
+    /// `reflected`, weighted `km`) started on the wrong side of the surface: traced
+    /// again from there, at its depth, in raylab's world. Only the first mirror on a
+    /// path: below it the bug's ray replaces the whole tree, already counted.
+    fn mirror_spawned_wrongly(&mut self, node: usize, km: DVec3, reflected: DVec3) {
+        let bounce = self.chain[node];
+        let (Some(hit), Some(leaf), Some(child)) = (bounce.hit, bounce.leaf, bounce.mirror_child)
+        else {
+            return;
+        };
+        if bounce.through_mirror {
+            return;
+        }
+        let bug = SpawnBug::MirrorWrongSide;
+        let ray = bug.ray(&hit, self.chain[child].ray.dir);
+        let seen = trace_again_at(self.ctx.world, &ray, bounce.depth + 1);
+        if seen.is_finite() {
+            let channel = self.channel(Kind::Spawn(bug), leaf);
+            self.tally
+                .add(channel, bounce.throughput * km * (seen - reflected));
+        }
+    }
+
     /// Whether the camera ray of the current sample may bring back another colour in
     /// spot world `k` than here. Not where that world only changes its spot light and
     /// the light's sample at every hit of the ray's tree is the same as here: the tree

@@ -4,7 +4,7 @@
 use serde::Serialize;
 
 use crate::compare::catalogue::SpotBug;
-use crate::compare::catalogue::{ClampBug, NormalBug, Part, ShadowBug, SpecularBug};
+use crate::compare::catalogue::{ClampBug, NormalBug, Part, ShadowBug, SpawnBug, SpecularBug};
 use crate::compare::catalogue::{Node, Nodes};
 use crate::compare::extras::PixelBox;
 use crate::compare::extras::ShapeGuess;
@@ -65,6 +65,8 @@ pub enum Cause {
     Clamp(ClampBug),
     /// Shadows tested wrongly.
     ShadowTest(ShadowBug),
+    /// Mirror rays started wrongly.
+    Spawn(SpawnBug),
     /// A spot light computed wrongly (the explanation names the light).
     Spot(SpotBug),
     /// A part of an object (or all of it: `None`) is not there.
@@ -111,6 +113,7 @@ impl Cause {
             Cause::Highlight(b) => b.name(),
             Cause::Clamp(b) => b.name(),
             Cause::ShadowTest(b) => b.name(),
+            Cause::Spawn(b) => b.name(),
             Cause::Spot(b) => b.name(),
             Cause::Missing(Some(Part::Back)) => "one-sided",
             Cause::Missing(Some(Part::Whole) | None) => "missing-object",

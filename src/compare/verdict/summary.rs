@@ -1,7 +1,7 @@
 //! The sentence of each explanation: what its numbers say, for a reader.
 
 use super::explanation::{Cause, ExplainedTerm, Explanation};
-use crate::compare::catalogue::Part;
+use crate::compare::catalogue::{ClampBug, Part};
 use crate::compare::extras::ShapeGuess;
 use crate::compare::fit::Encoding;
 use crate::scene::tree::object_at;
@@ -116,11 +116,23 @@ pub fn summary(e: &Explanation, scene: &Scene) -> String {
                 bug.describe()
             ),
         },
+        Cause::Clamp(ClampBug::TruncateEachRay) => format!(
+            "Reflections{} are darker by up to a level per bounce: {} (weight {weight:.2}).",
+            on_object(object).replace(" on ", " in "),
+            ClampBug::TruncateEachRay.describe()
+        ),
         Cause::Clamp(bug) => format!(
             "Reflections{} are darker where they exceed 1: {} (weight {weight:.2}).",
             on_object(object).replace(" on ", " in "),
             bug.describe()
         ),
+        Cause::Spawn(bug) => match object {
+            Some(o) => format!(
+                "'{o}' reflects as if {} (the bug's picture fits with weight {weight:.2}).",
+                bug.describe()
+            ),
+            None => format!("Mirrors reflect as if {} (weight {weight:.2}).", bug.describe()),
+        },
         Cause::Spot(bug) => format!(
             "{} lights the other image as if {} (weight {weight:.2}; explains {:.1}% of the difference).",
             capitalised(light.as_deref().unwrap_or("every spot light")),

@@ -60,6 +60,7 @@ fn term_and_cause(family: Family, split: [f64; 2], part: Option<Part>) -> (Expla
         Family::Highlight(bug) => (ExplainedTerm::Term(Term::Specular), Cause::Highlight(bug)),
         Family::Clamp(bug) => (ExplainedTerm::Term(Term::Reflection), Cause::Clamp(bug)),
         Family::ShadowTest(bug) => (ExplainedTerm::Term(Term::Shadows), Cause::ShadowTest(bug)),
+        Family::Spawn(bug) => (ExplainedTerm::Term(Term::Reflection), Cause::Spawn(bug)),
         Family::Missing => (ExplainedTerm::Geometry, Cause::Missing(part)),
         Family::Spot(bug) => (ExplainedTerm::Term(Term::Diffuse), Cause::Spot(bug)),
     }

@@ -122,9 +122,36 @@ impl<'w> Tracer<'w> {
         counts: &mut RayCounts,
         recorder: &mut impl Recorder,
     ) -> DVec3 {
-        recorder.started(0, 0, None);
-        let (camera_bounce, spawned) =
-            self.shade(ray, RayAt::CAMERA, &self.primary, rays, counts, recorder);
+        self.radiance_from(ray, 0, &self.primary, rays, counts, recorder)
+    }
+
+    /// The colour a mirror or transmitted ray `ray` at `depth` brings back, with its
+    /// tree below (folded as the conventions say, clamped with `EachRay`): what a ray
+    /// started elsewhere than raylab starts it returns (the diff's model of a mirror
+    /// ray spawned on the wrong side).
+    pub fn trace_secondary(&self, ray: &Ray, depth: u32, counts: &mut RayCounts) -> DVec3 {
+        let rays = &mut LiveRays::all();
+        self.radiance_from(ray, depth, &self.secondary, rays, counts, &mut NoRecorder)
+    }
+
+    /// [`Self::radiance`] of a ray at `depth` (0: the camera ray) shaded with `terms`,
+    /// the first ray of its own tree.
+    #[inline(always)]
+    fn radiance_from(
+        &self,
+        ray: &Ray,
+        depth: u32,
+        terms: &ActiveTerms,
+        rays: &mut impl RaySource,
+        counts: &mut RayCounts,
+        recorder: &mut impl Recorder,
+    ) -> DVec3 {
+        recorder.started(0, depth, None);
+        let at = RayAt {
+            depth,
+            ..RayAt::CAMERA
+        };
+        let (camera_bounce, spawned) = self.shade(ray, at, terms, rays, counts, recorder);
         // Most camera rays meet no mirror and no glass: no tree to keep.
         let conventions = &self.world.conventions;
         if spawned.mirror.is_none() && spawned.transmitted.is_none() {
@@ -134,7 +161,7 @@ impl<'w> Tracer<'w> {
         let mut tree = Tree::new();
         tree.push(Node {
             bounce: camera_bounce,
-            ..Node::new(*ray, 0, None)
+            ..Node::new(*ray, depth, None)
         });
         push_children(&mut tree, 0, spawned);
         self.grow(&mut tree, rays, counts, recorder);
