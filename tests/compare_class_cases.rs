@@ -21,11 +21,18 @@ fn example(name: &str) -> raylab::scene::Scene {
 
 /// The scene at `path` (from the crate's folder) at a quarter of its size.
 fn at_quarter_size(path: &str) -> raylab::scene::Scene {
+    let mut scene = at_half_size(path);
+    scene.camera.width /= 2;
+    scene.camera.height /= 2;
+    scene
+}
+
+/// The scene at `path` (from the crate's folder) at half its size.
+fn at_half_size(path: &str) -> raylab::scene::Scene {
     let path = format!("{}/{path}", env!("CARGO_MANIFEST_DIR"));
     let mut scene = load_scene(std::path::Path::new(&path)).unwrap();
-    // A quarter of the size: the same picture, quicker.
-    scene.camera.width /= 4;
-    scene.camera.height /= 4;
+    scene.camera.width /= 2;
+    scene.camera.height /= 2;
     scene
 }
 
@@ -313,6 +320,40 @@ fn reflections_kept_as_bytes_between_rays_are_named() {
     assert_eq!(
         c.explanations[0].cause,
         Cause::Clamp(ClampBug::TruncateEachRay),
+        "{report}"
+    );
+}
+
+#[test]
+fn a_missing_light_is_one_line_for_its_diffuse_and_its_specular() {
+    // At this size the point light's highlights clear the search's floor on their own:
+    // its diffuse and its specular term were two lines, as if two bugs.
+    let scene = at_half_size("scenes/default.ron");
+    let point = scene
+        .lights
+        .iter()
+        .position(|l| matches!(l, Light::Point { .. }))
+        .unwrap();
+    let other = render(
+        &scene,
+        1,
+        &Bugs {
+            drop_light: Some(point),
+            ..Bugs::default()
+        },
+    );
+    let c = diff(&scene, &other);
+    let report = c.text_lines().join("\n");
+    let first = &c.explanations[0];
+    assert_eq!(first.term, ExplainedTerm::Light, "{report}");
+    assert_eq!(first.light, Some(point), "{report}");
+    assert!(first.factor < 0.05, "{report}");
+    assert!(
+        first.summary.starts_with("Light 1 (Point) is missing"),
+        "{report}"
+    );
+    assert!(
+        c.explanations[1..].iter().all(|e| e.light != Some(point)),
         "{report}"
     );
 }

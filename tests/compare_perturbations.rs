@@ -83,7 +83,7 @@ fn a_removed_light_is_named_with_factor_zero() {
         drop_light: Some(1),
         ..Bugs::default()
     });
-    let e = named(&c, ExplainedTerm::Term(Term::Diffuse), Some(1), None);
+    let e = named(&c, ExplainedTerm::Light, Some(1), None);
     assert!(e.factor < 0.05, "{}", e.factor);
     assert_eq!(e.cause, Cause::Factor);
 }
@@ -237,6 +237,6 @@ fn a_directional_light_that_never_lights_is_named() {
         directional_never_lights: true,
         ..Bugs::default()
     });
-    let e = named(&c, ExplainedTerm::Term(Term::Diffuse), Some(2), None);
+    let e = named(&c, ExplainedTerm::Light, Some(2), None);
     assert!(e.factor < 0.05, "{}", e.factor);
 }

@@ -25,7 +25,8 @@ fn lit_by(keep: fn(&Light) -> bool) -> Scene {
     scene
 }
 
-/// Asserts that the first explanation is `term` of `light` at factor 0.
+/// Asserts that the first explanation is `term` of `light` at factor 0 (`Light`: the
+/// light itself, its diffuse and specular terms both missing).
 fn assert_light_first(c: &Comparison, term: ExplainedTerm, light: usize) {
     let report = c.text_lines().join("\n");
     let first = &c.explanations[0];
@@ -44,7 +45,7 @@ fn the_only_light_that_never_lights_is_named_before_the_whole_term() {
         ..Bugs::default()
     };
     let c = diff(&scene, &render(&scene, 1, &bugs));
-    assert_light_first(&c, ExplainedTerm::Term(Term::Diffuse), 1);
+    assert_light_first(&c, ExplainedTerm::Light, 1);
     let report = c.text_lines().join("\n");
     let first = &c.explanations[0];
     assert!(
@@ -80,7 +81,7 @@ fn a_dropped_point_light_alone_in_its_scene_is_named_as_the_light() {
         ..Bugs::default()
     };
     let c = diff(&scene, &render(&scene, 1, &bugs));
-    assert_light_first(&c, ExplainedTerm::Term(Term::Diffuse), 1);
+    assert_light_first(&c, ExplainedTerm::Light, 1);
 }
 
 #[test]
@@ -91,7 +92,7 @@ fn with_two_lights_the_light_is_named_without_a_like_reading() {
         ..Bugs::default()
     };
     let c = diff(&scene, &render(&scene, 1, &bugs));
-    assert_light_first(&c, ExplainedTerm::Term(Term::Diffuse), 2);
+    assert_light_first(&c, ExplainedTerm::Light, 2);
     let report = c.text_lines().join("\n");
     assert!(c.explanations[0].fits_as_well.is_empty(), "{report}");
     // And a term missing for every light stays the whole term.

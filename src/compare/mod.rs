@@ -43,7 +43,7 @@ pub use report::{
     Comparison, PSNR_IDENTICAL_DB, PixelValues, difference_heatmap, report_png, write_report_png,
 };
 pub use split::{Components, render_components};
-pub use verdict::{Cause, ExplainedTerm, Explanation, HIGH_CONFIDENCE};
+pub use verdict::{Cause, ExplainedTerm, Explanation, HIGH_CONFIDENCE, summary};
 
 use crate::scene::{Quantise, Scene};
 use crate::trace::{MeshStore, RenderProgress};
@@ -52,7 +52,7 @@ use fit::{
     BetterConventions, FitState, Floor, SamplingSpread, Target, better_conventions,
     detect_encoding, samples_otherwise,
 };
-use verdict::{Explained, explain, summary};
+use verdict::{Explained, explain};
 
 /// How to compare.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -315,13 +315,20 @@ impl PlantedBug {
     pub fn is_named_by(&self, e: &Explanation) -> bool {
         let cause_fits = match self.plant {
             Plant::Factor(term, factor) => {
+                // A light missing holds its diffuse and specular terms missing.
+                let light_missing = e.term == ExplainedTerm::Light
+                    && matches!(term, Term::Diffuse | Term::Specular)
+                    && factor < 1.0;
                 e.cause == Cause::Factor
-                    && e.term.name() == term.name()
+                    && (e.term.name() == term.name() || light_missing)
                     && (e.factor < 1.0) == (factor < 1.0)
             }
             Plant::LightOff => {
                 e.cause == Cause::Factor
-                    && matches!(e.term, ExplainedTerm::Term(Term::Diffuse | Term::Specular))
+                    && matches!(
+                        e.term,
+                        ExplainedTerm::Light | ExplainedTerm::Term(Term::Diffuse | Term::Specular)
+                    )
                     && e.factor < 0.5
             }
             Plant::Normal(b) => e.cause == Cause::Normal(b),

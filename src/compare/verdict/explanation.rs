@@ -18,6 +18,9 @@ pub enum ExplainedTerm {
     /// A term of the lighting model (ambient, a light's diffuse or specular, shadows,
     /// reflection, transmission).
     Term(Term),
+    /// A light's diffuse and specular terms together: the light itself (a light the
+    /// other picture lacks).
+    Light,
     /// Which surface a pixel sees.
     Geometry,
     /// The colour of rays that hit nothing.
@@ -36,6 +39,7 @@ impl ExplainedTerm {
     pub fn name(self) -> &'static str {
         match self {
             ExplainedTerm::Term(term) => term.name(),
+            ExplainedTerm::Light => "light",
             ExplainedTerm::Geometry => "geometry",
             ExplainedTerm::Background => "background",
             ExplainedTerm::Encoding => "encoding",

@@ -22,8 +22,11 @@ pub fn looped_lights(scene: &Scene) -> usize {
 /// that is the last of the list (a loop that stops one short), or the ambient term
 /// scaled by the number of lights (added inside the light loop).
 fn loop_hint(e: &Explanation, scene: &Scene) -> String {
-    let whole_light =
-        e.object.is_none() && matches!(e.term, ExplainedTerm::Term(Term::Diffuse | Term::Specular));
+    let whole_light = e.object.is_none()
+        && matches!(
+            e.term,
+            ExplainedTerm::Light | ExplainedTerm::Term(Term::Diffuse | Term::Specular)
+        );
     if let Some(light) = e.light
         && whole_light
         && e.factor < 0.05
@@ -76,6 +79,13 @@ pub fn summary(e: &Explanation, scene: &Scene) -> String {
                     on_object(object)
                 )
             }
+        }
+        Cause::Factor if e.term == ExplainedTerm::Light => {
+            let whose = capitalised(light.as_deref().unwrap_or("every light"));
+            format!(
+                "{whose} is missing in the other image{}: neither its diffuse nor its specular term is there (factor {f:.2}).",
+                on_object(object)
+            ) + &loop_hint(e, scene)
         }
         Cause::Factor => {
             let subject = match (&light, object) {

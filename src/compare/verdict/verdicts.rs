@@ -137,6 +137,7 @@ pub fn explain_steps(
             }
         }
     }
+    merge_missing_lights(&mut out);
     out.into_iter()
         .map(|(mut e, coefficient, node)| {
             // Terms scale from 1; shadows and bugs add a picture whose weight is 1 - factor.
@@ -161,6 +162,56 @@ pub fn explain_steps(
             e
         })
         .collect()
+}
+
+/// A factor below this is a term missing.
+const MISSING: f64 = 0.05;
+
+/// A light whose diffuse and specular terms are both missing, on the same objects or on
+/// some of them (the highlights show on fewer), is one finding: the light is missing (a
+/// loop that skips it). The specular line joins the diffuse one, which becomes the
+/// light's.
+fn merge_missing_lights(out: &mut Vec<(Explanation, f64, Option<usize>)>) {
+    let missing = |(e, coefficient, _): &(Explanation, f64, Option<usize>), term| {
+        e.cause == Cause::Factor
+            && e.term == ExplainedTerm::Term(term)
+            && e.light.is_some()
+            && 1.0 + coefficient < MISSING
+    };
+    let mut i = 0;
+    while i < out.len() {
+        if missing(&out[i], Term::Diffuse) {
+            let diffuse = &out[i].0;
+            let specular = (0..out.len()).find(|&j| {
+                let e = &out[j].0;
+                missing(&out[j], Term::Specular)
+                    && e.light == diffuse.light
+                    && e.node.starts_with(&diffuse.node)
+            });
+            if let Some(j) = specular {
+                let (s, ..) = out.remove(j);
+                if j < i {
+                    i -= 1;
+                }
+                let d = &mut out[i].0;
+                let share = d.share + s.share;
+                d.confidence = (d.confidence * d.share + s.confidence * s.share) / share;
+                d.share = share;
+                d.pixels.extend(s.pixels);
+                d.pixels.sort_unstable();
+                d.pixels.dedup();
+                d.fits_as_well.extend(s.fits_as_well);
+                // Its own two terms are the light now, not other readings.
+                if let Some(l) = d.light {
+                    let own = [Term::Diffuse, Term::Specular]
+                        .map(|t| format!("the {} term of light {l}", t.name()));
+                    d.fits_as_well.retain(|r| !own.contains(r));
+                }
+                d.term = ExplainedTerm::Light;
+            }
+        }
+        i += 1;
+    }
 }
 
 /// The diffuse and specular shares of a group's normal-bug channels.

@@ -14,15 +14,29 @@ use super::session::CompareSession;
 
 /// The sentence under an explanation's title: what it says, then where and how sure, in
 /// words (the numbers of `raylab diff` are in the hover text).
-fn explanation_detail(e: &crate::compare::Explanation) -> String {
+fn explanation_detail(e: &Explanation, scene: &Scene) -> String {
     let pixels = e.pixels.len();
     let plural = if pixels == 1 { "" } else { "s" };
     format!(
         "{} It covers {pixels} pixel{plural} and {:.0}% of the difference; confidence {}.",
-        e.summary,
+        summary_in_editor_names(e, scene),
         e.share * 100.0,
         e.sureness()
     )
+}
+
+/// The explanation's sentence with its light named as the outliner and the row's title
+/// name it ("Point light 2"), not as `raylab diff` does ("light 1 (Point)": the index
+/// `--bug` and the JSON take).
+fn summary_in_editor_names(e: &Explanation, scene: &Scene) -> String {
+    let Some((index, light)) = e.light.and_then(|l| Some((l, scene.lights.get(l)?))) else {
+        return e.summary.clone();
+    };
+    let kind = light.kind_name();
+    let editor = light_label(light, index);
+    e.summary
+        .replace(&format!("Light {index} ({kind})"), &editor)
+        .replace(&format!("light {index} ({kind})"), &editor)
 }
 
 /// The row's text (also its accessible name), with the light named as the outliner
@@ -91,7 +105,7 @@ pub fn explanations_ui(
                 }
                 ui.horizontal_wrapped(|ui| {
                     ui.add_space(14.0);
-                    ui.weak(explanation_detail(e)).on_hover_text(format!(
+                    ui.weak(explanation_detail(e, scene)).on_hover_text(format!(
                         "raylab diff's numbers: factor {:.2}, cause {}, confidence {:.2}",
                         e.factor,
                         e.cause.name(),
@@ -194,5 +208,47 @@ mod tests {
             .unwrap()
             .name = "pip one".to_owned();
         assert_eq!(explanation_selection(&e, &scene), None);
+    }
+
+    #[test]
+    fn the_sentence_names_the_light_as_the_row_and_the_outliner_do() {
+        let scene = crate::scene::examples::default_scene();
+        let point = scene
+            .lights
+            .iter()
+            .position(|l| matches!(l, crate::scene::Light::Point { .. }))
+            .unwrap();
+        let e = Explanation {
+            term: ExplainedTerm::Light,
+            light: Some(point),
+            object: None,
+            object_name: None,
+            node: Vec::new(),
+            factor: 0.0,
+            share: 1.0,
+            pixels: vec![0, 1],
+            cause: Cause::Factor,
+            bbox: None,
+            fits_as_well: Vec::new(),
+            confidence: 1.0,
+            summary: String::new(),
+        };
+        let e = Explanation {
+            summary: crate::compare::summary(&e, &scene),
+            ..e
+        };
+        let editor = light_label(&scene.lights[point], point);
+        assert!(
+            e.summary.starts_with(&format!("Light {point} (Point)")),
+            "{}",
+            e.summary
+        );
+        let detail = explanation_detail(&e, &scene);
+        assert!(
+            detail.starts_with(&format!("{editor} is missing")),
+            "{detail}"
+        );
+        assert!(explanation_label(0, &e, &scene).contains(&editor));
+        assert!(!detail.contains(&format!("light {point} (")), "{detail}");
     }
 }
