@@ -357,3 +357,28 @@ fn a_missing_light_is_one_line_for_its_diffuse_and_its_specular() {
         "{report}"
     );
 }
+
+#[test]
+fn shadows_missing_on_an_object_that_only_shadows_itself_read_as_the_self_shadow_bug() {
+    // Tuning seed 3: an object whose shadows are all its own. "Its shadows are
+    // missing" and "it never shadows itself" are one picture; a tracer that drops one
+    // object's shadows is rare, one whose shadow ray skips its own object is not.
+    let scene = raylab::bench::random_scene::random_scene(3, 200, 150);
+    let other = render(
+        &scene,
+        1,
+        &Bugs {
+            no_self_shadow: true,
+            ..Bugs::default()
+        },
+    );
+    let c = diff(&scene, &other);
+    let report = c.text_lines().join("\n");
+    let first = &c.explanations[0];
+    assert_eq!(
+        first.cause,
+        Cause::ShadowTest(ShadowBug::NoSelfShadow),
+        "{report}"
+    );
+    assert!(first.confidence >= raylab::compare::HIGH_CONFIDENCE, "{report}");
+}

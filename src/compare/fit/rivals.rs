@@ -4,6 +4,7 @@
 //! tell one story, the most specific goes first ([`prefer_specific`]).
 
 use super::groups::{Group, Groups};
+use crate::compare::catalogue::{Family, ShadowBug};
 
 /// Two groups fit alike when their gains differ by less than this share of the larger.
 const ALIKE: f64 = 0.01;
@@ -50,6 +51,25 @@ pub(super) fn prefer_specific(groups: &Groups, ranked: &mut [(usize, f64, f64)])
     if let Some(i) = most_specific {
         ranked[..=i].rotate_right(1);
     }
+    prefer_self_shadow_bug(groups, ranked);
+}
+
+/// Shadows missing on one object alone, where they are all the object's own (the same
+/// picture as an object that never shadows itself, within [`ALIKE`]), are that bug: a
+/// tracer whose shadow ray skips the object it leaves is common, one that drops the
+/// shadows of a single object is not. The factor stays a reading that fits as well.
+fn prefer_self_shadow_bug(groups: &Groups, ranked: &mut [(usize, f64, f64)]) {
+    let Some(&(best, _, gain)) = ranked.first() else {
+        return;
+    };
+    let shadows = &groups.list[best];
+    let bug = ranked
+        .iter()
+        .take_while(|r| r.2 >= (1.0 - ALIKE) * gain)
+        .position(|r| self_shadow_story(shadows, &groups.list[r.0]));
+    if let Some(i) = bug {
+        ranked[..=i].rotate_right(1);
+    }
 }
 
 /// The groups other than `chosen` that fit alike with it before it was applied and
@@ -84,9 +104,22 @@ pub(super) fn alike(
         .collect()
 }
 
+/// Whether `shadows` (shadows missing on an object) and `bug` (the object never shadowing
+/// itself, on it or a part of it) tell one story: where they fit alike they are one
+/// picture, so neither is the other's competitor.
+fn self_shadow_story(shadows: &Group, bug: &Group) -> bool {
+    shadows.family == Family::Shadow
+        && shadows.object.is_some()
+        && bug.family == Family::ShadowTest(ShadowBug::NoSelfShadow)
+        && bug.object.is_some()
+        && bug.leaves.start >= shadows.leaves.start
+        && bug.leaves.end <= shadows.leaves.end
+}
+
 /// How sure a step is against its best competitor: among the groups telling another
 /// story, those whose gain the step took (it fell by half or more once the step was
-/// applied; a group that keeps its gain explains something else), the best. With `g`
+/// applied; a group that keeps its gain explains something else), the best (an object's
+/// shadows missing and it never shadowing itself are one story, not rivals). With `g`
 /// the step's gain, `g_r` the competitor's and `left` the error the step leaves on the
 /// pixels it changed, `(g - g_r) / (g - g_r + left)`: what the step explains beyond the
 /// competitor, against what it leaves unexplained where it acts.
@@ -100,7 +133,13 @@ pub(super) fn margin(
     let gain = before.iter().find(|r| r.0 == chosen).map_or(0.0, |r| r.2);
     let rival = before
         .iter()
-        .filter(|r| r.0 != chosen && !compatible(&groups.list[chosen], &groups.list[r.0]))
+        .filter(|r| {
+            let (a, b) = (&groups.list[chosen], &groups.list[r.0]);
+            r.0 != chosen
+                && !compatible(a, b)
+                && !self_shadow_story(b, a)
+                && !self_shadow_story(a, b)
+        })
         .filter(|r| {
             let kept = after.iter().find(|a| a.0 == r.0).map_or(0.0, |a| a.2);
             kept < 0.5 * r.2
@@ -118,7 +157,6 @@ pub(super) fn margin(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::compare::catalogue::Family;
 
     fn group(family: Family) -> Group {
         Group::of_one_channel(family)
