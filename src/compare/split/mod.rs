@@ -3,6 +3,7 @@
 
 mod components;
 mod context;
+mod fold_watch;
 mod recorder;
 
 pub use components::{Components, render_components};
