@@ -327,10 +327,16 @@ fn render_row(
             let colour = tracer.trace_primary(&ray, &mut row.rays, &mut watch);
             fold |= watch.flags;
             fold |= recorder.fold;
-            if recorder.primary_leaf().is_some()
-                && (0..ctx.spot.len()).any(|k| recorder.spot_may_change(k))
-            {
-                fold |= FoldFlags::SPOT;
+            if recorder.primary_leaf().is_some() {
+                for k in (0..ctx.spot.len()).filter(|&k| recorder.spot_may_change(k)) {
+                    // A world with only its spot light changed has the same rays: its
+                    // mirror rays are this tree's, its colours are not watched.
+                    fold |= if ctx.spot_alike[k] {
+                        FoldFlags::UNCLAMPED
+                    } else {
+                        FoldFlags::SPOT
+                    };
+                }
             }
             if !colour.is_finite() {
                 continue; // the renderer's guard: a non-finite sample adds nothing

@@ -9,7 +9,9 @@
 //! ray's colour already lies in [0, 1]. A sample is the same under other conventions
 //! when that holds for every tree its split folds: the camera ray's, and each trace
 //! again without a tree node. A spot light's cone bugs trace again in changed worlds
-//! whose colours are not watched: a sample that traced one is never kept.
+//! whose colours are not watched: where only the spot light changed, the rays are the
+//! camera ray's tree's (the same mirror rays) and the sample counts as one whose clamp
+//! matters; a sample that traced a world changed otherwise is never kept.
 
 use std::ops::BitOrAssign;
 
@@ -35,7 +37,8 @@ impl FoldFlags {
     /// A ray's colour lies outside [0, 1] (or may have been clamped into it): the clamp
     /// convention changes the colour.
     pub const UNCLAMPED: Self = Self(2);
-    /// A cone bug's changed world ([`SpotWorld`]) was traced: not watched.
+    /// A cone bug's world ([`SpotWorld`]), changed in more than its spot light, was
+    /// traced: not watched.
     pub const SPOT: Self = Self(4);
 
     /// Whether a sample with these flags, split under `from` (conventions and depth
