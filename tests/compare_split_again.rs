@@ -74,25 +74,48 @@ fn bits(values: &[[f64; 3]]) -> Vec<[u64; 3]> {
     values.iter().map(|v| v.map(f64::to_bits)).collect()
 }
 
+/// The two lists are equal; else the first place they differ.
+fn assert_same_list<T: PartialEq + std::fmt::Debug>(again: &[T], fresh: &[T], what: &str) {
+    assert_eq!(again.len(), fresh.len(), "lengths of {what}");
+    if let Some(i) = (0..again.len()).find(|&i| again[i] != fresh[i]) {
+        panic!(
+            "{what}: at {i}, {:?} made again, {:?} from scratch",
+            again[i], fresh[i]
+        );
+    }
+}
+
 /// Every field of the two splits, bit for bit.
 fn assert_same(again: &Components, fresh: &Components, what: &str) {
-    assert_eq!(bits(&again.beauty), bits(&fresh.beauty), "beauty, {what}");
-    assert_eq!(again.labels, fresh.labels, "labels, {what}");
-    assert_eq!(again.mixed, fresh.mixed, "mixed, {what}");
-    assert_eq!(again.behind, fresh.behind, "behind, {what}");
-    assert_eq!(again.offsets, fresh.offsets, "offsets, {what}");
+    assert_same_list(
+        &bits(&again.beauty),
+        &bits(&fresh.beauty),
+        &format!("beauty, {what}"),
+    );
+    assert_same_list(&again.labels, &fresh.labels, &format!("labels, {what}"));
+    assert_same_list(&again.mixed, &fresh.mixed, &format!("mixed, {what}"));
+    assert_same_list(&again.behind, &fresh.behind, &format!("behind, {what}"));
+    assert_same_list(&again.offsets, &fresh.offsets, &format!("offsets, {what}"));
     let entries = |c: &Components| -> Vec<(u32, [u32; 3])> {
         c.entries
             .iter()
             .map(|e| (e.channel, e.value.map(f32::to_bits)))
             .collect()
     };
-    assert_eq!(entries(again), entries(fresh), "entries, {what}");
+    assert_same_list(
+        &entries(again),
+        &entries(fresh),
+        &format!("entries, {what}"),
+    );
     let split =
         |c: &Components| -> Vec<[u64; 2]> { c.split.iter().map(|s| s.map(f64::to_bits)).collect() };
-    assert_eq!(split(again), split(fresh), "normal bugs' split, {what}");
+    assert_same_list(
+        &split(again),
+        &split(fresh),
+        &format!("normal bugs' split, {what}"),
+    );
     assert_eq!(again.rays, fresh.rays, "rays, {what}");
-    assert_eq!(again.fold, fresh.fold, "fold flags, {what}");
+    assert_same_list(&again.fold, &fresh.fold, &format!("fold flags, {what}"));
     assert_eq!(again.folded_under, fresh.folded_under, "{what}");
 }
 
