@@ -15,6 +15,7 @@ use rayon::prelude::*;
 
 use super::context::Context;
 use super::fold_watch::{FoldFlags, FoldWatch};
+use super::folded_only::{FoldedOnly, filled_by_fold};
 use super::recorder::{SampleRecorder, Tally};
 use crate::compare::catalogue::{ChannelSpace, MISS, MissingNodes, Nodes, TriedNode, spot_worlds};
 use crate::scene::{Conventions, Scene};
@@ -146,6 +147,12 @@ impl Before<'_> {
     /// Whether pixel `p` is the same split now.
     fn keeps(&self, p: usize) -> bool {
         self.split.fold[p].same_under(self.split.folded_under, self.now)
+    }
+
+    /// Whether the rays are the same as before's (the same depth limit): then what the
+    /// recorder fills while shading is before's, and only the fold is worked out again.
+    fn same_rays(&self) -> bool {
+        self.split.folded_under.1 == self.now.1
     }
 }
 
@@ -301,6 +308,7 @@ fn render_row(
         fold: Vec::with_capacity(width as usize),
     };
     let mut pixel = Tally::default();
+    let fold_only = before.is_some_and(|b| b.same_rays());
     for x in 0..width {
         let p = y as usize * width as usize + x as usize;
         if let Some(before) = before.filter(|b| b.keeps(p)) {
@@ -323,9 +331,18 @@ fn render_row(
             let point = DVec2::new(f64::from(x), f64::from(y)) + sample_in_pixel(x, y, index, spp);
             let ray = camera.ray(point);
             recorder.start();
-            let mut watch = FoldWatch::new(&mut recorder, clamp);
-            let colour = tracer.trace_primary(&ray, &mut row.rays, &mut watch);
-            fold |= watch.flags;
+            let colour = if fold_only {
+                let mut folded = FoldedOnly(&mut recorder);
+                let mut watch = FoldWatch::new(&mut folded, clamp);
+                let colour = tracer.trace_primary(&ray, &mut row.rays, &mut watch);
+                fold |= watch.flags;
+                colour
+            } else {
+                let mut watch = FoldWatch::new(&mut recorder, clamp);
+                let colour = tracer.trace_primary(&ray, &mut row.rays, &mut watch);
+                fold |= watch.flags;
+                colour
+            };
             fold |= recorder.fold;
             if recorder.primary_leaf().is_some() {
                 for k in (0..ctx.spot.len()).filter(|&k| recorder.spot_may_change(k)) {
@@ -355,13 +372,33 @@ fn render_row(
         row.mixed.push(labels.iter().any(|&l| l != first));
         row.fold.push(fold);
         pixel.entries.sort_unstable_by_key(|(c, _)| *c);
-        row.counts.push(pixel.entries.len() as u32);
-        row.entries
-            .extend(pixel.entries.iter().map(|&(channel, v)| Entry {
-                channel,
-                value: (v * scale).as_vec3().to_array(),
-            }));
+        let entries = pixel.entries.iter().map(|&(channel, v)| Entry {
+            channel,
+            value: (v * scale).as_vec3().to_array(),
+        });
+        match before.filter(|_| fold_only) {
+            Some(before) => {
+                let folded: Vec<Entry> = entries.collect();
+                let all = merged(&ctx.space, before.split.pixel(p), &folded);
+                row.counts.push(all.len() as u32);
+                row.entries.extend(all);
+            }
+            None => {
+                row.counts.push(pixel.entries.len() as u32);
+                row.entries.extend(entries);
+            }
+        }
     }
     row.split = recorder.split;
     row
+}
+
+/// A pixel's entries: `shaded`'s channels filled while shading (the first split's),
+/// and `folded`'s filled by the fold (worked out again), sorted by channel.
+fn merged(space: &ChannelSpace, shaded: &[Entry], folded: &[Entry]) -> Vec<Entry> {
+    let by_fold = |e: &&Entry| filled_by_fold(space.decode(e.channel).0);
+    let mut entries: Vec<Entry> = shaded.iter().filter(|e| !by_fold(e)).copied().collect();
+    entries.extend(folded.iter().filter(by_fold).copied());
+    entries.sort_unstable_by_key(|e| e.channel);
+    entries
 }

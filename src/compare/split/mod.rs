@@ -4,6 +4,7 @@
 mod components;
 mod context;
 mod fold_watch;
+mod folded_only;
 mod recorder;
 
 pub use components::{Components, render_components};
