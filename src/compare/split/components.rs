@@ -345,14 +345,18 @@ fn render_row(
             };
             fold |= recorder.fold;
             if recorder.primary_leaf().is_some() {
-                for k in (0..ctx.spot.len()).filter(|&k| recorder.spot_may_change(k)) {
+                for k in 0..ctx.spot.len() {
                     // A world with only its spot light changed has the same rays: its
                     // mirror rays are this tree's, its colours are not watched.
-                    fold |= if ctx.spot_alike[k] {
+                    let flag = if ctx.spot_alike[k] {
                         FoldFlags::UNCLAMPED
                     } else {
                         FoldFlags::SPOT
                     };
+                    // Asked only while it would tell the pixel something new.
+                    if !fold.contains(flag) && recorder.spot_may_change(k) {
+                        fold |= flag;
+                    }
                 }
             }
             if !colour.is_finite() {

@@ -60,8 +60,14 @@ impl FoldFlags {
         self.has(Self::MIRROR) && self.has(Self::UNCLAMPED)
     }
 
+    /// Whether every flag of `flags` is set.
+    #[must_use]
+    pub fn contains(self, flags: Self) -> bool {
+        self.0 & flags.0 == flags.0
+    }
+
     fn has(self, flag: Self) -> bool {
-        self.0 & flag.0 != 0
+        self.contains(flag)
     }
 }
 
