@@ -5,9 +5,17 @@
 # planted bugs (`raylab render --bug`). Prints seconds per pair, the median and the
 # maximum, and keeps every pair's `--json` output.
 #
-#   scripts/diff_bench.sh [bench|identity] [OUT]
+#   scripts/diff_bench.sh [bench|corpus|identity] [OUT]
 #
-# `bench` (the default): the corpus-like pairs above. `identity`: the example scenes and
+# `bench` (the default): the corpus-like pairs above. `corpus`: pairs spread as the
+# public corpus's are, for its median: mostly small course scenes (scripts/bench/diff/
+# corpus/, written for the purpose: 100x100 to 1000x1000, most 640x480 or smaller, one
+# sample a pixel, one to eight objects, one or two lights besides the ambient, a mirror in
+# three of nine, a spot light and a CSG object in one each), sized and filled like the
+# students' scenes seen in public course repositories (a plane at 100x100, a mirror
+# floor at 140x140, a snowman and cut cones at 400x300, the framework's default
+# 800x600, lighting tests at 1000x1000), plus the three large scenes of `bench`, each
+# against the same three pictures. `identity`: the example scenes and
 # the comparison tests' scenes at 160x120, each against its own picture and pictures
 # with several bugs; its JSON is what proves a change of the diff's speed kept every
 # verdict (`diff -r` two OUT folders). RAYLAB names the binary (default: a fresh release
@@ -32,6 +40,13 @@ bench)
         done
     done
     ;;
+corpus)
+    for scene in scripts/bench/diff/corpus/*.txt scripts/bench/diff/*.txt; do
+        for bug in "" mirror-blend light-off@1; do
+            pairs+=("$scene|$bug")
+        done
+    done
+    ;;
 identity)
     # Every example and test scene at 160x120 (meshes beside them, as the scene names them).
     cp scenes/*.obj "$out/scenes/"
@@ -51,7 +66,7 @@ EOF
     done
     ;;
 *)
-    echo "usage: $0 [bench|identity] [OUT]" >&2
+    echo "usage: $0 [bench|corpus|identity] [OUT]" >&2
     exit 2
     ;;
 esac

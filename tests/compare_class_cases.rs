@@ -380,5 +380,8 @@ fn shadows_missing_on_an_object_that_only_shadows_itself_read_as_the_self_shadow
         Cause::ShadowTest(ShadowBug::NoSelfShadow),
         "{report}"
     );
-    assert!(first.confidence >= raylab::compare::HIGH_CONFIDENCE, "{report}");
+    assert!(
+        first.confidence >= raylab::compare::HIGH_CONFIDENCE,
+        "{report}"
+    );
 }

@@ -70,6 +70,17 @@ impl PreparedScene {
             World::with_meshes(scene, meshes).map_err(|e| CompareError::Scene(e.to_string()))?;
         let components =
             render_components(scene, &world, size, spp, progress).ok_or(CompareError::Cancelled)?;
+        Ok(Self::of_split(scene, meshes, spp, world, components))
+    }
+
+    /// `scene` (compiled as `world`) prepared around its split `components`.
+    fn of_split(
+        scene: &Scene,
+        meshes: &MeshStore,
+        spp: u32,
+        world: World,
+        components: Components,
+    ) -> Self {
         let raylab = components.image();
         let raylab_rgb = report::rgb_of(&raylab);
         let outline = components.outline();
@@ -77,7 +88,7 @@ impl PreparedScene {
             .map(|p| components.object_label(p))
             .map(|l| (l != MISS).then_some(l as usize))
             .collect();
-        Ok(Self {
+        Self {
             scene: scene.clone(),
             meshes: meshes.clone(),
             spp,
@@ -90,7 +101,7 @@ impl PreparedScene {
             spread: OnceCell::new(),
             trials: OnceCell::new(),
             adopted: Mutex::new(Vec::new()),
-        })
+        }
     }
 
     /// The scene as prepared.
@@ -147,7 +158,16 @@ impl PreparedScene {
             let mut scene = self.scene.clone();
             scene.render.conventions = conventions;
             scene.render.max_depth = max_depth;
-            PreparedScene::new(&scene, &self.meshes, self.spp, progress).map(Arc::new)
+            // The same split, folded otherwise: its pixels that fold alike are kept.
+            let world = World::with_meshes(&scene, &self.meshes)
+                .map_err(|e| CompareError::Scene(e.to_string()))?;
+            let components = self
+                .components
+                .split_again(&scene, &world, progress)
+                .ok_or(CompareError::Cancelled)?;
+            let prepared =
+                PreparedScene::of_split(&scene, &self.meshes, self.spp, world, components);
+            Ok(Arc::new(prepared))
         })?;
         Ok(Arc::clone(prepared))
     }

@@ -3,6 +3,8 @@
 
 mod components;
 mod context;
+mod fold_watch;
+mod folded_only;
 mod recorder;
 
 pub use components::{Components, render_components};

@@ -17,9 +17,10 @@
 use glam::DVec3;
 
 use super::context::Context;
+use super::fold_watch::{FoldFlags, trace_again_watched};
 use crate::compare::catalogue::{
     ClampBug, Kind, MISS, NormalBug, Part, ShadowBug, Slot, SpawnBug, SpecularBug, SpotBug,
-    cone_changes, local_terms, no_falloff_change, trace_again, trace_again_at,
+    cone_changes, local_terms, no_falloff_change, trace_again_at,
 };
 use crate::trace::shapes::Primitive;
 use crate::trace::{
@@ -104,6 +105,8 @@ pub struct SampleRecorder<'c, 'w> {
     /// The scene object the current sample's camera ray would meet were the one it hit
     /// missing ([`MISS`]: none, or that object is not tried missing).
     pub behind: u32,
+    /// What the current sample's traces again without a tree node depend on.
+    pub fold: FoldFlags,
 }
 
 impl<'c, 'w> SampleRecorder<'c, 'w> {
@@ -117,6 +120,7 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
             tally: Tally::default(),
             split: vec![[0.0; 2]; ctx.space.count()],
             behind: MISS,
+            fold: FoldFlags::default(),
         }
     }
 
@@ -126,6 +130,7 @@ impl<'c, 'w> SampleRecorder<'c, 'w> {
         self.normals.clear();
         self.tally.entries.clear();
         self.behind = MISS;
+        self.fold = FoldFlags::default();
     }
 
     /// The leaf the current sample's camera ray hit, if it hit something.
@@ -561,7 +566,7 @@ impl SampleRecorder<'_, '_> {
     /// is the same rays (the geometry is), each shaded alike, so the trace again would
     /// give this colour bit for bit. The fall-off bug's trace adds what the light gives
     /// inside its cone too: always traced.
-    fn spot_may_change(&self, k: usize) -> bool {
+    pub(super) fn spot_may_change(&self, k: usize) -> bool {
         let spot = &self.ctx.spot[k];
         if !self.ctx.spot_alike[k] || spot.bug == SpotBug::NoConeNoFalloff {
             return true;
@@ -607,7 +612,7 @@ impl SampleRecorder<'_, '_> {
                         (if s >= removed { s + 1 } else { s }) as u32
                     });
             }
-            let seen = trace_again(&tried.world, &bounce.ray);
+            let seen = trace_again_watched(&tried.world, &bounce.ray, &mut self.fold);
             if !seen.is_finite() {
                 continue;
             }
