@@ -36,6 +36,14 @@ fn at_half_size(path: &str) -> raylab::scene::Scene {
     scene
 }
 
+/// `scene` rendered by the test shader at 1 sample with `bugs`, diffed: the
+/// comparison and its report.
+fn student_diff(scene: &raylab::scene::Scene, bugs: Bugs) -> (raylab::compare::Comparison, String) {
+    let c = diff(scene, &render(scene, 1, &bugs));
+    let report = c.text_lines().join("\n");
+    (c, report)
+}
+
 /// `default.ron` rendered by the test shader at `spp` samples with its directional
 /// light left out, diffed: the comparison and its report. The diff
 /// must name the light first, as missing.
@@ -105,16 +113,13 @@ fn spots_without_cone_and_falloff_on_every_light_are_named_in_a_saturated_pictur
 #[test]
 fn an_object_that_never_shadows_itself_is_named() {
     let scene = example("csg.ron");
-    let other = render(
+    let (c, report) = student_diff(
         &scene,
-        1,
-        &Bugs {
+        Bugs {
             no_self_shadow: true,
             ..Bugs::default()
         },
     );
-    let c = diff(&scene, &other);
-    let report = c.text_lines().join("\n");
     let first = &c.explanations[0];
     assert_eq!(
         first.cause,
@@ -284,16 +289,13 @@ fn a_mirror_ray_started_on_the_wrong_side_is_named() {
     // meets that surface again from behind, so the ball and the floor reflect their own
     // unlit insides. Read as the reflection term missing before the cause was known.
     let scene = example("default.ron");
-    let other = render(
+    let (c, report) = student_diff(
         &scene,
-        1,
-        &Bugs {
+        Bugs {
             mirror_wrong_side: true,
             ..Bugs::default()
         },
     );
-    let c = diff(&scene, &other);
-    let report = c.text_lines().join("\n");
     assert_eq!(
         c.explanations[0].cause,
         Cause::Spawn(SpawnBug::MirrorWrongSide),
@@ -307,16 +309,13 @@ fn reflections_kept_as_bytes_between_rays_are_named() {
     // up to three levels where mirrors face each other. The scene clamps each ray as
     // the course does, so the clamp alone explains nothing.
     let scene = at_quarter_size("tests/compare/facing_mirrors.ron");
-    let other = render(
+    let (c, report) = student_diff(
         &scene,
-        1,
-        &Bugs {
+        Bugs {
             truncate_each_ray: true,
             ..Bugs::default()
         },
     );
-    let c = diff(&scene, &other);
-    let report = c.text_lines().join("\n");
     assert_eq!(
         c.explanations[0].cause,
         Cause::Clamp(ClampBug::TruncateEachRay),
@@ -334,16 +333,13 @@ fn a_missing_light_is_one_line_for_its_diffuse_and_its_specular() {
         .iter()
         .position(|l| matches!(l, Light::Point { .. }))
         .unwrap();
-    let other = render(
+    let (c, report) = student_diff(
         &scene,
-        1,
-        &Bugs {
+        Bugs {
             drop_light: Some(point),
             ..Bugs::default()
         },
     );
-    let c = diff(&scene, &other);
-    let report = c.text_lines().join("\n");
     let first = &c.explanations[0];
     assert_eq!(first.term, ExplainedTerm::Light, "{report}");
     assert_eq!(first.light, Some(point), "{report}");
@@ -364,16 +360,13 @@ fn shadows_missing_on_an_object_that_only_shadows_itself_read_as_the_self_shadow
     // missing" and "it never shadows itself" are one picture; a tracer that drops one
     // object's shadows is rare, one whose shadow ray skips its own object is not.
     let scene = raylab::bench::random_scene::random_scene(3, 200, 150);
-    let other = render(
+    let (c, report) = student_diff(
         &scene,
-        1,
-        &Bugs {
+        Bugs {
             no_self_shadow: true,
             ..Bugs::default()
         },
     );
-    let c = diff(&scene, &other);
-    let report = c.text_lines().join("\n");
     let first = &c.explanations[0];
     assert_eq!(
         first.cause,
