@@ -15,6 +15,7 @@ use glam::{DVec2, DVec3};
 
 use super::samples::{camera_sample, sample_point};
 use super::spawn_filter::{SpawnFilter, TraceAll};
+use super::tile_shadows::TileShadows;
 use crate::trace::cull::{Candidates, TileCull};
 use crate::trace::film::{PinholeCamera, RenderOptions, TileRect};
 use crate::trace::ray::Ray;
@@ -39,28 +40,36 @@ struct Level {
 }
 
 /// Answers the closest hit of the ray at `depth` from the batch that found it, every
-/// other ray live.
-struct KnownHit<'c> {
+/// other ray live, and the shadow rays through the batch's [`TileShadows`].
+struct KnownHit<'c, 's> {
     depth: u32,
     ray: Ray,
     hit: Option<SurfacePoint>,
     live: LiveRays<'c>,
+    shadows: &'s mut TileShadows<'c>,
 }
 
-impl<'c> KnownHit<'c> {
+impl<'c, 's> KnownHit<'c, 's> {
     /// `hit` for `ray` at `depth`; the rest asked of the world among `among`, the tile's
     /// culled sets (as [`LiveRays`] would for any of its pixels).
-    fn new(depth: u32, ray: Ray, hit: Option<SurfacePoint>, among: Candidates<'c>) -> Self {
+    fn new(
+        depth: u32,
+        ray: Ray,
+        hit: Option<SurfacePoint>,
+        among: Candidates<'c>,
+        shadows: &'s mut TileShadows<'c>,
+    ) -> Self {
         Self {
             depth,
             ray,
             hit,
             live: LiveRays::among(among),
+            shadows,
         }
     }
 }
 
-impl RaySource for KnownHit<'_> {
+impl RaySource for KnownHit<'_, '_> {
     #[inline]
     fn closest_hit(&mut self, world: &World, at: RayAt, ray: &Ray) -> Option<SurfacePoint> {
         if at.depth == self.depth {
@@ -71,9 +80,9 @@ impl RaySource for KnownHit<'_> {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn occluder(&mut self, world: &World, to: ShadowRequest, ray: impl MakeRay) -> Option<usize> {
-        self.live.occluder(world, to, ray)
+        self.shadows.occluder(world, to, ray)
     }
 }
 
@@ -166,6 +175,7 @@ impl<'w> TilePass<'w> {
         let mut parents: Vec<(usize, Branch)> = Vec::new();
         let mut rays = rays;
         let mut depth = 0;
+        let mut shadows = TileShadows::new(among, world.lights.len());
         while !rays.is_empty() {
             // As `LiveRays`: camera rays test the tile's culled set, the others all.
             let (terms, objects) = if depth == 0 {
@@ -178,7 +188,7 @@ impl<'w> TilePass<'w> {
             let (mut next_parents, mut next_rays) = (Vec::new(), Vec::new());
             let mut left_out = Vec::new();
             for (slot, (ray, hit)) in rays.iter().zip(hits).enumerate() {
-                let mut source = KnownHit::new(depth, *ray, hit, among);
+                let mut source = KnownHit::new(depth, *ray, hit, among, &mut shadows);
                 // No recorder and no cache here: only the depth is needed, not the
                 // ray's place in its tree.
                 let at = RayAt {
@@ -270,13 +280,15 @@ impl<'w> TilePass<'w> {
         among: Candidates,
         counts: &mut RayCounts,
     ) -> Vec<DVec3> {
-        let hits = self.tracer.world().intersect_batch(&rays, among.camera);
+        let world = self.tracer.world();
+        let hits = world.intersect_batch(&rays, among.camera);
+        let mut shadows = TileShadows::new(among, world.lights.len());
         points
             .iter()
             .zip(rays)
             .zip(hits)
             .map(|((&point, ray), hit)| {
-                let mut source = KnownHit::new(0, ray, hit, among);
+                let mut source = KnownHit::new(0, ray, hit, among, &mut shadows);
                 camera_sample(&self.tracer, &self.camera, point, &mut source, counts)
             })
             .collect()
