@@ -40,36 +40,37 @@ struct Level {
 }
 
 /// Answers the closest hit of the ray at `depth` from the batch that found it, every
-/// other ray live, and the shadow rays through the batch's [`TileShadows`].
-struct KnownHit<'c, 's> {
+/// other ray live, and the shadow rays through the batch's [`TileShadows`]. One per
+/// batch, told each ray in turn ([`Self::answer`]).
+struct KnownHit<'c> {
     depth: u32,
     ray: Ray,
     hit: Option<SurfacePoint>,
     live: LiveRays<'c>,
-    shadows: &'s mut TileShadows<'c>,
+    shadows: TileShadows<'c>,
 }
 
-impl<'c, 's> KnownHit<'c, 's> {
-    /// `hit` for `ray` at `depth`; the rest asked of the world among `among`, the tile's
-    /// culled sets (as [`LiveRays`] would for any of its pixels).
-    fn new(
-        depth: u32,
-        ray: Ray,
-        hit: Option<SurfacePoint>,
-        among: Candidates<'c>,
-        shadows: &'s mut TileShadows<'c>,
-    ) -> Self {
+impl<'c> KnownHit<'c> {
+    /// A batch's source, the rays asked of the world among `among`, the tile's culled
+    /// sets (as [`LiveRays`] would for any of its pixels), in a world of `lights` lights.
+    fn new(among: Candidates<'c>, lights: usize) -> Self {
         Self {
-            depth,
-            ray,
-            hit,
+            depth: 0,
+            ray: Ray::new(glam::DVec3::ZERO, glam::DVec3::ZERO),
+            hit: None,
             live: LiveRays::among(among),
-            shadows,
+            shadows: TileShadows::new(among, lights),
         }
+    }
+
+    /// From now on `hit` is the answer for `ray` at `depth`.
+    fn answer(&mut self, depth: u32, ray: Ray, hit: Option<SurfacePoint>) -> &mut Self {
+        (self.depth, self.ray, self.hit) = (depth, ray, hit);
+        self
     }
 }
 
-impl RaySource for KnownHit<'_, '_> {
+impl RaySource for KnownHit<'_> {
     #[inline]
     fn closest_hit(&mut self, world: &World, at: RayAt, ray: &Ray) -> Option<SurfacePoint> {
         if at.depth == self.depth {
@@ -80,7 +81,7 @@ impl RaySource for KnownHit<'_, '_> {
         }
     }
 
-    #[inline(always)]
+    #[inline]
     fn occluder(&mut self, world: &World, to: ShadowRequest, ray: impl MakeRay) -> Option<usize> {
         self.shadows.occluder(world, to, ray)
     }
@@ -175,7 +176,7 @@ impl<'w> TilePass<'w> {
         let mut parents: Vec<(usize, Branch)> = Vec::new();
         let mut rays = rays;
         let mut depth = 0;
-        let mut shadows = TileShadows::new(among, world.lights.len());
+        let mut source = KnownHit::new(among, world.lights.len());
         while !rays.is_empty() {
             // As `LiveRays`: camera rays test the tile's culled set, the others all.
             let (terms, objects) = if depth == 0 {
@@ -188,7 +189,7 @@ impl<'w> TilePass<'w> {
             let (mut next_parents, mut next_rays) = (Vec::new(), Vec::new());
             let mut left_out = Vec::new();
             for (slot, (ray, hit)) in rays.iter().zip(hits).enumerate() {
-                let mut source = KnownHit::new(depth, *ray, hit, among, &mut shadows);
+                let source = source.answer(depth, *ray, hit);
                 // No recorder and no cache here: only the depth is needed, not the
                 // ray's place in its tree.
                 let at = RayAt {
@@ -198,7 +199,7 @@ impl<'w> TilePass<'w> {
                 };
                 let (bounce, spawned) =
                     self.tracer
-                        .shade(ray, at, terms, &mut source, counts, &mut NoRecorder);
+                        .shade(ray, at, terms, source, counts, &mut NoRecorder);
                 // `shade` counted the rays it started; one left out is never cast.
                 if let Some(mirror) = spawned.mirror {
                     if filter.keep(slot, depth + 1, bounce.km) {
@@ -282,14 +283,14 @@ impl<'w> TilePass<'w> {
     ) -> Vec<DVec3> {
         let world = self.tracer.world();
         let hits = world.intersect_batch(&rays, among.camera);
-        let mut shadows = TileShadows::new(among, world.lights.len());
+        let mut source = KnownHit::new(among, world.lights.len());
         points
             .iter()
             .zip(rays)
             .zip(hits)
             .map(|((&point, ray), hit)| {
-                let mut source = KnownHit::new(0, ray, hit, among, &mut shadows);
-                camera_sample(&self.tracer, &self.camera, point, &mut source, counts)
+                let source = source.answer(0, ray, hit);
+                camera_sample(&self.tracer, &self.camera, point, source, counts)
             })
             .collect()
     }

@@ -64,10 +64,8 @@ impl Tracer<'_> {
 
     /// How much of light `to.index` (whose centre `sample` describes) `hit` sees: one
     /// shadow ray to a point light, `samples` stratified ones to a sphere light, each
-    /// shown to `recorder` as it is cast (with the scene's index of the light). Always
-    /// inlined: the tile pass's copy otherwise stayed out of line (196,841 calls on
-    /// csg.ron at 400x300, 25 M instructions of passing its arguments).
-    #[inline(always)]
+    /// shown to `recorder` as it is cast (with the scene's index of the light).
+    #[inline]
     pub(super) fn visibility<R: Recorder>(
         &self,
         hit: &SurfacePoint,
