@@ -14,8 +14,8 @@ use crate::trace::world::{ObjectSet, World};
 /// One tile batch's shadow queries, with the last blocker of each light's rays.
 pub(super) struct TileShadows<'c> {
     among: Candidates<'c>,
-    /// Per light (an index into [`World::lights`]): the object that last blocked a
-    /// shadow ray to it.
+    /// Per light (an index into [`World::lights`]): the object that blocked the last
+    /// shadow ray to it, `None` if that ray was clear.
     last_blocker: Vec<Option<usize>>,
 }
 

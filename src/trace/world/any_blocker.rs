@@ -1,8 +1,8 @@
 //! Occlusion queries that need only whether a shadow ray is blocked, not by what: the
 //! tile pass's, whose shading never names the blocker (no recorder there). They stop at
 //! the first blocker met instead of proving it the first in scene order, which spares a
-//! blocked ray the walk through every earlier object's subtree (a shadow ray through the
-//! glass ball of glass.ron went on through the checker's 64 tiles). Blocked or not is
+//! blocked ray the walk through every earlier object's subtree it crosses (in glass.ron
+//! the glass ball is object 64, after the checker's tiles). Blocked or not is
 //! [`World::occluder_except_among`]'s answer whenever that is so: both test the same
 //! candidates with the same `blocks`, and the walks' box tests only skip objects whose
 //! boxes the ray misses.
