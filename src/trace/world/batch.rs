@@ -2,8 +2,9 @@
 //! camera rays, or its mirror rays of one depth, do: the objects outer and the rays
 //! inner, so that each object's data and test are set up once per batch instead of once
 //! per ray. Per ray it is the flat list's query (the objects in scene order, each tested
-//! only up to the nearest hit so far), so every answer is [`World::intersect_among`]'s
-//! bit for bit.
+//! only up to the nearest hit so far), and in a world larger than culling covers then
+//! the tree over the rest, ray by ray, from the list's nearest hit, so every answer is
+//! [`World::intersect_among`]'s bit for bit.
 
 use glam::DVec3;
 
@@ -13,10 +14,11 @@ use super::object_set::ObjectSet;
 use crate::trace::ray::Ray;
 
 impl World {
-    /// Whether [`World::intersect_among`] answers a query on `among` from the flat list,
-    /// and so whether [`World::intersect_batch`] can turn its loops around.
+    /// Whether [`World::intersect_among`] answers a query on `among` from the flat list
+    /// (then, in a world larger than culling covers, the tree over the rest), and so
+    /// whether [`World::intersect_batch`] can turn its loops around.
     fn lists(&self, among: ObjectSet) -> bool {
-        self.tail_bvh.is_none() && (self.bvh.is_none() || among != ObjectSet::ALL)
+        self.bvh.is_none() || among != ObjectSet::ALL
     }
 
     /// For each ray of `rays`, its closest hit among the objects of `among` with `t` in
@@ -32,7 +34,11 @@ impl World {
         let inv_dirs: Vec<DVec3> = rays.iter().map(|ray| ray.dir.recip()).collect();
         let mut t_limits = vec![f64::INFINITY; rays.len()];
         let mut closest: Vec<Option<(usize, ObjectHit)>> = vec![None; rays.len()];
-        for index in among.members_below(self.objects.len()) {
+        // As `intersect_among`: with a tree over the uncovered objects, the list holds
+        // only the covered ones.
+        let tail = self.bvh.as_ref().and(self.tail_bvh.as_ref());
+        let listed = tail.map_or(self.objects.len(), |_| ObjectSet::CULLED_BELOW);
+        for index in among.members_below(listed) {
             let object = &self.objects[index];
             let per_ray = rays
                 .iter()
@@ -44,6 +50,12 @@ impl World {
                     *t_limit = hit.hit.t;
                     *closest = Some((index, hit));
                 }
+            }
+        }
+        if let Some(tail) = tail {
+            let per_ray = rays.iter().zip(&inv_dirs).zip(&t_limits).zip(&mut closest);
+            for (((ray, &inv_dir), &t_limit), closest) in per_ray {
+                *closest = self.closest_in_tail(tail, ray, inv_dir, t_limit, among, *closest);
             }
         }
         closest
@@ -94,6 +106,56 @@ mod tests {
                 for (ray, answer) in rays.iter().zip(&batch) {
                     assert_eq!(*answer, world.intersect_among(ray, f64::INFINITY, among));
                 }
+            }
+        }
+    }
+
+    /// glass.ron has more objects than culling covers (64 tiles, then the glass in a
+    /// tree of its own): rays down from the camera, and up through the floor into the
+    /// glass, answer in a batch as alone, the glass's hits and the tiles' both.
+    #[test]
+    fn a_batch_answers_as_each_ray_alone_beyond_the_objects_culling_covers() {
+        let text = crate::scene::examples::EXAMPLE_SCENES
+            .iter()
+            .find(|(name, _)| name.contains("glass"))
+            .expect("glass.ron is an example")
+            .1;
+        let world = World::new(&crate::scene::parse_scene(text).unwrap()).unwrap();
+        assert!(world.tail_bvh.is_some(), "glass.ron has a tail");
+        let mut rays = Vec::new();
+        for i in 0..30 {
+            for j in 0..30 {
+                let x = -4.0 + 8.0 * f64::from(i) / 29.0;
+                let z = -4.0 + 8.0 * f64::from(j) / 29.0;
+                let target = DVec3::new(x, 0.6, z);
+                rays.push(Ray::new(
+                    world.camera.position,
+                    target - world.camera.position,
+                ));
+                // From under the floor: a tile first, then perhaps the glass beyond it.
+                let below = DVec3::new(x + 0.3, -2.0, z + 0.2);
+                rays.push(Ray::new(below, target - below));
+            }
+        }
+        let mut every_third = ObjectSet::none();
+        for i in (0..64).step_by(3) {
+            every_third.insert(i);
+        }
+        for among in [ObjectSet::ALL, every_third, ObjectSet::none()] {
+            let batch = world.intersect_batch(&rays, among);
+            let hit = |glass: bool| {
+                batch
+                    .iter()
+                    .flatten()
+                    .filter(|hit| (hit.object >= ObjectSet::CULLED_BELOW) == glass)
+                    .count()
+            };
+            assert!(hit(true) > 50, "{among:?}: {} glass hits", hit(true));
+            if among != ObjectSet::none() {
+                assert!(hit(false) > 50, "{among:?}: {} tile hits", hit(false));
+            }
+            for (ray, answer) in rays.iter().zip(&batch) {
+                assert_eq!(*answer, world.intersect_among(ray, f64::INFINITY, among));
             }
         }
     }
