@@ -8,7 +8,7 @@
 
 use glam::DVec3;
 
-use super::compiled::{SurfacePoint, World};
+use super::compiled::{BVH_MIN_OBJECTS, SurfacePoint, World};
 use super::object::ObjectHit;
 use super::object_set::ObjectSet;
 use crate::trace::ray::Ray;
@@ -35,8 +35,12 @@ impl World {
         let mut t_limits = vec![f64::INFINITY; rays.len()];
         let mut closest: Vec<Option<(usize, ObjectHit)>> = vec![None; rays.len()];
         // As `intersect_among`: with a tree over the uncovered objects, the list holds
-        // only the covered ones.
-        let tail = self.bvh.as_ref().and(self.tail_bvh.as_ref());
+        // only the covered ones; unless they are too few for a tree to pay, when the list
+        // holds them too (the tree's answer is the list's).
+        let uncovered = self.objects.len().saturating_sub(ObjectSet::CULLED_BELOW);
+        let tail = (uncovered >= BVH_MIN_OBJECTS)
+            .then(|| self.bvh.as_ref().and(self.tail_bvh.as_ref()))
+            .flatten();
         let listed = tail.map_or(self.objects.len(), |_| ObjectSet::CULLED_BELOW);
         for index in among.members_below(listed) {
             let object = &self.objects[index];
@@ -110,18 +114,40 @@ mod tests {
         }
     }
 
-    /// glass.ron has more objects than culling covers (64 tiles, then the glass in a
-    /// tree of its own): rays down from the camera, and up through the floor into the
-    /// glass, answer in a batch as alone, the glass's hits and the tiles' both.
-    #[test]
-    fn a_batch_answers_as_each_ray_alone_beyond_the_objects_culling_covers() {
+    /// glass.ron, with `beads` small balls over its floor after its own objects.
+    fn glass_world(beads: usize) -> World {
         let text = crate::scene::examples::EXAMPLE_SCENES
             .iter()
             .find(|(name, _)| name.contains("glass"))
             .expect("glass.ron is an example")
             .1;
-        let world = World::new(&crate::scene::parse_scene(text).unwrap()).unwrap();
-        assert!(world.tail_bvh.is_some(), "glass.ron has a tail");
+        let end = text.rfind("    ],").expect("the objects' list ends");
+        let beads: String = (0..beads)
+            .map(|i| {
+                let (x, z) = (-3.5 + 0.35 * i as f64, -2.0 + 0.2 * i as f64);
+                format!(
+                    "(name: \"bead {i}\", shape: Sphere, transform: (translate: ({x}, 0.3, {z}), \
+                     scale: (0.2, 0.2, 0.2)), material: \"red\"),\n"
+                )
+            })
+            .collect();
+        let text = format!("{}{beads}{}", &text[..end], &text[end..]);
+        World::new(&crate::scene::parse_scene(&text).unwrap()).unwrap()
+    }
+
+    /// glass.ron has more objects than culling covers (64 tiles, then the glass, too
+    /// few for a tree to pay, listed too); with 20 beads more, the rest have a tree.
+    /// Rays down from the camera, and up through the floor into the glass, answer in a
+    /// batch as alone, the tail's hits and the tiles' both.
+    #[test]
+    fn a_batch_answers_as_each_ray_alone_beyond_the_objects_culling_covers() {
+        for world in [glass_world(0), glass_world(20)] {
+            assert!(world.tail_bvh.is_some(), "a tail");
+            a_batch_answers_as_each_ray_alone_in(&world);
+        }
+    }
+
+    fn a_batch_answers_as_each_ray_alone_in(world: &World) {
         let mut rays = Vec::new();
         for i in 0..30 {
             for j in 0..30 {
