@@ -12,6 +12,7 @@ mod samples;
 mod spawn_filter;
 mod tile_pass;
 mod tile_placement;
+mod tile_shadows;
 mod tiles;
 mod variants;
 

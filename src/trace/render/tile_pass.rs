@@ -15,6 +15,7 @@ use glam::{DVec2, DVec3};
 
 use super::samples::{camera_sample, sample_point};
 use super::spawn_filter::{SpawnFilter, TraceAll};
+use super::tile_shadows::TileShadows;
 use crate::trace::cull::{Candidates, TileCull};
 use crate::trace::film::{PinholeCamera, RenderOptions, TileRect};
 use crate::trace::ray::Ray;
@@ -39,24 +40,33 @@ struct Level {
 }
 
 /// Answers the closest hit of the ray at `depth` from the batch that found it, every
-/// other ray live.
+/// other ray live, and the shadow rays through the batch's [`TileShadows`]. One per
+/// batch, told each ray in turn ([`Self::answer`]).
 struct KnownHit<'c> {
     depth: u32,
     ray: Ray,
     hit: Option<SurfacePoint>,
     live: LiveRays<'c>,
+    shadows: TileShadows<'c>,
 }
 
 impl<'c> KnownHit<'c> {
-    /// `hit` for `ray` at `depth`; the rest asked of the world among `among`, the tile's
-    /// culled sets (as [`LiveRays`] would for any of its pixels).
-    fn new(depth: u32, ray: Ray, hit: Option<SurfacePoint>, among: Candidates<'c>) -> Self {
+    /// A batch's source, the rays asked of the world among `among`, the tile's culled
+    /// sets (as [`LiveRays`] would for any of its pixels), in a world of `lights` lights.
+    fn new(among: Candidates<'c>, lights: usize) -> Self {
         Self {
-            depth,
-            ray,
-            hit,
+            depth: 0,
+            ray: Ray::new(glam::DVec3::ZERO, glam::DVec3::ZERO),
+            hit: None,
             live: LiveRays::among(among),
+            shadows: TileShadows::new(among, lights),
         }
+    }
+
+    /// From now on `hit` is the answer for `ray` at `depth`.
+    fn answer(&mut self, depth: u32, ray: Ray, hit: Option<SurfacePoint>) -> &mut Self {
+        (self.depth, self.ray, self.hit) = (depth, ray, hit);
+        self
     }
 }
 
@@ -73,7 +83,7 @@ impl RaySource for KnownHit<'_> {
 
     #[inline]
     fn occluder(&mut self, world: &World, to: ShadowRequest, ray: impl MakeRay) -> Option<usize> {
-        self.live.occluder(world, to, ray)
+        self.shadows.occluder(world, to, ray)
     }
 }
 
@@ -166,6 +176,7 @@ impl<'w> TilePass<'w> {
         let mut parents: Vec<(usize, Branch)> = Vec::new();
         let mut rays = rays;
         let mut depth = 0;
+        let mut source = KnownHit::new(among, world.lights.len());
         while !rays.is_empty() {
             // As `LiveRays`: camera rays test the tile's culled set, the others all.
             let (terms, objects) = if depth == 0 {
@@ -178,7 +189,7 @@ impl<'w> TilePass<'w> {
             let (mut next_parents, mut next_rays) = (Vec::new(), Vec::new());
             let mut left_out = Vec::new();
             for (slot, (ray, hit)) in rays.iter().zip(hits).enumerate() {
-                let mut source = KnownHit::new(depth, *ray, hit, among);
+                let source = source.answer(depth, *ray, hit);
                 // No recorder and no cache here: only the depth is needed, not the
                 // ray's place in its tree.
                 let at = RayAt {
@@ -188,7 +199,7 @@ impl<'w> TilePass<'w> {
                 };
                 let (bounce, spawned) =
                     self.tracer
-                        .shade(ray, at, terms, &mut source, counts, &mut NoRecorder);
+                        .shade(ray, at, terms, source, counts, &mut NoRecorder);
                 // `shade` counted the rays it started; one left out is never cast.
                 if let Some(mirror) = spawned.mirror {
                     if filter.keep(slot, depth + 1, bounce.km) {
@@ -270,14 +281,16 @@ impl<'w> TilePass<'w> {
         among: Candidates,
         counts: &mut RayCounts,
     ) -> Vec<DVec3> {
-        let hits = self.tracer.world().intersect_batch(&rays, among.camera);
+        let world = self.tracer.world();
+        let hits = world.intersect_batch(&rays, among.camera);
+        let mut source = KnownHit::new(among, world.lights.len());
         points
             .iter()
             .zip(rays)
             .zip(hits)
             .map(|((&point, ray), hit)| {
-                let mut source = KnownHit::new(0, ray, hit, among);
-                camera_sample(&self.tracer, &self.camera, point, &mut source, counts)
+                let source = source.answer(0, ray, hit);
+                camera_sample(&self.tracer, &self.camera, point, source, counts)
             })
             .collect()
     }

@@ -167,6 +167,40 @@ impl Bvh {
         (found != u32::MAX).then_some(found as usize)
     }
 
+    /// An object that `blocks` the ray, the first the walk meets (nearer subtrees
+    /// first) among those whose boxes the ray meets before `t_max`: `Some` exactly where
+    /// [`Self::first_blocker`] is, without proving that no earlier object blocks.
+    #[inline]
+    pub fn any_blocker(
+        &self,
+        ray: &Ray,
+        inv_dir: DVec3,
+        t_max: f64,
+        mut blocks: impl FnMut(usize) -> bool,
+    ) -> Option<usize> {
+        let mut stack = [0u32; 64];
+        let mut depth = usize::from(!self.nodes.is_empty());
+        while depth > 0 {
+            depth -= 1;
+            let node = self.nodes[stack[depth] as usize];
+            if !node.bounds.hit_by(ray, inv_dir, t_max) {
+                continue;
+            }
+            if node.count > 0 {
+                let leaf = &self.order[node.first as usize..(node.first + node.count) as usize];
+                if let Some(&object) = leaf.iter().find(|&&object| blocks(object as usize)) {
+                    return Some(object as usize);
+                }
+            } else if depth + 2 <= stack.len() {
+                let (near, far) = Self::children_near_first(&node, ray);
+                stack[depth] = far;
+                stack[depth + 1] = near;
+                depth += 2;
+            }
+        }
+        None
+    }
+
     /// An inner node's children, the one on the side the ray comes from along the split
     /// axis first.
     #[inline]

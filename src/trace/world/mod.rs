@@ -1,6 +1,7 @@
 //! The compiled scene: objects placed and bounded, the hierarchies over them, lights in
 //! unit form, what isolation left out, and the one place secondary rays are spawned.
 
+mod any_blocker;
 mod batch;
 mod bvh;
 mod bvh_split;

@@ -28,6 +28,22 @@ impl World {
         let listed = self.closest_in_list(ray, inv_dir, t_max, among, offset);
         let tail = self.tail_bvh.as_ref()?;
         let t_limit = listed.map_or(t_max, |(_, hit)| hit.hit.t);
+        self.closest_in_tail(tail, ray, inv_dir, t_limit, among, listed)
+    }
+
+    /// The closest hit among the objects of `among` in `tail`, the tree over the objects
+    /// culling does not cover, nearer than `listed` (the covered candidates' closest, at
+    /// `t_limit`), else `listed`. Out of line so that a batch's loops stay compact.
+    #[inline(never)]
+    pub(crate) fn closest_in_tail(
+        &self,
+        tail: &Bvh,
+        ray: &Ray,
+        inv_dir: DVec3,
+        t_limit: f64,
+        among: ObjectSet,
+        listed: Option<(usize, ObjectHit)>,
+    ) -> Option<(usize, ObjectHit)> {
         self.closest_in_tree::<{ ObjectSet::CULLED_BELOW }>(
             tail, ray, inv_dir, t_limit, among, listed,
         )
