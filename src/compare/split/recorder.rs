@@ -536,6 +536,9 @@ impl Recorder for SampleRecorder<'_, '_> {
     }
 }
 
+/// How many mirror bounces the wrong-side ray's tree is traced to at most.
+const WRONG_SIDE_BOUNCES: u32 = 3;
+
 impl SampleRecorder<'_, '_> {
     /// The change of the pixel were the mirror ray of ray `node` (which brought back
     /// `reflected`, weighted `km`) started on the wrong side of the surface: traced
@@ -552,7 +555,12 @@ impl SampleRecorder<'_, '_> {
         }
         let bug = SpawnBug::MirrorWrongSide;
         let ray = bug.ray(&hit, self.chain[child].ray.dir);
-        let seen = trace_again_at(self.ctx.world, &ray, bounce.depth + 1);
+        // At most a few bounces below it: inside a closed mirror the ray would bounce to
+        // `max_depth` (100 in some course scenes) for terms each a mirror's colour
+        // fainter, and the bug's own tree is not raylab's below its first ray anyway.
+        let world = self.ctx.world;
+        let depth = (bounce.depth + 1).max(world.max_depth.saturating_sub(WRONG_SIDE_BOUNCES));
+        let seen = trace_again_at(world, &ray, depth);
         if seen.is_finite() {
             let channel = self.channel(Kind::Spawn(bug), leaf);
             self.tally
