@@ -7,8 +7,6 @@
 //! candidates with the same `blocks`, and the walks' box tests only skip objects whose
 //! boxes the ray misses.
 
-use glam::DVec3;
-
 use super::compiled::World;
 use super::object_set::ObjectSet;
 use crate::trace::ray::Ray;
@@ -36,17 +34,7 @@ impl World {
         {
             return Some(first);
         }
-        match &self.bvh {
-            Some(bvh) if among == ObjectSet::ALL => bvh.any_blocker(ray, inv_dir, t_max, |i| {
-                Some(i) != except && self.objects[i].blocks(ray, inv_dir, t_max)
-            }),
-            Some(_) if self.tail_bvh.is_some() => {
-                let listed = ObjectSet::CULLED_BELOW;
-                self.first_blocker_in_list(ray, inv_dir, t_max, except, among, listed)
-                    .or_else(|| self.any_in_tail(ray, inv_dir, t_max, except, among))
-            }
-            _ => self.first_blocker_in_list(ray, inv_dir, t_max, except, among, self.objects.len()),
-        }
+        self.occluder_in::<true>(ray, inv_dir, t_max, except, among)
     }
 
     /// Whether object `index` blocks the ray before `t_max`: the test the queries above
@@ -55,27 +43,6 @@ impl World {
     #[inline]
     pub fn object_blocks(&self, index: usize, ray: &Ray, t_max: f64) -> bool {
         self.objects[index].blocks(ray, ray.dir.recip(), t_max)
-    }
-
-    /// A blocker among the objects from [`ObjectSet::CULLED_BELOW`] on, in their tree.
-    #[inline(never)]
-    fn any_in_tail(
-        &self,
-        ray: &Ray,
-        inv_dir: DVec3,
-        t_max: f64,
-        except: Option<usize>,
-        among: ObjectSet,
-    ) -> Option<usize> {
-        let offset = ObjectSet::CULLED_BELOW;
-        let tail = self.tail_bvh.as_ref()?;
-        tail.any_blocker(ray, inv_dir, t_max, |i| {
-            let index = i + offset;
-            Some(index) != except
-                && among.contains(index)
-                && self.objects[index].blocks(ray, inv_dir, t_max)
-        })
-        .map(|i| i + offset)
     }
 }
 

@@ -178,27 +178,18 @@ impl Bvh {
         t_max: f64,
         mut blocks: impl FnMut(usize) -> bool,
     ) -> Option<usize> {
-        let mut stack = [0u32; 64];
-        let mut depth = usize::from(!self.nodes.is_empty());
-        while depth > 0 {
-            depth -= 1;
-            let node = self.nodes[stack[depth] as usize];
-            if !node.bounds.hit_by(ray, inv_dir, t_max) {
-                continue;
+        let mut found = None;
+        // The occlusion walk of `traverse`: the limit never shrinks, the first blocker
+        // stops it.
+        self.traverse(ray, inv_dir, t_max, |object, _| {
+            if blocks(object) {
+                found = Some(object);
+                Err(())
+            } else {
+                Ok(None)
             }
-            if node.count > 0 {
-                let leaf = &self.order[node.first as usize..(node.first + node.count) as usize];
-                if let Some(&object) = leaf.iter().find(|&&object| blocks(object as usize)) {
-                    return Some(object as usize);
-                }
-            } else if depth + 2 <= stack.len() {
-                let (near, far) = Self::children_near_first(&node, ray);
-                stack[depth] = far;
-                stack[depth + 1] = near;
-                depth += 2;
-            }
-        }
-        None
+        });
+        found
     }
 
     /// An inner node's children, the one on the side the ray comes from along the split

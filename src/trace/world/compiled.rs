@@ -283,18 +283,38 @@ impl World {
         except: Option<usize>,
         among: ObjectSet,
     ) -> Option<usize> {
-        let inv_dir = ray.dir.recip();
+        self.occluder_in::<false>(ray, ray.dir.recip(), t_max, except, among)
+    }
+
+    /// The occlusion query of [`World::occluder_except_among`] (`ANY` false: the first
+    /// blocker in scene order) and of [`World::any_occluder_among`] (`ANY` true: the
+    /// first the trees' walks meet, blocked or not the same answer). One body, each
+    /// query its own inlined copy.
+    #[inline(always)]
+    pub(crate) fn occluder_in<const ANY: bool>(
+        &self,
+        ray: &Ray,
+        inv_dir: DVec3,
+        t_max: f64,
+        except: Option<usize>,
+        among: ObjectSet,
+    ) -> Option<usize> {
         // As for the closest hit: a culled query tests its candidates in the list.
         match &self.bvh {
-            Some(bvh) if among == ObjectSet::ALL => bvh.first_blocker(ray, inv_dir, t_max, |i| {
-                Some(i) != except && self.objects[i].blocks(ray, inv_dir, t_max)
-            }),
+            Some(bvh) if among == ObjectSet::ALL => {
+                let blocks = |i| Some(i) != except && self.objects[i].blocks(ray, inv_dir, t_max);
+                if ANY {
+                    bvh.any_blocker(ray, inv_dir, t_max, blocks)
+                } else {
+                    bvh.first_blocker(ray, inv_dir, t_max, blocks)
+                }
+            }
             // The covered candidates in the list, then the tree over the rest.
             Some(_) if self.tail_bvh.is_some() => {
                 let listed = ObjectSet::CULLED_BELOW;
                 self.first_blocker_in_list(ray, inv_dir, t_max, except, among, listed)
                     .or_else(|| {
-                        self.blocker_in_tail(ray, inv_dir, t_max, |index| {
+                        self.blocker_in_tail::<ANY>(ray, inv_dir, t_max, |index| {
                             Some(index) != except && among.contains(index)
                         })
                     })

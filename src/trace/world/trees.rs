@@ -53,7 +53,7 @@ impl World {
     /// covered candidates in the list blocks: the first blocker in the tree over the
     /// rest among the objects `candidate` admits.
     #[inline(never)]
-    pub(crate) fn blocker_in_tail(
+    pub(crate) fn blocker_in_tail<const ANY: bool>(
         &self,
         ray: &Ray,
         inv_dir: DVec3,
@@ -61,13 +61,16 @@ impl World {
         candidate: impl Fn(usize) -> bool,
     ) -> Option<usize> {
         let offset = ObjectSet::CULLED_BELOW;
-        let local = self
-            .tail_bvh
-            .as_ref()?
-            .first_blocker(ray, inv_dir, t_max, |i| {
-                let index = i + offset;
-                candidate(index) && self.objects[index].blocks(ray, inv_dir, t_max)
-            });
+        let tail = self.tail_bvh.as_ref()?;
+        let blocks = |i| {
+            let index = i + offset;
+            candidate(index) && self.objects[index].blocks(ray, inv_dir, t_max)
+        };
+        let local = if ANY {
+            tail.any_blocker(ray, inv_dir, t_max, blocks)
+        } else {
+            tail.first_blocker(ray, inv_dir, t_max, blocks)
+        };
         local.map(|i| i + offset)
     }
 
