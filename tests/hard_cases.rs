@@ -158,6 +158,31 @@ fn ray_tangent_to_a_sphere_touches_it_at_the_tangent_point() {
     assert!(world.intersect(&miss, f64::INFINITY).is_none());
 }
 
+/// A group's non-uniform scale over a rotated sphere shears it: the ellipsoid is 2 long
+/// on x, though each axis of its matrix is about 1.58 long. Its bounding sphere must
+/// hold the whole of it (a radius of the longest axis cut its ends off).
+#[test]
+fn a_sphere_sheared_by_its_groups_scale_is_hit_at_its_far_ends() {
+    let scene = raylab::scene::parse_scene(
+        r#"Scene(format: 1,
+        camera: (position: (0.0, 0.0, 6.0), look_at: (0.0, 0.0, 0.0), up: (0.0, 1.0, 0.0), fov_deg: 45.0, width: 8, height: 8),
+        materials: {"m": ()},
+        objects: [(name: "g", shape: Group(children: [
+            (name: "ball", shape: Sphere, transform: (rotate_deg: (0.0, 0.0, 45.0)), material: "m"),
+        ]), transform: (scale: (2.0, 1.0, 1.0)))])"#,
+    )
+    .unwrap();
+    let world = World::new(&scene).unwrap();
+    for x in [1.9, -1.9, 1.999] {
+        // The ellipsoid's surface above (x, 0): z = sqrt(1 - (x/2)^2).
+        let z = (1.0 - (x / 2.0f64).powi(2)).sqrt();
+        let ray = Ray::new(DVec3::new(x, 0.0, 6.0), DVec3::NEG_Z);
+        let hit = world.intersect(&ray, f64::INFINITY);
+        let hit = hit.unwrap_or_else(|| panic!("the ray at x = {x} misses"));
+        assert_close(hit.p.z, z, 1e-9);
+    }
+}
+
 #[test]
 fn ray_exactly_through_a_cap_rim_hits_at_the_rim() {
     let base = DVec3::new(0.0, 1.0, 0.0);

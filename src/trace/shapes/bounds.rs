@@ -74,17 +74,22 @@ pub struct BoundingSphere {
 }
 
 impl BoundingSphere {
-    /// The sphere around the unit sphere placed by `world_from_object`: radius the longest
-    /// axis (exact for a uniform scale), padded by a relative 1e-9.
+    /// The sphere around the unit sphere placed by `world_from_object`, padded by a
+    /// relative 1e-9. Its radius bounds the linear part's largest stretch: the square
+    /// root of Gershgorin's bound on the largest eigenvalue of `M^T M`, the largest row
+    /// sum of its absolute values. That is the longest axis when the axes are
+    /// perpendicular (a rotation of a scale), and still a bound when a group's scale
+    /// shears its rotated children, where the longest axis is not.
     #[must_use]
     pub fn around_unit_sphere(world_from_object: &DAffine3) -> Self {
         let m = world_from_object.matrix3;
-        let radius = m
-            .x_axis
-            .length()
-            .max(m.y_axis.length())
-            .max(m.z_axis.length())
-            * (1.0 + 1e-9);
+        // Symmetric: its columns are its rows.
+        let gram = m.transpose() * m;
+        let stretch_sq = [gram.x_axis, gram.y_axis, gram.z_axis]
+            .iter()
+            .map(|row| row.abs().element_sum())
+            .fold(0.0, f64::max);
+        let radius = stretch_sq.sqrt() * (1.0 + 1e-9);
         Self {
             centre: world_from_object.translation,
             radius_sq: radius * radius,
