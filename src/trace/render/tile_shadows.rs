@@ -9,7 +9,7 @@
 
 use crate::trace::cull::Candidates;
 use crate::trace::shade::{MakeRay, ShadowRequest};
-use crate::trace::world::{ObjectSet, World};
+use crate::trace::world::World;
 
 /// One tile batch's shadow queries, with the last blocker of each light's rays.
 pub(super) struct TileShadows<'c> {
@@ -49,7 +49,7 @@ impl<'c> TileShadows<'c> {
             }
             among
         } else {
-            ObjectSet::ALL
+            to.within
         };
         let query = ray();
         let last = &mut self.last_blocker[to.light];

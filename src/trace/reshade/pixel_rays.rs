@@ -44,9 +44,9 @@ impl RaySource for PixelRays<'_, '_, '_> {
     }
 
     fn occluder(&mut self, world: &World, to: ShadowRequest, ray: impl MakeRay) -> Option<usize> {
-        // One of a sphere light's rays: the slot keeps their count, not each answer.
+        // One of a sphere light's rays: the slot keeps their count, not each answer (and
+        // `sphere_rays_clear` counts them as traced).
         if to.off_centre {
-            self.tile.traced.shadow += 1;
             return self.live.occluder(world, to, ray);
         }
         let slot = self.tile.slot_index(to.node, to.light);
@@ -66,17 +66,18 @@ impl RaySource for PixelRays<'_, '_, '_> {
         &mut self,
         node: u32,
         light: usize,
+        samples: u32,
         cast: impl FnOnce(&mut Self) -> (u32, Option<usize>),
     ) -> (u32, Option<usize>) {
         let slot = self.tile.slot_index(node, light);
         if let Some((clear, _)) = decode_sphere(self.tile.slot(slot).shadow) {
             return (clear, None);
         }
-        let before = self.tile.traced.shadow;
         let (clear, blocker) = cast(self);
-        // Each of the light's rays went through `occluder`, which counted it.
-        let rays = u32::try_from(self.tile.traced.shadow - before).expect("a light's rays");
-        self.tile.slot_mut(slot).shadow = encode_sphere(clear, rays);
+        // Every ray counts as traced, those the point's cone found clear without casting
+        // them too (as the render's own counts do).
+        self.tile.traced.shadow += u64::from(samples);
+        self.tile.slot_mut(slot).shadow = encode_sphere(clear, samples);
         (clear, blocker)
     }
 

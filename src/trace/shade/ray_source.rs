@@ -9,7 +9,7 @@ use super::bounce_tree::RayAt;
 use super::lit_factors::LitFactors;
 use crate::trace::cull::Candidates;
 use crate::trace::ray::Ray;
-use crate::trace::world::{SurfacePoint, World};
+use crate::trace::world::{ObjectSet, SurfacePoint, World};
 
 /// A shadow ray the shader needs the answer to.
 #[derive(Clone, Copy, Debug)]
@@ -36,6 +36,9 @@ pub struct ShadowRequest {
     /// It aims at a point of a sphere light other than the light's position (the tile's
     /// shadow culling, made for the position, does not hold for it).
     pub off_centre: bool,
+    /// The only objects that may block it, as the shader found (a sphere light's cone
+    /// from the point: [`crate::trace::world::LightCone`]); [`ObjectSet::ALL`] otherwise.
+    pub within: ObjectSet,
 }
 
 /// Makes the shadow ray, for a source that has to cast it (a cache that knows the answer
@@ -55,15 +58,17 @@ pub trait RaySource {
     /// the ray, for a source that has to cast it.
     fn occluder(&mut self, world: &World, to: ShadowRequest, ray: impl MakeRay) -> Option<usize>;
 
-    /// How many of the shadow rays from the hit of ray `node` to sphere light `light`
-    /// reach it, and the first blocker met: `cast` casts them through this source (each an
-    /// `off_centre` request) and counts. A source that keeps the count may give it
-    /// without casting, and then names no blocker.
+    /// How many of the `samples` shadow rays from the hit of ray `node` to sphere light
+    /// `light` reach it, and the first blocker met: `cast` casts them through this source
+    /// (each an `off_centre` request; none where the point's cone shows them all clear)
+    /// and counts them. A source that keeps the count may give it without casting, and
+    /// then names no blocker.
     #[inline]
     fn sphere_rays_clear(
         &mut self,
         _node: u32,
         _light: usize,
+        _samples: u32,
         cast: impl FnOnce(&mut Self) -> (u32, Option<usize>),
     ) -> (u32, Option<usize>)
     where
@@ -136,7 +141,7 @@ impl RaySource for LiveRays<'_> {
             world.occluder_except_among(&query.ray, query.t_max, except, among)
         } else {
             let query = ray();
-            world.occluder_except(&query.ray, query.t_max, except)
+            world.occluder_except_among(&query.ray, query.t_max, except, to.within)
         }
     }
 }

@@ -13,7 +13,8 @@ use crate::trace::shapes::Primitive;
 use glam::DVec3;
 
 use crate::trace::world::{
-    LightSample, SobolScramble, SphereLight, SurfacePoint, shading_seed, spawn_ray, spawn_ray_to,
+    LightCone, LightSample, ObjectSet, SobolScramble, SphereLight, SurfacePoint, shading_seed,
+    spawn_ray, spawn_ray_to,
 };
 
 /// Which light a shadow ray goes to, from the hit of which ray of the tree (its depth,
@@ -39,14 +40,15 @@ pub(super) struct Visibility {
 impl Tracer<'_> {
     /// The object blocking the shadow ray from `hit` (at `to.depth`) to light
     /// `to.index`, if any; `off_centre`: the ray aims at a point of a sphere light other
-    /// than the light's position. The ray itself is made only if `rays` has to cast it.
+    /// than the light's position, and only the objects of that set may block it. The
+    /// ray itself is made only if `rays` has to cast it.
     #[inline]
     fn shadow_blocker(
         &self,
         hit: &SurfacePoint,
         sample: &LightSample,
         to: LightAt,
-        off_centre: bool,
+        off_centre: Option<ObjectSet>,
         rays: &mut impl RaySource,
         counts: &mut RayCounts,
     ) -> Option<usize> {
@@ -57,7 +59,8 @@ impl Tracer<'_> {
             node: to.node,
             light: to.index,
             except,
-            off_centre,
+            off_centre: off_centre.is_some(),
+            within: off_centre.unwrap_or(ObjectSet::ALL),
         };
         rays.occluder(self.world, target, || self.shadow_query(hit, sample))
     }
@@ -78,7 +81,7 @@ impl Tracer<'_> {
         let (Some(sphere), Some(centre)) =
             (self.world.light_spheres[to.index], sample.light_position)
         else {
-            let blocker = self.shadow_blocker(hit, sample, to, false, rays, counts);
+            let blocker = self.shadow_blocker(hit, sample, to, None, rays, counts);
             let fraction = if blocker.is_some() { 0.0 } else { 1.0 };
             return Visibility {
                 fraction,
@@ -103,38 +106,47 @@ impl Tracer<'_> {
         counts: &mut RayCounts,
         recorder: &mut R,
     ) -> Visibility {
-        let scramble = SobolScramble::new(shading_seed(hit.p, to.index));
-        let disc = sphere.disc_seen_from(centre, hit.p);
         let mut cast = false;
-        let (clear, first_blocker) = rays.sphere_rays_clear(to.node, to.index, |rays| {
-            cast = true;
-            let mut clear = 0u32;
-            let mut first_blocker = None;
-            for i in 0..sphere.samples {
-                let target = disc.point(i, &scramble);
-                let toward = LightSample {
-                    light_position: Some(target),
-                    to_light: (target - hit.p).normalize_or_zero(),
-                    ..*sample
-                };
-                let blocker = self.shadow_blocker(hit, &toward, to, true, rays, counts);
-                match blocker {
-                    None => clear += 1,
-                    Some(_) => first_blocker = first_blocker.or(blocker),
+        let (clear, first_blocker) =
+            rays.sphere_rays_clear(to.node, to.index, sphere.samples, |rays| {
+                cast = true;
+                let within = self.disc_blockers(hit, centre, sphere.radius);
+                // Nothing can block any of the rays: the point sees the whole light, and the
+                // rays are not cast (but counted as cast; the inspector's recorder is shown
+                // each ray).
+                if !R::ACTIVE && within.is_empty_below(self.world.objects.len()) {
+                    counts.shadow += u64::from(sphere.samples);
+                    return (sphere.samples, None);
                 }
-                if R::ACTIVE {
-                    let query = self.shadow_query(hit, &toward);
-                    let light = self.world.light_scene_index[to.index];
-                    let shadow = ShadowRay {
-                        ray: query.ray,
-                        t_max: query.t_max,
-                        blocked_by: blocker.map(|b| self.world.scene_object(b)),
+                let scramble = SobolScramble::new(shading_seed(hit.p, to.index));
+                let disc = sphere.disc_seen_from(centre, hit.p);
+                let mut clear = 0u32;
+                let mut first_blocker = None;
+                for i in 0..sphere.samples {
+                    let target = disc.point(i, &scramble);
+                    let toward = LightSample {
+                        light_position: Some(target),
+                        to_light: (target - hit.p).normalize_or_zero(),
+                        ..*sample
                     };
-                    recorder.sphere_shadow_ray(to.node, light, &shadow);
+                    let blocker = self.shadow_blocker(hit, &toward, to, Some(within), rays, counts);
+                    match blocker {
+                        None => clear += 1,
+                        Some(_) => first_blocker = first_blocker.or(blocker),
+                    }
+                    if R::ACTIVE {
+                        let query = self.shadow_query(hit, &toward);
+                        let light = self.world.light_scene_index[to.index];
+                        let shadow = ShadowRay {
+                            ray: query.ray,
+                            t_max: query.t_max,
+                            blocked_by: blocker.map(|b| self.world.scene_object(b)),
+                        };
+                        recorder.sphere_shadow_ray(to.node, light, &shadow);
+                    }
                 }
-            }
-            (clear, first_blocker)
-        });
+                (clear, first_blocker)
+            });
         // Counted as cast, as a point light's answer from the cache is.
         if !cast {
             counts.shadow += u64::from(sphere.samples);
@@ -143,6 +155,31 @@ impl Tracer<'_> {
             fraction: visible_fraction(clear, sphere.samples),
             blocker: first_blocker.filter(|_| clear == 0),
             rays: sphere.samples,
+        }
+    }
+
+    /// The objects that may block a shadow ray from `hit` to a point of the sphere light
+    /// of `radius` about `centre`: those whose bounds meet the cone from the point round
+    /// the light, less the object the point lies on where every such ray leaves it on
+    /// its outer side ([`Self::shadow_except`] for each of them).
+    fn disc_blockers(&self, hit: &SurfacePoint, centre: DVec3, radius: f64) -> ObjectSet {
+        // The rays' origins lie off the point by their offset (`spawn::offset_origin`).
+        let apex_error = 4.0 * hit.p_error.length();
+        let Some(cone) = LightCone::new(hit.p, centre, radius, apex_error) else {
+            return ObjectSet::ALL;
+        };
+        let object = &self.world.objects[hit.object];
+        // Every ray's direction is within `radius` of the centre's, so leaves on the
+        // outer side where the centre is more than `radius` above the tangent plane
+        // (less a relative margin for the rounding of each ray's own test).
+        let above = hit.n_outward.dot(centre - hit.p);
+        let leaves_outward = !object.can_meet_itself()
+            && (object.shape == Primitive::Plane || above > radius + 1e-9 * above.abs());
+        let within = self.world.blockers_in_cone(&cone);
+        if leaves_outward {
+            within.without(Some(hit.object))
+        } else {
+            within
         }
     }
 

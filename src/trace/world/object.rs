@@ -113,6 +113,19 @@ impl WorldObject {
             || self.csg.as_ref().is_some_and(|tree| !tree.convex)
     }
 
+    /// A ball holding the whole object, by centre and radius: its bounding sphere where
+    /// it has one, otherwise the ball round its box.
+    #[must_use]
+    pub fn bounding_ball(&self) -> (DVec3, f64) {
+        match &self.bounding_sphere {
+            Some(sphere) => (sphere.centre, sphere.radius_sq.sqrt()),
+            None => (
+                (self.bounds.min + self.bounds.max) * 0.5,
+                (self.bounds.max - self.bounds.min).length() * 0.5,
+            ),
+        }
+    }
+
     /// The bounds test: whether the ray may meet the object before `t_max`.
     #[inline]
     fn may_be_hit(&self, ray: &Ray, inv_dir: DVec3, t_max: f64) -> bool {
