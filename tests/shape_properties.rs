@@ -208,6 +208,62 @@ proptest! {
     }
 }
 
+/// Every shape, and a CSG lens (bounded by the sphere of one of its operands).
+fn shape_or_lens() -> impl Strategy<Value = Shape> {
+    let lens = Shape::Csg {
+        op: raylab::scene::CsgOp::Intersection,
+        operands: [-0.6, 0.6]
+            .map(|z| {
+                object(
+                    Shape::Sphere,
+                    DVec3::new(0.0, 0.0, z),
+                    DVec3::ZERO,
+                    DVec3::ONE,
+                )
+            })
+            .to_vec(),
+    };
+    prop::sample::select([Shape::ALL.to_vec(), vec![lens]].concat())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 2000, ..ProptestConfig::default() })]
+
+    /// A child turned inside a group scaled unevenly is sheared. Its bounds (a box, a
+    /// sphere's or a lens's bounding sphere) must still hold all of it: the world finds
+    /// each hit the object's own test finds without its bounds, at the same `t`.
+    #[test]
+    fn a_sheared_object_is_hit_wherever_its_surface_is(
+        shape in shape_or_lens(),
+        turn in (-180.0..180.0f64, -180.0..180.0f64, -180.0..180.0f64),
+        stretch in (0.2..5.0f64, 0.2..5.0f64, 0.2..5.0f64),
+        group_turn in (-180.0..180.0f64, -180.0..180.0f64, -180.0..180.0f64),
+        eye_dir in unit_vector(),
+        aim in (-1.3..1.3f64, -1.3..1.3f64, -1.3..1.3f64),
+        distance in 2.0..30.0f64,
+    ) {
+        let child = object(shape, DVec3::ZERO, DVec3::new(turn.0, turn.1, turn.2), DVec3::ONE);
+        let stretch = DVec3::new(stretch.0, stretch.1, stretch.2);
+        let group_turn = DVec3::new(group_turn.0, group_turn.1, group_turn.2);
+        let group = object(
+            Shape::Group { children: vec![child.clone()] },
+            DVec3::new(1.0, -2.0, 3.0),
+            group_turn,
+            stretch,
+        );
+        let mut scene = bare_scene(Material::default());
+        scene.objects.push(group.clone());
+        let world = World::new(&scene).unwrap();
+        let placed = group.transform.world_from_object() * child.transform.world_from_object();
+        let target = placed.transform_point3(DVec3::new(aim.0, aim.1, aim.2));
+        let eye = target + eye_dir * distance * stretch.max_element();
+        let ray = Ray::new(eye, (target - eye).normalize());
+        let bounded = world.intersect(&ray, f64::INFINITY).map(|hit| hit.t);
+        let unbounded = world.intersect_object(0, &ray, f64::INFINITY).map(|hit| hit.t);
+        prop_assert_eq!(bounded, unbounded);
+    }
+}
+
 #[test]
 fn the_ray_strategy_hits_often_enough_to_test_something() {
     use proptest::strategy::ValueTree;
