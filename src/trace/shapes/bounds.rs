@@ -1,6 +1,6 @@
 //! Axis-aligned bounding boxes, used to skip exact intersection tests.
 
-use glam::{DAffine3, DVec3};
+use glam::{DAffine3, DMat3, DVec3};
 
 use crate::trace::ray::Ray;
 
@@ -64,6 +64,22 @@ impl Aabb {
     }
 }
 
+/// At least how far `m` moves a unit vector at most: the square root of Gershgorin's
+/// bound on the largest eigenvalue of `m^T m`, the largest row sum of its absolute
+/// values. That is the longest axis when the axes are perpendicular (a rotation of a
+/// scale), and still a bound when a group's scale shears its rotated children, where the
+/// longest axis is not.
+#[must_use]
+pub fn largest_stretch(m: &DMat3) -> f64 {
+    // Symmetric: its columns are its rows.
+    let gram = m.transpose() * *m;
+    [gram.x_axis, gram.y_axis, gram.z_axis]
+        .iter()
+        .map(|row| row.abs().element_sum())
+        .fold(0.0, f64::max)
+        .sqrt()
+}
+
 /// A bounding sphere, for objects whose box is loose (spheres of any orientation).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BoundingSphere {
@@ -75,21 +91,10 @@ pub struct BoundingSphere {
 
 impl BoundingSphere {
     /// The sphere around the unit sphere placed by `world_from_object`, padded by a
-    /// relative 1e-9. Its radius bounds the linear part's largest stretch: the square
-    /// root of Gershgorin's bound on the largest eigenvalue of `M^T M`, the largest row
-    /// sum of its absolute values. That is the longest axis when the axes are
-    /// perpendicular (a rotation of a scale), and still a bound when a group's scale
-    /// shears its rotated children, where the longest axis is not.
+    /// relative 1e-9.
     #[must_use]
     pub fn around_unit_sphere(world_from_object: &DAffine3) -> Self {
-        let m = world_from_object.matrix3;
-        // Symmetric: its columns are its rows.
-        let gram = m.transpose() * m;
-        let stretch_sq = [gram.x_axis, gram.y_axis, gram.z_axis]
-            .iter()
-            .map(|row| row.abs().element_sum())
-            .fold(0.0, f64::max);
-        let radius = stretch_sq.sqrt() * (1.0 + 1e-9);
+        let radius = largest_stretch(&world_from_object.matrix3) * (1.0 + 1e-9);
         Self {
             centre: world_from_object.translation,
             radius_sq: radius * radius,

@@ -32,7 +32,7 @@ mod crossings_tests;
 
 use glam::DVec3;
 
-pub use self::bounds::{Aabb, BoundingSphere};
+pub use self::bounds::{Aabb, BoundingSphere, largest_stretch};
 use self::hit::ConvexSolid;
 pub(crate) use self::hit::in_range;
 pub use self::hit::{ShapeHit, gamma};
