@@ -25,6 +25,8 @@ pub use object_id::object_id_colour;
 pub use phong::{
     LocalLight, diffuse_term, phong_power, seen_terms, specular_term, visible_fraction,
 };
+#[cfg(test)]
+pub(crate) use ray_source::ShadowQuery;
 pub use ray_source::{LiveRays, MakeRay, RaySource, ShadowRequest};
 pub use record::{
     LightOutcome, LightRecord, LightSkip, NoRecorder, Recorder, ShadowRay, SkippedLight,

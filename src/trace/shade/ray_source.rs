@@ -33,6 +33,8 @@ pub struct ShadowRequest {
     pub light: usize,
     /// The object it cannot meet.
     pub except: Option<usize>,
+    /// The object whose surface it leaves.
+    pub from: usize,
     /// It aims at a point of a sphere light other than the light's position (the tile's
     /// shadow culling, made for the position, does not hold for it).
     pub off_centre: bool,

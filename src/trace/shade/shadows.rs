@@ -59,6 +59,7 @@ impl Tracer<'_> {
             node: to.node,
             light: to.index,
             except,
+            from: hit.object,
             off_centre: off_centre.is_some(),
             within: off_centre.unwrap_or(ObjectSet::ALL),
         };
