@@ -111,13 +111,27 @@ impl Tracer<'_> {
         let (clear, first_blocker) =
             rays.sphere_rays_clear(to.node, to.index, sphere.samples, |rays| {
                 cast = true;
-                let within = self.disc_blockers(hit, centre, sphere.radius);
-                // Nothing can block any of the rays: the point sees the whole light, and the
-                // rays are not cast (but counted as cast; the inspector's recorder is shown
-                // each ray).
-                if !R::ACTIVE && within.is_empty_below(self.world.objects.len()) {
-                    counts.shadow += u64::from(sphere.samples);
-                    return (sphere.samples, None);
+                // The rays' origins lie off the point by their offset (`spawn::offset_origin`).
+                let apex_error = 4.0 * hit.p_error.length();
+                let cone = LightCone::new(hit.p, centre, sphere.radius, apex_error);
+                let within = cone.map_or(ObjectSet::ALL, |cone| {
+                    self.disc_blockers(hit, &cone, centre, sphere.radius)
+                });
+                // Nothing can block any of the rays: the point sees the whole light; or a
+                // ball blocks every one: it sees none. Then the rays are not cast (but
+                // counted as cast; the inspector's recorder is shown each ray, and named
+                // the blocker).
+                if !R::ACTIVE {
+                    let seen = if within.is_empty_below(self.world.objects.len()) {
+                        Some(sphere.samples)
+                    } else {
+                        cone.filter(|cone| self.world.ball_hides_light(cone, within, hit.object))
+                            .map(|_| 0)
+                    };
+                    if let Some(clear) = seen {
+                        counts.shadow += u64::from(sphere.samples);
+                        return (clear, None);
+                    }
                 }
                 let scramble = SobolScramble::new(shading_seed(hit.p, to.index));
                 let disc = sphere.disc_seen_from(centre, hit.p);
@@ -160,15 +174,16 @@ impl Tracer<'_> {
     }
 
     /// The objects that may block a shadow ray from `hit` to a point of the sphere light
-    /// of `radius` about `centre`: those whose bounds meet the cone from the point round
+    /// of `radius` about `centre`: those whose bounds meet `cone`, from the point round
     /// the light, less the object the point lies on where every such ray leaves it on
     /// its outer side ([`Self::shadow_except`] for each of them).
-    fn disc_blockers(&self, hit: &SurfacePoint, centre: DVec3, radius: f64) -> ObjectSet {
-        // The rays' origins lie off the point by their offset (`spawn::offset_origin`).
-        let apex_error = 4.0 * hit.p_error.length();
-        let Some(cone) = LightCone::new(hit.p, centre, radius, apex_error) else {
-            return ObjectSet::ALL;
-        };
+    fn disc_blockers(
+        &self,
+        hit: &SurfacePoint,
+        cone: &LightCone,
+        centre: DVec3,
+        radius: f64,
+    ) -> ObjectSet {
         let object = &self.world.objects[hit.object];
         // Every ray's direction is within `radius` of the centre's, so leaves on the
         // outer side where the centre is more than `radius` above the tangent plane
@@ -176,7 +191,7 @@ impl Tracer<'_> {
         let above = hit.n_outward.dot(centre - hit.p);
         let leaves_outward = !object.can_meet_itself()
             && (object.shape == Primitive::Plane || above > radius + 1e-9 * above.abs());
-        let within = self.world.blockers_in_cone(&cone);
+        let within = self.world.blockers_in_cone(cone);
         if leaves_outward {
             within.without(Some(hit.object))
         } else {

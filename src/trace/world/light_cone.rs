@@ -4,6 +4,8 @@
 //! the light. An object whose bounds keep out of that cone blocks none of them: where no
 //! object is left, the point sees the whole light and its rays need not be cast (the
 //! floor of soft_spot.ron, lit by a sphere spot light, is most of its shading points).
+//! And where a round ball covers the whole light as seen from the point, every ray meets
+//! it: the point sees none of the light (the middle of a ball's shadow).
 //!
 //! Two tests, each enough to leave an object out: the cone's axis-aligned box misses the
 //! object's box (the flat floor below the points above it), or the object's bounding ball
@@ -92,6 +94,35 @@ impl LightCone {
     }
 }
 
+impl LightCone {
+    /// Whether the ball of radius `inner` about `centre` (inside an object whose every
+    /// point lies within `outer` of `centre`) crosses every segment from the apex to a
+    /// point of the light's ball, between its ends: the whole light hidden. The ball is
+    /// nearer than any point of the light, the apex outside it, and every segment's
+    /// direction within the ball's angular radius `asin(inner / D)` of its centre's: the
+    /// angle to the cone's axis plus the cone's half angle, with a margin.
+    #[must_use]
+    pub fn hidden_by(&self, centre: DVec3, inner: f64, outer: f64) -> bool {
+        let offset = centre - self.apex;
+        let distance = offset.length();
+        let margin =
+            RELATIVE_MARGIN * (self.reach + centre.abs().max_element() + outer) + self.apex_error;
+        let nearest_light = self.length * (1.0 - self.sine);
+        if !(distance - outer > margin && distance + outer < nearest_light * (1.0 - 1e-8) - margin)
+        {
+            return false;
+        }
+        let towards = offset / distance;
+        let off_axis = self
+            .axis
+            .cross(towards)
+            .length()
+            .atan2(self.axis.dot(towards));
+        let ball = (inner / distance).asin();
+        off_axis + self.sine.asin() < ball - 1e-9
+    }
+}
+
 /// The longest side of a box (0 for an empty or NaN one), for the margins.
 fn bounds_size(bounds: &Aabb) -> f64 {
     let size = (bounds.max - bounds.min).max_element();
@@ -99,6 +130,20 @@ fn bounds_size(bounds: &Aabb) -> f64 {
 }
 
 impl World {
+    /// Whether one of the objects of `among` other than `except` is a ball that hides the
+    /// whole light of `cone` from its apex ([`LightCone::hidden_by`]): every ray from the
+    /// apex to the light meets that ball.
+    #[must_use]
+    pub fn ball_hides_light(&self, cone: &LightCone, among: ObjectSet, except: usize) -> bool {
+        among
+            .members_below(self.objects.len())
+            .filter(|&index| index != except)
+            .filter_map(|index| self.objects[index].ball())
+            .any(|(centre, radius)| {
+                cone.hidden_by(centre, radius * (1.0 - 1e-9), radius * (1.0 + 1e-9))
+            })
+    }
+
     /// The objects that may block a shadow ray inside `cone`: all of them in a world
     /// too large for [`ObjectSet`] to cull.
     #[must_use]
@@ -223,13 +268,13 @@ mod tests {
     }
 
     /// From surface points of random worlds (every shape; many small balls) towards
-    /// sphere lights of many sizes: no ray
-    /// from the point to any point of the light's ball meets an object the cone leaves
+    /// sphere lights of many sizes: every ray is blocked where a ball hides the light, and
+    /// no ray from the point to any point of the light's ball meets an object the cone leaves
     /// out, though many rays pass close by one (so a cone a little too narrow fails).
     #[test]
     fn no_shadow_ray_meets_an_object_its_cone_leaves_out() {
         let mut cases = Cases(0x2545_f491_4f6c_dd1d);
-        let (mut left_out, mut close_calls, mut lights) = (0, 0, 0);
+        let (mut left_out, mut close_calls, mut lights, mut hidden) = (0, 0, 0, 0);
         for round in 0..8 {
             let world = if round % 2 == 0 {
                 shapes(&mut cases)
@@ -244,9 +289,18 @@ mod tests {
                     continue;
                 };
                 points += 1;
-                for _ in 0..4 {
-                    let centre = cases.vector(-6.0, 6.0);
-                    let radius = cases.within(0.01, 2.0);
+                for light in 0..8 {
+                    // Half the lights anywhere; half behind an object as seen from the
+                    // point, small, a little off its line: hidden or nearly.
+                    let (centre, radius) = if light % 2 == 0 {
+                        (cases.vector(-6.0, 6.0), cases.within(0.01, 2.0))
+                    } else {
+                        let index = (cases.unit() * world.objects.len() as f64) as usize;
+                        let (ball, ball_radius) = world.objects[index].bounding_ball();
+                        let behind = hit.p + (ball - hit.p) * cases.within(1.5, 4.0);
+                        let off = cases.vector(-1.0, 1.0) * ball_radius;
+                        (behind + off, cases.within(0.001, 0.3))
+                    };
                     let Some(cone) =
                         LightCone::new(hit.p, centre, radius, 4.0 * hit.p_error.length())
                     else {
@@ -254,6 +308,18 @@ mod tests {
                     };
                     lights += 1;
                     let within = world.blockers_in_cone(&cone);
+                    if world.ball_hides_light(&cone, within, hit.object) {
+                        hidden += 1;
+                        for _ in 0..64 {
+                            let target = centre + radius * cases.in_ball();
+                            let (ray, t_max) = spawn_ray_to(&hit, target);
+                            assert!(
+                                world.occluder(&ray, t_max).is_some(),
+                                "a ray from {} to {target} is clear though a ball hides the light round {centre} (radius {radius})",
+                                hit.p
+                            );
+                        }
+                    }
                     for index in 0..world.objects.len() {
                         if within.contains(index) {
                             continue;
@@ -286,6 +352,7 @@ mod tests {
             close_calls > 500,
             "{close_calls} rays within 5% of a left-out ball"
         );
+        assert!(hidden > 500, "{hidden} lights hidden by a ball");
     }
 
     /// The cone of a unit light 10 away: a ball just outside its side is left out, one
@@ -319,6 +386,30 @@ mod tests {
                 0.0
             )
             .is_none()
+        );
+    }
+
+    /// A light of radius 1 at 10 seen from the origin spans asin(0.1); a ball at 5 on the
+    /// line hides it where its own angular radius is larger, with the margin, and not
+    /// where it is smaller, nor where it lies beyond the light or round the point.
+    #[test]
+    fn a_ball_on_the_line_to_the_light_hides_it_only_when_it_covers_it() {
+        let cone = LightCone::new(DVec3::ZERO, DVec3::new(0.0, 0.0, 10.0), 1.0, 0.0).unwrap();
+        let at = DVec3::new(0.0, 0.0, 5.0);
+        // sin(asin 0.1) * 5 = 0.5: the ball's radius where the two angles are equal.
+        assert!(cone.hidden_by(at, 0.5001, 0.5001));
+        assert!(!cone.hidden_by(at, 0.4999, 0.4999));
+        // Moved off the line by 0.1: it must be larger by about 0.1.
+        let off = at + DVec3::new(0.1, 0.0, 0.0);
+        assert!(!cone.hidden_by(off, 0.55, 0.55) && cone.hidden_by(off, 0.61, 0.61));
+        assert!(
+            !cone.hidden_by(DVec3::new(0.0, 0.0, 12.0), 5.0, 5.0),
+            "beyond the light"
+        );
+        assert!(!cone.hidden_by(DVec3::ZERO, 0.5, 0.5), "round the point");
+        assert!(
+            !cone.hidden_by(DVec3::new(0.0, 0.0, 8.5), 0.9, 0.9),
+            "reaching the light"
         );
     }
 }

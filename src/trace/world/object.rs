@@ -113,6 +113,23 @@ impl WorldObject {
             || self.csg.as_ref().is_some_and(|tree| !tree.convex)
     }
 
+    /// Where the object is a round ball (a sphere scaled alike on every axis), its centre
+    /// and radius.
+    #[must_use]
+    pub fn ball(&self) -> Option<(DVec3, f64)> {
+        if self.shape != Primitive::Sphere || self.csg.is_some() || self.mesh.is_some() {
+            return None;
+        }
+        let m = self.world_from_object.matrix3;
+        let lengths = DVec3::new(m.x_axis.length(), m.y_axis.length(), m.z_axis.length());
+        let (shortest, longest) = (lengths.min_element(), lengths.max_element());
+        let skew = m.x_axis.dot(m.y_axis).abs()
+            + m.y_axis.dot(m.z_axis).abs()
+            + m.z_axis.dot(m.x_axis).abs();
+        (longest - shortest <= 1e-12 * longest && skew <= 1e-12 * longest * longest)
+            .then_some((self.world_from_object.translation, longest))
+    }
+
     /// A ball holding the whole object, by centre and radius: its bounding sphere where
     /// it has one, otherwise the ball round its box.
     #[must_use]
