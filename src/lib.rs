@@ -13,6 +13,8 @@ pub mod gizmo;
 pub mod preview;
 pub mod recovery;
 pub mod scene;
+#[cfg(test)]
+mod test_cases;
 pub mod trace;
 #[cfg(feature = "editor")]
 pub mod ui;

@@ -127,13 +127,8 @@ mod tests {
         // Pixels whose samples are independent coin flips (0 or 1, true mean 0.5): the
         // estimate from the halves must agree with the error against 0.5.
         let (width, n, s) = (4096u32, 16u32, 8u32);
-        let mut state = 0x2545_f491_4f6c_dd1du64;
-        let mut flip = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 40) & 1
-        };
+        let mut cases = crate::test_cases::Xorshift(0x2545_f491_4f6c_dd1d);
+        let mut flip = || (cases.next_u64() >> 40) & 1;
         let mut first = Image::new(width, 1);
         let mut all = Image::new(width, 1);
         for x in 0..width as usize {

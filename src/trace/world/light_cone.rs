@@ -166,18 +166,16 @@ impl World {
 mod tests {
     use super::*;
     use crate::scene::parse_scene;
+    use crate::test_cases::Xorshift;
     use crate::trace::ray::Ray;
     use crate::trace::world::spawn_ray_to;
 
-    /// A small xorshift generator: the same cases on every run.
-    struct Cases(u64);
+    /// The test's random cases.
+    struct Cases(Xorshift);
 
     impl Cases {
         fn unit(&mut self) -> f64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            (self.0 >> 11) as f64 / (1u64 << 53) as f64
+            self.0.unit()
         }
 
         fn within(&mut self, lo: f64, hi: f64) -> f64 {
@@ -273,7 +271,7 @@ mod tests {
     /// out, though many rays pass close by one (so a cone a little too narrow fails).
     #[test]
     fn no_shadow_ray_meets_an_object_its_cone_leaves_out() {
-        let mut cases = Cases(0x2545_f491_4f6c_dd1d);
+        let mut cases = Cases(Xorshift(0x2545_f491_4f6c_dd1d));
         let (mut left_out, mut close_calls, mut lights, mut hidden) = (0, 0, 0, 0);
         for round in 0..8 {
             let world = if round % 2 == 0 {

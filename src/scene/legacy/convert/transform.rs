@@ -253,13 +253,8 @@ mod tests {
     fn every_sequence_survives_conversion() {
         // A fixed pseudo-random walk over all step kinds: whatever form the result takes,
         // it reproduces the composed matrix.
-        let mut state = 0x2545_f491_4f6c_dd1d_u64;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut cases = crate::test_cases::Xorshift(0x2545_f491_4f6c_dd1d);
+        let mut next = move || cases.unit();
         let axes = [Axis::X, Axis::Y, Axis::Z];
         for _ in 0..500 {
             let steps: Vec<TransformStep> = (0..1 + (next() * 5.0) as usize)

@@ -374,13 +374,8 @@ mod tests {
     /// no larger than either; where a cap would be more than a hemisphere, none is given.
     #[test]
     fn the_lens_ball_holds_all_of_two_balls_intersection() {
-        let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut unit = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut cases = crate::test_cases::Xorshift(0x9e37_79b9_7f4a_7c15);
+        let mut unit = move || cases.unit();
         let (mut lenses, mut refused, mut points) = (0, 0, 0);
         for _ in 0..3000 {
             let mut vector =
