@@ -68,6 +68,22 @@ const PER_NODE: [(Family, Kind); 3] = [
     (Family::Transmission, Kind::Transmission),
 ];
 
+/// The known bugs' families, each with its one channel, in the order the groups list
+/// them: normals, highlights, clamps, shadow tests, spawned rays.
+fn bug_families() -> impl Iterator<Item = (Family, Kind)> {
+    let normal = NormalBug::ALL.map(|b| (Family::Normal(b), Kind::Normal(b)));
+    let highlight = SpecularBug::ALL.map(|b| (Family::Highlight(b), Kind::Highlight(b)));
+    let clamp = ClampBug::ALL.map(|b| (Family::Clamp(b), Kind::Clamp(b)));
+    let shadow = ShadowBug::ALL.map(|b| (Family::ShadowTest(b), Kind::ShadowTest(b)));
+    let spawn = SpawnBug::ALL.map(|b| (Family::Spawn(b), Kind::Spawn(b)));
+    normal
+        .into_iter()
+        .chain(highlight)
+        .chain(clamp)
+        .chain(shadow)
+        .chain(spawn)
+}
+
 impl Groups {
     /// The groups of a world numbered by `space`, whose trees are `nodes`, with the
     /// nodes `tried` as missing and each leaf made of `parts_of[leaf]`
@@ -134,55 +150,8 @@ impl Groups {
                     );
                 }
             }
-            for bug in NormalBug::ALL {
-                add(
-                    Family::Normal(bug),
-                    None,
-                    object,
-                    None,
-                    vec![Kind::Normal(bug)],
-                    None,
-                );
-            }
-            for bug in SpecularBug::ALL {
-                add(
-                    Family::Highlight(bug),
-                    None,
-                    object,
-                    None,
-                    vec![Kind::Highlight(bug)],
-                    None,
-                );
-            }
-            for bug in ClampBug::ALL {
-                add(
-                    Family::Clamp(bug),
-                    None,
-                    object,
-                    None,
-                    vec![Kind::Clamp(bug)],
-                    None,
-                );
-            }
-            for bug in ShadowBug::ALL {
-                add(
-                    Family::ShadowTest(bug),
-                    None,
-                    object,
-                    None,
-                    vec![Kind::ShadowTest(bug)],
-                    None,
-                );
-            }
-            for bug in SpawnBug::ALL {
-                add(
-                    Family::Spawn(bug),
-                    None,
-                    object,
-                    None,
-                    vec![Kind::Spawn(bug)],
-                    None,
-                );
+            for (family, kind) in bug_families() {
+                add(family, None, object, None, vec![kind], None);
             }
         }
         for tried in tried {

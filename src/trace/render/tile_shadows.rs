@@ -53,7 +53,6 @@ impl<'c> TileShadows<'c> {
         };
         let query = ray();
         let last = &mut self.last_blocker[to.light];
-        // A ray into the solid it leaves meets that solid's far side first.
         // A ray into the convex solid it leaves (not leaving it outward, so not
         // excepted) meets that solid's far side, unless the light is inside it.
         let into = except.is_none() && !world.objects[to.from].can_meet_itself();

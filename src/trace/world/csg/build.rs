@@ -321,7 +321,7 @@ fn bounding_sphere(op: CsgOp, operands: &[Option<DAffine3>]) -> Option<DAffine3>
             spheres
                 .iter()
                 .copied()
-                .chain(lenses.collect::<Vec<_>>())
+                .chain(lenses)
                 .min_by(|a, b| radius(a).total_cmp(&radius(b)))
         }
         _ => None,
